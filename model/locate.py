@@ -1,0 +1,51 @@
+"""Find the line of a table or key in a project file's text, for error messages.
+
+TOML parsers give no positions for values, so this reads the text itself. It
+understands the layout floatpage writes (`[physics]`, `[[pages]]`,
+`[[pages.items]]`, one key per line), which is what users edit; for anything
+else it answers None and the message goes without a line number.
+"""
+
+from __future__ import annotations
+
+import re
+
+HEADER = re.compile(r"^\s*\[\[?\s*([A-Za-z0-9_.\" -]+?)\s*\]\]?\s*(#.*)?$")
+
+
+class LineFinder:
+    """Knows where each page table and item table starts, by their order in the file."""
+
+    def __init__(self, text: str):
+        self.lines = text.splitlines()
+        self.headers: list[tuple[int, str]] = []  # (1-based line, dotted name)
+        for number, line in enumerate(self.lines, start=1):
+            match = HEADER.match(line)
+            if match:
+                self.headers.append((number, match.group(1).replace(" ", "")))
+
+    def table_line(self, name: str, index: int = 0) -> int | None:
+        """Line of the index-th `[name]` / `[[name]]` header."""
+        found = [line for line, header in self.headers if header == name]
+        return found[index] if index < len(found) else None
+
+    def item_line(self, page_index: int, item_index: int) -> int | None:
+        """Line of the item_index-th `[[pages.items]]` below the page_index-th `[[pages]]`."""
+        page_line = self.table_line("pages", page_index)
+        if page_line is None:
+            return None
+        next_page = self.table_line("pages", page_index + 1) or len(self.lines) + 1
+        items = [line for line, header in self.headers
+                 if header == "pages.items" and page_line < line < next_page]
+        return items[item_index] if item_index < len(items) else None
+
+    def key_line(self, table_line: int | None, key: str) -> int | None:
+        """Line of `key = ...` inside the table starting at table_line (0 = the top level)."""
+        start = 0 if table_line is None else table_line
+        following = [line for line, _ in self.headers if line > start]
+        end = following[0] if following else len(self.lines) + 1
+        pattern = re.compile(rf"^\s*{re.escape(key)}\s*=")
+        for number in range(start + 1, end):
+            if pattern.match(self.lines[number - 1]):
+                return number
+        return table_line if table_line else None

@@ -1,0 +1,300 @@
+"""Read a project file into the document model, reporting every problem clearly.
+
+`load_project(path)` either returns a valid `Project` or raises
+`ProjectFileError` listing each problem with file, line, item and advice.
+Validation covers syntax, unknown keys (with "did you mean"), types, ranges,
+page sizes, missing pictures, anchors to unknown ids and anchor cycles.
+"""
+
+from __future__ import annotations
+
+import difflib
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import tomlkit
+
+from model.document import (
+    ITEM_CLASSES, ITEM_KINDS, Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
+)
+from model.errors import Problem, ProjectFileError
+from model.locate import LineFinder
+from model.page_sizes import CUSTOM, PAGE_SIZES_MM, canonical_size_name, page_dimensions
+from model.schema import (
+    BACKGROUND_KEYS, COMMON_ITEM_KEYS, ITEM_ANCHOR_KEYS, KIND_KEYS, PAGE_KEYS, PHYSICS_KEYS,
+    POINT_ANCHOR_KEYS, TOP_KEYS, TYPE_WORDS, Key, type_matches,
+)
+from model.document import FORMAT_VERSION
+
+MAX_FILE_BYTES = 16 * 1024 * 1024
+
+
+def load_project(path: str | Path) -> Project:
+    """Parse and validate a project file; raise ProjectFileError naming every problem."""
+    path = Path(path)
+    text = read_text(path)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as error:
+        raise ProjectFileError([syntax_problem(path, error)]) from None
+    reader = _Reader(path, text)
+    project = reader.project(data)
+    if reader.problems:
+        raise ProjectFileError(reader.problems)
+    project.source_document = tomlkit.parse(text)
+    return project
+
+
+def read_text(path: Path) -> str:
+    """The file's text, or a Problem that says why it cannot be read."""
+    def fail(message: str, hint: str) -> ProjectFileError:
+        return ProjectFileError([Problem(path, None, "", message, hint)])
+
+    if not path.exists():
+        raise fail("no such file", "check the path, or create one with `floatpage new blank PATH`")
+    if path.is_dir():
+        raise fail("is a folder, not a project file", "name the .toml file inside it")
+    try:
+        raw = path.read_bytes()
+    except OSError as error:
+        raise fail(f"cannot be read: {error.strerror}", "check its permissions") from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise fail("is larger than 16 MiB", "a project file holds text only; is this the right file?")
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        raise fail(f"is not UTF-8 text (byte {error.start})", "save it as UTF-8") from None
+
+
+def syntax_problem(path: Path, error: tomllib.TOMLDecodeError) -> Problem:
+    message = str(error)
+    line = getattr(error, "lineno", None)
+    if line is None and "(at line " in message:
+        try:
+            line = int(message.split("(at line ")[1].split(",")[0])
+        except (IndexError, ValueError):
+            line = None
+    short = message.split(" (at line")[0]
+    return Problem(path, line, "", f"TOML syntax error: {short}",
+                   "check quotes, brackets and `key = value` pairs on that line")
+
+
+class _Reader:
+    """Walks parsed TOML against the schema, building the model and collecting problems."""
+
+    def __init__(self, path: Path, text: str):
+        self.path = path
+        self.lines = LineFinder(text)
+        self.problems: list[Problem] = []
+
+    def add(self, line: int | None, where: str, message: str, hint: str = "") -> None:
+        self.problems.append(Problem(self.path, line, where, message, hint))
+
+    def check_table(self, table: dict, keys: list[Key], where: str, table_line: int | None) -> dict:
+        """Report unknown, missing, mistyped and out-of-range keys; return the good values."""
+        known = {key.name: key for key in keys}
+        good: dict[str, Any] = {}
+        for name in table:
+            if name not in known:
+                close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.6)
+                hint = f'did you mean "{close[0]}"?' if close else "allowed keys: " + ", ".join(known)
+                self.add(self.lines.key_line(table_line, name), where, f'unknown key "{name}"', hint)
+        for key in keys:
+            if key.name not in table:
+                if key.required:
+                    self.add(table_line, where, f'missing key "{key.name}"',
+                             f"add `{key.name} = ...`")
+                continue
+            value = table[key.name]
+            line = self.lines.key_line(table_line, key.name)
+            if key.kind == "array":
+                if not (isinstance(value, list) and all(isinstance(v, dict) for v in value)):
+                    self.add(line, where, f'"{key.name}" must be an array of tables',
+                             f"write each entry as a [[{key.name}]] table")
+                    continue
+            elif not type_matches(key.kind, value):
+                self.add(line, where, f'"{key.name}" must be {TYPE_WORDS[key.kind]}, '
+                         f"not {describe(value)}")
+                continue
+            if key.check is not None:
+                complaint = key.check(value)
+                if complaint:
+                    self.add(line, where, f'"{key.name}" {complaint}', f"it is {value!r}")
+                    continue
+            good[key.name] = value
+        return good
+
+    def project(self, data: dict) -> Project:
+        top = self.check_table(data, TOP_KEYS, "", None)
+        fmt = top.get("format")
+        if fmt is not None and fmt != FORMAT_VERSION:
+            self.add(self.lines.key_line(None, "format"), "", f"format {fmt} is not supported",
+                     f"this floatpage reads format {FORMAT_VERSION}; upgrade floatpage or fix the number")
+        physics_line = self.lines.table_line("physics")
+        physics_values = self.check_table(top.get("physics", {}), PHYSICS_KEYS, "[physics]",
+                                          physics_line)
+        project = Project(path=self.path, title=top.get("title", ""),
+                          language=top.get("language", "en"),
+                          physics=PhysicsSettings(**physics_values))
+        pages = top.get("pages", [])
+        if "pages" in top and not pages:
+            self.add(None, "", "the project has no pages", "add a [[pages]] table")
+        seen_pages: set[str] = set()
+        seen_items: dict[str, str] = {}
+        for page_index, page_table in enumerate(pages):
+            page = self.page(page_table, page_index, seen_items)
+            if page is None:
+                continue
+            if page.id in seen_pages:
+                self.add(self.lines.table_line("pages", page_index), f'page "{page.id}"',
+                         "this page id is used twice", "give every page its own id")
+            seen_pages.add(page.id)
+            project.pages.append(page)
+        for page_index, page in enumerate(project.pages):
+            self.check_anchors(page, page_index)
+        return project
+
+    def page(self, table: dict, page_index: int, seen_items: dict[str, str]) -> Page | None:
+        page_line = self.lines.table_line("pages", page_index)
+        label = f'page "{table["id"]}"' if isinstance(table.get("id"), str) else f"page {page_index + 1}"
+        values = self.check_table(table, PAGE_KEYS, label, page_line)
+        if "id" not in values:
+            return None
+        page = Page(id=values["id"])
+        size_name = values.get("size", "A4")
+        size = canonical_size_name(size_name)
+        if size is None:
+            close = difflib.get_close_matches(size_name, list(PAGE_SIZES_MM), n=1, cutoff=0.5)
+            hint = f'did you mean "{close[0]}"? ' if close else ""
+            self.add(self.lines.key_line(page_line, "size"), label, f'unknown page size "{size_name}"',
+                     hint + "known sizes: " + ", ".join(PAGE_SIZES_MM) + ', or "custom" with width_mm and height_mm')
+            size = "A4"
+        page.size = size
+        page.orientation = values.get("orientation", "portrait")
+        if size == CUSTOM and not ("width_mm" in values and "height_mm" in values):
+            self.add(page_line, label, "a custom page needs width_mm and height_mm",
+                     "add both, in millimetres")
+            size = page.size = "A4"
+        page.width_mm, page.height_mm = page_dimensions(size, page.orientation,
+                                                        values.get("width_mm"), values.get("height_mm"))
+        if size == CUSTOM:
+            page.orientation = "landscape" if page.width_mm > page.height_mm else "portrait"
+        if "background" in values:
+            page.background = self.background(values["background"], label,
+                                              self.lines.key_line(page_line, "background"))
+        for item_index, item_table in enumerate(values.get("items", [])):
+            item = self.item(item_table, page_index, item_index)
+            if item is None:
+                continue
+            if item.id in seen_items:
+                self.add(self.lines.item_line(page_index, item_index), f'item "{item.id}"',
+                         f'this id is already used on page "{seen_items[item.id]}"',
+                         "give every item its own id")
+                continue
+            seen_items[item.id] = page.id
+            page.items.append(item)
+        return page
+
+    def background(self, table: dict, label: str, line: int | None) -> Background | None:
+        values = self.check_table(table, BACKGROUND_KEYS, label + " background", line)
+        if "color" in values and "picture" in values:
+            self.add(line, label, "a background is a colour or a picture, not both",
+                     "remove one of them")
+        if "picture" in values:
+            self.check_picture(values["picture"], label + " background", line)
+        return Background(color=values.get("color"), picture=values.get("picture"))
+
+    def check_picture(self, relative: str, where: str, line: int | None) -> None:
+        picture = self.path.parent / relative
+        if not picture.is_file():
+            self.add(line, where, f'picture file "{relative}" not found',
+                     f"paths are relative to {self.path.parent}; fix the path or copy the file there")
+
+    def item(self, table: dict, page_index: int, item_index: int):
+        line = self.lines.item_line(page_index, item_index)
+        label = f'item "{table["id"]}"' if isinstance(table.get("id"), str) else \
+            f"item {item_index + 1} of page {page_index + 1}"
+        kind = table.get("kind")
+        if kind not in ITEM_KINDS:
+            if isinstance(kind, str):
+                close = difflib.get_close_matches(kind, ITEM_KINDS, n=1, cutoff=0.5)
+                hint = (f'did you mean "{close[0]}"? ' if close else "") + "kinds: " + ", ".join(ITEM_KINDS)
+                self.add(self.lines.key_line(line, "kind"), label, f'unknown item kind "{kind}"', hint)
+                return None
+            keys = COMMON_ITEM_KEYS
+        else:
+            keys = COMMON_ITEM_KEYS + KIND_KEYS[kind]
+        values = self.check_table(table, keys, label, line)
+        if kind not in ITEM_KINDS or not {"id", "x", "y", "w", "h"} <= values.keys():
+            return None
+        anchor_table = values.pop("anchor", None)
+        values.pop("kind")
+        for key in ("x", "y", "w", "h", "opacity"):
+            if key in values:
+                values[key] = float(values[key])
+        item = ITEM_CLASSES[kind](**values)
+        if anchor_table is not None:
+            item.anchor = self.anchor(anchor_table, label, self.lines.key_line(line, "anchor"))
+        if kind == "picture":
+            self.check_picture(item.path, label, self.lines.key_line(line, "path"))
+        return item
+
+    def anchor(self, table: dict, label: str, line: int | None):
+        if "to" in table:
+            values = self.check_table(table, ITEM_ANCHOR_KEYS, label + " anchor", line)
+            if "to" not in values:
+                return None
+            return ItemAnchor(to=values["to"], dx=float(values.get("dx", 0.0)),
+                              dy=float(values.get("dy", 0.0)))
+        values = self.check_table(table, POINT_ANCHOR_KEYS, label + " anchor", line)
+        if not {"x", "y"} <= values.keys():
+            if not self.problems or "anchor" not in self.problems[-1].where:
+                self.add(line, label, "an anchor needs either x and y (a page point) or to (an item id)")
+            return None
+        return PointAnchor(x=float(values["x"]), y=float(values["y"]),
+                           gamma=float(values.get("gamma", 1.0)), hard=values.get("hard", False))
+
+    def check_anchors(self, page: Page, page_index: int) -> None:
+        """Item anchors must name an item on the same page and must not form a cycle."""
+        follows = {item.id: item.anchor.to for item in page.items if isinstance(item.anchor, ItemAnchor)}
+        ids = set(page.item_ids())
+        item_lines = {item.id: self.lines.item_line(page_index, i) for i, item in enumerate(page.items)}
+        for follower, target in follows.items():
+            where = f'item "{follower}"'
+            line = self.lines.key_line(item_lines[follower], "anchor")
+            if target == follower:
+                self.add(line, where, "is anchored to itself", "anchor it to another item or to a point")
+            elif target not in ids:
+                close = difflib.get_close_matches(target, sorted(ids), n=1, cutoff=0.6)
+                hint = f'did you mean "{close[0]}"?' if close else \
+                    "anchor to an item id on the same page"
+                self.add(line, where, f'is anchored to "{target}", which is not on page "{page.id}"', hint)
+        reported: set[str] = set()
+        for start in follows:
+            chain = [start]
+            while chain[-1] in follows and follows[chain[-1]] in ids:
+                nxt = follows[chain[-1]]
+                if nxt in chain:
+                    cycle = chain[chain.index(nxt):] + [nxt]
+                    if not reported & set(cycle) and len(cycle) > 2:
+                        self.add(self.lines.key_line(item_lines[nxt], "anchor"), f'item "{nxt}"',
+                                 "item anchors form a cycle: " + " -> ".join(cycle),
+                                 "remove the anchor from one of these items")
+                    reported |= set(cycle)
+                    break
+                chain.append(nxt)
+
+
+def describe(value: Any) -> str:
+    if isinstance(value, bool):
+        return f"the boolean {str(value).lower()}"
+    if isinstance(value, str):
+        return f'the string "{value}"'
+    if isinstance(value, (int, float)):
+        return f"the number {value}"
+    if isinstance(value, dict):
+        return "a table"
+    if isinstance(value, list):
+        return "an array"
+    return type(value).__name__

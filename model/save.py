@@ -1,0 +1,248 @@
+"""Write a project back to TOML: stable key order, 0.01 mm rounding, comments kept, atomic.
+
+Saving edits the tomlkit document the project was read from, touching only
+values that changed, so an unchanged project saves byte-identical and a
+user's comments survive. The file is replaced atomically, and the previous
+version is kept beside it as `NAME.bak`.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import tempfile
+from dataclasses import fields
+from pathlib import Path
+from typing import Any
+
+import tomlkit
+from tomlkit.items import AoT, Table
+
+from model.document import (
+    Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
+)
+from model.errors import FloatpageError
+from model.page_sizes import CUSTOM
+
+Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
+
+
+def mm(value: float) -> float:
+    """Lengths are stored to 0.01 mm: enough for print, short enough to diff."""
+    return round(float(value), 2) + 0.0  # + 0.0 turns -0.0 into 0.0
+
+
+def same(a: Any, b: Any) -> bool:
+    if isinstance(a, bool) or isinstance(b, bool):
+        return a is b or a == b and type(a) is type(b)
+    if isinstance(a, (int, float)) and isinstance(b, (int, float)):
+        return abs(float(a) - float(b)) < 0.005
+    if isinstance(a, dict) and isinstance(b, dict):
+        return a.keys() == b.keys() and all(same(a[k], b[k]) for k in a)
+    return a == b
+
+
+def physics_pairs(settings: PhysicsSettings) -> Pairs:
+    defaults = PhysicsSettings()
+    return [(f.name, getattr(settings, f.name), getattr(defaults, f.name))
+            for f in fields(PhysicsSettings)]
+
+
+def page_pairs(page: Page) -> Pairs:
+    custom = page.size == CUSTOM
+    return [
+        ("id", page.id, None),
+        ("size", page.size, "A4"),
+        ("orientation", None if custom else page.orientation, "portrait"),
+        ("width_mm", mm(page.width_mm) if custom else None, None),
+        ("height_mm", mm(page.height_mm) if custom else None, None),
+        ("background", background_value(page.background), None),
+    ]
+
+
+def background_value(background: Background | None) -> dict | None:
+    if background is None:
+        return None
+    if background.picture:
+        return {"picture": background.picture}
+    if background.color:
+        return {"color": background.color}
+    return None
+
+
+def anchor_value(anchor) -> dict | None:
+    if isinstance(anchor, PointAnchor):
+        value = {"x": mm(anchor.x), "y": mm(anchor.y), "gamma": float(anchor.gamma)}
+        if anchor.hard:
+            value["hard"] = True
+        return value
+    if isinstance(anchor, ItemAnchor):
+        return {"to": anchor.to, "dx": mm(anchor.dx), "dy": mm(anchor.dy)}
+    return None
+
+
+def item_pairs(item) -> Pairs:
+    """The item's keys in the order a person reads them: who, where, what, then the anchor."""
+    pairs: Pairs = [("id", item.id, None), ("kind", item.kind, None)]
+    pairs += [(name, mm(getattr(item, name)), None) for name in ("x", "y", "w", "h")]
+    pairs += [("z", item.z, 0), ("decorative", item.decorative, False)]
+    base_names = {"id", "x", "y", "w", "h", "z", "decorative", "anchor", "source_document"}
+    defaults = type(item)(id="", x=0.0, y=0.0, w=1.0, h=1.0)
+    for f in fields(item):
+        if f.name not in base_names:
+            pairs.append((f.name, getattr(item, f.name), getattr(defaults, f.name)))
+    pairs.append(("anchor", anchor_value(item.anchor), None))
+    return pairs
+
+
+def inline(value: Any) -> Any:
+    if isinstance(value, dict):
+        table = tomlkit.inline_table()
+        table.update(value)
+        return table
+    return value
+
+
+def sync_table(table: Table, pairs: Pairs) -> None:
+    """Make `table` hold `pairs`, changing only what differs, so comments and order survive."""
+    wanted = {key for key, value, _ in pairs if value is not None}
+    for key in [k for k in table if k not in wanted and k != "items"]:
+        del table[key]
+    for key, value, default in pairs:
+        if value is None:
+            continue
+        if key in table:
+            current = table[key]
+            current = current.unwrap() if hasattr(current, "unwrap") else current
+            if not same(current, value):
+                table[key] = inline(value)
+        elif default is None or not same(value, default):
+            table[key] = inline(value)
+
+
+def new_table(pairs: Pairs) -> Table:
+    table = tomlkit.table()
+    for key, value, _ in pairs:
+        if value is not None:
+            table[key] = inline(value)
+    return table
+
+
+def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=None) -> None:
+    """Sync an array of tables by id: keep existing tables (and their comments), add new ones."""
+    existing = parent.get(key)
+    by_id: dict[str, Table] = {}
+    if isinstance(existing, AoT):
+        for table in existing:
+            by_id.setdefault(str(table.get("id")), table)
+    tables = []
+    for record in records:
+        table = by_id.get(id_of(record))
+        if table is None:
+            table = new_table(pairs_of(record))
+        else:
+            sync_table(table, pairs_of(record))
+        if fill is not None:
+            fill(table, record)
+        tables.append(table)
+    unchanged = isinstance(existing, AoT) and len(existing) == len(tables) and all(
+        a is b for a, b in zip(existing, tables))
+    if unchanged:
+        return
+    if not tables:
+        if key in parent:
+            del parent[key]
+        return
+    array = tomlkit.aot()
+    for table in tables:
+        array.append(table)
+    parent[key] = array
+
+
+def to_document(project: Project) -> tomlkit.TOMLDocument:
+    """The project as a tomlkit document: its source document, edited, or a fresh one."""
+    doc = project.source_document
+    if doc is None:
+        doc = tomlkit.document()
+        doc.add(tomlkit.comment("floatpage project: items float on each page; units are mm,"))
+        doc.add(tomlkit.comment("x and y are item centres measured from the page's top-left corner."))
+    top: Pairs = [("format", project.format, None), ("title", project.title, ""),
+                  ("language", project.language, "en")]
+    for key, value, default in top:
+        if key in doc:
+            if not same(doc[key].unwrap() if hasattr(doc[key], "unwrap") else doc[key], value):
+                doc[key] = value
+        elif default is None or not same(value, default) or project.source_document is None:
+            doc[key] = value
+    if "physics" in doc:
+        sync_table(doc["physics"], physics_pairs(project.physics))
+    else:
+        doc["physics"] = new_table(physics_pairs(project.physics))
+
+    def fill_page(table: Table, page: Page) -> None:
+        sync_array(table, "items", page.items, item_pairs, lambda item: item.id)
+
+    sync_array(doc, "pages", project.pages, page_pairs, lambda page: page.id, fill_page)
+    return doc
+
+
+def dump_project(project: Project) -> str:
+    return tomlkit.dumps(to_document(project))
+
+
+def write_chunks(handle, data: bytes, chunk: int = 1 << 16) -> None:
+    """Write in chunks; a separate function so a test can interrupt a save midway."""
+    for start in range(0, len(data), chunk):
+        handle.write(data[start:start + chunk])
+
+
+def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
+    """Replace `path` with `data` so that a crash at any moment leaves the old or the new file.
+
+    Write a temporary file in the same folder, flush and fsync it, copy the old
+    version to NAME.bak, then rename over the original (atomic on POSIX).
+    """
+    path = Path(path)
+    folder = path.parent if str(path.parent) else Path(".")
+    fd, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".floatpage-tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            write_chunks(handle, data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        if path.exists():
+            os.chmod(temporary, path.stat().st_mode & 0o777)
+            if backup:
+                backup_path = path.with_name(path.name + ".bak")
+                shutil.copy2(path, temporary + ".bak")
+                os.replace(temporary + ".bak", backup_path)
+        os.replace(temporary, path)
+        try:
+            dir_fd = os.open(folder, os.O_RDONLY)
+            try:
+                os.fsync(dir_fd)
+            finally:
+                os.close(dir_fd)
+        except OSError:
+            pass
+    except OSError as error:
+        for leftover in (temporary, temporary + ".bak"):
+            try:
+                os.unlink(leftover)
+            except OSError:
+                pass
+        raise FloatpageError(f"{path}: could not save: {error.strerror or error}"
+                             " (check that the folder exists and is writable)") from None
+
+
+def save_project(project: Project, path: str | Path | None = None) -> Path:
+    """Save atomically to `path` (default: where it was loaded from) and remember the new path."""
+    target = Path(path) if path is not None else project.path
+    if target is None:
+        raise FloatpageError("the project has no file name yet (save it with a path)")
+    doc = to_document(project)
+    atomic_write(target, tomlkit.dumps(doc).encode("utf-8"))
+    project.source_document = doc
+    project.path = target
+    return target
+

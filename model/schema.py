@@ -1,0 +1,163 @@
+"""What each table of a project file may hold: key, type, range and the advice to give.
+
+The loader walks a parsed file against these specs and reports every problem
+at once, so a user fixes a file in one pass rather than one error per run.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Any, Callable
+
+from model.document import WEEKDAYS
+
+HEX_COLOUR = re.compile(r"^#[0-9a-fA-F]{6}$")
+CALENDAR_LANGUAGES = ("en", "de", "fr", "es", "it", "pt", "nl")
+FONT_FAMILIES = ("serif", "sans", "display")
+
+Check = Callable[[Any], "str | None"]
+
+
+@dataclass(frozen=True)
+class Key:
+    """One allowed key: its TOML type, whether it must be present, and a value check."""
+
+    name: str
+    kind: str  # "int", "number", "bool", "str", "table"
+    required: bool = False
+    check: Check | None = None
+
+
+def type_matches(kind: str, value: Any) -> bool:
+    """TOML-level type test; bools are not numbers here, although Python says they are ints."""
+    if kind == "bool":
+        return isinstance(value, bool)
+    if isinstance(value, bool):
+        return False
+    if kind == "int":
+        return isinstance(value, int)
+    if kind == "number":
+        return isinstance(value, (int, float))
+    if kind == "str":
+        return isinstance(value, str)
+    if kind == "table":
+        return isinstance(value, dict)
+    raise ValueError(kind)
+
+
+TYPE_WORDS = {"int": "a whole number", "number": "a number", "bool": "true or false",
+              "str": "a quoted string", "table": "a table"}
+
+
+def finite(value: float) -> str | None:
+    return None if math.isfinite(value) else "must be a finite number"
+
+
+def positive(value: float) -> str | None:
+    return finite(value) or (None if value > 0 else "must be greater than 0")
+
+
+def non_negative(value: float) -> str | None:
+    return finite(value) or (None if value >= 0 else "must not be negative")
+
+
+def between(low: float, high: float) -> Check:
+    def check(value: float) -> str | None:
+        return finite(value) or (None if low <= value <= high else f"must be between {low} and {high}")
+    return check
+
+
+def one_of(*choices: str) -> Check:
+    def check(value: str) -> str | None:
+        return None if value in choices else "must be one of " + ", ".join(f'"{c}"' for c in choices)
+    return check
+
+
+def colour(value: str) -> str | None:
+    return None if HEX_COLOUR.match(value) else 'must be a colour written as "#rrggbb", e.g. "#1f77b4"'
+
+
+def item_id(value: str) -> str | None:
+    if re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}", value):
+        return None
+    return "must be 1-64 letters, digits, '-', '_' or '.', starting with a letter or digit"
+
+
+TOP_KEYS = [
+    Key("format", "int", required=True),
+    Key("title", "str"),
+    Key("language", "str", check=one_of(*CALENDAR_LANGUAGES)),
+    Key("physics", "table"),
+    Key("pages", "array", required=True),
+]
+
+PHYSICS_KEYS = [
+    Key("mode", "str", check=one_of("fast", "paper")),
+    Key("alpha", "number", check=positive),
+    Key("beta", "number", check=non_negative),
+    Key("delta", "number", check=between(0.0, 1.0)),
+    Key("dt", "number", check=positive),
+    Key("steps_per_frame", "int", check=positive),
+    Key("distance", "str", check=one_of("euclidean", "axis")),
+    Key("heat_decay", "number", check=between(0.0, 0.5)),
+    Key("gutter_mm", "number", check=between(0.0, 100.0)),
+    Key("seed", "int"),
+]
+
+PAGE_KEYS = [
+    Key("id", "str", required=True, check=item_id),
+    Key("size", "str"),
+    Key("orientation", "str", check=one_of("portrait", "landscape")),
+    Key("width_mm", "number", check=between(10.0, 5000.0)),
+    Key("height_mm", "number", check=between(10.0, 5000.0)),
+    Key("background", "table"),
+    Key("items", "array"),
+]
+
+BACKGROUND_KEYS = [Key("color", "str", check=colour), Key("picture", "str")]
+
+COMMON_ITEM_KEYS = [
+    Key("id", "str", required=True, check=item_id),
+    Key("kind", "str", required=True),
+    Key("x", "number", required=True, check=finite),
+    Key("y", "number", required=True, check=finite),
+    Key("w", "number", required=True, check=positive),
+    Key("h", "number", required=True, check=positive),
+    Key("z", "int"),
+    Key("decorative", "bool"),
+    Key("anchor", "table"),
+]
+
+KIND_KEYS = {
+    "text": [
+        Key("text", "str"),
+        Key("font", "str", check=one_of(*FONT_FAMILIES)),
+        Key("color", "str", check=colour),
+        Key("bold", "bool"),
+        Key("italic", "bool"),
+    ],
+    "picture": [Key("path", "str", required=True), Key("lock_aspect", "bool")],
+    "block": [Key("color", "str", check=colour), Key("opacity", "number", check=between(0.0, 1.0))],
+    "calendar": [
+        Key("year", "int", check=between(1, 9999)),
+        Key("month", "int", check=between(1, 12)),
+        Key("first_weekday", "str", check=one_of(*WEEKDAYS)),
+        Key("language", "str", check=one_of(*CALENDAR_LANGUAGES)),
+        Key("font", "str", check=one_of(*FONT_FAMILIES)),
+        Key("color", "str", check=colour),
+    ],
+}
+
+POINT_ANCHOR_KEYS = [
+    Key("x", "number", required=True, check=finite),
+    Key("y", "number", required=True, check=finite),
+    Key("gamma", "number", check=between(0.0, 1.0)),
+    Key("hard", "bool"),
+]
+ITEM_ANCHOR_KEYS = [
+    Key("to", "str", required=True),
+    Key("dx", "number", check=finite),
+    Key("dy", "number", check=finite),
+]
