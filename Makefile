@@ -1,0 +1,23 @@
+# The README's two commands: `make run` opens the editor on a sample project,
+# `make test` runs the full suite. Both set up everything first (tools/setup.sh).
+SAMPLE ?= sample_projects/greeting-card/greeting-card.toml
+PYTEST_ARGS ?=
+
+.PHONY: run test setup benchmarks clean
+
+setup:
+	@bash tools/setup.sh
+
+run: setup
+	.venv/bin/floatpage edit $(SAMPLE)
+
+test: setup
+	.venv/bin/python -m pytest $(PYTEST_ARGS)
+
+benchmarks: setup
+	.venv/bin/python benchmarks/physics.py
+	.venv/bin/python benchmarks/render.py
+	.venv/bin/python benchmarks/editor.py
+
+clean:
+	rm -rf .venv .pytest_cache build *.egg-info

@@ -1,0 +1,213 @@
+"""`floatpage`: the command line, for people and for Makefiles.
+
+Arguments are parsed here and nowhere else. One error boundary turns every
+user-fixable error (a `FloatpageError`) into a short message and exit code 1;
+misuse of the command line exits 2 (argparse's convention). Progress goes to
+stderr only when stderr is a terminal, so pipes and CI logs stay quiet.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+from typing import Callable, Sequence
+
+from model.errors import FloatpageError
+
+EXIT_OK, EXIT_USER_ERROR, EXIT_MISUSE = 0, 1, 2
+STARTER_KINDS = ("blank", "calendar", "card", "album", "flyer")
+WEEKDAY_NAMES = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
+
+
+def progress_printer(quiet: bool) -> Callable[[str], None]:
+    """Report progress on a terminal, stay silent in a pipe."""
+    if quiet or not sys.stderr.isatty():
+        return lambda message: None
+
+    def show(message: str) -> None:
+        print(f"\r\033[K{message}", end="", file=sys.stderr, flush=True)
+    return show
+
+
+def finish_progress(show: Callable[[str], None]) -> None:
+    if sys.stderr.isatty():
+        print("\r\033[K", end="", file=sys.stderr, flush=True)
+
+
+def cmd_new(args: argparse.Namespace) -> int:
+    import starters
+
+    project = starters.create(
+        args.kind, Path(args.path), year=args.year,
+        photos=Path(args.photos) if args.photos else None,
+        first_weekday=args.first_weekday, lang=args.lang, orientation=args.orientation,
+    )
+    items = sum(len(page.items) for page in project.pages)
+    print(f"created {project.path}: {len(project.pages)} page(s), {items} item(s)")
+    print(f"next: floatpage edit {project.path}")
+    return EXIT_OK
+
+
+def cmd_edit(args: argparse.Namespace) -> int:
+    from model import load_project
+
+    load_project(args.path)  # fail here, with a clear message, before the screen is taken over
+    from tui.app import make_app
+
+    make_app(Path(args.path), seed=args.seed).run()
+    return EXIT_OK
+
+
+def cmd_settle(args: argparse.Namespace) -> int:
+    from model import load_project, save_project
+    from model.layout import settle_project
+
+    project = load_project(args.path)
+    show = progress_printer(args.quiet)
+    show(f"settling {len(project.pages)} page(s)…")
+    started = time.perf_counter()
+    reports = settle_project(project)
+    elapsed = time.perf_counter() - started
+    finish_progress(show)
+    for page, report in zip(project.pages, reports):
+        state = "settled" if report.settled else "NOT settled (stopped at the step limit)"
+        print(f"page {page.id}: {state} after {report.steps} steps, final energy {report.energy:.3g}")
+    steps = sum(report.steps for report in reports)
+    print(f"{steps} steps in {elapsed:.2f} s")
+    if not args.dry_run:
+        save_project(project)
+        print(f"wrote positions to {project.path}")
+    return EXIT_OK
+
+
+def cmd_render(args: argparse.Namespace) -> int:
+    from model import load_project
+    from model.layout import settle_project
+    from typeset import render_pdf
+
+    project = load_project(args.path)
+    show = progress_printer(args.quiet)
+    if not args.no_settle:
+        show("settling the layout…")
+        settle_project(project)
+    out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
+    report = render_pdf(project, out, tex_out=Path(args.tex) if args.tex else None,
+                        fragment_out=Path(args.fragment) if args.fragment else None,
+                        progress=show)
+    finish_progress(show)
+    for warning in report.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    print(f"wrote {report.pdf} ({report.pages} page(s), {report.seconds:.2f} s)")
+    return EXIT_OK
+
+
+def cmd_check(args: argparse.Namespace) -> int:
+    from model import load_project
+
+    project = load_project(args.path)
+    from model.layout import engine_for_page
+
+    print(f"{args.path}: valid project, {len(project.pages)} page(s)")
+    issues = 0
+    for page in project.pages:
+        quality = engine_for_page(page, project.physics).quality()
+        print(f"page {page.id}: {quality.summary()}")
+        issues += len(quality.overlapping_pairs) + len(quality.off_page)
+    try:
+        from typeset import text_fit_warnings
+    except ImportError:  # pragma: no cover - typesetting is part of the package
+        text_fit_warnings = None
+    if text_fit_warnings is not None:
+        for warning in text_fit_warnings(project):
+            print(f"warning: {warning}")
+            issues += 1
+    if issues and args.strict:
+        print(f"{issues} layout problem(s); run `floatpage settle {args.path}` to fix overlaps")
+        return EXIT_USER_ERROR
+    return EXIT_OK
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="floatpage",
+        description="Free-form pages whose items arrange themselves by physics, typeset by LaTeX.",
+    )
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    new = commands.add_parser("new", help="start a project from a starter",
+                              description="Create a new project file from a starter.")
+    new.add_argument("kind", choices=STARTER_KINDS, help="what to start")
+    new.add_argument("path", help="the .toml file to create (refuses to overwrite)")
+    new.add_argument("--year", type=int, help="calendar year (default: next year)")
+    new.add_argument("--photos", metavar="DIR", help="use the pictures in DIR")
+    new.add_argument("--first-weekday", choices=WEEKDAY_NAMES, default="monday")
+    new.add_argument("--lang", default="en", help="language of month and day names (en, de, fr, es, it, pt, nl)")
+    new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait")
+    new.set_defaults(run=cmd_new)
+
+    edit = commands.add_parser("edit", help="open the editor", description="Open the terminal editor.")
+    edit.add_argument("path")
+    edit.add_argument("--seed", type=int, default=0, help=argparse.SUPPRESS)
+    edit.set_defaults(run=cmd_edit)
+
+    settle = commands.add_parser("settle", help="run the physics until the layout settles",
+                                 description="Run the physics headless until every page settles, "
+                                             "then write the positions back.")
+    settle.add_argument("path")
+    settle.add_argument("--dry-run", action="store_true", help="report only; do not write the file")
+    settle.add_argument("-q", "--quiet", action="store_true", help="no progress output")
+    settle.set_defaults(run=cmd_settle)
+
+    render = commands.add_parser("render", help="typeset the project to PDF",
+                                 description="Settle the layout and typeset it to PDF with LaTeX.")
+    render.add_argument("path")
+    render.add_argument("-o", "--output", metavar="OUT.pdf", help="default: the project's name with .pdf")
+    render.add_argument("--tex", metavar="OUT.tex", help="also keep the standalone .tex")
+    render.add_argument("--fragment", metavar="OUT.tex", help="also write a TikZ-only fragment for \\input")
+    render.add_argument("--no-settle", action="store_true", help="render the positions as saved")
+    render.add_argument("-q", "--quiet", action="store_true", help="no progress output")
+    render.set_defaults(run=cmd_render)
+
+    check = commands.add_parser("check", help="validate and report layout quality",
+                                description="Validate a project file and report overlaps, items off "
+                                            "the page and text that would not fit.")
+    check.add_argument("path")
+    check.add_argument("--strict", action="store_true", help="exit 1 when the layout has problems")
+    check.set_defaults(run=cmd_check)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        return args.run(args)
+    except FloatpageError as error:
+        print(f"floatpage: {error}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except KeyboardInterrupt:
+        print("floatpage: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        return EXIT_OK
+    except Exception as error:  # a bug of ours: keep the details, show a short message
+        log = write_crash_log()
+        print(f"floatpage: internal error: {type(error).__name__}: {error}\n"
+              f"  this is a bug in floatpage, not in your project; details are in {log}",
+              file=sys.stderr)
+        return EXIT_USER_ERROR
+
+
+def write_crash_log() -> Path:
+    import tempfile
+    import traceback
+
+    handle = tempfile.NamedTemporaryFile("w", prefix="floatpage-crash-", suffix=".log", delete=False)
+    with handle:
+        traceback.print_exc(file=handle)
+    return Path(handle.name)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Set up everything floatpage needs on a fresh Debian machine, idempotently:
+# TeX Live and poppler from Debian's packages (only those missing), then a
+# virtual environment with the Python packages. Safe to run again: it skips
+# what is already there.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+DEBIAN_PACKAGES=(
+  texlive-latex-base texlive-latex-recommended texlive-latex-extra
+  texlive-luatex texlive-xetex texlive-fonts-recommended texlive-fonts-extra
+  lmodern fonts-texgyre poppler-utils
+)
+
+missing=()
+if command -v dpkg-query >/dev/null 2>&1; then
+  for package in "${DEBIAN_PACKAGES[@]}"; do
+    status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
+    [[ "$status" == "install ok installed" ]] || missing+=("$package")
+  done
+fi
+
+if ((${#missing[@]})); then
+  command=(apt-get install -y --no-install-recommends "${missing[@]}")
+  if [[ $(id -u) -eq 0 ]]; then
+    echo "setup: installing from Debian's packages: ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    "${command[@]}" -qq >/dev/null
+  else
+    echo "setup: TeX Live is missing. Run this as root, then run make again:" >&2
+    echo "  sudo apt-get update && sudo ${command[*]}" >&2
+    exit 1
+  fi
+fi
+
+PYTHON=${PYTHON:-python3}
+if [[ ! -x .venv/bin/python ]]; then
+  echo "setup: creating .venv with $($PYTHON --version)"
+  "$PYTHON" -m venv .venv
+fi
+stamp=.venv/.floatpage-installed
+if [[ ! -f $stamp || pyproject.toml -nt $stamp ]]; then
+  echo "setup: installing Python packages into .venv"
+  .venv/bin/python -m pip install -q --upgrade pip
+  .venv/bin/python -m pip install -q -e '.[test]'
+  touch "$stamp"
+fi
