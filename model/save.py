@@ -204,8 +204,9 @@ def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
     """
     path = Path(path)
     folder = path.parent if str(path.parent) else Path(".")
-    fd, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".floatpage-tmp", dir=folder)
+    temporary = ""
     try:
+        fd, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".floatpage-tmp", dir=folder)
         with os.fdopen(fd, "wb") as handle:
             write_chunks(handle, data)
             handle.flush()
@@ -226,7 +227,7 @@ def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
         except OSError:
             pass
     except OSError as error:
-        for leftover in (temporary, temporary + ".bak"):
+        for leftover in (temporary, temporary + ".bak") if temporary else ():
             try:
                 os.unlink(leftover)
             except OSError:

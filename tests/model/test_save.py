@@ -1,0 +1,189 @@
+"""Saving: byte-identical round trips, comments that survive, and saves a crash cannot break."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from model import (
+    BlockItem, CalendarItem, ItemAnchor, Page, PointAnchor, Project, TextItem, dump_project,
+    load_project, save_project,
+)
+from model.page_sizes import page_dimensions
+
+ROOT = Path(__file__).resolve().parents[2]
+SAMPLES = sorted((ROOT / "sample_projects").glob("**/*.toml"))
+
+HAND_WRITTEN = textwrap.dedent("""\
+    # My card. I keep notes here.
+    format = 1
+    title = "Birthday"   # for Ana
+
+    [physics]
+    alpha = 150 # the paper's value
+
+    [[pages]]
+    id = "front"
+    size = "5x8in"
+
+    # the big photo
+    [[pages.items]]
+    id = "photo"
+    kind = "block"
+    x = 60
+    y = 70.5
+    w = 80
+    h = 60
+    color = "#ff8800"
+""")
+
+
+def test_there_are_sample_projects():
+    assert SAMPLES, "sample_projects/ should hold at least one project"
+
+
+@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.parent.name)
+def test_every_sample_round_trips_byte_identical(path, tmp_path):
+    copy = tmp_path / path.name
+    copy.write_bytes(path.read_bytes())
+    for picture_dir in path.parent.iterdir():
+        if picture_dir.is_dir():
+            (tmp_path / picture_dir.name).symlink_to(picture_dir)
+    save_project(load_project(copy))
+    assert copy.read_bytes() == path.read_bytes()
+
+
+def test_a_hand_written_file_with_comments_saves_unchanged(tmp_path):
+    path = tmp_path / "card.toml"
+    path.write_text(HAND_WRITTEN)
+    save_project(load_project(path))
+    assert path.read_text() == HAND_WRITTEN
+
+
+def test_an_edit_changes_only_its_line_and_keeps_comments(tmp_path):
+    path = tmp_path / "card.toml"
+    path.write_text(HAND_WRITTEN)
+    project = load_project(path)
+    project.pages[0].items[0].x = 61.23456
+    save_project(project)
+    expected = HAND_WRITTEN.replace("x = 60\n", "x = 61.23\n")
+    assert path.read_text() == expected
+
+
+def test_adding_and_removing_items_keeps_the_rest(tmp_path):
+    path = tmp_path / "card.toml"
+    path.write_text(HAND_WRITTEN)
+    project = load_project(path)
+    project.pages[0].items.append(TextItem(id="greeting", x=60, y=150, w=100, h=30, text="Hi!"))
+    save_project(project)
+    text = path.read_text()
+    assert "# the big photo" in text and 'id = "greeting"' in text
+    project = load_project(path)
+    del project.pages[0].items[0]
+    save_project(project)
+    reloaded = load_project(path)
+    assert [item.id for item in reloaded.pages[0].items] == ["greeting"]
+    assert "# My card. I keep notes here." in path.read_text()
+
+
+def test_save_keeps_the_previous_version_as_backup(tmp_path):
+    path = tmp_path / "card.toml"
+    path.write_text(HAND_WRITTEN)
+    project = load_project(path)
+    project.title = "Changed"
+    save_project(project)
+    assert (tmp_path / "card.toml.bak").read_text() == HAND_WRITTEN
+    assert 'title = "Changed"' in path.read_text()
+
+
+def test_a_save_killed_midway_leaves_the_old_file_intact(tmp_path):
+    """A subprocess starts saving a large project, writes half, and is killed with SIGKILL."""
+    path = tmp_path / "big.toml"
+    project = Project(pages=[Page(id="p", items=[
+        TextItem(id=f"t{i}", x=10.0 + i % 100, y=20.0, w=5.0, h=5.0, text="x" * 200) for i in range(3000)
+    ])])
+    save_project(project, path)
+    original = path.read_bytes()
+    script = textwrap.dedent(f"""
+        import sys, time
+        import model.save as save
+        from model import load_project, save_project
+        project = load_project({str(path)!r})
+        project.title = "half-written"
+        def slow_write(handle, data, chunk=1 << 12):
+            handle.write(data[: len(data) // 2])
+            handle.flush()
+            print("half", flush=True)
+            time.sleep(60)
+        save.write_chunks = slow_write
+        save_project(project)
+    """)
+    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True,
+                               cwd=ROOT)
+    try:
+        assert process.stdout.readline().strip() == "half"
+        os.kill(process.pid, signal.SIGKILL)
+    finally:
+        process.wait(timeout=30)
+    assert process.returncode == -signal.SIGKILL
+    assert path.read_bytes() == original
+    assert len(load_project(path).pages[0].items) == 3000
+
+
+def test_saving_into_a_missing_folder_is_a_clear_error(tmp_path):
+    from model import FloatpageError
+
+    project = Project(pages=[Page(id="p")])
+    with pytest.raises(FloatpageError, match="could not save"):
+        save_project(project, tmp_path / "no" / "such" / "dir.toml")
+
+
+ids = st.from_regex(r"[a-z][a-z0-9-]{0,8}", fullmatch=True)
+coords = st.floats(min_value=-500, max_value=500, allow_nan=False)
+sizes = st.floats(min_value=0.5, max_value=400, allow_nan=False)
+
+
+@st.composite
+def projects(draw):
+    item_ids = draw(st.lists(ids, min_size=1, max_size=6, unique=True))
+    items = []
+    for index, item_id in enumerate(item_ids):
+        kind = draw(st.sampled_from(["text", "block", "calendar"]))
+        common = dict(id=item_id, x=draw(coords), y=draw(coords), w=draw(sizes), h=draw(sizes),
+                      z=draw(st.integers(-5, 5)), decorative=draw(st.booleans()))
+        if kind == "text":
+            item = TextItem(**common, text=draw(st.text(max_size=40)), bold=draw(st.booleans()))
+        elif kind == "block":
+            item = BlockItem(**common, opacity=draw(st.floats(0, 1)))
+        else:
+            item = CalendarItem(**common, year=draw(st.integers(1, 9999)), month=draw(st.integers(1, 12)))
+        if index and draw(st.booleans()):
+            item.anchor = ItemAnchor(to=item_ids[0], dx=draw(coords), dy=draw(coords))
+        elif draw(st.booleans()):
+            item.anchor = PointAnchor(x=draw(coords), y=draw(coords), gamma=draw(st.floats(0, 1)))
+        items.append(item)
+    size, orientation = draw(st.sampled_from(["A4", "A5", "5x8in", "Letter"])), draw(
+        st.sampled_from(["portrait", "landscape"]))
+    width, height = page_dimensions(size, orientation)
+    return Project(title=draw(st.text(max_size=20)), pages=[
+        Page(id="p1", size=size, orientation=orientation, width_mm=width, height_mm=height, items=items)])
+
+
+@settings(max_examples=60, deadline=None)
+@given(projects())
+def test_any_project_survives_dump_load_dump(tmp_path_factory, project):
+    path = tmp_path_factory.mktemp("rt") / "p.toml"
+    first = dump_project(project)
+    path.write_text(first)
+    loaded = load_project(path)
+    assert dump_project(loaded) == first
+    for before, after in zip(project.pages[0].items, loaded.pages[0].items):
+        assert abs(before.x - after.x) <= 0.005 and abs(before.w - after.w) <= 0.005
+        assert type(before) is type(after) and before.id == after.id
