@@ -1,0 +1,101 @@
+"""The paper's case study (section 6.1): a twelve-month calendar, one page per month.
+
+Each page holds the month's panel, a title and the photos, which the physics spreads. The
+title and the panel are anchored to their places by soft springs (section 4.5), so the photos
+flow around them instead of pushing the month off its spot; the user can still drag them.
+"""
+
+from __future__ import annotations
+
+import math
+
+from model.document import Background, CalendarItem, PictureItem, PointAnchor, Project, TextItem
+from starters.options import Options
+from starters.pictures import Picture
+from starters.placement import Region, grid, new_page
+from starters.words import month_name
+
+PAGE_SIZE = "A4"
+MARGIN_MM = 14.0
+MAX_PHOTOS_PER_MONTH = 4
+MONTH_IDS = ("jan", "feb", "mar", "apr", "may", "jun", "jul", "aug", "sep", "oct", "nov", "dec")
+
+# Two bundled pictures per month, chosen by season: the first is the month's lead picture.
+BUNDLED_BY_MONTH = (
+    ("winter-pines.jpg", "night-sky.jpg"),
+    ("alpine-dawn.jpg", "winter-pines.jpg"),
+    ("tulips.jpg", "rolling-hills.jpg"),
+    ("daisy-meadow.jpg", "tulips.jpg"),
+    ("rolling-hills.jpg", "daisy-meadow.jpg"),
+    ("seaside.jpg", "sunflower.jpg"),
+    ("lake-sunset.jpg", "seaside.jpg"),
+    ("sunflower.jpg", "lake-sunset.jpg"),
+    ("autumn-forest.jpg", "rolling-hills.jpg"),
+    ("autumn-forest.jpg", "alpine-dawn.jpg"),
+    ("lake-sunset.jpg", "autumn-forest.jpg"),
+    ("night-sky.jpg", "winter-pines.jpg"),
+)
+BUNDLED = [name for pair in BUNDLED_BY_MONTH for name in pair]
+
+# (page background, accent for the title and the panel), a quiet tint per season.
+MONTH_COLOURS = (
+    ("#eef3f8", "#2c4a6b"), ("#f1f1f7", "#3d3f73"), ("#f2f7ee", "#3f6b35"),
+    ("#fbf4f6", "#8c2f55"), ("#f3f8ef", "#3a6e3a"), ("#eef7f9", "#17677a"),
+    ("#fdf6ec", "#a1502a"), ("#fdf8e6", "#8a6410"), ("#f8f3ea", "#7a4a1e"),
+    ("#fbf1e8", "#9b3d1c"), ("#f3f0ee", "#5a4638"), ("#eef0f7", "#243a6e"),
+)
+
+
+def photos_per_month(count: int) -> int:
+    """Spread the photos over the year: all of them if they fit, at least one per month."""
+    return max(1, min(MAX_PHOTOS_PER_MONTH, math.ceil(count / 12)))
+
+
+def layout_regions(width: float, height: float, orientation: str) -> tuple:
+    """Where the title, the panel and the photos start: (title rect, panel rect, photo region).
+
+    Portrait: title on top, photos in the middle, the month along the bottom. Landscape: title
+    on top, photos on the left, the month on the right.
+    """
+    m = MARGIN_MM
+    if orientation == "portrait":
+        title = (width / 2, m + 12.0, width - 2 * m - 20, 22.0)
+        panel_w, panel_h = width - 2 * m - 10, 98.0
+        panel = (width / 2, height - m - panel_h / 2, panel_w, panel_h)
+        photos = Region(m, m + 30.0, width - m, height - m - panel_h - 8.0)
+    else:
+        title = (width / 2, m + 11.0, width - 2 * m - 60, 20.0)
+        panel_w, panel_h = 128.0, 118.0
+        panel = (width - m - panel_w / 2, (m + 28 + height - m) / 2, panel_w, panel_h)
+        photos = Region(m, m + 28.0, width - m - panel_w - 8.0, height - m)
+    return title, panel, photos
+
+
+def build(options: Options, pictures: list[Picture]) -> Project:
+    """Twelve pages, January to December of options.year, with the pictures spread over them."""
+    per_month = photos_per_month(len(pictures))
+    pages = []
+    for month in range(1, 13):
+        mid = MONTH_IDS[month - 1]
+        background, accent = MONTH_COLOURS[month - 1]
+        page = new_page(mid, PAGE_SIZE, options.orientation, background=Background(color=background))
+        title_rect, panel_rect, region = layout_regions(page.width_mm, page.height_mm,
+                                                        options.orientation)
+        x, y, w, h = title_rect
+        page.items.append(TextItem(
+            id=f"{mid}-title", x=x, y=y, w=w, h=h, text=f"{month_name(month, options.lang)} {options.year}",
+            font="display", color=accent, bold=True, anchor=PointAnchor(x=x, y=y, gamma=1.0)))
+        x, y, w, h = panel_rect
+        page.items.append(CalendarItem(
+            id=f"{mid}-month", x=x, y=y, w=w, h=h, year=options.year, month=month,
+            first_weekday=options.first_weekday, language=options.lang, color=accent,
+            anchor=PointAnchor(x=x, y=y, gamma=1.0)))
+        start = (month - 1) * per_month
+        chosen = [pictures[(start + i) % len(pictures)] for i in range(per_month)] if pictures else []
+        for index, (picture, rect) in enumerate(zip(chosen, grid(region, [p.aspect for p in chosen],
+                                                                 fill=0.88)), start=1):
+            x, y, w, h = rect
+            page.items.append(PictureItem(id=f"{mid}-photo-{index}", x=x, y=y, w=w, h=h,
+                                          path=picture.path))
+        pages.append(page)
+    return Project(title=f"Calendar {options.year}", language=options.lang, pages=pages)

@@ -1,0 +1,81 @@
+"""An A4 shop flyer: products with price tags anchored to their pictures, a title, a backdrop.
+
+Each price tag follows its product picture by an item-to-item anchor, so however the physics
+(or the user) moves a product, its price stays right under it. The header band is decorative:
+fixed, and the title is hard-anchored on it so nothing pushes the shop's name off the band.
+"""
+
+from __future__ import annotations
+
+from model.document import (
+    Background, BlockItem, ItemAnchor, PictureItem, PointAnchor, Project, TextItem,
+)
+from starters.options import Options
+from starters.pictures import Picture
+from starters.placement import Region, grid, new_page
+from starters.words import phrase, price, product_name
+
+PAGE_SIZE = "A4"
+MARGIN_MM = 14.0
+HEADER_H_MM = 58.0
+FOOTER_H_MM = 16.0
+TAG_H_MM = 14.0
+TAG_GAP_MM = 1.5
+MAX_PRODUCTS = 9
+PAPER, GREEN, CREAM, RED, INK = "#fff8ea", "#2f6b4f", "#fff3d6", "#c0392b", "#2b2b2b"
+BUNDLED = ["apples.png", "lemons.png", "coffee-mug.png", "potted-plant.png", "teapot.png", "cupcake.png"]
+# Prices of the bundled products, in cents; a user's own products start at placeholder prices.
+PRICES = {"apples": 240, "lemons": 199, "coffee-mug": 850, "potted-plant": 1290, "teapot": 2450,
+          "cupcake": 320}
+
+
+def price_tag(photo: PictureItem, name: str, cents: int, lang: str) -> TextItem:
+    """Name and price under the product picture, following it."""
+    dy = photo.h / 2 + TAG_GAP_MM + TAG_H_MM / 2
+    return TextItem(id=f"{photo.id}-price", x=photo.x, y=photo.y + dy, w=max(photo.w, 36.0),
+                    h=TAG_H_MM, text=f"{name}\n{price(cents, lang)}", font="sans", bold=True, color=RED,
+                    anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy))
+
+
+def header(page, lang: str) -> list:
+    W = page.width_mm
+    title_y, subtitle_y = HEADER_H_MM * 0.42, HEADER_H_MM * 0.8
+    return [
+        BlockItem(id="header-band", x=W / 2, y=HEADER_H_MM / 2, w=W, h=HEADER_H_MM, color=GREEN,
+                  decorative=True, z=-1),
+        BlockItem(id="header-stripe", x=W / 2, y=HEADER_H_MM + 2.0, w=W, h=4.0, color="#f2b84b",
+                  decorative=True, z=-1),
+        TextItem(id="shop-title", x=W / 2, y=title_y, w=W - 50.0, h=26.0,
+                 text=phrase("flyer_title", lang), font="display", bold=True, color=CREAM,
+                 anchor=PointAnchor(x=W / 2, y=title_y, hard=True)),
+        TextItem(id="shop-subtitle", x=W / 2, y=subtitle_y, w=W - 90.0, h=10.0,
+                 text=phrase("flyer_subtitle", lang), font="sans", italic=True, color=CREAM,
+                 anchor=PointAnchor(x=W / 2, y=subtitle_y, hard=True)),
+    ]
+
+
+def footer(page, lang: str) -> list:
+    W, H = page.width_mm, page.height_mm
+    y = H - FOOTER_H_MM / 2
+    return [
+        BlockItem(id="footer-band", x=W / 2, y=y, w=W, h=FOOTER_H_MM, color=GREEN, decorative=True, z=-1),
+        TextItem(id="shop-footer", x=W / 2, y=y, w=W - 40.0, h=7.0, text=phrase("flyer_footer", lang),
+                 font="sans", color=CREAM, anchor=PointAnchor(x=W / 2, y=y, hard=True)),
+    ]
+
+
+def build(options: Options, pictures: list[Picture]) -> Project:
+    """One page: header, up to MAX_PRODUCTS products with their tags, footer."""
+    page = new_page("flyer", PAGE_SIZE, options.orientation, background=Background(color=PAPER))
+    page.items += header(page, options.lang)
+    products = pictures[:MAX_PRODUCTS]
+    region = Region(MARGIN_MM, HEADER_H_MM + 12.0, page.width_mm - MARGIN_MM,
+                    page.height_mm - FOOTER_H_MM - 8.0)
+    rects = grid(region, [p.aspect for p in products], fill=0.8, gap=8.0, below=TAG_GAP_MM + TAG_H_MM)
+    for index, (picture, (x, y, w, h)) in enumerate(zip(products, rects), start=1):
+        photo = PictureItem(id=f"product-{index}", x=x, y=y, w=w, h=h, path=picture.path)
+        cents = PRICES.get(picture.stem, 100 * index + 99)
+        page.items += [photo, price_tag(photo, product_name(picture.stem, options.lang), cents,
+                                        options.lang)]
+    page.items += footer(page, options.lang)
+    return Project(title=phrase("flyer_title", options.lang), language=options.lang, pages=[page])

@@ -1,0 +1,130 @@
+"""Find the pictures a starter uses and copy them beside the project, so it is self-contained.
+
+Picture paths in a project are relative to the project file. Copying the user's photos (or
+the bundled ones) into a `pictures/` folder next to it means the project can be moved,
+zipped or committed as one folder and still render.
+"""
+
+from __future__ import annotations
+
+import filecmp
+import shutil
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+from PIL import Image, UnidentifiedImageError
+
+from model.errors import FloatpageError
+
+PICTURES_DIR = "pictures"
+# What the typesetter accepts: JPEG and PNG go to LaTeX as they are, the rest are converted.
+ACCEPTED_SUFFIXES = (".jpg", ".jpeg", ".png", ".webp", ".gif", ".bmp", ".tif", ".tiff")
+EXIF_ORIENTATION = 0x0112
+ROTATED_ORIENTATIONS = (5, 6, 7, 8)  # EXIF values that turn the picture a quarter turn
+
+
+@dataclass(frozen=True)
+class Picture:
+    """A picture a builder may place: its path relative to the project file and its shape."""
+
+    path: str  # e.g. "pictures/sunflower.jpg"
+    width_px: int
+    height_px: int
+
+    @property
+    def aspect(self) -> float:
+        """Width over height, as the picture will be shown (EXIF rotation applied)."""
+        return self.width_px / self.height_px
+
+    @property
+    def stem(self) -> str:
+        return Path(self.path).stem
+
+
+def accepted_formats() -> str:
+    return ", ".join(s.lstrip(".").upper() for s in ACCEPTED_SUFFIXES if s not in (".jpeg", ".tif"))
+
+
+def bundled_dir() -> Path:
+    """Folder of the pictures shipped inside the package (painted by tools/paint_sample_pictures.py)."""
+    return Path(str(resources.files("starters") / "bundled"))
+
+
+def bundled(names: list[str]) -> list[Path]:
+    folder = bundled_dir()
+    paths = [folder / name for name in names]
+    missing = [p.name for p in paths if not p.is_file()]
+    if missing:
+        raise FloatpageError(f"the bundled pictures {', '.join(missing)} are missing from {folder} "
+                             "(reinstall floatpage, or run tools/paint_sample_pictures.py)")
+    return paths
+
+
+def displayed_size(path: Path) -> tuple[int, int] | None:
+    """Pixel size as shown (EXIF quarter turns applied), or None if Pillow cannot read it."""
+    try:
+        with Image.open(path) as img:
+            width, height = img.size
+            if img.getexif().get(EXIF_ORIENTATION) in ROTATED_ORIENTATIONS:
+                width, height = height, width
+            return width, height
+    except (UnidentifiedImageError, OSError, ValueError, Image.DecompressionBombError):
+        return None
+
+
+def find_photos(folder: Path) -> list[Path]:
+    """The readable pictures directly inside `folder`, in name order; raise if there are none."""
+    folder = Path(folder).expanduser()
+    if not folder.exists():
+        raise FloatpageError(f"--photos {folder}: no such folder")
+    if not folder.is_dir():
+        raise FloatpageError(f"--photos {folder}: is a file, not a folder of pictures")
+    candidates = sorted(p for p in folder.iterdir()
+                        if p.is_file() and not p.name.startswith(".")
+                        and p.suffix.lower() in ACCEPTED_SUFFIXES)
+    readable = [p for p in candidates if displayed_size(p) is not None]
+    if not readable:
+        found = f"{len(candidates)} picture file(s) but none could be read" if candidates \
+            else "no picture files"
+        raise FloatpageError(f"--photos {folder}: {found} (floatpage accepts {accepted_formats()})")
+    return readable
+
+
+def copy_beside(sources: list[Path], project_dir: Path) -> list[Picture]:
+    """Copy each source into project_dir/pictures/ and describe it; one Picture per source.
+
+    A file already there with the same content is reused; a different file with the same name
+    gets a numbered name (photo-2.jpg), so nothing the user has is overwritten.
+    """
+    target_dir = project_dir / PICTURES_DIR
+    target_dir.mkdir(parents=True, exist_ok=True)
+    placed: dict[Path, Picture] = {}
+    pictures = []
+    for source in sources:
+        source = Path(source)
+        if source.resolve() not in placed:
+            target = free_name(source, target_dir)
+            if not target.exists():
+                shutil.copyfile(source, target)
+            size = displayed_size(target)
+            if size is None:
+                raise FloatpageError(f"{source}: cannot be read as a picture "
+                                     f"(floatpage accepts {accepted_formats()})")
+            placed[source.resolve()] = Picture(f"{PICTURES_DIR}/{target.name}", *size)
+        pictures.append(placed[source.resolve()])
+    return pictures
+
+
+def free_name(source: Path, target_dir: Path) -> Path:
+    """Where to put `source` in target_dir: its own name, an identical file's name, or name-N."""
+    stem, suffix = source.stem, source.suffix.lower()
+    if suffix == ".jpeg":
+        suffix = ".jpg"
+    for n in range(1, 10_000):
+        candidate = target_dir / (f"{stem}{suffix}" if n == 1 else f"{stem}-{n}{suffix}")
+        if not candidate.exists() or candidate.resolve() == source.resolve():
+            return candidate
+        if filecmp.cmp(candidate, source, shallow=False):
+            return candidate
+    raise FloatpageError(f"{target_dir}: too many pictures named {stem}")

@@ -1,0 +1,90 @@
+"""Starting rectangles for a starter's items: a tidy first guess the physics then polishes.
+
+The physics would spread items dropped anywhere, but a starter that begins from a sensible
+grid settles in fewer steps, the same way every time, and looks right even before settling.
+Rectangles are (x, y, w, h) in mm with (x, y) the centre, as in the model.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from model.document import Page
+from model.page_sizes import page_dimensions
+
+Rect = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True)
+class Region:
+    """An axis-aligned area of a page, by its edges in mm."""
+
+    left: float
+    top: float
+    right: float
+    bottom: float
+
+    @property
+    def width(self) -> float:
+        return self.right - self.left
+
+    @property
+    def height(self) -> float:
+        return self.bottom - self.top
+
+    @property
+    def centre(self) -> tuple[float, float]:
+        return (self.left + self.right) / 2, (self.top + self.bottom) / 2
+
+
+def new_page(page_id: str, size: str, orientation: str, **kwargs) -> Page:
+    """A page with its millimetre size filled in from the named size and orientation."""
+    width, height = page_dimensions(size, orientation)
+    return Page(id=page_id, size=size, orientation=orientation, width_mm=width, height_mm=height,
+                **kwargs)
+
+
+def fit(aspect: float, max_w: float, max_h: float) -> tuple[float, float]:
+    """The largest (w, h) with w / h = aspect inside max_w x max_h."""
+    w = min(max_w, max_h * aspect)
+    return w, w / aspect
+
+
+def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float = 6.0,
+         below: float = 0.0) -> list[Rect]:
+    """Place len(aspects) boxes of those shapes in a grid over `region`, biggest total area.
+
+    Every column count is tried; each cell holds one box scaled to `fill` of the cell, leaving
+    the physics room to move. `below` reserves that many mm under each box (for a caption).
+    """
+    n = len(aspects)
+    if n == 0:
+        return []
+    best: tuple[float, list[Rect]] | None = None
+    for cols in range(1, n + 1):
+        rows = math.ceil(n / cols)
+        cell_w = (region.width - gap * (cols - 1)) / cols
+        cell_h = (region.height - gap * (rows - 1)) / rows
+        if cell_w <= 0 or cell_h - below <= 0:
+            continue
+        rects = []
+        for index, aspect in enumerate(aspects):
+            row, col = divmod(index, cols)
+            in_row = min(cols, n - row * cols)  # centre a short last row
+            offset = (cols - in_row) * (cell_w + gap) / 2
+            w, h = fit(aspect, cell_w * fill, (cell_h - below) * fill)
+            x = region.left + offset + col * (cell_w + gap) + cell_w / 2
+            y = region.top + row * (cell_h + gap) + (cell_h - below) / 2
+            rects.append((x, y, w, h))
+        area = sum(w * h for _, _, w, h in rects)
+        if best is None or area > best[0] + 1e-9:
+            best = (area, rects)
+    if best is None:
+        raise ValueError(f"region {region} is too small for {n} boxes")
+    return best[1]
+
+
+def spread(items: list, count: int) -> list:
+    """`count` entries taken from `items` in turn, wrapping round when there are too few."""
+    return [items[i % len(items)] for i in range(count)] if items else []
