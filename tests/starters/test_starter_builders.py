@@ -1,0 +1,137 @@
+"""Each starter builds a valid project of the right shape (no physics, no TeX here)."""
+
+from pathlib import Path
+
+import pytest
+
+import starters
+from model import ItemAnchor, load_project, save_project
+from model.document import CalendarItem, PictureItem, TextItem
+from model.page_sizes import page_dimensions
+from starters.options import Options
+from starters.pictures import Picture, bundled, copy_beside
+
+
+def build_saved(kind: str, tmp_path: Path, options: Options, sources=None):
+    """Build `kind` into tmp_path, save it, and load it back through the validating loader."""
+    module = starters.KINDS[kind]
+    pictures = copy_beside(sources if sources is not None else bundled(module.BUNDLED), tmp_path)
+    project = starters.build(kind, options, pictures)
+    path = tmp_path / f"{kind}.toml"
+    save_project(project, path)
+    return project, load_project(path)
+
+
+def non_decorative(page):
+    return [item for item in page.items if not item.decorative]
+
+
+def assert_inside(page, slack=0.01):
+    for item in page.items:
+        assert item.left >= -slack and item.top >= -slack, item.id
+        assert item.left + item.w <= page.width_mm + slack, item.id
+        assert item.top + item.h <= page.height_mm + slack, item.id
+
+
+def assert_no_overlap(page):
+    items = non_decorative(page)
+    for n, a in enumerate(items):
+        for b in items[n + 1:]:
+            apart = (a.left + a.w <= b.left or b.left + b.w <= a.left or
+                     a.top + a.h <= b.top or b.top + b.h <= a.top)
+            assert apart, (a.id, b.id)
+
+
+@pytest.mark.parametrize("kind", ["blank", "calendar", "card", "flyer"])
+@pytest.mark.parametrize("orientation", ["portrait", "landscape"])
+def test_every_starter_builds_a_loadable_tidy_project(kind, orientation, tmp_path):
+    options = Options(year=2027, orientation=orientation)
+    built, loaded = build_saved(kind, tmp_path, options)
+    assert [p.id for p in loaded.pages] == [p.id for p in built.pages]
+    ids = [item.id for page in loaded.pages for item in page.items]
+    assert len(ids) == len(set(ids))
+    for page in loaded.pages:
+        width, height = page_dimensions(page.size, orientation)
+        assert (page.width_mm, page.height_mm) == pytest.approx((width, height))
+        assert page.orientation == orientation
+        assert_inside(page)
+        assert_no_overlap(page)  # the starting layout is already clean, before any physics
+        for item in page.items:
+            if isinstance(item, PictureItem):
+                assert (tmp_path / item.path).is_file()
+
+
+def test_calendar_has_a_page_per_month_with_panel_title_and_photos(tmp_path):
+    options = Options(year=2028, first_weekday="sunday", lang="fr")
+    _, project = build_saved("calendar", tmp_path, options)
+    assert len(project.pages) == 12
+    for month, page in enumerate(project.pages, start=1):
+        [panel] = [i for i in page.items if isinstance(i, CalendarItem)]
+        assert (panel.year, panel.month, panel.first_weekday, panel.language) == (2028, month, "sunday", "fr")
+        titles = [i for i in page.items if isinstance(i, TextItem)]
+        assert any("2028" in t.text for t in titles)
+        assert sum(isinstance(i, PictureItem) for i in page.items) >= 1
+    assert project.pages[7].item("aug-title").text == "Août 2028"
+
+
+def test_calendar_uses_every_user_photo(tmp_path):
+    photos = bundled(["apples.png", "lemons.png", "teapot.png", "cupcake.png", "tulips.jpg"] * 6)
+    sources = []
+    for n, source in enumerate(photos):  # 30 distinct file names
+        target = tmp_path / "in" / f"{n:02d}-{source.name}"
+        target.parent.mkdir(exist_ok=True)
+        target.write_bytes(source.read_bytes() + bytes([n]))  # distinct content, still readable
+        sources.append(target)
+    project = starters.build("calendar", Options(year=2027), copy_beside(sources, tmp_path / "p"))
+    used = {i.path for page in project.pages for i in page.items if isinstance(i, PictureItem)}
+    assert len(used) == 30
+    assert all(sum(isinstance(i, PictureItem) for i in p.items) == 3 for p in project.pages)
+
+
+def test_card_is_five_by_eight_inches_front_and_inside(tmp_path):
+    _, project = build_saved("card", tmp_path, Options(year=2027, lang="de"))
+    assert [p.id for p in project.pages] == ["front", "inside"]
+    for page in project.pages:
+        assert page.size == "5x8in"
+        assert (page.width_mm, page.height_mm) == pytest.approx((127.0, 203.2))
+        assert any(isinstance(i, PictureItem) for i in page.items)
+    assert project.page("front").item("front-greeting").text == "Alles Gute zum Geburtstag!"
+
+
+def test_album_takes_photos_a_page_at_a_time_with_anchored_captions(tmp_path):
+    sources = bundled(starters.album.BUNDLED + ["rolling-hills.jpg", "night-sky.jpg"])  # 10 photos
+    _, project = build_saved("album", tmp_path, Options(year=2027), sources)
+    per_page = starters.album.PHOTOS_PER_PAGE
+    assert len(project.pages) == -(-10 // per_page)
+    photos = [i for p in project.pages for i in p.items if isinstance(i, PictureItem)]
+    assert len(photos) == 10
+    for page in project.pages:
+        for photo in (i for i in page.items if isinstance(i, PictureItem)):
+            caption = page.item(f"{photo.id}-caption")
+            assert isinstance(caption.anchor, ItemAnchor) and caption.anchor.to == photo.id
+            assert caption.anchor.dx == pytest.approx(caption.x - photo.x)
+            assert caption.anchor.dy == pytest.approx(caption.y - photo.y)
+            assert caption.top >= photo.top + photo.h  # under the photo, not on it
+            assert caption.text == Path(photo.path).stem.replace("-", " ").capitalize()
+
+
+def test_flyer_price_tags_follow_their_products(tmp_path):
+    _, project = build_saved("flyer", tmp_path, Options(year=2027))
+    [page] = project.pages
+    assert (page.size, page.width_mm, page.height_mm) == ("A4", 210.0, 297.0)
+    products = [i for i in page.items if isinstance(i, PictureItem)]
+    assert len(products) == len(starters.flyer.BUNDLED)
+    for product in products:
+        tag = page.item(f"{product.id}-price")
+        assert isinstance(tag.anchor, ItemAnchor) and tag.anchor.to == product.id
+        assert "€" in tag.text
+        assert tag.top >= product.top + product.h
+    assert any(i.decorative for i in page.items)
+    assert page.background is not None and page.background.color
+
+
+def test_each_month_panel_is_the_right_month():
+    """The builder's panels, checked against Python's calendar: every month once, in order."""
+    project = starters.build("calendar", Options(year=2100), [Picture("pictures/a.jpg", 4, 3)])
+    panels = [i for p in project.pages for i in p.items if isinstance(i, CalendarItem)]
+    assert [(p.year, p.month) for p in panels] == [(2100, m) for m in range(1, 13)]
