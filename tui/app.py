@@ -1,0 +1,64 @@
+"""The floatpage editor app: thin, as in frogmouth and posting.
+
+The App holds the editing session and returns the EditorScreen as its
+default screen; everything else lives in the screen, its widgets and dialogs.
+`make_app` is the one way to build it, shared by `floatpage edit` and the tests.
+"""
+
+from __future__ import annotations
+
+from functools import partial
+from pathlib import Path
+from typing import Iterable
+
+from textual.app import App, SystemCommand
+from textual.screen import Screen
+
+from model.project_file import load_project
+from tui.editor_screen import EditorScreen
+from tui.keymap import COMMANDS, key_label
+from tui.session import EditSession
+
+
+class FloatpageApp(App):
+    """Edits one project file."""
+
+    CSS_PATH = "app.tcss"
+    TITLE = "floatpage"
+
+    def __init__(self, session: EditSession, *, autostart: bool = True):
+        super().__init__()
+        self.session = session
+        self.autostart = autostart
+
+    def get_default_screen(self) -> Screen:
+        return EditorScreen(self.session, autostart=self.autostart)
+
+    @property
+    def editor(self) -> EditorScreen:
+        """The default screen, at the bottom of the stack under any dialog."""
+        return self.screen_stack[0]  # type: ignore[return-value]
+
+    def get_system_commands(self, screen: Screen) -> Iterable[SystemCommand]:
+        """Textual's own commands, then every editor command, named as in the help screen."""
+        for command in super().get_system_commands(screen):
+            if command.title != "Quit":
+                yield command
+        editor = self.editor
+        for command in COMMANDS:
+            yield SystemCommand(f"{command.label}  [{key_label(command.keys)}]", command.help,
+                                partial(editor.run_action, command.action))
+
+    async def action_quit(self) -> None:
+        """Ctrl+Q and the palette's Quit ask first, like q, when there are unsaved changes."""
+        self.editor.action_quit()
+
+
+def make_app(project_path: str | Path, *, seed: int = 0, autostart: bool = True) -> FloatpageApp:
+    """Load a project and build the editor for it; raises ProjectFileError on a bad file.
+
+    `seed` seeds the physics jitter (it does not change the project's own seed);
+    `autostart=False` starts with the physics paused, so tests see repeatable frames.
+    """
+    project = load_project(project_path)
+    return FloatpageApp(EditSession(project, seed=seed), autostart=autostart)

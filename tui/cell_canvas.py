@@ -1,0 +1,157 @@
+"""A grid of half-block pixels plus glyphs, turned into Textual Strips.
+
+Each cell shows two pixels, the upper as the foreground of '▀' and the lower as
+its background, or one glyph (a letter of a label or text) over a background.
+Runs of cells with the same style become one Segment, and a row whose content
+did not change reuses last frame's Strip, so an idle frame costs little.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from rich.color import Color
+from rich.segment import Segment
+from rich.style import Style
+from textual.strip import Strip
+
+RGB = tuple[int, int, int]
+UPPER_HALF = "\u2580"
+
+
+def pack(rgb: RGB) -> int:
+    return (rgb[0] << 16) | (rgb[1] << 8) | rgb[2]
+
+
+def unpack(value: int) -> RGB:
+    return (value >> 16) & 255, (value >> 8) & 255, value & 255
+
+
+@dataclass(frozen=True)
+class Glyph:
+    """One character in a cell; bg None means 'whatever pixel is in the cell's upper half'."""
+
+    char: str
+    fg: RGB
+    bg: RGB | None = None
+    bold: bool = False
+
+
+class CellCanvas:
+    """cols x rows cells = cols x (2 rows) pixels. Drawing clips to the canvas."""
+
+    def __init__(self, cols: int, rows: int, fill: RGB):
+        self.cols, self.rows = cols, rows
+        self.pixels = np.empty((2 * rows, cols, 3), dtype=np.uint8)
+        self.pixels[:] = fill
+        self.glyphs: dict[tuple[int, int], Glyph] = {}
+
+    def _clip(self, x0: int, y0: int, x1: int, y1: int) -> tuple[int, int, int, int]:
+        return max(x0, 0), max(y0, 0), min(x1, self.cols), min(y1, 2 * self.rows)
+
+    def clear_glyphs(self, x0: int, y0: int, x1: int, y1: int) -> None:
+        """Forget glyphs in the cells a pixel box touches (something was drawn over them)."""
+        if not self.glyphs:
+            return
+        x0, y0, x1, y1 = self._clip(x0, y0, x1, y1)
+        for row in range(y0 // 2, (y1 + 1) // 2):
+            for col in range(x0, x1):
+                self.glyphs.pop((row, col), None)
+
+    def fill(self, x0: int, y0: int, x1: int, y1: int, rgb: RGB) -> None:
+        cx0, cy0, cx1, cy1 = self._clip(x0, y0, x1, y1)
+        if cx0 < cx1 and cy0 < cy1:
+            self.pixels[cy0:cy1, cx0:cx1] = rgb
+            self.clear_glyphs(cx0, cy0, cx1, cy1)
+
+    def blit(self, x0: int, y0: int, image: np.ndarray) -> None:
+        """Copy an (h, w, 3) image with its top-left at pixel (x0, y0)."""
+        h, w = image.shape[:2]
+        cx0, cy0, cx1, cy1 = self._clip(x0, y0, x0 + w, y0 + h)
+        if cx0 < cx1 and cy0 < cy1:
+            self.pixels[cy0:cy1, cx0:cx1] = image[cy0 - y0:cy1 - y0, cx0 - x0:cx1 - x0]
+            self.clear_glyphs(cx0, cy0, cx1, cy1)
+
+    def outline(self, x0: int, y0: int, x1: int, y1: int, rgb: RGB) -> None:
+        """A one-pixel frame just outside the box (x0, y0, x1, y1)."""
+        for box in ((x0 - 1, y0 - 1, x1 + 1, y0), (x0 - 1, y1, x1 + 1, y1 + 1),
+                    (x0 - 1, y0, x0, y1), (x1, y0, x1 + 1, y1)):
+            cx0, cy0, cx1, cy1 = self._clip(*box)
+            if cx0 < cx1 and cy0 < cy1:
+                self.pixels[cy0:cy1, cx0:cx1] = rgb
+
+    def put(self, col: int, row: int, glyph: Glyph) -> None:
+        if 0 <= col < self.cols and 0 <= row < self.rows:
+            self.glyphs[(row, col)] = glyph
+
+    def write(self, col: int, row: int, text: str, fg: RGB, bg: RGB | None = None,
+              bold: bool = False, end_col: int | None = None) -> None:
+        """Write text from (col, row), stopping before end_col (default: the canvas edge)."""
+        end = self.cols if end_col is None else min(end_col, self.cols)
+        for offset, char in enumerate(text):
+            if col + offset >= end:
+                break
+            self.put(col + offset, row, Glyph(char, fg, bg, bold))
+
+
+class StripCache:
+    """Turns a canvas into Strips, reusing styles and unchanged rows across frames."""
+
+    def __init__(self):
+        self._styles: dict[tuple[int, int, bool], Style] = {}
+        self._rows: dict[int, tuple[bytes, tuple, Strip]] = {}
+
+    def style(self, fg: int, bg: int, bold: bool = False) -> Style:
+        key = (fg, bg, bold)
+        style = self._styles.get(key)
+        if style is None:
+            style = Style(color=Color.from_rgb(*unpack(fg)), bgcolor=Color.from_rgb(*unpack(bg)),
+                          bold=bold)
+            self._styles[key] = style
+        return style
+
+    def strips(self, canvas: CellCanvas) -> list[Strip]:
+        packed = ((canvas.pixels[..., 0].astype(np.int64) << 16)
+                  | (canvas.pixels[..., 1].astype(np.int64) << 8)
+                  | canvas.pixels[..., 2].astype(np.int64))
+        glyph_rows: dict[int, list[tuple[int, Glyph]]] = {}
+        for (row, col), glyph in canvas.glyphs.items():
+            glyph_rows.setdefault(row, []).append((col, glyph))
+        strips = []
+        for row in range(canvas.rows):
+            pair = packed[2 * row:2 * row + 2]
+            glyphs = tuple(sorted(glyph_rows.get(row, ()), key=lambda entry: entry[0]))
+            key = pair.tobytes()
+            cached = self._rows.get(row)
+            if cached is not None and cached[0] == key and cached[1] == glyphs \
+                    and cached[2].cell_length == canvas.cols:
+                strips.append(cached[2])
+                continue
+            strip = self._row_strip(pair[0].tolist(), pair[1].tolist(), dict(glyphs))
+            self._rows[row] = (key, glyphs, strip)
+            strips.append(strip)
+        return strips
+
+    def _row_strip(self, tops: list[int], bottoms: list[int], glyphs: dict[int, Glyph]) -> Strip:
+        segments: list[Segment] = []
+        run_text: list[str] = []
+        run_style: Style | None = None
+        for col, (top, bottom) in enumerate(zip(tops, bottoms)):
+            glyph = glyphs.get(col)
+            if glyph is not None:
+                bg = pack(glyph.bg) if glyph.bg is not None else top
+                style, char = self.style(pack(glyph.fg), bg, glyph.bold), glyph.char
+            elif top == bottom:
+                style, char = self.style(top, bottom), " "
+            else:
+                style, char = self.style(top, bottom), UPPER_HALF
+            if style is run_style:
+                run_text.append(char)
+            else:
+                if run_text:
+                    segments.append(Segment("".join(run_text), run_style))
+                run_text, run_style = [char], style
+        if run_text:
+            segments.append(Segment("".join(run_text), run_style))
+        return Strip(segments, len(tops))

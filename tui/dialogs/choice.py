@@ -1,0 +1,49 @@
+"""Pick one of a list: what to insert, which item to anchor to, quit or not, which page size."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Vertical
+from textual.screen import ModalScreen
+from textual.widgets import Label, OptionList
+from textual.widgets.option_list import Option
+
+
+class ChoiceDialog(ModalScreen[Any]):
+    """A title, an optional message and a list; Enter picks, Esc cancels (dismisses None)."""
+
+    BINDINGS = [Binding("escape", "cancel", "Cancel")]
+
+    def __init__(self, title: str, choices: list[tuple[str, Any]], *, message: str = "",
+                 highlighted: Any = None, dialog_id: str | None = None):
+        super().__init__(id=dialog_id)
+        self.title_text = title
+        self.message = message
+        self.choices = choices
+        self.highlighted_value = highlighted
+
+    def compose(self) -> ComposeResult:
+        with Vertical(classes="dialog"):
+            yield Label(self.title_text, classes="dialog-title")
+            if self.message:
+                yield Label(self.message, classes="dialog-message")
+            yield OptionList(*[Option(label, id=str(index))
+                               for index, (label, _) in enumerate(self.choices)])
+            yield Label("Enter chooses · Esc cancels", classes="dialog-hint")
+
+    def on_mount(self) -> None:
+        options = self.query_one(OptionList)
+        values = [value for _, value in self.choices]
+        if self.highlighted_value in values:
+            options.highlighted = values.index(self.highlighted_value)
+        options.focus()
+
+    def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
+        event.stop()
+        self.dismiss(self.choices[int(event.option.id)][1])
+
+    def action_cancel(self) -> None:
+        self.dismiss(None)

@@ -1,0 +1,109 @@
+"""A small form: one line per field; the caller's parser turns the answers into values.
+
+The parser raises ValueError with a sentence for the user; the form then stays
+open and shows it, so a typo in a colour is a message, never a crash.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable, Literal
+
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical, VerticalScroll
+from textual.screen import ModalScreen
+from textual.widgets import Button, Checkbox, Input, Label, Select, TextArea
+
+FieldKind = Literal["line", "text", "choice", "bool"]
+
+
+@dataclass(frozen=True)
+class Field:
+    """One form field: a line of text, several lines, a choice or a yes/no."""
+
+    name: str
+    label: str
+    kind: FieldKind
+    value: Any
+    choices: tuple[tuple[str, Any], ...] = ()
+
+
+Parser = Callable[[dict[str, Any]], dict[str, Any]]
+
+
+class FormDialog(ModalScreen[dict | None]):
+    """Fields, an error line and OK / Cancel. Enter in a one-line field or Ctrl+S applies."""
+
+    BINDINGS = [Binding("escape", "cancel", "Cancel"), Binding("ctrl+s", "apply", "Apply")]
+
+    def __init__(self, title: str, fields: list[Field], parse: Parser | None = None, *,
+                 dialog_id: str | None = None):
+        super().__init__(id=dialog_id)
+        self.title_text = title
+        self.fields = fields
+        self.parse = parse or (lambda values: values)
+
+    def compose(self) -> ComposeResult:
+        with Vertical(classes="dialog form"):
+            yield Label(self.title_text, classes="dialog-title")
+            with VerticalScroll(classes="form-fields"):
+                for field in self.fields:
+                    yield from self._field(field)
+            yield Label("", id="form-error", classes="dialog-error")
+            yield Label("Tab moves · Enter or Ctrl+S applies · Esc cancels", classes="dialog-hint")
+            with Horizontal(classes="dialog-buttons"):
+                yield Button("OK", variant="primary", id="ok")
+                yield Button("Cancel", id="cancel")
+
+    def _field(self, field: Field) -> ComposeResult:
+        widget_id = f"field-{field.name}"
+        if field.kind == "bool":
+            yield Checkbox(field.label, value=bool(field.value), id=widget_id)
+            return
+        yield Label(field.label, classes="field-label")
+        if field.kind == "line":
+            yield Input(str(field.value), id=widget_id)
+        elif field.kind == "text":
+            yield TextArea(str(field.value), id=widget_id, tab_behavior="focus",
+                           classes="field-text")
+        else:
+            yield Select(list(field.choices), value=field.value, allow_blank=False, id=widget_id)
+
+    def on_mount(self) -> None:
+        first = self.query(".form-fields > Input, .form-fields > TextArea, "
+                           ".form-fields > Select, .form-fields > Checkbox").first()
+        first.focus()
+
+    def values(self) -> dict[str, Any]:
+        """What the fields hold now, as typed."""
+        values: dict[str, Any] = {}
+        for field in self.fields:
+            widget = self.query_one(f"#field-{field.name}")
+            if isinstance(widget, TextArea):
+                values[field.name] = widget.text
+            else:
+                values[field.name] = widget.value
+        return values
+
+    def action_apply(self) -> None:
+        try:
+            result = self.parse(self.values())
+        except ValueError as error:
+            self.query_one("#form-error", Label).update(str(error))
+            return
+        self.dismiss(result)
+
+    def action_cancel(self) -> None:
+        self.dismiss(None)
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        event.stop()
+        self.action_apply()
+
+    def on_button_pressed(self, event: Button.Pressed) -> None:
+        event.stop()
+        if event.button.id == "ok":
+            self.action_apply()
+        else:
+            self.action_cancel()

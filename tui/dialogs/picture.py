@@ -1,0 +1,66 @@
+"""Choose a picture file: a tree of the project's folder showing only pictures, or a typed path."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Iterable
+
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Vertical
+from textual.screen import ModalScreen
+from textual.widgets import DirectoryTree, Input, Label
+
+PICTURE_SUFFIXES = {".png", ".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff", ".webp"}
+
+
+class PictureTree(DirectoryTree):
+    """Folders and picture files only; hidden files stay hidden."""
+
+    def filter_paths(self, paths: Iterable[Path]) -> Iterable[Path]:
+        return [path for path in paths if not path.name.startswith(".")
+                and (path.is_dir() or path.suffix.lower() in PICTURE_SUFFIXES)]
+
+
+class PictureDialog(ModalScreen[Path | None]):
+    """Dismisses with the chosen file's path, or None."""
+
+    BINDINGS = [Binding("escape", "cancel", "Cancel")]
+
+    def __init__(self, folder: Path, title: str = "Insert a picture", *,
+                 dialog_id: str | None = "picture-dialog"):
+        super().__init__(id=dialog_id)
+        self.folder = folder
+        self.title_text = title
+
+    def compose(self) -> ComposeResult:
+        with Vertical(classes="dialog picture"):
+            yield Label(self.title_text, classes="dialog-title")
+            yield PictureTree(self.folder, id="picture-tree")
+            yield Label("…or type a path (relative to the project folder):", classes="field-label")
+            yield Input(placeholder="photos/sunset.jpg", id="picture-path")
+            yield Label("", id="picture-error", classes="dialog-error")
+            yield Label("Enter chooses · Tab moves · Esc cancels", classes="dialog-hint")
+
+    def on_mount(self) -> None:
+        self.query_one(PictureTree).focus()
+
+    def on_directory_tree_file_selected(self, event: DirectoryTree.FileSelected) -> None:
+        event.stop()
+        self.dismiss(Path(event.path))
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        event.stop()
+        typed = event.value.strip()
+        path = (self.folder / Path(typed).expanduser()) if typed else None
+        if path is None or not path.is_file():
+            self.query_one("#picture-error", Label).update(f"no file at {typed or '(empty)'}")
+            return
+        if path.suffix.lower() not in PICTURE_SUFFIXES:
+            self.query_one("#picture-error", Label).update(
+                "not a picture (use " + ", ".join(sorted(PICTURE_SUFFIXES)) + ")")
+            return
+        self.dismiss(path)
+
+    def action_cancel(self) -> None:
+        self.dismiss(None)

@@ -1,0 +1,477 @@
+"""The editor: the page preview with live physics, the status lines, keys and dialogs.
+
+Edits go through the EditSession; this screen only turns keys, clicks and
+dialog answers into session calls, then redraws and wakes the physics loop.
+The loop is a 30 Hz interval that runs as many steps as fit a small time
+budget and pauses itself once the page settles, so an idle editor sends
+nothing over the wire.
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+from textual import work
+from textual.app import ComposeResult
+from textual.reactive import reactive
+from textual.screen import Screen
+from textual.widgets import Footer, Label
+
+from model.document import Background, PictureItem
+from model.errors import FloatpageError
+from tui import item_forms
+from tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
+from tui.frame_meter import FrameMeter
+from tui.keymap import ITEM_ACTIONS, bindings
+from tui.page_painter import Scene
+from tui.page_preview import PagePreview
+from tui.session import EditError, EditSession
+from tui.status_line import Status, StatusLine
+
+FRAME_S = 1 / 30
+PHYSICS_BUDGET_S = 0.012  # leaves most of a 33 ms frame for drawing and for keys
+RELEASE_AFTER_S = 0.6  # a nudged item is let go this long after the last arrow key
+
+
+class EditorScreen(Screen):
+    """The main screen. `selected_id` and `running` are the UI state; the session holds the rest."""
+
+    BINDINGS = bindings()
+
+    selected_id: reactive[str | None] = reactive(None, bindings=True)
+    running: reactive[bool] = reactive(True)
+
+    def __init__(self, session: EditSession, *, autostart: bool = True):
+        super().__init__(id="editor")
+        self.session = session
+        self.meter = FrameMeter()
+        self.set_reactive(EditorScreen.running, autostart)
+        self.export_state: str | None = None
+        self._release_timer = None
+        self._composed = False
+
+    def compose(self) -> ComposeResult:
+        yield Label("", id="page-bar")
+        yield PagePreview(id="preview")
+        yield StatusLine("", id="status")
+        yield Footer()
+
+    def on_mount(self) -> None:
+        self._composed = True
+        self.frame_timer = self.set_interval(FRAME_S, self.tick, pause=True)
+        self.query_one(PagePreview).focus()
+        self.redraw()
+        self.wake()
+
+    @property
+    def preview(self) -> PagePreview:
+        return self.query_one(PagePreview)
+
+    # -- the physics loop ----------------------------------------------------------------
+
+    def tick(self) -> None:
+        """One frame: physics for a time budget, then one redraw. Pauses itself when settled."""
+        engine = self.session.engine
+        if not self.running or engine.settled:
+            self.frame_timer.pause()
+            self.meter.reset()
+            self.redraw()
+            return
+        start = time.perf_counter()
+        steps = engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
+        self.redraw()
+        now = time.perf_counter()
+        self.meter.record(now, steps, now - start)
+        if engine.settled:
+            self.frame_timer.pause()
+            self.meter.reset()
+            self.redraw()
+
+    def wake(self) -> None:
+        """Start the frame timer if the physics has something to do."""
+        if self.running and not self.session.engine.settled:
+            self.frame_timer.resume()
+
+    def step_physics(self, steps: int) -> int:
+        """Run a fixed number of steps and redraw (frozen-physics tests and the benchmark)."""
+        done = self.session.engine.advance(steps=steps)
+        self.redraw()
+        return done
+
+    def watch_running(self, running: bool) -> None:
+        if running:
+            self.wake()
+        self.redraw()
+
+    def watch_selected_id(self, selected_id: str | None) -> None:
+        self.session.select(selected_id)
+        self.redraw()
+
+    # -- drawing ------------------------------------------------------------------------------
+
+    def scene(self) -> Scene:
+        session = self.session
+        return Scene(page=session.page, positions=session.engine.positions(),
+                     selected_id=session.selected_id, base_dir=session.project.base_dir)
+
+    def state_word(self) -> str:
+        if self.export_state:
+            return self.export_state
+        if not self.running:
+            return "paused"
+        return "settled" if self.session.engine.settled else "settling"
+
+    def redraw(self) -> None:
+        if not self._composed:
+            return
+        self.preview.show(self.scene())
+        engine = self.session.engine
+        self.query_one(StatusLine).show(Status(
+            state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
+            steps_per_s=self.meter.steps_per_s, quality=engine.quality().summary(),
+            frame_ms=1000 * self.meter.last_frame_s))
+        self.query_one("#page-bar", Label).update(self.page_bar_text())
+
+    def page_bar_text(self) -> str:
+        session = self.session
+        page = session.page
+        title = session.project.title or (session.project.path.stem if session.project.path else "")
+        selected = session.selected_item
+        chosen = f" · [b]{selected.id}[/b] ({selected.kind})" if selected else ""
+        unsaved = " · [b]● unsaved[/b]" if session.unsaved else ""
+        return (f"[b]{title}[/b] · page {session.page_index + 1}/{len(session.project.pages)} "
+                f"[b]{page.id}[/b] · {page.size} {page.orientation} · "
+                f"{len(page.items)} items{chosen}{unsaved}")
+
+    def after_edit(self) -> None:
+        """Push the session's selection up into the UI state, redraw, wake the physics."""
+        self.selected_id = self.session.selected_id
+        self.redraw()
+        self.wake()
+
+    def attempt(self, edit, *args) -> bool:
+        """Run a session edit; an EditError or FloatpageError becomes a notification."""
+        try:
+            edit(*args)
+        except FloatpageError as error:
+            self.notify(str(error), severity="warning")
+            return False
+        self.after_edit()
+        return True
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        if action in ITEM_ACTIONS and self.selected_id is None:
+            return None  # shown greyed out in the footer
+        return True
+
+    # -- selecting ---------------------------------------------------------------------------
+
+    def action_select_next(self) -> None:
+        self.release_held()
+        self.selected_id = self.session.select_step(1)
+
+    def action_select_previous(self) -> None:
+        self.release_held()
+        self.selected_id = self.session.select_step(-1)
+
+    def action_select_none(self) -> None:
+        self.release_held()
+        self.selected_id = None
+
+    # -- moving and resizing ------------------------------------------------------------------
+
+    def action_nudge(self, dx_mm: float, dy_mm: float) -> None:
+        if self.attempt(self.session.nudge, dx_mm, dy_mm):
+            if self._release_timer is not None:
+                self._release_timer.stop()
+            self._release_timer = self.set_timer(RELEASE_AFTER_S, self.release_held)
+
+    def release_held(self) -> None:
+        if self._release_timer is not None:
+            self._release_timer.stop()
+            self._release_timer = None
+        if self.session.held_id is not None:
+            self.session.end_move()
+            self.after_edit()
+
+    def action_resize(self, fx: float, fy: float) -> None:
+        self.release_held()
+        self.attempt(self.session.resize_selected, fx, fy)
+
+    def on_page_preview_item_pressed(self, message: PagePreview.ItemPressed) -> None:
+        self.release_held()
+        self.selected_id = message.item_id
+
+    def on_page_preview_item_dragged(self, message: PagePreview.ItemDragged) -> None:
+        self.attempt(self.session.move_to, message.item_id, message.x_mm, message.y_mm)
+
+    def on_page_preview_drag_ended(self, message: PagePreview.DragEnded) -> None:
+        self.release_held()
+
+    # -- inserting -----------------------------------------------------------------------------
+
+    def action_insert(self) -> None:
+        self.release_held()
+        self.app.push_screen(ChoiceDialog("Insert", item_forms.INSERT_CHOICES,
+                                          dialog_id="insert-dialog"),
+                             callback=lambda kind: kind and self.action_insert_kind(kind))
+
+    def action_insert_kind(self, kind: str) -> None:
+        self.release_held()
+        session = self.session
+        if kind == "text":
+            self.app.push_screen(
+                FormDialog("Insert a text box", item_forms.new_text_fields(),
+                           item_forms.parse_new_text, dialog_id="text-dialog"),
+                callback=lambda values: values and self.insert("text", values))
+        elif kind == "picture":
+            self.app.push_screen(PictureDialog(session.project.base_dir),
+                                 callback=lambda path: path and self.insert_picture(path))
+        elif kind == "block":
+            self.app.push_screen(
+                FormDialog("Insert a colour block", item_forms.new_block_fields(),
+                           item_forms.parse_new_block, dialog_id="block-dialog"),
+                callback=lambda values: values and self.insert("block", values))
+        elif kind == "calendar":
+            self.app.push_screen(
+                FormDialog("Insert a calendar month",
+                           item_forms.new_calendar_fields(2027, 1, session.project.language),
+                           item_forms.parse_calendar, dialog_id="calendar-dialog"),
+                callback=lambda values: values and self.insert("calendar", values))
+        elif kind == "background":
+            self.app.push_screen(
+                ChoiceDialog("Page background", [("A colour…", "color"), ("A picture…", "picture"),
+                                                 ("None (plain paper)", "none")],
+                             dialog_id="background-dialog"),
+                callback=lambda choice: choice and self.choose_background(choice))
+
+    def insert(self, kind: str, values: dict) -> None:
+        self.attempt(lambda: self.session.insert_item(self.session.make_item(kind, **values)))
+
+    def insert_picture(self, path: Path) -> None:
+        relative = self.session.relative_picture_path(path)
+        self.insert("picture", {"path": relative})
+
+    def choose_background(self, choice: str) -> None:
+        session = self.session
+        if choice == "none":
+            self.attempt(session.set_background, None)
+        elif choice == "color":
+            current = session.page.background.color if session.page.background else None
+            self.app.push_screen(
+                FormDialog("Background colour", item_forms.background_colour_fields(current),
+                           item_forms.parse_background_colour, dialog_id="background-colour"),
+                callback=lambda values: values and self.attempt(
+                    session.set_background, Background(color=values["color"])))
+        else:
+            self.app.push_screen(
+                PictureDialog(session.project.base_dir, "Background picture"),
+                callback=lambda path: path and self.attempt(
+                    session.set_background,
+                    Background(picture=session.relative_picture_path(path))))
+
+    # -- editing -------------------------------------------------------------------------------
+
+    def action_edit(self) -> None:
+        self.release_held()
+        item = self.session.selected_item
+        if item is None:
+            return
+        self.app.push_screen(
+            FormDialog(f"Edit {item.id} ({item.kind})", item_forms.edit_fields(item),
+                       item_forms.parse_edit, dialog_id="edit-dialog"),
+            callback=lambda values: values and self.attempt(self.session.update_item, item.id,
+                                                            values))
+
+    def action_toggle_decorative(self) -> None:
+        self.release_held()
+        item = self.session.selected_item
+        if item is not None:
+            self.attempt(self.session.update_item, item.id, {"decorative": not item.decorative})
+
+    def action_delete(self) -> None:
+        self.release_held()
+        self.attempt(self.session.delete_selected)
+
+    # -- anchoring ------------------------------------------------------------------------------
+
+    def action_anchor_here(self) -> None:
+        self.release_held()
+        self.attempt(self.session.anchor_here)
+
+    def action_anchor_to_item(self) -> None:
+        self.release_held()
+        item = self.session.selected_item
+        if item is None:
+            return
+        others = [(other.id, other.id) for other in self.session.page.items if other.id != item.id]
+        if not others:
+            self.notify("there is no other item on this page to anchor to", severity="warning")
+            return
+        self.app.push_screen(
+            ChoiceDialog(f"Anchor {item.id} to…", others, dialog_id="anchor-dialog"),
+            callback=lambda target: target and self.attempt(self.session.anchor_to, target))
+
+    def action_unanchor(self) -> None:
+        self.release_held()
+        self.attempt(self.session.unanchor)
+
+    # -- physics ------------------------------------------------------------------------------
+
+    def action_toggle_pause(self) -> None:
+        self.running = not self.running
+
+    def action_reheat(self) -> None:
+        self.session.engine.reheat()
+        self.running = True
+        self.wake()
+        self.redraw()
+
+    # -- history ------------------------------------------------------------------------------
+
+    def action_undo(self) -> None:
+        self.release_held()
+        try:
+            label = self.session.undo()
+        except EditError as error:
+            self.notify(str(error), severity="warning")
+            return
+        self.notify(f"undid {label}", timeout=2)
+        self.after_edit()
+
+    def action_redo(self) -> None:
+        self.release_held()
+        try:
+            label = self.session.redo()
+        except EditError as error:
+            self.notify(str(error), severity="warning")
+            return
+        self.notify(f"redid {label}", timeout=2)
+        self.after_edit()
+
+    # -- pages ---------------------------------------------------------------------------------
+
+    def action_switch_page(self, step: int) -> None:
+        self.release_held()
+        self.attempt(self.session.switch_page, step)
+
+    def action_add_page(self) -> None:
+        self.release_held()
+        self.attempt(self.session.add_page)
+
+    def action_remove_page(self) -> None:
+        self.release_held()
+        page = self.session.page
+        if len(self.session.project.pages) == 1:
+            self.notify("a project keeps at least one page", severity="warning")
+            return
+        self.app.push_screen(
+            ChoiceDialog(f"Remove page {page.id}?", [("Remove it", True), ("Keep it", False)],
+                         message=f"It holds {len(page.items)} item(s). Undo brings it back.",
+                         highlighted=False, dialog_id="remove-page-dialog"),
+            callback=lambda remove: remove and self.attempt(self.session.remove_page))
+
+    def action_page_size(self) -> None:
+        self.release_held()
+        page = self.session.page
+        self.app.push_screen(
+            ChoiceDialog("Page size", item_forms.PAGE_SIZE_CHOICES, highlighted=page.size,
+                         dialog_id="page-size-dialog"),
+            callback=lambda size: size and self.attempt(self.session.set_page_size, size,
+                                                        page.orientation))
+
+    def action_toggle_orientation(self) -> None:
+        self.release_held()
+        self.attempt(self.session.toggle_orientation)
+
+    # -- files -------------------------------------------------------------------------------
+
+    def action_save(self) -> None:
+        self.release_held()
+        try:
+            path = self.session.save()
+        except FloatpageError as error:
+            self.notify(str(error), title="Not saved", severity="error", timeout=10)
+            return
+        self.notify(f"saved {path}", timeout=3)
+        self.redraw()
+
+    def action_export_pdf(self) -> None:
+        self.release_held()
+        if self.export_state:
+            self.notify("an export is already running", severity="warning")
+            return
+        session = self.session
+        if session.project.path is None:
+            self.notify("save the project first; the PDF goes beside it", severity="warning")
+            return
+        try:
+            project = session.finalize_for_export()
+        except FloatpageError as error:
+            self.notify(str(error), title="Export failed", severity="error", timeout=10)
+            return
+        self.after_edit()
+        out = session.project.path.with_suffix(".pdf")
+        self.export_state = "exporting…"
+        self.redraw()
+        self.export_worker(project, out)
+
+    @work(thread=True, exclusive=True, group="export")
+    def export_worker(self, project, out: Path) -> None:
+        """Typeset in a thread; only call_from_thread touches the UI from here."""
+        def progress(*args, **kwargs) -> None:
+            words = " ".join(str(arg) for arg in args) or ""
+            self.app.call_from_thread(self.export_progress, words)
+
+        try:
+            from typeset import render_pdf
+
+            report = render_pdf(project, out, progress=progress)
+        except FloatpageError as error:
+            self.app.call_from_thread(self.export_done, None, str(error))
+        except Exception as error:  # never a crash: the user keeps the editor and their work
+            self.app.call_from_thread(self.export_done, None,
+                                      f"{type(error).__name__}: {error}")
+        else:
+            self.app.call_from_thread(self.export_done, report, None)
+
+    def export_progress(self, words: str) -> None:
+        self.export_state = f"exporting: {words}" if words else "exporting…"
+        self.redraw()
+
+    def export_done(self, report, error: str | None) -> None:
+        self.export_state = None
+        if error is not None:
+            self.notify(error, title="Export failed", severity="error", timeout=15)
+        else:
+            warnings = f", {len(report.warnings)} warning(s)" if report.warnings else ""
+            self.notify(f"wrote {report.pdf} ({report.pages} page(s), {report.seconds:.1f} s"
+                        f"{warnings})", title="PDF exported", timeout=8)
+        self.redraw()
+
+    # -- help and quitting ---------------------------------------------------------------------
+
+    def action_help(self) -> None:
+        self.app.push_screen(HelpScreen(id="help"))
+
+    def action_quit(self) -> None:
+        self.release_held()
+        if not self.session.unsaved:
+            self.app.exit()
+            return
+        self.app.push_screen(
+            ChoiceDialog("Quit floatpage?", [("Save and quit", "save"),
+                                             ("Quit without saving", "discard"),
+                                             ("Keep editing", None)],
+                         message="There are unsaved changes.", highlighted="save",
+                         dialog_id="quit-dialog"),
+            callback=self.finish_quit)
+
+    def finish_quit(self, choice: str | None) -> None:
+        if choice == "discard":
+            self.app.exit()
+        elif choice == "save":
+            self.action_save()
+            if not self.session.unsaved:
+                self.app.exit()

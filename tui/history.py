@@ -1,0 +1,63 @@
+"""Undo and redo as whole-document snapshots.
+
+A project is small (tens of items), so a deep copy per edit is cheap and makes
+every edit undoable, positions included, without an inverse for each operation.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass
+
+from model.document import Page
+
+
+@dataclass(frozen=True)
+class Snapshot:
+    """The editable state: every page (with positions), which page is shown, what is selected."""
+
+    label: str
+    pages: list[Page]
+    page_index: int
+    selected_id: str | None
+
+    @classmethod
+    def take(cls, label: str, pages: list[Page], page_index: int,
+             selected_id: str | None) -> "Snapshot":
+        return cls(label, copy.deepcopy(pages), page_index, selected_id)
+
+
+class History:
+    """Two stacks of snapshots; a new edit clears the redo stack."""
+
+    def __init__(self, limit: int = 200):
+        self.limit = limit
+        self.undo_stack: list[Snapshot] = []
+        self.redo_stack: list[Snapshot] = []
+
+    def record(self, before: Snapshot) -> None:
+        """Remember the state before an edit."""
+        self.undo_stack.append(before)
+        del self.undo_stack[:-self.limit]
+        self.redo_stack.clear()
+
+    def undo(self, current: Snapshot) -> Snapshot | None:
+        """The state to return to, or None; `current` becomes redoable."""
+        if not self.undo_stack:
+            return None
+        self.redo_stack.append(current)
+        return self.undo_stack.pop()
+
+    def redo(self, current: Snapshot) -> Snapshot | None:
+        if not self.redo_stack:
+            return None
+        self.undo_stack.append(current)
+        return self.redo_stack.pop()
+
+    @property
+    def can_undo(self) -> bool:
+        return bool(self.undo_stack)
+
+    @property
+    def can_redo(self) -> bool:
+        return bool(self.redo_stack)

@@ -1,0 +1,139 @@
+"""The forms for inserting and editing items: which fields each kind has, and how to read them.
+
+Parsers turn what was typed into model values or raise ValueError with a
+sentence for the user (the form shows it and stays open).
+"""
+
+from __future__ import annotations
+
+import calendar
+import re
+from typing import Any
+
+from model.document import WEEKDAYS, BlockItem, CalendarItem, PictureItem, PointAnchor, TextItem
+from model.page_sizes import PAGE_SIZES_MM
+from model.schema import CALENDAR_LANGUAGES, FONT_FAMILIES
+from tui.dialogs.form import Field
+
+HEX_COLOUR = re.compile(r"^#?[0-9a-fA-F]{6}$")
+MONTHS = tuple((calendar.month_name[number], number) for number in range(1, 13))
+FONTS = tuple((name, name) for name in FONT_FAMILIES)
+WEEKDAY_CHOICES = tuple((day.capitalize(), day) for day in WEEKDAYS)
+LANGUAGES = tuple((code, code) for code in CALENDAR_LANGUAGES)
+INSERT_CHOICES = [("Text box", "text"), ("Picture…", "picture"), ("Colour block", "block"),
+                  ("Calendar month", "calendar"), ("Background…", "background")]
+
+
+def colour(text: str, what: str = "colour") -> str:
+    text = text.strip()
+    if not HEX_COLOUR.match(text):
+        raise ValueError(f'{what} must be written as #rrggbb, e.g. #1f77b4 (not "{text}")')
+    return "#" + text.lstrip("#").lower()
+
+
+def number(text: str, what: str, low: float, high: float) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f'{what} must be a number (not "{text}")') from None
+    if not low <= value <= high:
+        raise ValueError(f"{what} must be between {low:g} and {high:g}")
+    return value
+
+
+def whole(text: str, what: str, low: int, high: int) -> int:
+    value = number(text, what, low, high)
+    if value != int(value):
+        raise ValueError(f"{what} must be a whole number")
+    return int(value)
+
+
+# -- inserting ------------------------------------------------------------------------------
+
+def new_text_fields() -> list[Field]:
+    return [Field("text", "Text", "text", "")]
+
+
+def parse_new_text(values: dict[str, Any]) -> dict[str, Any]:
+    text = values["text"].strip()
+    if not text:
+        raise ValueError("type some text first")
+    return {"text": text}
+
+
+def new_block_fields() -> list[Field]:
+    return [Field("color", "Colour (#rrggbb)", "line", "#4c8ed9")]
+
+
+def parse_new_block(values: dict[str, Any]) -> dict[str, Any]:
+    return {"color": colour(values["color"])}
+
+
+def new_calendar_fields(year: int, month: int, language: str) -> list[Field]:
+    return [Field("year", "Year", "line", str(year)),
+            Field("month", "Month", "choice", month, MONTHS),
+            Field("first_weekday", "Weeks start on", "choice", "monday", WEEKDAY_CHOICES),
+            Field("language", "Language of the names", "choice", language, LANGUAGES)]
+
+
+def parse_calendar(values: dict[str, Any]) -> dict[str, Any]:
+    parsed = dict(values)
+    parsed["year"] = whole(values["year"], "the year", 1, 9999)
+    return parsed
+
+
+def background_colour_fields(current: str | None) -> list[Field]:
+    return [Field("color", "Background colour (#rrggbb)", "line", current or "#fdf6e3")]
+
+
+def parse_background_colour(values: dict[str, Any]) -> dict[str, Any]:
+    return {"color": colour(values["color"])}
+
+
+PAGE_SIZE_CHOICES = [(f"{name}  ({w:g} × {h:g} mm)", name) for name, (w, h) in PAGE_SIZES_MM.items()]
+
+
+# -- editing --------------------------------------------------------------------------------
+
+def edit_fields(item) -> list[Field]:
+    """The item's editable properties, kind first, then how the physics treats it."""
+    fields: list[Field] = []
+    if isinstance(item, TextItem):
+        fields += [Field("text", "Text", "text", item.text),
+                   Field("font", "Font", "choice", item.font, FONTS),
+                   Field("color", "Colour (#rrggbb)", "line", item.color),
+                   Field("bold", "Bold", "bool", item.bold),
+                   Field("italic", "Italic", "bool", item.italic)]
+    elif isinstance(item, PictureItem):
+        fields += [Field("lock_aspect", "Keep the picture's aspect ratio", "bool",
+                         item.lock_aspect)]
+    elif isinstance(item, BlockItem):
+        fields += [Field("color", "Colour (#rrggbb)", "line", item.color),
+                   Field("opacity", "Opacity (0-1)", "line", f"{item.opacity:g}")]
+    elif isinstance(item, CalendarItem):
+        fields += new_calendar_fields(item.year, item.month, item.language)
+        fields[2] = Field("first_weekday", "Weeks start on", "choice", item.first_weekday,
+                          WEEKDAY_CHOICES)
+        fields += [Field("font", "Font", "choice", item.font, FONTS),
+                   Field("color", "Colour (#rrggbb)", "line", item.color)]
+    if isinstance(item.anchor, PointAnchor):
+        fields.append(Field("gamma", "Anchor gamma: 0 loose … 1 rigid", "line",
+                            f"{item.anchor.gamma:g}"))
+    fields.append(Field("decorative", "Decorative (behind, never pushed)", "bool",
+                        item.decorative))
+    return fields
+
+
+def parse_edit(values: dict[str, Any]) -> dict[str, Any]:
+    parsed = dict(values)
+    if "color" in parsed:
+        parsed["color"] = colour(parsed["color"])
+    if "opacity" in parsed:
+        parsed["opacity"] = number(parsed["opacity"], "the opacity", 0.0, 1.0)
+    if "gamma" in parsed:
+        parsed["gamma"] = number(parsed["gamma"], "gamma", 0.0, 1.0)
+    if "year" in parsed:
+        parsed["year"] = whole(parsed["year"], "the year", 1, 9999)
+    if "text" in parsed and not parsed["text"].strip():
+        raise ValueError("a text box needs some text (delete the item instead)")
+    return parsed

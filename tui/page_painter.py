@@ -1,0 +1,211 @@
+"""Paint one page onto a CellCanvas: background, decorations, items, links, labels, selection.
+
+Painting order is the page's stacking order: the background, then decorative
+items, then the others by z; anchors and links go on top so they are never
+hidden, and the selected item's frame and label come last so it always stands out.
+"""
+
+from __future__ import annotations
+
+import textwrap
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rich.cells import cell_len
+
+from model.calendar_month import month_name, month_weeks, weekday_names
+from model.document import (
+    BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
+)
+from tui.cell_canvas import RGB, CellCanvas, Glyph
+from tui.projection import Projection
+from tui.thumbnails import thumbnail
+
+SURROUND: RGB = (38, 38, 46)
+PAPER: RGB = (250, 250, 246)
+SELECTION: RGB = (255, 196, 0)
+ANCHOR: RGB = (214, 40, 170)
+LINK: RGB = (0, 150, 200)
+MISSING_PICTURE: RGB = (150, 150, 150)
+WHITE: RGB = (255, 255, 255)
+BLACK: RGB = (0, 0, 0)
+
+
+@dataclass
+class Scene:
+    """Everything one frame shows. positions override the items' own x, y (live physics)."""
+
+    page: Page
+    positions: dict[str, tuple[float, float]] = field(default_factory=dict)
+    selected_id: str | None = None
+    base_dir: Path = Path(".")
+
+
+def hex_to_rgb(value: str | None, default: RGB = BLACK) -> RGB:
+    try:
+        text = value.lstrip("#")
+        return int(text[0:2], 16), int(text[2:4], 16), int(text[4:6], 16)
+    except (AttributeError, ValueError, IndexError):
+        return default
+
+
+def mix(a: RGB, b: RGB, amount_of_b: float) -> RGB:
+    return tuple(round(x + (y - x) * amount_of_b) for x, y in zip(a, b))  # type: ignore[return-value]
+
+
+def readable_on(bg: RGB) -> RGB:
+    """Black or white, whichever reads better on bg."""
+    luminance = 0.299 * bg[0] + 0.587 * bg[1] + 0.114 * bg[2]
+    return BLACK if luminance > 140 else WHITE
+
+
+def printable(text: str) -> str:
+    """One cell per character: anything wider (or a control character) becomes '?'."""
+    return "".join(char if char.isprintable() and cell_len(char) == 1 else "?" for char in text)
+
+
+def calendar_lines(item: CalendarItem) -> list[str]:
+    """Title, weekday heads and the day grid, as the typesetter will print them (localised)."""
+    try:
+        title = f"{month_name(item.month, item.language)} {item.year}"
+        heads = " ".join(name[:2] for name in weekday_names(item.first_weekday, item.language))
+        weeks = month_weeks(item.year, item.month, item.first_weekday)
+    except ValueError:
+        return [f"calendar {item.year}-{item.month}"]
+    rows = [" ".join(f"{day:2d}" if day else "  " for day in week) for week in weeks]
+    return [title, heads, *rows]
+
+
+class PagePainter:
+    """Paints scenes; holds nothing between frames but the projection it was given."""
+
+    def __init__(self, projection: Projection):
+        self.projection = projection
+
+    def paint(self, scene: Scene) -> CellCanvas:
+        p = self.projection
+        canvas = CellCanvas(p.cols, p.rows, SURROUND)
+        self._background(canvas, scene)
+        items = sorted(scene.page.items, key=lambda item: (not item.decorative, item.z))
+        boxes = {item.id: self._box(item, scene) for item in scene.page.items}
+        for item in items:
+            self._item(canvas, scene, item, boxes[item.id])
+        centres = {item.id: self._centre(item, scene) for item in scene.page.items}
+        for item in scene.page.items:
+            self._anchor(canvas, item, centres)
+        selected = next((item for item in scene.page.items if item.id == scene.selected_id), None)
+        if selected is not None:
+            canvas.outline(*boxes[selected.id], SELECTION)
+            self._label(canvas, selected, boxes[selected.id], BLACK, SELECTION)
+        return canvas
+
+    # -- geometry ----------------------------------------------------------------------------
+
+    def _centre(self, item, scene: Scene) -> tuple[float, float]:
+        return scene.positions.get(item.id, (item.x, item.y))
+
+    def _box(self, item, scene: Scene) -> tuple[int, int, int, int]:
+        x, y = self._centre(item, scene)
+        return self.projection.rect(x, y, item.w, item.h)
+
+    @staticmethod
+    def _cells(box: tuple[int, int, int, int]) -> tuple[int, int, int, int]:
+        """Columns and rows of the cells wholly inside a pixel box: (col0, row0, col1, row1)."""
+        x0, y0, x1, y1 = box
+        return x0, (y0 + 1) // 2, x1, y1 // 2
+
+    # -- layers ------------------------------------------------------------------------------
+
+    def _background(self, canvas: CellCanvas, scene: Scene) -> None:
+        p = self.projection
+        box = (p.left, p.top, p.left + p.width, p.top + p.height)
+        background = scene.page.background
+        canvas.fill(*box, PAPER)
+        if background is None:
+            return
+        if background.picture:
+            image = thumbnail(scene.base_dir / background.picture, p.width, p.height)
+            if image is not None:
+                canvas.blit(p.left, p.top, image)
+            else:
+                canvas.fill(*box, mix(PAPER, MISSING_PICTURE, 0.3))
+        elif background.color:
+            canvas.fill(*box, hex_to_rgb(background.color, PAPER))
+
+    def _item(self, canvas: CellCanvas, scene: Scene, item, box) -> None:
+        x0, y0, x1, y1 = box
+        if isinstance(item, PictureItem):
+            image = thumbnail(scene.base_dir / item.path, x1 - x0, y1 - y0)
+            if image is None:
+                canvas.fill(*box, MISSING_PICTURE)
+                self._body(canvas, box, [f"missing {item.path}"], BLACK, MISSING_PICTURE)
+            else:
+                canvas.blit(x0, y0, image)
+            self._label(canvas, item, box, WHITE, BLACK)
+            return
+        if isinstance(item, BlockItem):
+            under = tuple(int(v) for v in canvas.pixels[
+                min(max((y0 + y1) // 2, 0), canvas.pixels.shape[0] - 1),
+                min(max((x0 + x1) // 2, 0), canvas.cols - 1)])
+            fill = mix(under, hex_to_rgb(item.color, MISSING_PICTURE), item.opacity)
+            canvas.fill(*box, fill)
+            self._label(canvas, item, box, readable_on(fill), fill)
+            return
+        ink = hex_to_rgb(getattr(item, "color", None))
+        fill = mix(ink, WHITE, 0.82)
+        canvas.fill(*box, fill)
+        label_fg = mix(ink, fill, 0.35)
+        self._label(canvas, item, box, label_fg, fill)
+        if isinstance(item, TextItem):
+            self._body(canvas, box, [item.text], ink, fill, bold=item.bold)
+        elif isinstance(item, CalendarItem):
+            self._body(canvas, box, calendar_lines(item), ink, fill, wrap=False)
+
+    def _label(self, canvas: CellCanvas, item, box, fg: RGB, bg: RGB) -> None:
+        """The item's id on its first full row (or the row holding its top, if it is thin)."""
+        col0, row0, col1, row1 = self._cells(box)
+        row = row0 if row1 > row0 else box[1] // 2
+        text = printable(("~" if item.decorative else "") + item.id)
+        width = max(col1 - col0, 1)
+        canvas.write(col0, row, text[:width], fg, bg, bold=True, end_col=col0 + width)
+
+    def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
+              *, bold: bool = False, wrap: bool = True) -> None:
+        """As much of the text as fits the item's full cells, under the label row."""
+        col0, row0, col1, row1 = self._cells(box)
+        width, first = col1 - col0, row0 + 1
+        if width < 1 or first >= row1:
+            return
+        lines: list[str] = []
+        for paragraph in paragraphs:
+            paragraph = printable(paragraph)
+            if wrap:
+                lines += textwrap.wrap(paragraph, width) or [""]
+            else:
+                lines.append(paragraph[:width])
+        for row, line in zip(range(first, row1), lines):
+            canvas.write(col0, row, line, fg, bg, bold=bold, end_col=col1)
+
+    def _anchor(self, canvas: CellCanvas, item, centres) -> None:
+        start = self.projection.cell_of(*centres[item.id])
+        if isinstance(item.anchor, PointAnchor):
+            end = self.projection.cell_of(item.anchor.x, item.anchor.y)
+            self._dots(canvas, start, end, ANCHOR)
+            canvas.put(*end, Glyph("#" if item.anchor.hard else "+", WHITE, ANCHOR, bold=True))
+        elif isinstance(item.anchor, ItemAnchor) and item.anchor.to in centres:
+            end = self.projection.cell_of(*centres[item.anchor.to])
+            self._dots(canvas, start, end, LINK)
+            for end_cell in (start, end):
+                if (end_cell[1], end_cell[0]) not in canvas.glyphs:  # labels stay readable
+                    canvas.put(*end_cell, Glyph("o", WHITE, LINK, bold=True))
+
+    @staticmethod
+    def _dots(canvas: CellCanvas, start, end, colour: RGB) -> None:
+        """A dotted line of cells from start to end (Bresenham), ends excluded."""
+        (c0, r0), (c1, r1) = start, end
+        steps = max(abs(c1 - c0), abs(r1 - r0))
+        for i in range(1, steps):
+            col = round(c0 + (c1 - c0) * i / steps)
+            row = round(r0 + (r1 - r0) * i / steps)
+            if (row, col) not in canvas.glyphs:
+                canvas.put(col, row, Glyph("\u00b7", colour, None, bold=True))

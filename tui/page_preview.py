@@ -1,0 +1,146 @@
+"""The page preview: a Line API widget over a cell grid rebuilt at most once per frame.
+
+The screen hands it a Scene with `show(scene)`; the widget paints it into a
+grid, keeps the resulting Strips and refreshes once. `render_line` only reads
+the stored Strips. Mouse presses and drags go up as messages in millimetres,
+so the screen never deals in cells.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from textual import events
+from textual.message import Message
+from textual.strip import Strip
+from textual.widget import Widget
+
+from tui.cell_canvas import StripCache
+from tui.page_painter import PagePainter, Scene
+from tui.projection import Projection
+
+
+class PagePreview(Widget, can_focus=True):
+    """The current page, fitted to the widget with its aspect ratio, in half-block pixels."""
+
+    DEFAULT_CSS = """
+    PagePreview {
+        width: 1fr;
+        height: 1fr;
+        background: rgb(38, 38, 46);
+    }
+    """
+
+    @dataclass
+    class ItemPressed(Message):
+        """The mouse went down on an item (item_id) or on empty page (None), at x, y in mm."""
+
+        item_id: str | None
+        x_mm: float
+        y_mm: float
+
+    @dataclass
+    class ItemDragged(Message):
+        """The pressed item is being dragged; its centre should go to x, y (mm)."""
+
+        item_id: str
+        x_mm: float
+        y_mm: float
+
+    @dataclass
+    class DragEnded(Message):
+        item_id: str
+
+    def __init__(self, *, id: str | None = None):
+        super().__init__(id=id)
+        self.scene: Scene | None = None
+        self.projection: Projection | None = None
+        self._strips: list[Strip] = []
+        self._cache = StripCache()
+        self._drag: tuple[str, float, float] | None = None  # item id, grab offset x, y (mm)
+        self.frames_drawn = 0
+
+    # -- drawing -------------------------------------------------------------------------
+
+    def show(self, scene: Scene) -> None:
+        """Paint a scene and refresh once."""
+        self.scene = scene
+        self.redraw()
+
+    def redraw(self) -> None:
+        if self.scene is None:
+            return
+        width, height = self.size
+        if width < 1 or height < 1:
+            return
+        page = self.scene.page
+        projection = Projection.fit(width, height, page.width_mm, page.height_mm)
+        self.projection = projection
+        canvas = PagePainter(projection).paint(self.scene)
+        self._strips = self._cache.strips(canvas)
+        self.frames_drawn += 1
+        self.refresh()
+
+    def on_resize(self, event: events.Resize) -> None:
+        self.redraw()
+
+    def render_line(self, y: int) -> Strip:
+        if 0 <= y < len(self._strips):
+            return self._strips[y]
+        return Strip.blank(self.size.width)
+
+    def text_lines(self) -> list[str]:
+        """The preview as plain text, row by row (for tests and for reading over SSH logs)."""
+        return [strip.text for strip in self._strips]
+
+    # -- hit testing and the mouse ---------------------------------------------------------
+
+    def item_at(self, col: int, row: int) -> str | None:
+        """Topmost item under a cell, in painting order; None on empty page or outside it."""
+        if self.scene is None or self.projection is None:
+            return None
+        x_mm, y_mm = self.projection.mm_at(col, row)
+        half_cell = 0.5 / self.projection.scale
+        hits = []
+        for item in self.scene.page.items:
+            x, y = self.scene.positions.get(item.id, (item.x, item.y))
+            if abs(x_mm - x) <= item.w / 2 + half_cell and abs(y_mm - y) <= item.h / 2 + half_cell:
+                hits.append(item)
+        if not hits:
+            return None
+        return max(hits, key=lambda item: (not item.decorative, item.z,
+                                           self.scene.page.items.index(item))).id
+
+    def cell_centre_of(self, item_id: str) -> tuple[int, int]:
+        """The cell under an item's centre (for tests that click on items)."""
+        assert self.scene is not None and self.projection is not None
+        item = self.scene.page.item(item_id)
+        return self.projection.cell_of(*self.scene.positions.get(item_id, (item.x, item.y)))
+
+    def on_mouse_down(self, event: events.MouseDown) -> None:
+        if self.projection is None or event.button != 1:
+            return
+        self.focus()
+        item_id = self.item_at(event.x, event.y)
+        x_mm, y_mm = self.projection.mm_at(event.x, event.y)
+        self.post_message(self.ItemPressed(item_id, x_mm, y_mm))
+        if item_id is not None and self.scene is not None:
+            item = self.scene.page.item(item_id)
+            x, y = self.scene.positions.get(item_id, (item.x, item.y))
+            self._drag = (item_id, x - x_mm, y - y_mm)
+            self.capture_mouse()
+
+    def on_mouse_move(self, event: events.MouseMove) -> None:
+        if self._drag is None or self.projection is None:
+            return
+        item_id, grab_x, grab_y = self._drag
+        x_mm, y_mm = self.projection.mm_at(event.x, event.y)
+        self.post_message(self.ItemDragged(item_id, x_mm + grab_x, y_mm + grab_y))
+
+    def on_mouse_up(self, event: events.MouseUp) -> None:
+        if self._drag is None:
+            return
+        item_id = self._drag[0]
+        self._drag = None
+        self.release_mouse()
+        self.post_message(self.DragEnded(item_id))

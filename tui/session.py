@@ -1,0 +1,417 @@
+"""An editing session: the project, the page on screen, its physics engine and the undo history.
+
+Every edit the editor offers is one method here, free of Textual, so the
+screen stays a thin layer of key bindings and dialogs. Each edit records a
+snapshot first (so undo restores positions too), changes the model, and tells
+the engine; the engine owns the live positions while the physics runs, and
+`sync_positions` copies them back into the model.
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import itertools
+import os
+from pathlib import Path
+
+from model.document import (
+    Background, BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, Project,
+    TextItem,
+)
+from model.errors import FloatpageError
+from model.layout import engine_for_page, write_back
+from model.page_sizes import page_dimensions
+from model.save import save_project
+from physics import Engine
+from tui.history import History, Snapshot
+from tui.reading_order import reading_order, step_through
+
+MIN_SIDE_MM = 3.0
+
+
+class EditError(FloatpageError):
+    """An edit that cannot be done as asked; the message says why, for a notification."""
+
+
+def picture_aspect(path: Path) -> float | None:
+    """Height / width of a picture file, or None if Pillow cannot read it."""
+    try:
+        from PIL import Image
+
+        with Image.open(path) as image:
+            width, height = image.size
+        return height / width if width else None
+    except (OSError, ValueError):
+        return None
+
+
+class EditSession:
+    """The project being edited and everything needed to change it and undo the change."""
+
+    def __init__(self, project: Project, *, seed: int = 0):
+        self.project = project
+        self.seed = seed
+        if not project.pages:
+            width, height = page_dimensions("A4", "portrait")
+            project.pages.append(Page(id="page-1", width_mm=width, height_mm=height))
+        self.page_index = 0
+        self.selected_id: str | None = None
+        self.history = History()
+        self.edits_since_save = 0
+        self.held_id: str | None = None
+        self.engine: Engine = self._build_engine()
+
+    # -- what is on screen ---------------------------------------------------------------
+
+    @property
+    def page(self) -> Page:
+        return self.project.pages[self.page_index]
+
+    @property
+    def unsaved(self) -> bool:
+        return self.edits_since_save > 0
+
+    @property
+    def selected_item(self):
+        if self.selected_id is None:
+            return None
+        try:
+            return self.page.item(self.selected_id)
+        except KeyError:
+            return None
+
+    def _build_engine(self) -> Engine:
+        settings = dataclasses.replace(self.project.physics, seed=self.seed)
+        return engine_for_page(self.page, settings)
+
+    def sync_positions(self) -> None:
+        """Copy the engine's live positions into the model's items."""
+        write_back(self.page, self.engine)
+
+    def reading_order(self) -> list[str]:
+        self.sync_positions()
+        return reading_order(self.page.items)
+
+    def select_step(self, step: int) -> str | None:
+        self.selected_id = step_through(self.reading_order(), self.selected_id, step)
+        return self.selected_id
+
+    def select(self, item_id: str | None) -> None:
+        self.selected_id = item_id
+
+    # -- history ---------------------------------------------------------------------------
+
+    def _snapshot(self, label: str) -> Snapshot:
+        self.sync_positions()
+        return Snapshot.take(label, self.project.pages, self.page_index, self.selected_id)
+
+    def checkpoint(self, label: str) -> None:
+        """Record the state before an edit, and count the edit as unsaved."""
+        self.history.record(self._snapshot(label))
+        self.edits_since_save += 1
+
+    def _restore(self, snapshot: Snapshot) -> None:
+        self.held_id = None
+        self.project.pages[:] = copy.deepcopy(snapshot.pages)
+        self.page_index = min(snapshot.page_index, len(self.project.pages) - 1)
+        self.selected_id = snapshot.selected_id
+        self.engine = self._build_engine()
+
+    def undo(self) -> str:
+        snapshot = self.history.undo(self._snapshot("redo"))
+        if snapshot is None:
+            raise EditError("nothing to undo")
+        self._restore(snapshot)
+        self.edits_since_save -= 1
+        return snapshot.label
+
+    def redo(self) -> str:
+        snapshot = self.history.redo(self._snapshot("undo"))
+        if snapshot is None:
+            raise EditError("nothing to redo")
+        label = self.history.undo_stack[-1].label if self.history.undo_stack else ""
+        self._restore(snapshot)
+        self.edits_since_save += 1
+        return label
+
+    # -- ids and placement -------------------------------------------------------------------
+
+    def new_id(self, stem: str) -> str:
+        taken = self.project.all_item_ids() | {page.id for page in self.project.pages}
+        for number in itertools.count(1):
+            candidate = f"{stem}-{number}"
+            if candidate not in taken:
+                return candidate
+        raise AssertionError("unreachable")
+
+    def default_size(self, kind: str) -> tuple[float, float]:
+        """A size that reads well on this page: a fraction of its shorter side."""
+        short = min(self.page.width_mm, self.page.height_mm)
+        return {"text": (0.45 * short, 0.15 * short), "picture": (0.4 * short, 0.3 * short),
+                "block": (0.2 * short, 0.2 * short),
+                "calendar": (0.5 * short, 0.38 * short)}[kind]
+
+    # -- item edits --------------------------------------------------------------------------
+
+    def insert_item(self, item) -> str:
+        """Insert an item near the page centre (its own x, y if given); the others make way."""
+        if item.id in self.project.all_item_ids():
+            raise EditError(f'the id "{item.id}" is already used')
+        self.checkpoint(f"insert {item.id}")
+        self.page.items.append(item)
+        self.engine.insert(item.id, item.x, item.y, item.w, item.h, decorative=item.decorative)
+        self.engine.reheat()
+        self.selected_id = item.id
+        return item.id
+
+    def make_item(self, kind: str, **fields):
+        """A new item of `kind` with a fresh id, at the page centre, at the default size."""
+        w, h = self.default_size(kind)
+        if kind == "picture" and fields.get("path"):
+            aspect = picture_aspect(self.project.base_dir / fields["path"])
+            if aspect:
+                h = w * aspect
+        cls = {"text": TextItem, "picture": PictureItem, "block": BlockItem,
+               "calendar": CalendarItem}[kind]
+        item = cls(id=self.new_id(kind), x=self.page.width_mm / 2, y=self.page.height_mm / 2,
+                   w=w, h=h, z=max((i.z for i in self.page.items), default=0), **fields)
+        return item
+
+    def relative_picture_path(self, path: str | Path) -> str:
+        """Relative to the project's folder when the picture is inside it, else absolute."""
+        path = Path(path).expanduser().resolve()
+        base = self.project.base_dir.resolve()
+        try:
+            return str(path.relative_to(base))
+        except ValueError:
+            return os.fspath(path)
+
+    def delete_selected(self) -> str:
+        item = self._require_selected()
+        self.checkpoint(f"delete {item.id}")
+        followers = [i for i in self.page.items
+                     if isinstance(i.anchor, ItemAnchor) and i.anchor.to == item.id]
+        for follower in followers:
+            follower.anchor = None
+        self.page.items.remove(item)
+        self.engine.delete(item.id)
+        self.engine.reheat()
+        order = reading_order(self.page.items)
+        self.selected_id = order[0] if order else None
+        return item.id
+
+    def begin_move(self, item_id: str) -> None:
+        """Hold an item (it pushes the others and is not pushed) for a move or a drag."""
+        if self.held_id == item_id:
+            return
+        self.end_move()
+        self.checkpoint(f"move {item_id}")
+        self.held_id = item_id
+        self.engine.hold(item_id)
+
+    def move_to(self, item_id: str, x_mm: float, y_mm: float) -> None:
+        self.begin_move(item_id)
+        self.engine.move(item_id, x_mm, y_mm)
+        self.engine.reheat()
+
+    def nudge(self, dx_mm: float, dy_mm: float) -> None:
+        item = self._require_selected()
+        x, y = self.engine.positions()[item.id]
+        self.move_to(item.id, x + dx_mm, y + dy_mm)
+
+    def end_move(self) -> None:
+        """Let go of the held item; an anchored item is re-anchored where it was put."""
+        item_id, self.held_id = self.held_id, None
+        if item_id is None or item_id not in self.engine.ids:
+            return
+        self.engine.release(item_id)
+        self.sync_positions()
+        item = self.page.item(item_id)
+        if isinstance(item.anchor, PointAnchor):
+            item.anchor.x, item.anchor.y = item.x, item.y
+            self.engine.anchor_point(item.id, item.x, item.y, gamma=item.anchor.gamma,
+                                     hard=item.anchor.hard)
+        elif isinstance(item.anchor, ItemAnchor):
+            target = self.page.item(item.anchor.to)
+            item.anchor.dx, item.anchor.dy = item.x - target.x, item.y - target.y
+            self.engine.anchor_to(item.id, target.id, item.anchor.dx, item.anchor.dy)
+        self.engine.reheat()
+
+    def resize_selected(self, fx: float, fy: float) -> tuple[float, float]:
+        """Scale the selected item's width by fx and height by fy; a locked picture scales both."""
+        item = self._require_selected()
+        if isinstance(item, PictureItem) and item.lock_aspect and fx != fy:
+            fx = fy = fx if fx != 1 else fy
+        w = min(max(item.w * fx, MIN_SIDE_MM), self.page.width_mm)
+        h = min(max(item.h * fy, MIN_SIDE_MM), self.page.height_mm)
+        if isinstance(item, PictureItem) and item.lock_aspect:
+            scale = min(w / item.w, h / item.h) if fx >= 1 else max(w / item.w, h / item.h)
+            w, h = item.w * scale, item.h * scale
+        self.checkpoint(f"resize {item.id}")
+        item.w, item.h = w, h
+        self.engine.resize(item.id, w, h)
+        self.engine.reheat()
+        return w, h
+
+    def update_item(self, item_id: str, changes: dict) -> None:
+        """Set fields of an item (text, font, colour, decorative, anchor gamma...) in one edit."""
+        item = self.page.item(item_id)
+        gamma = changes.pop("gamma", None)
+        changes = {key: value for key, value in changes.items() if getattr(item, key) != value}
+        gamma_changes = (gamma is not None and isinstance(item.anchor, PointAnchor)
+                         and item.anchor.gamma != gamma)
+        if not changes and not gamma_changes:
+            return
+        self.checkpoint(f"edit {item_id}")
+        for key, value in changes.items():
+            setattr(item, key, value)
+        if gamma_changes:
+            item.anchor.gamma = gamma
+        self.rebuild_engine()
+
+    def rebuild_engine(self) -> None:
+        """Rebuild the engine from the model after an edit the engine has no call for."""
+        self.sync_positions()
+        self.held_id = None
+        self.engine = self._build_engine()
+        self.engine.reheat()
+
+    def anchor_here(self) -> None:
+        item = self._require_selected()
+        self.checkpoint(f"anchor {item.id}")
+        self.sync_positions()
+        gamma = item.anchor.gamma if isinstance(item.anchor, PointAnchor) else 1.0
+        item.anchor = PointAnchor(x=item.x, y=item.y, gamma=gamma)
+        self.engine.unanchor(item.id)
+        self.engine.anchor_point(item.id, item.x, item.y, gamma=gamma)
+
+    def anchor_to(self, target_id: str) -> None:
+        item = self._require_selected()
+        if target_id == item.id:
+            raise EditError("an item cannot be anchored to itself")
+        target = self.page.item(target_id)
+        chain, current = {item.id}, target
+        while isinstance(current.anchor, ItemAnchor):
+            if current.anchor.to in chain or current.id in chain:
+                raise EditError(f'"{target_id}" already follows "{item.id}"; that would be a cycle')
+            chain.add(current.id)
+            current = self.page.item(current.anchor.to)
+        if current.id == item.id:
+            raise EditError(f'"{target_id}" already follows "{item.id}"; that would be a cycle')
+        self.checkpoint(f"anchor {item.id} to {target_id}")
+        self.sync_positions()
+        item.anchor = ItemAnchor(to=target_id, dx=item.x - target.x, dy=item.y - target.y)
+        self.engine.unanchor(item.id)
+        self.engine.anchor_to(item.id, target_id, item.anchor.dx, item.anchor.dy)
+
+    def unanchor(self) -> None:
+        item = self._require_selected()
+        if item.anchor is None:
+            raise EditError(f'"{item.id}" is not anchored')
+        self.checkpoint(f"unanchor {item.id}")
+        item.anchor = None
+        self.engine.unanchor(item.id)
+        self.engine.reheat()
+
+    def set_background(self, background: Background | None) -> None:
+        self.checkpoint("background")
+        self.page.background = background
+
+    def _require_selected(self):
+        item = self.selected_item
+        if item is None:
+            raise EditError("select an item first (Tab)")
+        return item
+
+    # -- pages -------------------------------------------------------------------------------
+
+    def switch_page(self, step: int) -> None:
+        self.end_move()
+        self.sync_positions()
+        self.page_index = (self.page_index + step) % len(self.project.pages)
+        self.selected_id = None
+        self.engine = self._build_engine()
+
+    def add_page(self) -> str:
+        self.checkpoint("add page")
+        current = self.page
+        page = Page(id=self.new_id("page"), size=current.size, orientation=current.orientation,
+                    width_mm=current.width_mm, height_mm=current.height_mm)
+        self.project.pages.insert(self.page_index + 1, page)
+        self.page_index += 1
+        self.selected_id = None
+        self.engine = self._build_engine()
+        return page.id
+
+    def remove_page(self) -> str:
+        if len(self.project.pages) == 1:
+            raise EditError("a project keeps at least one page")
+        self.checkpoint(f"remove page {self.page.id}")
+        removed = self.project.pages.pop(self.page_index)
+        self.page_index = min(self.page_index, len(self.project.pages) - 1)
+        self.selected_id = None
+        self.engine = self._build_engine()
+        return removed.id
+
+    def set_page_size(self, size: str, orientation: str) -> None:
+        """Change size and orientation; items keep their relative place on the page."""
+        page = self.page
+        width, height = page_dimensions(size, orientation, page.width_mm, page.height_mm)
+        if (size, orientation, width, height) == (page.size, page.orientation, page.width_mm,
+                                                 page.height_mm):
+            return
+        self.checkpoint("page size")
+        sx, sy = width / page.width_mm, height / page.height_mm
+        for item in page.items:
+            item.x, item.y = item.x * sx, item.y * sy
+            item.w, item.h = min(item.w, width), min(item.h, height)
+            if isinstance(item.anchor, PointAnchor):
+                item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
+        page.size, page.orientation, page.width_mm, page.height_mm = size, orientation, width, height
+        self.held_id = None
+        self.engine = self._build_engine()
+        self.engine.reheat()
+
+    def toggle_orientation(self) -> str:
+        page = self.page
+        if page.size == "custom":
+            self.checkpoint("page orientation")
+            page.width_mm, page.height_mm = page.height_mm, page.width_mm
+            page.orientation = "landscape" if page.width_mm > page.height_mm else "portrait"
+            for item in page.items:
+                item.x, item.y = item.y * page.width_mm / page.height_mm, \
+                    item.x * page.height_mm / page.width_mm
+            self.engine = self._build_engine()
+            self.engine.reheat()
+            return page.orientation
+        orientation = "landscape" if page.orientation == "portrait" else "portrait"
+        self.set_page_size(page.size, orientation)
+        return orientation
+
+    # -- files -------------------------------------------------------------------------------
+
+    def save(self) -> Path:
+        self.end_move()
+        self.sync_positions()
+        path = save_project(self.project)
+        self.edits_since_save = 0
+        return path
+
+    def finalize_for_export(self) -> Project:
+        """Run the no-overlap pass on every page, write positions back; return a copy to render.
+
+        The finalised positions become part of the document (undoable), so the
+        page on screen is the page in the PDF.
+        """
+        self.end_move()
+        self.checkpoint("finalise for export")
+        self.engine.finalize()
+        self.sync_positions()
+        settings = dataclasses.replace(self.project.physics, seed=self.seed)
+        for index, page in enumerate(self.project.pages):
+            if index != self.page_index:
+                engine = engine_for_page(page, settings)
+                engine.finalize()
+                write_back(page, engine)
+        return copy.deepcopy(self.project)

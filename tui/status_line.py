@@ -1,0 +1,38 @@
+"""The two status lines under the preview: the physics, then the layout's quality."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from textual.widgets import Static
+
+
+@dataclass(frozen=True)
+class Status:
+    """What the status line shows; the screen builds one per frame."""
+
+    state: str  # "settling", "settled", "paused" or "exporting …"
+    energy: float
+    fps: float
+    steps_per_s: float
+    quality: str
+    frame_ms: float = 0.0
+
+
+def status_text(status: Status) -> str:
+    if status.state in ("settled", "paused"):
+        rate = "idle: no frames drawn"
+    else:
+        rate = (f"{status.fps:4.1f} fps · {status.steps_per_s:,.0f} steps/s · "
+                f"frame {status.frame_ms:4.1f} ms")
+    physics = f"{status.state} · energy {status.energy:.2e} · {rate}"
+    return f"{physics}\n{status.quality}"
+
+
+class StatusLine(Static):
+    """Shows a Status; the `-settled` / `-paused` classes colour it (see app.tcss)."""
+
+    def show(self, status: Status) -> None:
+        self.update(status_text(status))
+        self.set_class(status.state == "settled", "-settled")
+        self.set_class(status.state == "paused", "-paused")

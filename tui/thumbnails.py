@@ -1,0 +1,46 @@
+"""Small colour thumbnails of pictures, as arrays of half-block pixels.
+
+Decoding a photo takes far longer than a frame, so each file is decoded once
+(into a bounded working copy) and each (file, size) thumbnail is cached; a
+changed file (new mtime) is read again.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+WORKING_SIZE = 256  # longest side of the decoded copy that thumbnails are cut from
+
+
+@lru_cache(maxsize=64)
+def _working_copy(path: str, mtime_ns: int):
+    from PIL import Image
+
+    with Image.open(path) as image:
+        image = image.convert("RGB")
+        image.thumbnail((WORKING_SIZE, WORKING_SIZE))
+        return image.copy()
+
+
+@lru_cache(maxsize=512)
+def _thumbnail(path: str, mtime_ns: int, width_px: int, height_px: int) -> np.ndarray:
+    from PIL import Image
+
+    image = _working_copy(path, mtime_ns).resize((width_px, height_px), Image.Resampling.BOX)
+    pixels = np.asarray(image, dtype=np.uint8)
+    pixels.setflags(write=False)
+    return pixels
+
+
+def thumbnail(path: Path, width_px: int, height_px: int) -> np.ndarray | None:
+    """RGB pixels of shape (height_px, width_px, 3), or None if the file cannot be read."""
+    if width_px < 1 or height_px < 1:
+        return None
+    try:
+        mtime_ns = path.stat().st_mtime_ns
+        return _thumbnail(str(path), mtime_ns, width_px, height_px)
+    except (OSError, ValueError, SyntaxError):
+        return None  # missing or not a picture: the preview draws a placeholder instead
