@@ -1,0 +1,112 @@
+"""The page's items as arrays: the state every force term and integrator reads.
+
+Rows are items in insertion order; ``Engine.ids`` maps a row back to the item's stable id.
+Arrays are updated in place inside one ``advance`` call (purity holds at the call's boundary).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+NO_TARGET = -1
+
+
+def _empty(shape: tuple[int, ...], dtype=float, fill=0.0) -> np.ndarray:
+    return np.full(shape, fill, dtype=dtype)
+
+
+@dataclass
+class Bodies:
+    """Per-item state.  Shapes: (n, 2) for vectors, (n,) for flags and scalars.
+
+    centres     rectangle centres, mm
+    sizes       (w, h), mm, both > 0
+    velocities  per mode: mm per time unit (paper) or mm per step (fast)
+    decorative  takes no part in forces, is never moved
+    held        being dragged: pushes others, is not pushed
+    anchors     anchor point per item, NaN where unanchored
+    gammas      per-item rigidity of the anchor spring, equation (6)
+    hard        hard anchor: the position is set to the anchor after every step
+    targets     row of the item this one follows (item-to-item anchor), NO_TARGET if none
+    offsets     follower's offset from its target's centre, mm
+    """
+
+    centres: np.ndarray = field(default_factory=lambda: _empty((0, 2)))
+    sizes: np.ndarray = field(default_factory=lambda: _empty((0, 2)))
+    velocities: np.ndarray = field(default_factory=lambda: _empty((0, 2)))
+    decorative: np.ndarray = field(default_factory=lambda: _empty((0,), bool, False))
+    held: np.ndarray = field(default_factory=lambda: _empty((0,), bool, False))
+    anchors: np.ndarray = field(default_factory=lambda: _empty((0, 2), float, np.nan))
+    gammas: np.ndarray = field(default_factory=lambda: _empty((0,), float, 0.0))
+    hard: np.ndarray = field(default_factory=lambda: _empty((0,), bool, False))
+    targets: np.ndarray = field(default_factory=lambda: _empty((0,), np.int64, NO_TARGET))
+    offsets: np.ndarray = field(default_factory=lambda: _empty((0, 2)))
+
+    @property
+    def count(self) -> int:
+        return len(self.centres)
+
+    @property
+    def charges(self) -> np.ndarray:
+        """q = w * h, the charge of equation (2), shape (n,)."""
+        return self.sizes[:, 0] * self.sizes[:, 1]
+
+    @property
+    def active(self) -> np.ndarray:
+        """Items that take part in the forces (everything but decorations), shape (n,)."""
+        return ~self.decorative
+
+    @property
+    def followers(self) -> np.ndarray:
+        return self.targets != NO_TARGET
+
+    @property
+    def free(self) -> np.ndarray:
+        """Items the integrator moves by their own forces, shape (n,)."""
+        return ~(self.decorative | self.held | self.hard | self.followers)
+
+    def append(self, centre, size, *, decorative: bool) -> None:
+        """Add one unanchored item at rest."""
+        self.centres = np.vstack([self.centres, np.asarray(centre, float)[None]])
+        self.sizes = np.vstack([self.sizes, np.asarray(size, float)[None]])
+        self.velocities = np.vstack([self.velocities, np.zeros((1, 2))])
+        self.decorative = np.append(self.decorative, decorative)
+        self.held = np.append(self.held, False)
+        self.anchors = np.vstack([self.anchors, np.full((1, 2), np.nan)])
+        self.gammas = np.append(self.gammas, 0.0)
+        self.hard = np.append(self.hard, False)
+        self.targets = np.append(self.targets, NO_TARGET).astype(np.int64)
+        self.offsets = np.vstack([self.offsets, np.zeros((1, 2))])
+
+    def remove(self, row: int) -> None:
+        """Drop one row; followers of it become free, later target rows shift down by one."""
+        keep = np.arange(self.count) != row
+        targets = self.targets.copy()
+        targets[targets == row] = NO_TARGET
+        targets[targets > row] -= 1
+        self.targets = targets
+        for name in ("centres", "sizes", "velocities", "decorative", "held", "anchors",
+                     "gammas", "hard", "targets", "offsets"):
+            setattr(self, name, getattr(self, name)[keep])
+
+    def group_roots(self) -> tuple[np.ndarray, np.ndarray]:
+        """Root row of every item's follow chain, and the offset from that root, mm.
+
+        A follower's forces go to its root and its position is set from the root's, so an
+        anchored group moves as one rigid body.  Chains are resolved here; cycles are refused
+        earlier, by ``Engine.anchor_to``.
+        """
+        roots = np.arange(self.count)
+        offsets = np.zeros((self.count, 2))
+        for row in range(self.count):
+            current, total = row, np.zeros(2)
+            for _ in range(self.count):
+                target = self.targets[current]
+                if target == NO_TARGET:
+                    break
+                total += self.offsets[current]
+                current = int(target)
+            roots[row], offsets[row] = current, total
+        return roots, offsets

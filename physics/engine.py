@@ -1,0 +1,250 @@
+"""One page's physics behind the API the editor and the CLI share.
+
+Every user operation (insert, delete, move, hold, release, resize, anchor, page resize) reheats
+the page, as section 4.7 asks: alpha and beta go back to full strength.  ``advance`` runs a
+number of steps or fills a time budget measured by a clock the caller passes in; the engine
+itself never reads a clock.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from physics.bodies import NO_TARGET, Bodies
+from physics.euler import kinetic_energy
+from physics.fast_mode import run_fast
+from physics.finalize import remove_overlaps
+from physics.paper_mode import run_paper
+from physics.params import Params
+from physics.quality import Quality, measure_quality
+
+BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the clock
+
+
+@dataclass(frozen=True)
+class SettleReport:
+    steps: int
+    energy: float  # kinetic energy (1) at the end
+    settled: bool
+    fits: bool = True  # the final pass reached zero overlap and the gutter (True if not run)
+
+
+def _finite(name: str, *values: float) -> None:
+    for value in values:
+        if not math.isfinite(value):
+            raise ValueError(f"{name} must be finite, not {value!r}")
+
+
+def _positive(name: str, *values: float) -> None:
+    _finite(name, *values)
+    for value in values:
+        if value <= 0:
+            raise ValueError(f"{name} must be > 0, not {value!r}")
+
+
+class Engine:
+    """The items of one page and their motion.  Not thread-safe: one caller drives it."""
+
+    def __init__(self, page_w_mm: float, page_h_mm: float, params: Params = Params()):
+        _positive("page size", page_w_mm, page_h_mm)
+        self.page_w_mm = float(page_w_mm)
+        self.page_h_mm = float(page_h_mm)
+        self.params = params
+        self._bodies = Bodies()
+        self._ids: list[str] = []
+        self._rows: dict[str, int] = {}
+        self._heat = 1.0
+        self._settled = True
+        self._rng = np.random.default_rng(params.seed)
+
+    # ----- reading -------------------------------------------------------------------------
+    @property
+    def ids(self) -> tuple[str, ...]:
+        return tuple(self._ids)
+
+    @property
+    def settled(self) -> bool:
+        return self._settled
+
+    @property
+    def heat(self) -> float:
+        """Section 4.7's factor on alpha and beta: 1 after an edit, shrinking while it settles."""
+        return self._heat
+
+    @property
+    def kinetic_energy(self) -> float:
+        """Equation (1) over the items that move."""
+        return kinetic_energy(self._bodies.sizes, self._bodies.velocities, self._bodies.active)
+
+    @property
+    def bodies(self) -> Bodies:
+        """The state arrays (read them, do not write them)."""
+        return self._bodies
+
+    def positions(self) -> dict[str, tuple[float, float]]:
+        return {item_id: (float(x), float(y))
+                for item_id, (x, y) in zip(self._ids, self._bodies.centres)}
+
+    def sizes(self) -> dict[str, tuple[float, float]]:
+        return {item_id: (float(w), float(h))
+                for item_id, (w, h) in zip(self._ids, self._bodies.sizes)}
+
+    def quality(self) -> Quality:
+        return measure_quality(self.page_w_mm, self.page_h_mm, self._bodies.centres,
+                               self._bodies.sizes, self.params.gutter_mm,
+                               decorative=self._bodies.decorative)
+
+    # ----- editing -------------------------------------------------------------------------
+    def _row(self, item_id: str) -> int:
+        try:
+            return self._rows[item_id]
+        except KeyError:
+            raise KeyError(f"no item {item_id!r} on this page") from None
+
+    def reheat(self) -> None:
+        self._heat = 1.0
+        self._settled = False
+
+    def insert(self, item_id: str, x_mm: float, y_mm: float, w_mm: float, h_mm: float, *,
+               decorative: bool = False) -> None:
+        if item_id in self._rows:
+            raise ValueError(f"item {item_id!r} is already on this page")
+        _finite("position", x_mm, y_mm)
+        _positive("size", w_mm, h_mm)
+        self._bodies.append((x_mm, y_mm), (w_mm, h_mm), decorative=decorative)
+        self._rows[item_id] = len(self._ids)
+        self._ids.append(item_id)
+        self.reheat()
+
+    def delete(self, item_id: str) -> None:
+        row = self._row(item_id)
+        self._bodies.remove(row)
+        del self._ids[row]
+        self._rows = {name: k for k, name in enumerate(self._ids)}
+        self.reheat()
+
+    def move(self, item_id: str, x_mm: float, y_mm: float) -> None:
+        """A user move: the item jumps there at rest.  A hard anchor moves along with it."""
+        _finite("position", x_mm, y_mm)
+        row = self._row(item_id)
+        self._bodies.centres[row] = (x_mm, y_mm)
+        self._bodies.velocities[row] = 0.0
+        if self._bodies.hard[row]:
+            self._bodies.anchors[row] = (x_mm, y_mm)
+        self.reheat()
+
+    def hold(self, item_id: str) -> None:
+        row = self._row(item_id)
+        self._bodies.held[row] = True
+        self._bodies.velocities[row] = 0.0
+        self.reheat()
+
+    def release(self, item_id: str) -> None:
+        self._bodies.held[self._row(item_id)] = False
+        self.reheat()
+
+    def resize(self, item_id: str, w_mm: float, h_mm: float) -> None:
+        _positive("size", w_mm, h_mm)
+        self._bodies.sizes[self._row(item_id)] = (w_mm, h_mm)
+        self.reheat()
+
+    def anchor_point(self, item_id: str, ax_mm: float, ay_mm: float, gamma: float = 1.0,
+                     hard: bool = False) -> None:
+        """Anchor to a page point: a spring (6) of rigidity gamma in [0, 1], or, if ``hard``,
+        the position itself.  Replaces any earlier anchor of the item."""
+        _finite("anchor", ax_mm, ay_mm, gamma)
+        if not 0.0 <= gamma <= 1.0:
+            raise ValueError(f"gamma must lie in [0, 1], not {gamma!r}")
+        row = self._row(item_id)
+        self.unanchor(item_id)
+        self._bodies.anchors[row] = (ax_mm, ay_mm)
+        self._bodies.gammas[row] = gamma
+        self._bodies.hard[row] = hard
+        if hard:
+            self._bodies.centres[row] = (ax_mm, ay_mm)
+            self._bodies.velocities[row] = 0.0
+        self.reheat()
+
+    def anchor_to(self, item_id: str, target_id: str, dx_mm: float, dy_mm: float) -> None:
+        """The item follows ``target_id`` at offset (dx, dy) from the target's centre, rigidly.
+
+        Refuses a chain that would lead back to the item itself.
+        """
+        _finite("offset", dx_mm, dy_mm)
+        row, target = self._row(item_id), self._row(target_id)
+        current = target
+        for _ in range(len(self._ids) + 1):
+            if current == row:
+                raise ValueError(f"anchoring {item_id!r} to {target_id!r} makes a cycle")
+            current = int(self._bodies.targets[current])
+            if current == NO_TARGET:
+                break
+        self.unanchor(item_id)
+        self._bodies.targets[row] = target
+        self._bodies.offsets[row] = (dx_mm, dy_mm)
+        self._bodies.centres[row] = self._bodies.centres[target] + (dx_mm, dy_mm)
+        self.reheat()
+
+    def unanchor(self, item_id: str) -> None:
+        row = self._row(item_id)
+        self._bodies.anchors[row] = np.nan
+        self._bodies.gammas[row] = 0.0
+        self._bodies.hard[row] = False
+        self._bodies.targets[row] = NO_TARGET
+        self._bodies.offsets[row] = 0.0
+        self.reheat()
+
+    def resize_page(self, page_w_mm: float, page_h_mm: float) -> None:
+        _positive("page size", page_w_mm, page_h_mm)
+        self.page_w_mm, self.page_h_mm = float(page_w_mm), float(page_h_mm)
+        self.reheat()
+
+    # ----- running -------------------------------------------------------------------------
+    def _run(self, steps: int) -> int:
+        runner = run_paper if self.params.mode == "paper" else run_fast
+        args = (self._bodies, self.page_w_mm, self.page_h_mm, self.params, self._heat, steps)
+        if self.params.mode == "paper":
+            done, self._heat, self._settled = run_paper(*args)
+        else:
+            done, self._heat, self._settled = runner(*args, self._rng)
+        return done
+
+    def advance(self, steps: int | None = None, *, budget_s: float | None = None,
+                clock: Callable[[], float] | None = None) -> int:
+        """Run up to ``steps`` steps (default: one frame of the mode), or, given ``budget_s`` and
+        a ``clock`` (e.g. time.perf_counter), as many as fit in the budget.  Stops early once
+        settled.  Returns the number of steps run.
+        """
+        if self._settled:
+            return 0
+        if budget_s is None:
+            count = self.params.frame_steps if steps is None else int(steps)
+            return self._run(max(count, 0))
+        if clock is None:
+            raise ValueError("a time budget needs a clock callable, e.g. time.perf_counter")
+        chunk = BUDGET_CHUNK_STEPS[self.params.mode]
+        limit = math.inf if steps is None else int(steps)
+        start, total = clock(), 0
+        while not self._settled and total < limit and clock() - start < budget_s:
+            total += self._run(int(min(chunk, limit - total)))
+        return total
+
+    def finalize(self) -> bool:
+        """The no-overlap pass; returns whether every pair now keeps the gutter."""
+        fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
+                               self.params.gutter_mm)
+        self._bodies.velocities[:] = 0.0
+        return fits
+
+    def settle(self, max_steps: int = 200_000, *, finalize: bool = True) -> SettleReport:
+        """Headless: run until settled (or ``max_steps``), then the no-overlap pass."""
+        steps = 0
+        while not self._settled and steps < max_steps:
+            steps += self._run(min(10_000, max_steps - steps))
+        energy = self.kinetic_energy
+        fits = self.finalize() if finalize else True
+        return SettleReport(steps=steps, energy=energy, settled=self._settled, fits=fits)

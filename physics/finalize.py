@@ -1,0 +1,148 @@
+"""The no-overlap pass: run before every export and at the end of every headless settle.
+
+Physics alone leaves a page *nearly* right (a pressed spring network keeps small overlaps, and
+a user may stop it any time).  This pass makes it exactly right when the items fit: it projects
+positions until every pair of items is at least ``gutter`` apart edge to edge and every item is
+inside the page, moving each pair apart along the axis that needs the smaller move, so the
+layout the physics found is kept, only nudged.  It is position-based (Jacobi projection, as in
+position-based dynamics), so it cannot blow up.  When the gutter cannot be reached it settles
+for no overlap at all, and when even that fails (an over-full page) it keeps the arrangement
+with the least overlap it saw.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from physics.bodies import Bodies
+from physics.constraints import enforce_positions, hand_forces_to_roots
+from physics.fast_forces import candidate_pairs
+from physics.fast_mode import clamp_to_page, group_extents
+
+MAX_ITERATIONS = 1000
+SLACK_MM = 1e-3  # aim this far beyond the gutter, so rounding never lands below it
+RELAXATION = 1.0
+AIM_BEYOND_MM = 0.3
+
+
+def overlap_area(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray) -> float:
+    """Total intersection area of the pairs (i, j), mm^2."""
+    d = np.abs(centres[j] - centres[i])
+    depth = np.clip(halves[i] + halves[j] - d, 0.0, None)
+    depth = np.minimum(depth, 2 * np.minimum(halves[i], halves[j]))
+    return float((depth[:, 0] * depth[:, 1]).sum())
+
+
+def separation_moves(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray,
+                     clearance: float) -> np.ndarray:
+    """Move of j away from i that clears ``clearance`` on the cheaper axis, shape (m, 2).
+
+    Zero for pairs already clear on either axis; slightly more than the need otherwise, so
+    that the projection ends in a finite number of iterations instead of creeping up to the
+    boundary.
+    """
+    d = centres[j] - centres[i]
+    need = halves[i] + halves[j] + clearance - np.abs(d)
+    violating = (need[:, 0] > 0) & (need[:, 1] > 0)
+    along_x = need[:, 0] <= need[:, 1]
+    direction = np.where(d >= 0, 1.0, -1.0)
+    moves = np.zeros_like(d)
+    moves[:, 0] = np.where(violating & along_x, need[:, 0] + SLACK_MM, 0.0)
+    moves[:, 1] = np.where(violating & ~along_x, need[:, 1] + SLACK_MM, 0.0)
+    return direction * moves
+
+
+class _Projection:
+    """What one page's projection needs, computed once."""
+
+    def __init__(self, bodies: Bodies, page_w_mm: float, page_h_mm: float):
+        self.bodies, self.page = bodies, (page_w_mm, page_h_mm)
+        active = bodies.active
+        self.rows_active = np.flatnonzero(active)
+        self.free_rows = np.flatnonzero(bodies.free)
+        self.roots, self.root_offsets = bodies.group_roots()
+        self.followers = bodies.followers
+        self.halves = bodies.sizes / 2
+        charges = np.where(active, bodies.charges, 0.0)
+        group_mass = np.bincount(self.roots, weights=charges, minlength=bodies.count)
+        movable = bodies.free[self.roots] & ~bodies.held & active
+        self.inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[self.roots], 1e-12),
+                                     0.0)
+        self.low, self.high = group_extents(bodies, self.roots, self.root_offsets)
+
+    def clamp(self) -> None:
+        clamp_to_page(self.bodies.centres, self.bodies.velocities, self.free_rows, self.low,
+                      self.high, *self.page)
+        enforce_positions(self.bodies, self.roots, self.root_offsets)
+
+    def pairs(self, reach: float) -> tuple[np.ndarray, np.ndarray]:
+        return candidate_pairs(self.bodies.centres, self.halves, self.rows_active, self.roots,
+                               reach)
+
+    def violations(self, clearance: float) -> int:
+        i, j = self.pairs(clearance)
+        moves = separation_moves(self.bodies.centres, self.halves, i, j, clearance)
+        return int((moves != 0).any(axis=1).sum())
+
+    def run(self, clearance: float, iterations: int, aim: float | None = None) -> bool:
+        """Jacobi projection in place; True once no pair is closer than ``clearance``.
+
+        Pairs are pushed to ``aim`` (>= clearance): aiming a little beyond what is needed ends
+        the projection sooner in a crowd, where neighbours keep undoing each other's moves.
+        """
+        aim = clearance if aim is None else aim
+        bodies, count = self.bodies, self.bodies.count
+        skin = max(clearance, 2.0)
+        i, j = self.pairs(clearance + skin)
+        built_at = bodies.centres.copy()
+        best, best_score = bodies.centres.copy(), np.inf
+        for _ in range(iterations):
+            if np.abs(bodies.centres - built_at).max() > skin / 2:
+                i, j = self.pairs(clearance + skin)
+                built_at = bodies.centres.copy()
+            moves = separation_moves(bodies.centres, self.halves, i, j, aim)
+            violating = (moves != 0).any(axis=1)
+            if not violating.any() or not separation_moves(
+                    bodies.centres, self.halves, i, j, clearance).any():
+                return True
+            score = (overlap_area(bodies.centres, self.halves, i, j) + np.abs(moves).sum())
+            if score < best_score:
+                best, best_score = bodies.centres.copy(), score
+            vi, vj, moves = i[violating], j[violating], moves[violating]
+            inv = self.inverse_mass
+            total = inv[vi] + inv[vj]
+            total = np.where(total > 0, total, 1.0)
+            shift = np.empty((count, 2))
+            for axis in (0, 1):
+                shift[:, axis] = (np.bincount(vj, moves[:, axis] * inv[vj] / total, count)
+                                  - np.bincount(vi, moves[:, axis] * inv[vi] / total, count))
+            hand_forces_to_roots(shift, self.roots, self.followers)
+            # An item asked to move by several pairs takes their sum over the square root of
+            # their number: plain sums overshoot in stacks, plain averages crawl.
+            touches = np.bincount(vi, minlength=count) + np.bincount(vj, minlength=count)
+            shift *= RELAXATION / np.sqrt(np.maximum(touches, 1))[:, None]
+            bodies.centres[self.free_rows] += shift[self.free_rows]
+            self.clamp()
+        if self.violations(clearance) == 0:
+            return True
+        bodies.centres[:] = best
+        self.clamp()
+        return self.violations(clearance) == 0
+
+
+def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
+                    max_iterations: int = MAX_ITERATIONS) -> bool:
+    """Project positions in place until no two active items are closer than ``gutter_mm``.
+
+    Held items, hard anchors and their followers stay put; decorations are ignored.  Returns
+    True when the result keeps the gutter everywhere (and so has no overlap).  If the gutter
+    cannot be reached, the pass still removes every overlap it can.
+    """
+    projection = _Projection(bodies, page_w_mm, page_h_mm)
+    projection.clamp()
+    if len(projection.rows_active) < 2 or len(projection.free_rows) == 0:
+        return projection.violations(gutter_mm) == 0
+    if projection.run(gutter_mm + SLACK_MM, max_iterations, aim=gutter_mm + AIM_BEYOND_MM):
+        return True
+    projection.run(SLACK_MM, max_iterations)
+    return False

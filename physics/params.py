@@ -1,0 +1,82 @@
+"""Tuning constants of the engine, and how they scale with the page.
+
+Units: millimetres for lengths, page origin at the top-left, x to the right, y down; an item's
+position is the centre of its rectangle.
+
+The paper's constants keep the paper's names (alpha, beta, delta, dt; gamma is per item) so the
+code can be held against its equations.  Section 4.7's decay of alpha and beta is called *heat*:
+every step multiplies the heat by ``1 - heat_decay``, a user operation resets it to 1.
+
+Page-size scaling, so that an A4 page and a 5x8 inch card behave alike
+----------------------------------------------------------------------
+Let ``s = sqrt(page area / A4 area)`` (``page_scale``).  Scaling every length of a page by ``s``
+leaves the repulsion (2) and the wall force unchanged (charge ``w*h`` and ``sigma**2`` both grow
+by ``s**2``), while a layout that looks the same needs every displacement, hence every force, to
+grow by ``s``.  So the paper mode uses ``alpha * s``; the spring (6) already grows with the
+displacement, so ``beta`` needs no scaling.  dt, delta and heat_decay are dimensionless per step.
+The fast mode is scale-free by construction: its target gap comes from the free area of the page,
+and its speed limit and stillness threshold are fractions of the page size.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+A4_W_MM = 210.0
+A4_H_MM = 297.0
+
+MODES = ("fast", "paper")
+DISTANCES = ("euclidean", "axis")
+
+
+def page_scale(page_w_mm: float, page_h_mm: float) -> float:
+    """Linear size of a page relative to A4 (1.0 for A4, about 0.64 for a 5x8 inch card)."""
+    return math.sqrt((page_w_mm * page_h_mm) / (A4_W_MM * A4_H_MM))
+
+
+@dataclass(frozen=True)
+class Params:
+    """Every constant the engine reads; immutable so one value can be shared by many pages.
+
+    ``alpha``, ``beta``, ``delta``, ``dt`` and ``distance`` shape the paper mode; the fast mode
+    reads ``beta`` (anchor stiffness relative to its own contact stiffness), ``heat_decay``,
+    ``heat_min``, ``gutter_mm``, ``seed`` and ``fast_steps_per_frame``.
+    """
+
+    mode: str = "fast"  # "fast" | "paper"
+    alpha: float = 150.0  # repulsion constant of equation (2), for an A4 page
+    beta: float = 20.0  # anchor spring stiffness of equation (6)
+    delta: float = 0.01  # velocity damping of equation (5), for up to ITEMS_PER_DELTA items
+    dt: float = 0.005  # time step of equations (4) and (5)
+    steps_per_frame: int = 500  # the paper's steps per drawn frame (paper mode)
+    distance: str = "axis"  # "euclidean" (7) | "axis" (8)
+    heat_decay: float = 0.01  # 4.7: alpha and beta shrink by this factor every step
+    gutter_mm: float = 3.0  # minimum gap that the final pass guarantees when items fit
+    seed: int = 0  # seeds the jitter that separates items sitting on one point
+    heat_min: float = 0.001  # below this heat the page counts as settled
+    fast_steps_per_frame: int = 10  # fast mode's steps per drawn frame (each moves far more)
+
+    def __post_init__(self) -> None:
+        if self.mode not in MODES:
+            raise ValueError(f"mode must be one of {MODES}, not {self.mode!r}")
+        if self.distance not in DISTANCES:
+            raise ValueError(f"distance must be one of {DISTANCES}, not {self.distance!r}")
+        finite = ("alpha", "beta", "delta", "dt", "heat_decay", "gutter_mm", "heat_min")
+        for name in finite:
+            value = getattr(self, name)
+            if not math.isfinite(value) or value < 0:
+                raise ValueError(f"{name} must be a finite number >= 0, not {value!r}")
+        if not self.delta <= 1:
+            raise ValueError(f"delta must lie in [0, 1], not {self.delta!r}")
+        if not self.heat_decay < 1:
+            raise ValueError(f"heat_decay must lie in [0, 1), not {self.heat_decay!r}")
+        if self.dt <= 0:
+            raise ValueError("dt must be > 0")
+        if self.steps_per_frame < 1 or self.fast_steps_per_frame < 1:
+            raise ValueError("steps per frame must be >= 1")
+
+    @property
+    def frame_steps(self) -> int:
+        """Steps in one drawn frame for the selected mode."""
+        return self.steps_per_frame if self.mode == "paper" else self.fast_steps_per_frame

@@ -1,0 +1,119 @@
+"""Layout quality measures after Harrington et al. 2004 ("Aesthetic measures for automated
+document layout"): overlap, area off the page, minimum gap, evenness of the gaps between
+neighbours, and balance.  One function serves ``floatpage check`` and the editor's status line.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+GAP_TOLERANCE_MM = 1e-6
+
+
+@dataclass(frozen=True)
+class Quality:
+    overlap_area_mm2: float
+    overlap_fraction: float  # overlap area / total item area
+    overlapping_pairs: tuple[tuple[int, int], ...]
+    off_page_area_mm2: float
+    off_page: tuple[int, ...]  # indices of items not wholly inside the page
+    min_gap_mm: float  # smallest edge-to-edge gap; negative if overlapping; inf if < 2 items
+    gap_evenness: float  # 0..1, 1 = every item's nearest neighbour equally far
+    balance: float  # 0..1, 1 = centre of mass of item area at the page centre
+    gutter_mm: float = 0.0  # the gap the layout should keep, for ``ok`` and the summary
+
+    @property
+    def ok(self) -> bool:
+        """No overlap, nothing off the page, and every gap at least the gutter."""
+        return (not self.overlapping_pairs and not self.off_page
+                and self.min_gap_mm >= self.gutter_mm - GAP_TOLERANCE_MM)
+
+    def summary(self) -> str:
+        """One short line for a status bar."""
+        gap = "—" if math.isinf(self.min_gap_mm) else f"{self.min_gap_mm:.1f} mm"
+        if not math.isinf(self.min_gap_mm) and self.min_gap_mm < self.gutter_mm - GAP_TOLERANCE_MM:
+            gap += f" < {self.gutter_mm:g}"
+        return (f"{len(self.overlapping_pairs)} overlaps · {len(self.off_page)} off page · "
+                f"gap {gap} · even {self.gap_evenness:.2f} · balance {self.balance:.2f}")
+
+
+def edge_gaps(centres: np.ndarray, sizes: np.ndarray) -> np.ndarray:
+    """Edge-to-edge gap between every pair, shape (n, n), diagonal inf.
+
+    Apart on both axes: the euclidean distance between the nearest corners; apart on one axis:
+    the gap on that axis; overlapping: minus the smaller penetration depth.
+    """
+    halves = sizes / 2
+    clear = (np.abs(centres[:, None, :] - centres[None, :, :])
+             - halves[:, None, :] - halves[None, :, :])
+    both = (clear > 0).all(axis=-1)
+    corner = np.sqrt((np.clip(clear, 0.0, None) ** 2).sum(axis=-1))
+    gaps = np.where(both, corner, clear.max(axis=-1))
+    np.fill_diagonal(gaps, np.inf)
+    return gaps
+
+
+def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_mm: float = 0.0,
+                    *, decorative=None) -> Quality:
+    """All measures for one page.  ``centres`` and ``sizes`` are (n, 2) arrays in mm.
+
+    ``decorative`` (n,) bool marks items that sit behind the others by design: they count
+    for the off-page measure and balance, but not for overlap or gaps.  Indices in the result
+    refer to the rows given.
+    """
+    centres = np.asarray(centres, float).reshape(-1, 2)
+    sizes = np.asarray(sizes, float).reshape(-1, 2)
+    count = len(centres)
+    layered = (np.zeros(count, bool) if decorative is None
+               else np.asarray(decorative, bool).reshape(count))
+    halves = sizes / 2
+    areas = sizes[:, 0] * sizes[:, 1]
+
+    inside_lo = np.clip(centres - halves, 0.0, [page_w_mm, page_h_mm])
+    inside_hi = np.clip(centres + halves, 0.0, [page_w_mm, page_h_mm])
+    inside_area = np.prod(np.clip(inside_hi - inside_lo, 0.0, None), axis=1)
+    off_area = np.clip(areas - inside_area, 0.0, None)
+    margin = GAP_TOLERANCE_MM
+    off_page = tuple(int(k) for k in np.flatnonzero(
+        ((centres - halves) < -margin).any(axis=1)
+        | ((centres + halves) > np.array([page_w_mm, page_h_mm]) + margin).any(axis=1)))
+
+    rows = np.flatnonzero(~layered)
+    overlap_total, pairs, min_gap, evenness = 0.0, (), math.inf, 1.0
+    if len(rows) >= 2:
+        c, h = centres[rows], halves[rows]
+        depth = np.clip(h[:, None, :] + h[None, :, :]
+                        - np.abs(c[:, None, :] - c[None, :, :]), 0.0, None)
+        depth = np.minimum(depth, 2 * np.minimum(h[:, None, :], h[None, :, :]))
+        overlap = depth[..., 0] * depth[..., 1]
+        upper = np.triu(np.ones_like(overlap, bool), k=1)
+        hits = np.argwhere(upper & (overlap > 0))
+        overlap_total = float(overlap[upper].sum())
+        pairs = tuple((int(rows[a]), int(rows[b])) for a, b in hits)
+        gaps = edge_gaps(c, sizes[rows])
+        min_gap = float(gaps.min())
+        nearest = np.clip(gaps.min(axis=1), 0.0, None)
+        mean = nearest.mean()
+        evenness = 1.0 / (1.0 + nearest.std() / mean) if mean > 0 else 0.0
+    item_area = float(areas[rows].sum())
+
+    balance = 1.0
+    if count and areas.sum() > 0:
+        centre_of_mass = (centres * areas[:, None]).sum(axis=0) / areas.sum()
+        off_centre = np.abs(centre_of_mass - [page_w_mm / 2, page_h_mm / 2])
+        balance = float(np.clip(1.0 - (off_centre / [page_w_mm / 2, page_h_mm / 2]).mean(), 0, 1))
+
+    return Quality(
+        overlap_area_mm2=overlap_total,
+        overlap_fraction=overlap_total / item_area if item_area > 0 else 0.0,
+        overlapping_pairs=pairs,
+        off_page_area_mm2=float(off_area.sum()),
+        off_page=off_page,
+        min_gap_mm=min_gap,
+        gap_evenness=float(evenness),
+        balance=balance,
+        gutter_mm=float(gutter_mm),
+    )

@@ -1,0 +1,88 @@
+"""Seeded test and benchmark pages: mixed photos and text boxes on A4.
+
+Shared by tests/physics and benchmarks/physics.py so that both talk about the same pages.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from physics.params import A4_H_MM, A4_W_MM
+
+PHOTO_ASPECTS = (4 / 3, 3 / 4, 1.0, 3 / 2, 2 / 3)  # width / height
+TEXT_ASPECTS = (2.5, 3.0, 4.0, 5.0)
+TEXT_SHARE = 0.35  # share of items that are text boxes
+
+
+@dataclass(frozen=True)
+class Scene:
+    name: str
+    page_w_mm: float
+    page_h_mm: float
+    centres: np.ndarray  # (n, 2) mm
+    sizes: np.ndarray  # (n, 2) mm
+
+    @property
+    def ids(self) -> tuple[str, ...]:
+        return tuple(f"item{k}" for k in range(len(self.centres)))
+
+    @property
+    def coverage(self) -> float:
+        return float(np.prod(self.sizes, axis=1).sum() / (self.page_w_mm * self.page_h_mm))
+
+
+def mixed_sizes(count: int, coverage: float, page_w_mm: float, page_h_mm: float,
+                rng: np.random.Generator) -> np.ndarray:
+    """Sizes (count, 2) of photos and text boxes whose areas add up to ``coverage`` of the page.
+
+    Areas vary by a factor of about 4, as on a real album page.
+    """
+    text = rng.random(count) < TEXT_SHARE
+    aspects = np.where(text, rng.choice(TEXT_ASPECTS, count), rng.choice(PHOTO_ASPECTS, count))
+    weights = rng.uniform(0.5, 2.0, count) * np.where(text, 0.5, 1.0)
+    areas = weights / weights.sum() * coverage * page_w_mm * page_h_mm
+    widths = np.sqrt(areas * aspects)
+    return np.column_stack([widths, areas / widths])
+
+
+def scattered_centres(sizes: np.ndarray, page_w_mm: float, page_h_mm: float,
+                      rng: np.random.Generator) -> np.ndarray:
+    """Random centres that keep each item inside the page where it fits."""
+    extent = np.array([page_w_mm, page_h_mm])
+    low = np.minimum(sizes / 2, extent / 2)
+    high = np.maximum(extent - sizes / 2, extent / 2)
+    return low + rng.random(sizes.shape) * (high - low)
+
+
+def mixed_scene(count: int, coverage: float = 0.5, seed: int = 0, *,
+                page_w_mm: float = A4_W_MM, page_h_mm: float = A4_H_MM) -> Scene:
+    rng = np.random.default_rng(seed)
+    sizes = mixed_sizes(count, coverage, page_w_mm, page_h_mm, rng)
+    centres = scattered_centres(sizes, page_w_mm, page_h_mm, rng)
+    return Scene(f"{count} items, {coverage:.0%}", page_w_mm, page_h_mm, centres, sizes)
+
+
+def dropped_scene(count: int = 12, coverage: float = 0.4, seed: int = 0) -> Scene:
+    """``count`` items dropped on one point of the page (all centres equal)."""
+    rng = np.random.default_rng(seed)
+    sizes = mixed_sizes(count, coverage, A4_W_MM, A4_H_MM, rng)
+    centres = np.tile([A4_W_MM * 0.4, A4_H_MM * 0.6], (count, 1))
+    return Scene(f"{count} dropped on one point", A4_W_MM, A4_H_MM, centres, sizes)
+
+
+def big_item_scene(seed: int = 0) -> Scene:
+    """One item larger than half the page among five small ones (about 58% coverage)."""
+    rng = np.random.default_rng(seed)
+    big = np.array([[160.0, 200.0]])
+    small = np.column_stack([rng.uniform(25, 35, 5), rng.uniform(25, 35, 5)])
+    sizes = np.vstack([big, small])
+    centres = scattered_centres(sizes, A4_W_MM, A4_H_MM, rng)
+    return Scene("one item > half the page", A4_W_MM, A4_H_MM, centres, sizes)
+
+
+def load(engine, scene: Scene) -> None:
+    """Insert every item of ``scene`` into ``engine`` (an Engine of the scene's page size)."""
+    for item_id, (x, y), (w, h) in zip(scene.ids, scene.centres, scene.sizes):
+        engine.insert(item_id, float(x), float(y), float(w), float(h))
