@@ -1,7 +1,8 @@
 """The paper's case study (section 6.1): a twelve-month calendar, one page per month.
 
 Each page holds the month's panel, a title and the photos, which the physics spreads. The
-title and the panel are anchored to their places by soft springs (section 4.5), so the photos
+title is the month's name in large display type (the panel repeats it small, with the year,
+as its own heading). The title and the panel are anchored to their places by soft springs (section 4.5), so the photos
 flow around them instead of pushing the month off its spot; the user can still drag them.
 """
 
@@ -83,7 +84,7 @@ def build(options: Options, pictures: list[Picture]) -> Project:
                                                         options.orientation)
         x, y, w, h = title_rect
         page.items.append(TextItem(
-            id=f"{mid}-title", x=x, y=y, w=w, h=h, text=f"{month_name(month, options.lang)} {options.year}",
+            id=f"{mid}-title", x=x, y=y, w=w, h=h, text=month_name(month, options.lang),
             font="display", color=accent, bold=True, anchor=PointAnchor(x=x, y=y, gamma=1.0)))
         x, y, w, h = panel_rect
         page.items.append(CalendarItem(
