@@ -1,0 +1,103 @@
+"""Run LuaLaTeX once on a .tex, safely, and turn its failures into errors a user can read.
+
+Not PyLaTeX's `generate_pdf`: it runs latexmk (two runs for a multi-page
+document from a clean folder) and gives no control over the environment, the
+timeout or the log. We call the engine directly, once:
+
+- in a build folder given by the caller (a fresh temporary one), stdin closed;
+- `-no-shell-escape`, `openin_any=p`/`openout_any=p` (no absolute, parent or
+  hidden paths); pictures are found by bare name through TEXINPUTS;
+- SOURCE_DATE_EPOCH fixed, so the PDF's dates never change;
+- a timeout that kills the whole process group (`\\def\\x{\\x}\\x` runs forever).
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import subprocess
+import time
+from pathlib import Path
+
+from typeset.errors import LatexCompileError, LogError, TexNotFoundError
+from typeset.latex_log import errors_with_items
+
+ENGINE = "lualatex"
+# 2026-01-01T00:00:00Z: any fixed instant works; a changing one breaks reproducibility.
+DEFAULT_SOURCE_DATE_EPOCH = "1767225600"
+MAIN = "main.tex"
+
+
+def engine_path() -> str:
+    path = shutil.which(ENGINE)
+    if path is None:
+        raise TexNotFoundError(
+            "LuaLaTeX is not installed, so no PDF can be made. On Debian/Ubuntu install "
+            "texlive-luatex texlive-latex-extra texlive-fonts-recommended texlive-fonts-extra "
+            "fonts-texgyre (the project's Makefile does this)")
+    return path
+
+
+def engine_command(main: str = MAIN) -> list[str]:
+    return [engine_path(), "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error",
+            "-file-line-error", main]
+
+
+def engine_environment(picture_dir: Path | None) -> dict[str, str]:
+    env = dict(os.environ)
+    env.update(openin_any="p", openout_any="p", shell_escape="f",
+               SOURCE_DATE_EPOCH=os.environ.get("SOURCE_DATE_EPOCH", DEFAULT_SOURCE_DATE_EPOCH),
+               FORCE_SOURCE_DATE="1")
+    env.pop("TEXMFOUTPUT", None)
+    if picture_dir is not None:
+        # The trailing separator keeps TeX's own search path after the picture cache.
+        env["TEXINPUTS"] = str(picture_dir) + os.pathsep
+    return env
+
+
+def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = None
+               ) -> tuple[int | None, float]:
+    """Run the engine on build_dir/main.tex; (exit code or None on timeout, seconds)."""
+    start = time.perf_counter()
+    process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               env=engine_environment(picture_dir), start_new_session=True)
+    try:
+        code = process.wait(timeout=timeout_s)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.wait()
+        code = None
+    return code, time.perf_counter() - start
+
+
+def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
+                timeout_s: float = 120.0, picture_dir: Path | None = None,
+                keep_log: Path | None = None) -> Path:
+    """Compile `tex` in `build_dir` with one engine run; return the PDF's path there.
+
+    On failure raise LatexCompileError with the log's errors tied to their items;
+    the log is copied to `keep_log` (if given) so it outlives the build folder.
+    """
+    build_dir = Path(build_dir)
+    (build_dir / MAIN).write_text(tex, encoding="utf-8")
+    code, _ = run_engine(build_dir, timeout_s=timeout_s, picture_dir=picture_dir)
+    pdf = build_dir / "main.pdf"
+    log_file = build_dir / "main.log"
+    if code == 0 and pdf.is_file():
+        return pdf
+    log_path = None
+    log = log_file.read_text(encoding="utf-8", errors="replace") if log_file.is_file() else ""
+    if log and keep_log is not None:
+        keep_log.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(log_file, keep_log)
+        log_path = keep_log
+    elif log:
+        log_path = log_file
+    if code is None:
+        raise LatexCompileError(log_path, [LogError(None, f"LuaLaTeX was still running after "
+                                                    f"{timeout_s:g} s and was stopped")],
+                                "The PDF was not made: typesetting took too long.")
+    errors = errors_with_items(log, tex, labels or [])
+    raise LatexCompileError(log_path, errors, "The PDF was not made; LaTeX reported:")

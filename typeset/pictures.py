@@ -1,0 +1,130 @@
+"""Make every picture something LuaLaTeX can read, at the resolution its rectangle needs.
+
+PNG, JPEG and PDF go in as they are. WebP, GIF, BMP and TIFF are converted by
+Pillow; a JPEG with an EXIF rotation is turned upright (TeX ignores EXIF); a
+photo far sharper than 300 dpi at its printed size is downsampled so the PDF
+stays small. Results live in a cache keyed by the file's content hash, so an
+unchanged picture is converted once.
+
+All pictures the engine reads sit in that cache folder under content-hash
+names. The engine runs with `openin_any=p`, which refuses absolute paths and
+hidden folders such as ~/.cache, so the .tex names each picture by its bare
+file name: our compile finds it through TEXINPUTS, and a user compiling the
+kept .tex by hand through `\graphicspath`.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import os
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from PIL import Image, ImageOps, UnidentifiedImageError
+
+from model.save import atomic_write
+from typeset.errors import RenderError
+
+PRINT_DPI = 300
+DOWNSAMPLE_ABOVE = 1.5  # only shrink pictures with more than 1.5x the pixels print needs
+NATIVE = {"PNG": ".png", "JPEG": ".jpg"}
+CONVERTED = {"WEBP", "GIF", "BMP", "TIFF"}
+EXIF_ORIENTATION = 0x0112
+
+
+def cache_dir() -> Path:
+    """$FLOATPAGE_CACHE_DIR, else $XDG_CACHE_HOME/floatpage/pictures, else ~/.cache/..."""
+    explicit = os.environ.get("FLOATPAGE_CACHE_DIR")
+    if explicit:
+        return Path(explicit).resolve()
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return (Path(base) / "floatpage" / "pictures").resolve()
+
+
+@dataclass(frozen=True)
+class PicturePlan:
+    """What a source picture becomes: a file name in the cache and the work to make it."""
+
+    source: Path
+    cache_path: Path
+    action: str              # "copy", "convert", "rotate", "downsample"
+    pixel_size: tuple[int, int]  # after rotation and downsampling; (0, 0) for PDF
+    target_size: tuple[int, int] | None = None
+
+    @property
+    def aspect(self) -> float:
+        w, h = self.pixel_size
+        return w / h if w and h else 1.0
+
+
+def print_pixels(w_mm: float, h_mm: float, dpi: int = PRINT_DPI) -> tuple[int, int]:
+    return max(1, math.ceil(w_mm / 25.4 * dpi)), max(1, math.ceil(h_mm / 25.4 * dpi))
+
+
+def plan_picture(source: Path, w_mm: float, h_mm: float, label: str,
+                 folder: Path | None = None) -> PicturePlan:
+    """Decide (without writing anything) which cached file will stand for `source`."""
+    folder = folder or cache_dir()
+    try:
+        data = source.read_bytes()
+    except OSError as error:
+        raise RenderError(f'{label}: picture file "{source}" cannot be read: '
+                          f"{error.strerror or error} (fix the path in the project file)") from None
+    digest = hashlib.sha256(data).hexdigest()[:32]
+    if data[:5] == b"%PDF-":
+        return PicturePlan(source, folder / f"{digest}.pdf", "copy", (0, 0))
+    try:
+        with Image.open(source) as image:
+            kind = image.format
+            size = image.size
+            orientation = image.getexif().get(EXIF_ORIENTATION, 1) if kind == "JPEG" else 1
+    except (UnidentifiedImageError, OSError) as error:
+        raise RenderError(f'{label}: "{source}" is not a picture floatpage can read ({error}); '
+                          "use PNG, JPEG, PDF, WebP, GIF, BMP or TIFF") from None
+    if kind not in NATIVE and kind not in CONVERTED:
+        raise RenderError(f'{label}: "{source}" is a {kind} picture; '
+                          "use PNG, JPEG, PDF, WebP, GIF, BMP or TIFF")
+    if orientation in (5, 6, 7, 8):
+        size = (size[1], size[0])
+    target = print_pixels(w_mm, h_mm)
+    scale = max(target[0] / size[0], target[1] / size[1])
+    ext = NATIVE.get(kind, ".png")
+    if scale * DOWNSAMPLE_ABOVE < 1:
+        new = (max(1, round(size[0] * scale)), max(1, round(size[1] * scale)))
+        return PicturePlan(source, folder / f"{digest}-{new[0]}x{new[1]}{ext}", "downsample",
+                           new, new)
+    if orientation not in (1, None):
+        return PicturePlan(source, folder / f"{digest}-upright{ext}", "rotate", size)
+    if kind in CONVERTED:
+        return PicturePlan(source, folder / f"{digest}.png", "convert", size)
+    return PicturePlan(source, folder / f"{digest}{ext}", "copy", size)
+
+
+def materialize(plan: PicturePlan) -> Path:
+    """Write the cached file if it is not there yet; return its path."""
+    if plan.cache_path.exists():
+        return plan.cache_path
+    plan.cache_path.parent.mkdir(parents=True, exist_ok=True)
+    if plan.action == "copy":
+        atomic_write(plan.cache_path, plan.source.read_bytes(), backup=False)
+        return plan.cache_path
+    with Image.open(plan.source) as opened:
+        opened.seek(0)  # the first frame of an animation
+        image = ImageOps.exif_transpose(opened) if opened.format == "JPEG" else opened.copy()
+    if plan.target_size is not None:
+        image = image.resize(plan.target_size, Image.Resampling.LANCZOS)
+    from io import BytesIO
+    out = BytesIO()
+    if plan.cache_path.suffix == ".jpg":
+        if image.mode not in ("RGB", "L", "CMYK"):
+            image = image.convert("RGB")
+        image.save(out, "JPEG", quality=90, optimize=False)
+    else:
+        if image.mode not in ("1", "L", "LA", "RGB", "RGBA", "I;16"):
+            image = image.convert("RGBA" if "A" in image.mode or "transparency" in image.info
+                                  else "RGB")
+        image.save(out, "PNG")
+    atomic_write(plan.cache_path, out.getvalue(), backup=False)
+    return plan.cache_path

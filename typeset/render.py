@@ -1,0 +1,119 @@
+"""The public pipeline: project -> .tex (pure) -> PDF (one engine run, atomic).
+
+`render_tex` needs no TeX and is golden-tested; `render_pdf` prepares the
+picture cache, compiles in a temporary folder and only then replaces the
+output, so a failed render never overwrites the last good PDF.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+from pylatex.utils import NoEscape
+
+from model.document import Project
+from model.save import atomic_write
+from typeset.compile import compile_pdf, engine_path
+from typeset.errors import RenderError
+from typeset.fonts import FontNotFoundError
+from typeset.pictures import cache_dir, materialize
+from typeset.scene import DocumentScene, build_scene, text_warnings
+from typeset.templates import make_environment
+
+
+@dataclass
+class RenderReport:
+    pdf: Path
+    pages: int
+    warnings: list[str] = field(default_factory=list)
+    seconds: float = 0.0
+    engine_seconds: float = 0.0
+
+
+def scene_of(project: Project) -> DocumentScene:
+    try:
+        return build_scene(project)
+    except FontNotFoundError as error:
+        raise RenderError(str(error)) from None
+
+
+def tex_from_scene(scene: DocumentScene, *, fragment: bool = False) -> str:
+    env = make_environment()
+    template = env.get_template("fragment.tex.j2" if fragment else "page.tex.j2")
+    body = template.render(title=scene.title or "untitled", pages=scene.pages,
+                           faces=scene.faces, colors=scene.colors,
+                           picture_dir=scene.picture_dir, trailer_id=NoEscape("0" * 32))
+    if fragment:
+        return body
+    # The PDF's ID is the hash of everything else, so equal projects give equal bytes.
+    trailer = hashlib.md5(body.encode("utf-8")).hexdigest().upper()
+    return body.replace("<" + "0" * 32 + ">", f"<{trailer}>")
+
+
+def render_tex(project: Project, *, fragment: bool = False) -> str:
+    """The standalone .tex (or the TikZ-only fragment) for the project, positions as in the model."""
+    return tex_from_scene(scene_of(project), fragment=fragment)
+
+
+def text_fit_warnings(project: Project) -> list[str]:
+    """For `floatpage check`: texts too long for their box, glyphs a font lacks; each names its item."""
+    try:
+        return text_warnings(project)
+    except FontNotFoundError as error:
+        raise RenderError(str(error)) from None
+
+
+def count_pages(pdf: bytes) -> int:
+    from io import BytesIO
+
+    from pypdf import PdfReader
+    return len(PdfReader(BytesIO(pdf)).pages)
+
+
+def log_path_for(out_pdf: Path) -> Path:
+    """Where a failed render leaves the LaTeX log: beside the PDF, named after it."""
+    return out_pdf.with_name(out_pdf.name + ".log")
+
+
+def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
+               fragment_out: Path | None = None, timeout_s: float = 120.0,
+               progress: Callable[[str], None] | None = None) -> RenderReport:
+    """Typeset the project into `out_pdf` with one LuaLaTeX run; keep the .tex if asked."""
+    started = time.perf_counter()
+    say = progress or (lambda message: None)
+    out_pdf = Path(out_pdf)
+    engine_path()
+    if not project.pages:
+        raise RenderError("the project has no pages; add a [[pages]] table")
+    say("laying out text")
+    scene = scene_of(project)
+    say("preparing pictures")
+    for plan in scene.pictures:
+        try:
+            materialize(plan)
+        except OSError as error:
+            raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
+    tex = tex_from_scene(scene)
+    if tex_out is not None:
+        atomic_write(Path(tex_out), tex.encode("utf-8"), backup=False)
+    if fragment_out is not None:
+        atomic_write(Path(fragment_out), tex_from_scene(scene, fragment=True).encode("utf-8"),
+                     backup=False)
+    say("typesetting with LuaLaTeX")
+    engine_started = time.perf_counter()
+    with tempfile.TemporaryDirectory(prefix="floatpage-") as build:
+        pdf = compile_pdf(tex, Path(build), labels=scene.labels, timeout_s=timeout_s,
+                          picture_dir=cache_dir(),
+                          keep_log=log_path_for(out_pdf))
+        data = pdf.read_bytes()
+    engine_seconds = time.perf_counter() - engine_started
+    atomic_write(out_pdf, data, backup=False)
+    log_path_for(out_pdf).unlink(missing_ok=True)  # a failed render's log is now stale
+    say(f"wrote {out_pdf}")
+    return RenderReport(out_pdf, count_pages(data), scene.warnings,
+                        time.perf_counter() - started, engine_seconds)

@@ -1,0 +1,199 @@
+"""From the document model to everything the templates print, every number computed.
+
+`build_scene(project)` is the only place that turns mm rectangles into text
+runs, picture placements and rules; the templates only lay them out. It reads
+picture files (to hash them) but writes nothing.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from model.document import (
+    BlockItem, CalendarItem, Page, PictureItem, Project, TextItem,
+)
+from typeset.calendar_panel import Rect, layout_calendar
+from typeset.pictures import PicturePlan, plan_picture
+from typeset.templates import SAFE_PATH
+from typeset.fonts import FaceKey, font_path, metrics_for
+from typeset.text_layout import (
+    RunGroup, face_for, fit_in_box, fit_warnings, missing_glyph_warning, place_lines,
+)
+
+
+@dataclass(frozen=True)
+class TextScene:
+    item_id: str
+    label: str
+    groups: tuple[RunGroup, ...]
+    kind: str = "text"
+    marker: int = 0
+
+
+@dataclass(frozen=True)
+class PictureScene:
+    item_id: str
+    label: str
+    left_mm: float
+    top_mm: float
+    w_mm: float
+    h_mm: float
+    plan: PicturePlan
+    clip: Rect | None = None  # for a background picture that covers (and overflows) the page
+    kind: str = "picture"
+    marker: int = 0
+
+
+@dataclass(frozen=True)
+class BlockScene:
+    item_id: str
+    label: str
+    rect: Rect
+    color: str
+    opacity: float
+    kind: str = "block"
+    marker: int = 0
+
+
+@dataclass(frozen=True)
+class CalendarScene:
+    item_id: str
+    label: str
+    rect: Rect
+    color: str
+    groups: tuple[RunGroup, ...]
+    rules: tuple[tuple[float, float, float, float], ...]
+    weekend: tuple[Rect, ...]
+    kind: str = "calendar"
+    marker: int = 0
+
+
+@dataclass
+class PageScene:
+    page_id: str
+    w_mm: float
+    h_mm: float
+    background: list = field(default_factory=list)  # BlockScene / PictureScene
+    items: list = field(default_factory=list)
+
+
+@dataclass
+class DocumentScene:
+    title: str
+    pages: list[PageScene]
+    faces: list[tuple[FaceKey, Path]]
+    colors: list[str]
+    pictures: list[PicturePlan]
+    warnings: list[str]
+    labels: list[str] = field(default_factory=list)  # marker number -> "item ... on page ..."
+    picture_dir: Path | None = None  # for \graphicspath, when TeX can take the path
+
+
+def item_label(item, page: Page) -> str:
+    return f'item "{item.id}" on page "{page.id}"'
+
+
+def rect_of(item) -> Rect:
+    return Rect(item.x - item.w / 2, item.y - item.h / 2, item.x + item.w / 2, item.y + item.h / 2)
+
+
+def text_scene(item: TextItem, label: str, warnings: list[str]) -> TextScene | None:
+    face = face_for(item.font, item.bold, item.italic)
+    fit, missing = fit_in_box(item.text, face, item.w, item.h)
+    warnings += fit_warnings(label, face, fit, missing)
+    if not fit.lines:
+        return None
+    runs = place_lines(fit, metrics_for(face), item.x - item.w / 2, item.y - item.h / 2, item.h)
+    return TextScene(item.id, label, (RunGroup(face, fit.font_pt, item.color, runs),))
+
+
+def calendar_scene(item: CalendarItem, label: str, warnings: list[str]) -> CalendarScene:
+    layout = layout_calendar(item)
+    if layout.missing:
+        warnings.append(missing_glyph_warning(label, layout.groups[0].face, list(layout.missing)))
+    return CalendarScene(item.id, label, rect_of(item), item.color, layout.groups, layout.rules,
+                         layout.weekend)
+
+
+def background_scenes(project: Project, page: Page) -> list:
+    background = page.background
+    if background is None:
+        return []
+    label = f'the background of page "{page.id}"'
+    whole = Rect(0.0, 0.0, page.width_mm, page.height_mm)
+    if background.picture:
+        plan = plan_picture(project.base_dir / background.picture, page.width_mm, page.height_mm,
+                            label)
+        # Cover the page, keeping the picture's proportions; the clip trims the overflow.
+        scale = max(page.width_mm / plan.aspect, page.height_mm)
+        w, h = scale * plan.aspect, scale
+        if plan.pixel_size == (0, 0):
+            w, h = page.width_mm, page.height_mm
+        return [PictureScene("background", label, (page.width_mm - w) / 2, (page.height_mm - h) / 2,
+                             w, h, plan, clip=whole)]
+    if background.color:
+        return [BlockScene("background", label, whole, background.color, 1.0)]
+    return []
+
+
+def build_scene(project: Project) -> DocumentScene:
+    warnings: list[str] = []
+    pages = []
+    for page in project.pages:
+        scene = PageScene(page.id, page.width_mm, page.height_mm,
+                          background=background_scenes(project, page))
+        ordered = sorted(enumerate(page.items), key=lambda pair: (pair[1].z, pair[0]))
+        for _, item in ordered:
+            label = item_label(item, page)
+            if isinstance(item, TextItem):
+                made = text_scene(item, label, warnings)
+            elif isinstance(item, PictureItem):
+                left, top = item.x - item.w / 2, item.y - item.h / 2
+                plan = plan_picture(project.base_dir / item.path, item.w, item.h, label)
+                made = PictureScene(item.id, label, left, top, item.w, item.h, plan)
+            elif isinstance(item, BlockItem):
+                made = BlockScene(item.id, label, rect_of(item), item.color, item.opacity)
+            elif isinstance(item, CalendarItem):
+                made = calendar_scene(item, label, warnings)
+            else:
+                raise TypeError(f"unknown item kind {type(item).__name__}")
+            if made is not None:
+                scene.items.append(made)
+        pages.append(scene)
+    labels: list[str] = []
+    for page in pages:
+        for group in (page.background, page.items):
+            for index, scene in enumerate(group):
+                group[index] = replace(scene, marker=len(labels))
+                labels.append(scene.label)
+    faces: dict[FaceKey, None] = {}
+    colors: dict[str, None] = {}
+    pictures: dict[Path, PicturePlan] = {}
+    for page in pages:
+        for scene in page.background + page.items:
+            for group in getattr(scene, "groups", ()):
+                faces[group.face] = None
+                colors[group.color.lower()] = None
+            if hasattr(scene, "color"):
+                colors[scene.color.lower()] = None
+            if isinstance(scene, PictureScene):
+                pictures[scene.plan.cache_path] = scene.plan
+    folders = {plan.cache_path.parent for plan in pictures.values()}
+    picture_dir = folders.pop() if len(folders) == 1 else None
+    if picture_dir is not None and not SAFE_PATH.match(str(picture_dir)):
+        picture_dir = None
+    return DocumentScene(project.title, pages, [(face, font_path(face)) for face in faces],
+                         list(colors), list(pictures.values()), warnings, labels, picture_dir)
+
+
+def text_warnings(project: Project) -> list[str]:
+    """Fit warnings for texts and calendars only (no picture files are read)."""
+    warnings: list[str] = []
+    for page in project.pages:
+        for item in page.items:
+            if isinstance(item, TextItem):
+                text_scene(item, item_label(item, page), warnings)
+            elif isinstance(item, CalendarItem):
+                calendar_scene(item, item_label(item, page), warnings)
+    return warnings

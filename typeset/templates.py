@@ -1,0 +1,78 @@
+"""The Jinja environment for `latex_templates/`: TeX-safe delimiters, escape by default.
+
+Templates write `\\VAR{value}` and `\\BLOCK{for ...}`; every substituted value is
+escaped by the `finalize` hook unless it is PyLaTeX's `NoEscape`, which only
+the filters below return. Numbers arrive computed and are only formatted here.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import jinja2
+from pylatex.utils import NoEscape
+
+import latex_templates
+from typeset.escape import finalize
+
+TEMPLATE_DIR = Path(latex_templates.__file__).parent
+SAFE_PATH = re.compile(r"^[A-Za-z0-9/._+-]+$")
+HEX = re.compile(r"^#?([0-9a-fA-F]{6})$")
+
+
+def number(value: float, decimals: int = 4) -> NoEscape:
+    """A plain decimal TeX accepts: no exponent, no '-0'."""
+    text = f"{float(value):.{decimals}f}".rstrip("0").rstrip(".")
+    return NoEscape("0" if text in ("-0", "") else text)
+
+
+def tex_path(value: Path | str) -> NoEscape:
+    """A file path for \\includegraphics or fontspec's Path; refuse anything TeX might parse."""
+    text = str(value)
+    if not SAFE_PATH.match(text):
+        raise ValueError(f"path {text!r} has characters LaTeX cannot take in a file name")
+    return NoEscape(text)
+
+
+def color_name(value: str) -> NoEscape:
+    """The xcolor name the preamble defines for "#rrggbb"."""
+    match = HEX.match(value)
+    if not match:
+        raise ValueError(f"colour {value!r} is not #rrggbb")
+    return NoEscape("fp" + match.group(1).lower())
+
+
+def hex_digits(value: str) -> NoEscape:
+    match = HEX.match(value)
+    if not match:
+        raise ValueError(f"colour {value!r} is not #rrggbb")
+    return NoEscape(match.group(1).upper())
+
+
+def control_sequence(name: str) -> NoEscape:
+    """`\\name` for a command floatpage defines; letters only, so it is one control word."""
+    if not re.fullmatch(r"[A-Za-z]+", name):
+        raise ValueError(f"{name!r} is not a TeX control word")
+    return NoEscape("\\" + name)
+
+
+def make_environment() -> jinja2.Environment:
+    env = jinja2.Environment(
+        loader=jinja2.FileSystemLoader(str(TEMPLATE_DIR)),
+        block_start_string=r"\BLOCK{",
+        block_end_string="}",
+        variable_start_string=r"\VAR{",
+        variable_end_string="}",
+        comment_start_string=r"\#{",
+        comment_end_string="}",
+        trim_blocks=True,
+        lstrip_blocks=True,
+        keep_trailing_newline=True,
+        autoescape=False,
+        undefined=jinja2.StrictUndefined,
+        finalize=finalize,
+    )
+    env.filters.update(mm=number, bp=number, num=number, path=tex_path, color=color_name,
+                       hex=hex_digits, cs=control_sequence)
+    return env
