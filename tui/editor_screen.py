@@ -75,7 +75,6 @@ class EditorScreen(Screen):
         engine = self.session.engine
         if not self.running or engine.settled:
             self.frame_timer.pause()
-            self.meter.reset()
             self.redraw()
             return
         start = time.perf_counter()
@@ -85,7 +84,6 @@ class EditorScreen(Screen):
         self.meter.record(now, steps, now - start)
         if engine.settled:
             self.frame_timer.pause()
-            self.meter.reset()
             self.redraw()
 
     def wake(self) -> None:
@@ -323,8 +321,8 @@ class EditorScreen(Screen):
         self.running = not self.running
 
     def action_reheat(self) -> None:
+        """Heat the page up again; a paused page stays paused until resumed."""
         self.session.engine.reheat()
-        self.running = True
         self.wake()
         self.redraw()
 

@@ -15,7 +15,7 @@ from textual.message import Message
 from textual.strip import Strip
 from textual.widget import Widget
 
-from tui.cell_canvas import StripCache
+from tui.cell_canvas import CellCanvas, StripCache
 from tui.page_painter import PagePainter, Scene
 from tui.projection import Projection
 
@@ -55,6 +55,7 @@ class PagePreview(Widget, can_focus=True):
         super().__init__(id=id)
         self.scene: Scene | None = None
         self.projection: Projection | None = None
+        self.canvas: CellCanvas | None = None  # the last frame's grid, kept for hit tests and tests
         self._strips: list[Strip] = []
         self._cache = StripCache()
         self._drag: tuple[str, float, float] | None = None  # item id, grab offset x, y (mm)
@@ -77,6 +78,7 @@ class PagePreview(Widget, can_focus=True):
         projection = Projection.fit(width, height, page.width_mm, page.height_mm)
         self.projection = projection
         canvas = PagePainter(projection).paint(self.scene)
+        self.canvas = canvas
         self._strips = self._cache.strips(canvas)
         self.frames_drawn += 1
         self.refresh()

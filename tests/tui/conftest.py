@@ -1,0 +1,76 @@
+"""Fixtures for the editor tests: a small real project on disk, with real pictures.
+
+The project is written with the model's own save, so the editor loads it the
+way it loads a user's file. Physics is never mocked: tests start the app with
+autostart=False (physics paused) and run steps explicitly when they need motion.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import inspect
+from pathlib import Path
+
+import pytest
+from PIL import Image
+
+from model.document import (
+    Background, BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, Project,
+    TextItem,
+)
+from model.save import save_project
+
+RED = (220, 30, 30)
+BLUE = (30, 60, 220)
+
+
+def paint_picture(path: Path, size=(40, 30)) -> Path:
+    """A 4:3 picture, red on top and blue below, so a thumbnail is easy to recognise."""
+    image = Image.new("RGB", size, BLUE)
+    image.paste(RED, (0, 0, size[0], size[1] // 2))
+    path.parent.mkdir(parents=True, exist_ok=True)
+    image.save(path)
+    return path
+
+
+def build_project(folder: Path) -> Path:
+    """Two A5 pages. Front: a title, a picture with a caption following it, a block, a calendar
+    anchored to a point and a decorative band; back: one text."""
+    paint_picture(folder / "pictures" / "photo.png")
+    paint_picture(folder / "pictures" / "second.png", size=(20, 40))
+    front = Page(id="front", size="A5", width_mm=148.0, height_mm=210.0, items=[
+        TextItem(id="title", x=74.0, y=25.0, w=110.0, h=24.0, text="Happy Birthday Anna",
+                 color="#aa2222", bold=True),
+        PictureItem(id="photo", x=45.0, y=85.0, w=60.0, h=45.0, path="pictures/photo.png"),
+        TextItem(id="caption", x=45.0, y=115.0, w=60.0, h=10.0, text="Summer",
+                 anchor=ItemAnchor(to="photo", dx=0.0, dy=30.0)),
+        BlockItem(id="block", x=115.0, y=85.0, w=30.0, h=30.0, color="#22aa44"),
+        CalendarItem(id="month", x=74.0, y=170.0, w=100.0, h=50.0, year=2027, month=3,
+                     anchor=PointAnchor(x=74.0, y=170.0, gamma=0.8)),
+        BlockItem(id="band", x=74.0, y=170.0, w=148.0, h=60.0, color="#ffe08a", z=-1,
+                  decorative=True),
+    ])
+    back = Page(id="back", size="A5", width_mm=148.0, height_mm=210.0,
+                background=Background(color="#eef4ff"), items=[
+                    TextItem(id="greeting", x=74.0, y=105.0, w=90.0, h=30.0,
+                             text="With love from all of us"),
+                ])
+    project = Project(title="Test card", pages=[front, back])
+    path = folder / "card.toml"
+    save_project(project, path)
+    return path
+
+
+@pytest.fixture
+def project_path(tmp_path: Path) -> Path:
+    return build_project(tmp_path / "card")
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_pyfunc_call(pyfuncitem):
+    """Run `async def` tests in a fresh event loop (Pilot needs one; no asyncio plugin is installed)."""
+    if inspect.iscoroutinefunction(pyfuncitem.obj):
+        arguments = {name: pyfuncitem.funcargs[name] for name in pyfuncitem._fixtureinfo.argnames}
+        asyncio.run(pyfuncitem.obj(**arguments))
+        return True
+    return None

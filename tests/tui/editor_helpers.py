@@ -1,0 +1,55 @@
+"""Shared helpers for driving the editor with Pilot and reading its preview."""
+
+from __future__ import annotations
+
+from contextlib import asynccontextmanager
+from pathlib import Path
+
+from tui.app import FloatpageApp, make_app
+from tui.editor_screen import EditorScreen
+
+SIZE = (100, 40)
+
+
+@asynccontextmanager
+async def editor(path: Path, size: tuple[int, int] = SIZE, *, autostart: bool = False):
+    """The real app on a project file, physics paused unless autostart; yields (app, pilot)."""
+    app = make_app(path, autostart=autostart)
+    async with app.run_test(size=size) as pilot:
+        await pilot.pause()
+        yield app, pilot
+
+
+def screen_of(app: FloatpageApp) -> EditorScreen:
+    return app.editor
+
+
+def item(app: FloatpageApp, item_id: str):
+    """The model's item, with the engine's live position written back."""
+    session = app.session
+    session.sync_positions()
+    return session.page.item(item_id)
+
+
+def position(app: FloatpageApp, item_id: str) -> tuple[float, float]:
+    return app.session.engine.positions()[item_id]
+
+
+async def type_text(pilot, text: str) -> None:
+    await pilot.press(*[{" ": "space"}.get(char, char) for char in text])
+
+
+def preview_text(app: FloatpageApp) -> str:
+    return "\n".join(screen_of(app).preview.text_lines())
+
+
+def pixel(app: FloatpageApp, col: int, pixel_row: int) -> tuple[int, int, int]:
+    canvas = screen_of(app).preview.canvas
+    return tuple(int(v) for v in canvas.pixels[pixel_row, col])
+
+
+def item_pixel_box(app: FloatpageApp, item_id: str) -> tuple[int, int, int, int]:
+    preview = screen_of(app).preview
+    x, y = position(app, item_id)
+    it = app.session.page.item(item_id)
+    return preview.projection.rect(x, y, it.w, it.h)

@@ -1,0 +1,336 @@
+"""Every editing action, driven from the keyboard through the real app; asserts on the document."""
+
+from __future__ import annotations
+
+import pytest
+
+from editor_helpers import editor, item, position, preview_text, screen_of, type_text
+from model.document import (
+    Background, BlockItem, CalendarItem, ItemAnchor, PictureItem, PointAnchor, TextItem,
+)
+from tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
+
+
+async def test_tab_walks_the_items_in_reading_order_and_shift_tab_walks_back(project_path):
+    async with editor(project_path) as (app, pilot):
+        seen = []
+        for _ in range(6):
+            await pilot.press("tab")
+            seen.append(screen_of(app).selected_id)
+        assert seen == ["title", "photo", "block", "caption", "band", "month"]
+        await pilot.press("tab")
+        assert screen_of(app).selected_id == "title"  # wraps around
+        await pilot.press("shift+tab")
+        assert screen_of(app).selected_id == "month"
+        await pilot.press("escape")
+        assert screen_of(app).selected_id is None
+
+
+async def test_item_actions_are_disabled_without_a_selection(project_path):
+    async with editor(project_path) as (app, pilot):
+        screen = screen_of(app)
+        assert screen.check_action("delete", ()) is None
+        before = len(app.session.page.items)
+        await pilot.press("x", "a", "plus")
+        assert len(app.session.page.items) == before
+        assert not app.session.unsaved
+        await pilot.press("tab")
+        assert screen.check_action("delete", ()) is True
+
+
+async def test_arrows_move_the_selected_item_which_is_held_then_released(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "tab", "tab")  # block
+        x, y = position(app, "block")
+        await pilot.press("left")
+        assert position(app, "block") == pytest.approx((x - SMALL_STEP_MM, y))
+        engine = app.session.engine
+        assert engine.bodies.held[engine.ids.index("block")]
+        await pilot.press("shift+down", "K")
+        assert position(app, "block") == pytest.approx((x - SMALL_STEP_MM, y))
+        await pilot.press("J")
+        assert position(app, "block") == pytest.approx((x - SMALL_STEP_MM, y + LARGE_STEP_MM))
+        screen_of(app).release_held()
+        assert not engine.bodies.held[engine.ids.index("block")]
+        assert item(app, "block").x == pytest.approx(x - SMALL_STEP_MM)
+
+
+async def test_a_held_item_pushes_the_others_and_is_not_pushed(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "tab", "tab")  # block, to the right of the photo
+        photo_before = position(app, "photo")
+        for _ in range(3):
+            await pilot.press("H")  # 30 mm left: onto the photo
+        held_at = position(app, "block")
+        screen_of(app).step_physics(120)
+        assert position(app, "block") == pytest.approx(held_at)  # held: not pushed
+        assert position(app, "photo") != pytest.approx(photo_before)  # the photo made way
+
+
+async def test_resize_grows_and_shrinks_and_a_picture_keeps_its_aspect(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "tab", "tab")  # block, 30 x 30
+        await pilot.press("plus")
+        assert (item(app, "block").w, item(app, "block").h) == pytest.approx((33, 33))
+        await pilot.press("minus", "greater_than_sign")
+        assert (item(app, "block").w, item(app, "block").h) == pytest.approx((33, 30))
+        assert app.session.engine.sizes()["block"] == pytest.approx((33, 30))
+        await pilot.press("shift+tab")  # photo, 60 x 45
+        await pilot.press("greater_than_sign")
+        photo = item(app, "photo")
+        assert photo.w == pytest.approx(66) and photo.w / photo.h == pytest.approx(60 / 45)
+        await pilot.press("underscore")
+        photo = item(app, "photo")
+        assert photo.h == pytest.approx(45) and photo.w / photo.h == pytest.approx(60 / 45)
+
+
+async def test_insert_a_text_box(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("t")
+        await type_text(pilot, "Hello there")
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        new = item(app, "text-1")
+        assert isinstance(new, TextItem) and new.text == "Hello there"
+        assert screen_of(app).selected_id == "text-1"
+        assert "text-1" in preview_text(app)
+
+
+async def test_an_empty_text_is_refused_in_the_dialog(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("t", "ctrl+s")
+        assert app.screen.id == "text-dialog"
+        assert "type some text" in str(app.screen.query_one("#form-error").render())
+        await pilot.press("escape")
+        assert app.screen is screen_of(app) and "text-1" not in app.session.page.item_ids()
+
+
+async def test_insert_a_picture_from_the_file_picker(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("p")
+        assert app.screen.id == "picture-dialog"
+        await pilot.press("tab")  # from the tree to the path field
+        await type_text(pilot, "pictures/second.png")
+        await pilot.press("enter")
+        await pilot.pause()
+        new = item(app, "picture-1")
+        assert isinstance(new, PictureItem) and new.path == "pictures/second.png"
+        assert new.h / new.w == pytest.approx(2.0)  # the file is 20 x 40 pixels
+
+
+async def test_insert_a_picture_by_walking_the_tree(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("p")
+        await pilot.pause()
+        await pilot.press("down", "enter")  # open "pictures"
+        await pilot.pause()
+        await pilot.press("down", "enter")  # photo.png (sorted before second.png)
+        await pilot.pause()
+        assert item(app, "picture-1").path == "pictures/photo.png"
+
+
+async def test_insert_a_block_and_a_calendar_from_the_insert_menu(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("i")
+        assert app.screen.id == "insert-dialog"
+        await pilot.press("down", "down", "enter")  # Colour block
+        assert app.screen.id == "block-dialog"
+        await pilot.press("ctrl+a", "ctrl+k")
+        await type_text(pilot, "#123456")
+        await pilot.press("enter")
+        await pilot.pause()
+        block = item(app, "block-1")
+        assert isinstance(block, BlockItem) and block.color == "#123456"
+        await pilot.press("c")
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert isinstance(item(app, "calendar-1"), CalendarItem)
+
+
+async def test_a_bad_colour_is_explained_not_crashed_on(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("b", "ctrl+a", "ctrl+k")
+        await type_text(pilot, "red")
+        await pilot.press("enter")
+        assert app.screen.id == "block-dialog"
+        assert "#rrggbb" in str(app.screen.query_one("#form-error").render())
+
+
+async def test_set_and_clear_the_background(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("g", "enter")  # "A colour…"
+        await pilot.press("ctrl+a", "ctrl+k")
+        await type_text(pilot, "#ffeecc")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.session.page.background == Background(color="#ffeecc")
+        await pilot.press("g", "down", "down", "enter")  # "None"
+        await pilot.pause()
+        assert app.session.page.background is None
+
+
+async def test_edit_text_and_properties(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "e")  # title
+        dialog = app.screen
+        assert dialog.id == "edit-dialog"
+        dialog.query_one("#field-text").text = "Happy Birthday Ben"
+        dialog.query_one("#field-font").value = "display"
+        dialog.query_one("#field-color").value = "#0000ff"
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        title = item(app, "title")
+        assert (title.text, title.font, title.color) == ("Happy Birthday Ben", "display", "#0000ff")
+        assert "Happy Birthday Ben" in preview_text(app)
+
+
+async def test_edit_gamma_of_a_point_anchor(project_path):
+    async with editor(project_path) as (app, pilot):
+        screen_of(app).selected_id = "month"
+        await pilot.press("e")
+        gamma = app.screen.query_one("#field-gamma")
+        gamma.value = "0.25"
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert item(app, "month").anchor.gamma == 0.25
+
+
+async def test_toggle_decorative(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "tab", "tab", "d")  # block
+        assert item(app, "block").decorative
+        engine = app.session.engine
+        assert engine.bodies.decorative[engine.ids.index("block")]
+        assert "~block" in preview_text(app)
+
+
+async def test_delete_the_selected_item(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "tab")  # photo, which the caption follows
+        await pilot.press("delete")
+        assert "photo" not in app.session.page.item_ids()
+        assert "photo" not in app.session.engine.ids
+        assert item(app, "caption").anchor is None  # the follower is let go
+        assert "photo" not in preview_text(app)
+
+
+async def test_anchor_here_to_another_item_and_unanchor(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab")  # title
+        await pilot.press("a")
+        title = item(app, "title")
+        assert title.anchor == PointAnchor(x=title.x, y=title.y, gamma=1.0)
+        await pilot.press("A")
+        assert app.screen.id == "anchor-dialog"
+        await pilot.press("enter")  # the list is in page order, without the title: photo first
+        await pilot.pause()
+        anchor = item(app, "title").anchor
+        assert isinstance(anchor, ItemAnchor) and anchor.to == "photo"
+        assert anchor.dy == pytest.approx(item(app, "title").y - item(app, "photo").y)
+        await pilot.press("u")
+        assert item(app, "title").anchor is None
+
+
+async def test_an_anchor_cycle_is_refused_with_a_message(project_path):
+    async with editor(project_path) as (app, pilot):
+        screen_of(app).selected_id = "photo"
+        await pilot.press("A")
+        options = [option.prompt for option in app.screen.query_one("OptionList").options]
+        await pilot.press(*["down"] * options.index("caption"), "enter")
+        await pilot.pause()
+        assert item(app, "photo").anchor is None
+        assert any("cycle" in n.message for n in app._notifications)
+
+
+async def test_pause_resume_and_reheat(project_path):
+    async with editor(project_path, autostart=True) as (app, pilot):
+        screen = screen_of(app)
+        assert screen.running
+        await pilot.press("space")
+        assert not screen.running and "paused" in str(screen.query_one("#status").render())
+        assert not screen.frame_timer._active.is_set()
+        app.session.engine.settle(finalize=False)
+        assert app.session.engine.settled
+        await pilot.press("r")  # reheating while paused: hot, and still paused
+        assert app.session.engine.heat == 1.0 and not app.session.engine.settled
+        assert not screen.running
+        await pilot.press("space")
+        await pilot.pause(0.2)
+        assert screen.running and app.session.engine.heat < 1.0  # steps ran after resuming
+
+
+async def test_the_physics_runs_live_then_stops_drawing_once_settled(project_path):
+    async with editor(project_path, autostart=True) as (app, pilot):
+        screen = screen_of(app)
+        drawn = screen.preview.frames_drawn
+        await pilot.press("tab", "H", "H", "H", "H")  # disturb the page: frames follow
+        await pilot.pause(0.2)
+        assert screen.preview.frames_drawn > drawn + 2
+        assert screen.meter.fps > 5 and screen.meter.steps_per_s > 0
+        for _ in range(100):
+            if app.session.engine.settled and not screen.frame_timer._active.is_set():
+                break
+            await pilot.pause(0.1)
+        assert app.session.engine.settled
+        drawn = screen.preview.frames_drawn
+        await pilot.pause(0.3)
+        assert screen.preview.frames_drawn == drawn  # idle: no frames once settled
+        assert "settled" in str(screen.query_one("#status").render())
+
+
+async def test_undo_and_redo_restore_items_and_positions(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "tab", "tab")  # block
+        start = position(app, "block")
+        await pilot.press("H")
+        screen_of(app).release_held()
+        moved = position(app, "block")
+        await pilot.press("delete")
+        assert "block" not in app.session.page.item_ids()
+        await pilot.press("ctrl+z")
+        assert position(app, "block") == pytest.approx(moved, abs=0.01)
+        await pilot.press("ctrl+z")
+        assert position(app, "block") == pytest.approx(start, abs=0.01)
+        assert not app.session.unsaved
+        await pilot.press("ctrl+y", "ctrl+y")
+        assert "block" not in app.session.page.item_ids()
+        await pilot.press("ctrl+z", "ctrl+z", "ctrl+z")
+        assert any("nothing to undo" in n.message for n in app._notifications)
+
+
+async def test_pages_add_switch_resize_reorient_and_remove(project_path):
+    async with editor(project_path) as (app, pilot):
+        session = app.session
+        await pilot.press("right_square_bracket")
+        assert session.page.id == "back" and "greeting" in preview_text(app)
+        await pilot.press("left_square_bracket")
+        assert session.page.id == "front"
+        await pilot.press("N")
+        assert [p.id for p in session.project.pages] == ["front", "page-1", "back"]
+        assert session.page.id == "page-1"
+        await pilot.press("S")
+        assert app.screen.id == "page-size-dialog"
+        options = [str(o.prompt) for o in app.screen.query_one("OptionList").options]
+        index = next(i for i, o in enumerate(options) if o.startswith("A4"))
+        current = next(i for i, o in enumerate(options) if o.startswith("A5"))
+        await pilot.press(*(["down"] * (index - current) if index > current
+                            else ["up"] * (current - index)), "enter")
+        assert (session.page.size, session.page.width_mm, session.page.height_mm) == ("A4", 210, 297)
+        await pilot.press("o")
+        assert (session.page.orientation, session.page.width_mm) == ("landscape", 297)
+        assert screen_of(app).preview.projection.width > screen_of(app).preview.projection.height
+        await pilot.press("D")
+        assert app.screen.id == "remove-page-dialog"
+        await pilot.press("up", "enter")  # "Remove it"
+        assert [p.id for p in session.project.pages] == ["front", "back"]
+
+
+async def test_changing_the_page_size_keeps_items_in_place_relatively(project_path):
+    async with editor(project_path) as (app, pilot):
+        x, y = position(app, "block")
+        await pilot.press("o")
+        page = app.session.page
+        assert (page.width_mm, page.height_mm) == (210, 148)
+        assert position(app, "block") == pytest.approx((x * 210 / 148, y * 148 / 210), abs=0.01)
+        await pilot.press("ctrl+z")
+        assert (app.session.page.width_mm, app.session.page.height_mm) == (148, 210)

@@ -1,0 +1,108 @@
+"""The page preview, read back from the running app: fit, colours, thumbnails, labels, links."""
+
+from __future__ import annotations
+
+import pytest
+
+from editor_helpers import editor, item_pixel_box, pixel, preview_text, screen_of
+from tui.page_painter import ANCHOR, LINK, PAPER, SELECTION, SURROUND
+from tui.projection import Projection
+from tui.thumbnails import thumbnail
+
+async def test_page_fits_with_its_aspect_ratio_and_refits_on_resize(project_path):
+    async with editor(project_path, size=(100, 40)) as (app, pilot):
+        preview = screen_of(app).preview
+        p = preview.projection
+        # half-block pixels are square, so pixel width / height is the page's w / h (148 / 210)
+        assert p.width / p.height == pytest.approx(148 / 210, rel=0.05)
+        assert p.height == 2 * (preview.size.height - 2)  # the page is as tall as fits
+        assert pixel(app, p.left + p.width // 2, p.top + 1) == PAPER
+        assert pixel(app, 0, 0) == SURROUND
+        await pilot.resize_terminal(160, 30)
+        await pilot.pause()
+        q = preview.projection
+        assert (q.cols, q.rows) == (160, preview.size.height)
+        assert q.height == 2 * (preview.size.height - 2)
+        assert q.width / q.height == pytest.approx(148 / 210, rel=0.05)
+
+
+async def test_items_show_their_ids_and_texts_fit_the_cells(project_path):
+    async with editor(project_path) as (app, pilot):
+        text = preview_text(app)
+        for item_id in ("title", "photo", "caption", "block", "month", "~band"):
+            assert item_id in text
+        assert "Happy Birthday Anna" in text
+        assert "March 2027" in text and "Mo Tu We Th Fr Sa Su" in text
+
+
+async def test_items_are_drawn_in_their_colour(project_path):
+    async with editor(project_path) as (app, pilot):
+        x0, y0, x1, y1 = item_pixel_box(app, "block")
+        assert pixel(app, (x0 + x1) // 2, y1 - 1) == (0x22, 0xAA, 0x44)
+
+
+async def test_a_picture_shows_a_thumbnail_of_the_real_image(project_path):
+    async with editor(project_path) as (app, pilot):
+        x0, y0, x1, y1 = item_pixel_box(app, "photo")
+        top = pixel(app, (x0 + x1) // 2, y0 + 2 + 1)  # below the label row
+        bottom = pixel(app, (x0 + x1) // 2, y1 - 2)
+        assert top[0] > 180 and top[2] < 80  # the red half
+        assert bottom[2] > 180 and bottom[0] < 80  # the blue half
+
+
+async def test_decorative_items_sit_behind_the_others(project_path):
+    async with editor(project_path) as (app, pilot):
+        x0, y0, x1, y1 = item_pixel_box(app, "month")
+        band = (0xFF, 0xE0, 0x8A)
+        inside_month = pixel(app, x1 - 2, y1 - 2)
+        assert inside_month != band  # the calendar is drawn over the band
+        bx0, by0, bx1, by1 = item_pixel_box(app, "band")
+        assert pixel(app, bx0 + 1, by1 - 1) == band  # the band shows where nothing covers it
+
+
+async def test_the_selected_item_is_framed(project_path):
+    async with editor(project_path) as (app, pilot):
+        x0, y0, x1, y1 = item_pixel_box(app, "block")
+        assert pixel(app, x0 - 1, (y0 + y1) // 2) != SELECTION
+        screen_of(app).selected_id = "block"
+        await pilot.pause()
+        assert pixel(app, x0 - 1, (y0 + y1) // 2) == SELECTION
+        assert pixel(app, x1, (y0 + y1) // 2) == SELECTION
+
+
+async def test_anchors_and_links_are_visible(project_path):
+    async with editor(project_path) as (app, pilot):
+        canvas = screen_of(app).preview.canvas
+        preview = screen_of(app).preview
+        col, row = preview.projection.cell_of(74.0, 170.0)  # the month's anchor point
+        assert canvas.glyphs[(row, col)].char == "+"
+        assert canvas.glyphs[(row, col)].bg == ANCHOR
+        link_dots = [g for g in canvas.glyphs.values() if g.fg == LINK and g.char == "\u00b7"]
+        assert len(link_dots) >= 3  # caption follows photo: a dotted line between them
+
+
+async def test_the_preview_fits_an_80_by_24_terminal(project_path):
+    async with editor(project_path, size=(80, 24)) as (app, pilot):
+        preview = screen_of(app).preview
+        assert preview.size.height >= 15
+        assert preview.projection.height >= 2 * (preview.size.height - 2)
+        assert "title" in preview_text(app)
+
+
+def test_projection_round_trips_cells_and_millimetres():
+    p = Projection.fit(100, 40, 210.0, 297.0)
+    col, row = p.cell_of(105.0, 148.5)
+    x, y = p.mm_at(col, row)
+    assert abs(x - 105.0) <= 1 / p.scale and abs(y - 148.5) <= 2 / p.scale
+    x0, y0, x1, y1 = p.rect(105.0, 148.5, 0.01, 0.01)
+    assert x1 - x0 == 1 and y1 - y0 == 1  # the tiniest item stays one pixel
+
+
+def test_thumbnails_are_cached_and_a_missing_file_is_none(tmp_path):
+    from conftest import paint_picture
+
+    path = paint_picture(tmp_path / "p.png")
+    first = thumbnail(path, 8, 6)
+    assert first.shape == (6, 8, 3)
+    assert thumbnail(path, 8, 6) is first
+    assert thumbnail(tmp_path / "missing.png", 8, 6) is None
