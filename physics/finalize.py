@@ -20,9 +20,10 @@ from physics.fast_forces import candidate_pairs
 from physics.fast_mode import clamp_to_page, group_extents
 
 MAX_ITERATIONS = 1000
-SLACK_MM = 1e-3  # aim this far beyond the gutter, so rounding never lands below it
+SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
+ROUNDING_MM = 0.01  # positions are saved to 0.01 mm: keep this much beyond the gutter
+AIM_BEYOND_MM = 0.3  # pairs that break the gutter are pushed this far beyond it
 RELAXATION = 1.0
-AIM_BEYOND_MM = 0.3
 
 
 def overlap_area(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray) -> float:
@@ -141,8 +142,8 @@ def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_m
     projection = _Projection(bodies, page_w_mm, page_h_mm)
     projection.clamp()
     if len(projection.rows_active) < 2 or len(projection.free_rows) == 0:
-        return projection.violations(gutter_mm) == 0
-    if projection.run(gutter_mm + SLACK_MM, max_iterations, aim=gutter_mm + AIM_BEYOND_MM):
+        return projection.violations(gutter_mm + ROUNDING_MM) == 0
+    if projection.run(gutter_mm + ROUNDING_MM, max_iterations, aim=gutter_mm + AIM_BEYOND_MM):
         return True
-    projection.run(SLACK_MM, max_iterations)
+    projection.run(ROUNDING_MM, max_iterations, aim=AIM_BEYOND_MM)
     return False

@@ -61,7 +61,7 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
     """All measures for one page.  ``centres`` and ``sizes`` are (n, 2) arrays in mm.
 
     ``decorative`` (n,) bool marks items that sit behind the others by design: they count
-    for the off-page measure and balance, but not for overlap or gaps.  Indices in the result
+    for the off-page measure only, not for overlap, gaps or balance.  Indices in the result
     refer to the rows given.
     """
     centres = np.asarray(centres, float).reshape(-1, 2)
@@ -101,8 +101,9 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
     item_area = float(areas[rows].sum())
 
     balance = 1.0
-    if count and areas.sum() > 0:
-        centre_of_mass = (centres * areas[:, None]).sum(axis=0) / areas.sum()
+    if item_area > 0:
+        weights = areas[rows]
+        centre_of_mass = (centres[rows] * weights[:, None]).sum(axis=0) / item_area
         off_centre = np.abs(centre_of_mass - [page_w_mm / 2, page_h_mm / 2])
         balance = float(np.clip(1.0 - (off_centre / [page_w_mm / 2, page_h_mm / 2]).mean(), 0, 1))
 

@@ -1,0 +1,70 @@
+"""The fast mode's force terms on 2 to 3 items."""
+
+import numpy as np
+import pytest
+
+from physics import fast_forces
+from physics.fast_forces import candidate_pairs, contact_pushes, target_gap, wall_pushes
+
+
+def test_target_gap_solves_the_fill_equation():
+    sizes = np.array([[40.0, 30.0], [20.0, 50.0], [10.0, 10.0]])
+    gap = target_gap(sizes, 210, 297, gutter_mm=3.0, fill=0.9)
+    inflated = ((sizes + gap).prod(axis=1)).sum()
+    assert inflated == pytest.approx(0.9 * 210 * 297)
+
+
+def test_target_gap_never_below_the_gutter():
+    crowd = np.full((30, 2), 50.0)  # 75,000 mm^2 on a 62,370 mm^2 page
+    assert target_gap(crowd, 210, 297, gutter_mm=3.0) == 3.0
+
+
+def test_no_push_between_items_further_apart_than_the_gap():
+    centres = np.array([[0.0, 0.0], [20.0, 0.0]])  # 10 mm apart edge to edge
+    halves = np.full((2, 2), 5.0)
+    pushes = contact_pushes(centres, halves, np.array([0]), np.array([1]), gap=9.0)
+    assert pushes == pytest.approx(np.zeros((1, 2)))
+
+
+def test_side_by_side_items_push_apart_mostly_along_x():
+    centres = np.array([[0.0, 0.0], [9.0, 0.5]])
+    halves = np.full((2, 2), 5.0)
+    pushes = contact_pushes(centres, halves, np.array([0]), np.array([1]), gap=2.0)
+    # grown by the gap, the pair penetrates by 3 mm on x and 11.5 mm on y
+    axis_x = 3.0 * 11.5**4 / (3.0**4 + 11.5**4)
+    axis_y = 11.5 * 3.0**4 / (3.0**4 + 11.5**4)
+    depth = np.hypot(axis_x, axis_y)
+    unit = np.array([9.0, 0.5]) / np.hypot(9.0, 0.5)
+    expected = np.array([axis_x, axis_y]) + fast_forces.RADIAL_SHARE * depth * unit
+    assert pushes[0] == pytest.approx(expected)
+    assert pushes[0, 0] > 10 * abs(pushes[0, 1])
+
+
+def test_push_on_j_points_away_from_i():
+    centres = np.array([[10.0, 10.0], [8.0, 4.0]])  # j up and to the left
+    halves = np.full((2, 2), 4.0)
+    push = contact_pushes(centres, halves, np.array([0]), np.array([1]), gap=0.0)[0]
+    assert push[1] < 0 and push[0] <= 0
+
+
+def test_walls_push_item_edges_inwards():
+    centres = np.array([[4.0, 50.0], [97.0, 96.0], [50.0, 50.0]])
+    halves = np.full((3, 2), 3.0)
+    pushes = wall_pushes(centres, halves, 100.0, 100.0, margin=2.0)
+    assert pushes[0] == pytest.approx([1.0, 0.0])  # left edge at 1 mm, wants 2
+    assert pushes[1] == pytest.approx([-2.0, -1.0])  # right and bottom edges too close
+    assert pushes[2] == pytest.approx([0.0, 0.0])
+
+
+def test_an_item_wider_than_the_page_is_pulled_to_its_middle():
+    pushes = wall_pushes(np.array([[30.0, 50.0]]), np.array([[60.0, 5.0]]), 100.0, 100.0, 2.0)
+    assert pushes[0] == pytest.approx([20.0, 0.0])
+
+
+def test_candidate_pairs_skip_far_pairs_and_rigid_groups():
+    centres = np.array([[0.0, 0.0], [12.0, 0.0], [100.0, 100.0], [0.0, 12.0]])
+    halves = np.full((4, 2), 5.0)
+    rows = np.arange(4)
+    groups = np.array([0, 1, 2, 0])  # row 3 follows row 0
+    i, j = candidate_pairs(centres, halves, rows, groups, reach=3.0)
+    assert sorted(zip(i.tolist(), j.tolist())) == [(0, 1), (1, 3)]
