@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import shutil
+import struct
 import subprocess
 from dataclasses import dataclass
 from pathlib import Path
@@ -36,16 +37,20 @@ TYPEFACES: dict[str, Typeface] = {
     "sans": Typeface("sans", "Fira Sans", "texlive-fonts-extra", {
         "regular": "FiraSans-Regular.otf", "bold": "FiraSans-Bold.otf",
         "italic": "FiraSans-Italic.otf", "bolditalic": "FiraSans-BoldItalic.otf"}),
-    "display": Typeface("display", "Playfair Display", "texlive-fonts-extra", {
-        "regular": "PlayfairDisplay-Regular.otf", "bold": "PlayfairDisplay-Bold.otf",
-        "italic": "PlayfairDisplay-Italic.otf", "bolditalic": "PlayfairDisplay-BoldItalic.otf"}),
+    # A high-contrast Didone for headings. Not Playfair Display: its CFF outlines use 2048
+    # units per em, and LuaTeX then writes a /Tf size and /W widths that make PDF readers
+    # (pdfminer, poppler) see every glyph at 1000/2048 of its size, which breaks text
+    # selection and search. All three faces here use 1000 units per em.
+    "display": Typeface("display", "Old Standard", "texlive-fonts-extra", {
+        "regular": "OldStandard-Regular.otf", "bold": "OldStandard-Bold.otf",
+        "italic": "OldStandard-Italic.otf", "bolditalic": "OldStandard-BoldItalic.otf"}),
 }
 
 # Where Debian puts them, for when kpsewhich is missing (e.g. a machine that only measures).
 FALLBACK_DIRS = (
     Path("/usr/share/texmf/fonts/opentype/public/tex-gyre"),
     Path("/usr/share/texlive/texmf-dist/fonts/opentype/public/fira"),
-    Path("/usr/share/texlive/texmf-dist/fonts/opentype/public/playfair"),
+    Path("/usr/share/texlive/texmf-dist/fonts/opentype/public/oldstandard"),
 )
 
 
@@ -121,10 +126,12 @@ class FontMetrics:
         self.face = hb.Face(blob)
         self.font = hb.Font(self.face)
         self.upem = self.face.upem
-        extents = self.font.get_font_extents("ltr")
         # PDF readers place a glyph's box from the FontDescriptor's Descent, which LuaTeX
-        # writes as the hhea descender truncated to 1/1000 em; use exactly that number.
-        self.descent_em = int(-extents.descender * 1000 / self.upem) / 1000
+        # writes as the hhea table's descender (not OS/2's, which HarfBuzz's font extents may
+        # prefer), truncated to 1/1000 em; use exactly that number.
+        hhea = self.face.reference_table("hhea").data
+        descender = struct.unpack(">h", hhea[6:8])[0]
+        self.descent_em = int(-descender * 1000 / self.upem) / 1000
         self._widths: dict[str, float] = {}
         self.space_em = self.advance_em(" ")
 

@@ -10,7 +10,7 @@ All pictures the engine reads sit in that cache folder under content-hash
 names. The engine runs with `openin_any=p`, which refuses absolute paths and
 hidden folders such as ~/.cache, so the .tex names each picture by its bare
 file name: our compile finds it through TEXINPUTS, and a user compiling the
-kept .tex by hand through `\graphicspath`.
+kept .tex by hand through `\\graphicspath`.
 """
 
 from __future__ import annotations
