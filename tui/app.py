@@ -25,6 +25,7 @@ class FloatpageApp(App):
 
     CSS_PATH = "app.tcss"
     TITLE = "floatpage"
+    cursor_blink = True  # dialogs' text cursors; snapshot tests turn it off for repeatable frames
 
     def __init__(self, session: EditSession, *, autostart: bool = True):
         super().__init__()

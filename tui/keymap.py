@@ -37,9 +37,8 @@ class Command:
 
 
 def _move(keys: str, dx: int, dy: int, step: float, name: str) -> Command:
-    size = "a large step" if step == LARGE_STEP_MM else "a small step"
     return Command(keys, f"nudge({dx * step},{dy * step})", f"Move {name}",
-                   f"Move the selected item {name} by {size} ({step:g} mm); it pushes the others",
+                   f"Move the selected item {name} by {step:g} mm; the others make way",
                    "Move and resize", needs_item=True)
 
 

@@ -51,7 +51,9 @@ class FormDialog(ModalScreen[dict | None]):
                 for field in self.fields:
                     yield from self._field(field)
             yield Label("", id="form-error", classes="dialog-error")
-            yield Label("Tab moves · Enter or Ctrl+S applies · Esc cancels", classes="dialog-hint")
+            multi_line = any(field.kind == "text" for field in self.fields)
+            yield Label("Tab moves · " + ("Ctrl+S" if multi_line else "Enter or Ctrl+S")
+                        + " applies · Esc cancels", classes="dialog-hint")
             with Horizontal(classes="dialog-buttons"):
                 yield Button("OK", variant="primary", id="ok")
                 yield Button("Cancel", id="cancel")
@@ -71,6 +73,8 @@ class FormDialog(ModalScreen[dict | None]):
             yield Select(list(field.choices), value=field.value, allow_blank=False, id=widget_id)
 
     def on_mount(self) -> None:
+        for widget in self.query("Input, TextArea"):
+            widget.cursor_blink = getattr(self.app, "cursor_blink", True)
         first = self.query(".form-fields > Input, .form-fields > TextArea, "
                            ".form-fields > Select, .form-fields > Checkbox").first()
         first.focus()

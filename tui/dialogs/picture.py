@@ -43,6 +43,7 @@ class PictureDialog(ModalScreen[Path | None]):
             yield Label("Enter chooses · Tab moves · Esc cancels", classes="dialog-hint")
 
     def on_mount(self) -> None:
+        self.query_one(Input).cursor_blink = getattr(self.app, "cursor_blink", True)
         self.query_one(PictureTree).focus()
 
     def on_directory_tree_file_selected(self, event: DirectoryTree.FileSelected) -> None:

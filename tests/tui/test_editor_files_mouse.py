@@ -1,0 +1,164 @@
+"""Saving, exporting, quitting, the mouse, the help screen and the command palette."""
+
+from __future__ import annotations
+
+import shutil
+
+import pytest
+
+from editor_helpers import editor, item, position, screen_of
+from model.errors import FloatpageError
+from model.project_file import load_project
+from tui.keymap import COMMANDS, key_label
+
+
+def notifications(app) -> list[str]:
+    return [n.message for n in app._notifications]
+
+
+async def test_save_writes_every_edit_and_clears_unsaved(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "tab", "tab", "H")  # block
+        screen_of(app).release_held()
+        await pilot.press("t", "O", "k", "ctrl+s")  # in a form, Ctrl+S applies the form
+        await pilot.pause()
+        assert app.screen is screen_of(app)
+        moved = position(app, "block")
+        assert app.session.unsaved and "unsaved" in str(screen_of(app).query_one("#page-bar").render())
+        await pilot.press("ctrl+s")
+        assert not app.session.unsaved
+        assert any("saved" in message for message in notifications(app))
+    saved = load_project(project_path)
+    block = saved.page("front").item("block")
+    assert (block.x, block.y) == pytest.approx(moved, abs=0.01)
+    assert saved.page("front").item("text-1").text == "Ok"
+    assert project_path.with_name(project_path.name + ".bak").exists()
+
+
+async def test_a_failed_save_is_shown_not_crashed_on(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "d")
+        shutil.rmtree(project_path.parent)  # the folder is gone: the save cannot happen
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert app.session.unsaved
+        assert any("could not save" in message for message in notifications(app))
+
+
+async def test_export_reports_a_typesetting_error_and_the_editor_stays(project_path, monkeypatch):
+    import typeset
+
+    def failing_render(project, out_pdf, *, progress=None):
+        progress("page 1 of 2")
+        raise FloatpageError("LaTeX stopped: missing font (see card.log)")
+
+    monkeypatch.setattr(typeset, "render_pdf", failing_render, raising=False)
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("ctrl+e")
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        assert any("missing font" in message for message in notifications(app))
+        assert screen_of(app).export_state is None
+        await pilot.press("tab")  # still editing
+        assert screen_of(app).selected_id == "title"
+
+
+async def test_export_finalises_the_layout_and_writes_the_pdf(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("ctrl+e")
+        assert screen_of(app).export_state is not None  # the status line says it is exporting
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        pdf = project_path.with_suffix(".pdf")
+        assert any("PDF exported" in (n.title or "") for n in app._notifications), notifications(app)
+        assert pdf.exists() and pdf.read_bytes().startswith(b"%PDF")
+        assert app.session.engine.quality().overlapping_pairs == ()
+        await pilot.press("ctrl+z")  # the no-overlap pass is an edit like any other
+        assert app.session.history.redo_stack
+
+
+async def test_quit_without_changes_exits_at_once(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("q")
+        assert app._exit
+
+
+async def test_quit_with_unsaved_changes_asks_first(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "d")
+        await pilot.press("q")
+        assert app.screen.id == "quit-dialog" and not app._exit
+        await pilot.press("down", "down", "enter")  # Keep editing
+        assert app.screen is screen_of(app) and not app._exit
+        await pilot.press("ctrl+q")
+        assert app.screen.id == "quit-dialog"
+        await pilot.press("enter")  # Save and quit
+        assert app._exit and not app.session.unsaved
+    assert load_project(project_path).page("front").item("title").decorative
+
+
+async def test_quit_discarding_changes_leaves_the_file_alone(project_path):
+    before = project_path.read_text()
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "d", "q", "down", "enter")
+        assert app._exit
+    assert project_path.read_text() == before
+
+
+async def test_click_selects_and_drag_moves(project_path):
+    async with editor(project_path) as (app, pilot):
+        preview = screen_of(app).preview
+        col, row = preview.cell_centre_of("block")
+        await pilot.click("#preview", offset=(col, row))
+        assert screen_of(app).selected_id == "block"
+        x, y = position(app, "block")
+        await pilot.mouse_down("#preview", offset=(col, row))
+        await pilot.hover("#preview", offset=(col - 6, row + 3))
+        assert app.session.held_id == "block"
+        await pilot.mouse_up("#preview", offset=(col - 6, row + 3))
+        await pilot.pause()
+        assert app.session.held_id is None
+        new_x, new_y = item(app, "block").x, item(app, "block").y
+        scale = preview.projection.scale
+        assert new_x - x == pytest.approx(-6 / scale, abs=0.6 / scale)
+        assert new_y - y == pytest.approx(6 / scale, abs=1.1 / scale)
+        page = preview.projection
+        await pilot.click("#preview", offset=(page.left + 1, page.top // 2 + 1))  # empty paper
+        assert screen_of(app).selected_id is None
+
+
+async def test_help_lists_every_command(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("question_mark")
+        assert app.screen.id == "help"
+        help_widget = app.screen.query_one("#help-text")
+        lines = [strip.text for strip in help_widget.render_lines(help_widget.region.reset_offset)]
+        text = " ".join(" ".join(lines).split())
+        for command in COMMANDS:
+            assert " ".join(command.help.split()) in text or command.help[:30] in text, command.help
+            assert key_label(command.keys) in text
+        await pilot.press("escape")
+        assert app.screen is screen_of(app)
+
+
+async def test_every_command_is_in_the_palette_and_runs_from_it(project_path):
+    async with editor(project_path) as (app, pilot):
+        titles = [command.title for command in app.get_system_commands(screen_of(app))]
+        for command in COMMANDS:
+            assert any(title.startswith(command.label + "  [") for title in titles), command.label
+        await pilot.press("tab")
+        await pilot.press("ctrl+p")
+        await pilot.pause()
+        await pilot.press(*"Anchor")
+        await pilot.pause(0.3)
+        await pilot.press("enter")
+        await pilot.pause()
+        assert item(app, "title").anchor is not None
+
+
+def test_every_command_names_an_action_the_screen_has():
+    from tui.editor_screen import EditorScreen
+
+    for command in COMMANDS:
+        assert hasattr(EditorScreen, f"action_{command.action_name}"), command.action
+        assert "ctrl+shift" not in command.keys
