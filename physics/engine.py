@@ -109,6 +109,12 @@ class Engine:
         self._heat = 1.0
         self._settled = False
 
+    def mark_settled(self) -> None:
+        """Declare the current layout at rest: velocities zero, nothing runs until an edit or
+        ``reheat``.  For a page loaded from a file, whose saved layout should stay as it is."""
+        self._bodies.velocities[:] = 0.0
+        self._settled = True
+
     def insert(self, item_id: str, x_mm: float, y_mm: float, w_mm: float, h_mm: float, *,
                decorative: bool = False) -> None:
         if item_id in self._rows:

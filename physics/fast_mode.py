@@ -20,7 +20,7 @@ from physics.stillness import STILL_MM_PER_FRAME
 K_CONTACT = 0.2  # fraction of a penetration turned into acceleration per step
 K_WALL = 0.2
 K_ANCHOR = 0.2  # anchor spring per step^2 at the default beta: as stiff as a contact
-BETA_DEFAULT = 20.0
+BETA_DEFAULT = 1.0  # Params.beta at which a fast anchor is as stiff as a contact
 FRICTION = 0.4  # share of the velocity lost every step (d3-force's velocityDecay)
 SPEED_LIMIT_MM = 2.5  # per step on an A4 page: 25 mm per frame at most, easy to follow
 COOLING_ITEMS = 1.5  # fast mode cools at heat_decay * COOLING_ITEMS / sqrt(n) (see cooling_rate)

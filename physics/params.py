@@ -46,7 +46,7 @@ class Params:
 
     mode: str = "fast"  # "fast" | "paper"
     alpha: float = 150.0  # repulsion constant of equation (2), for an A4 page
-    beta: float = 20.0  # anchor spring stiffness of equation (6)
+    beta: float = 1.0  # anchor spring stiffness of equation (6), as model.PhysicsSettings
     delta: float = 0.01  # velocity damping of equation (5), for up to ITEMS_PER_DELTA items
     dt: float = 0.005  # time step of equations (4) and (5)
     steps_per_frame: int = 500  # the paper's steps per drawn frame (paper mode)

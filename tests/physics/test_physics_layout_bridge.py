@@ -1,0 +1,69 @@
+"""model.layout: the bridge from the document model to the engine and back."""
+
+import dataclasses
+
+import pytest
+
+from model.document import (
+    BlockItem, ItemAnchor, Page, PhysicsSettings, PictureItem, PointAnchor, Project, TextItem,
+)
+from model.layout import engine_for_page, params_from_settings, settle_project, write_back
+from physics import measure_quality
+
+
+def sample_page():
+    return Page(id="front", width_mm=210, height_mm=297, items=[
+        BlockItem(id="backdrop", x=105, y=148.5, w=210, h=297, decorative=True),
+        PictureItem(id="photo", x=100, y=120, w=90, h=60, path="a.jpg"),
+        TextItem(id="caption", x=100, y=160, w=90, h=12, text="Summer",
+                 anchor=ItemAnchor(to="photo", dx=0, dy=40)),
+        PictureItem(id="corner", x=40, y=40, w=50, h=50, path="b.jpg",
+                    anchor=PointAnchor(x=40, y=40, hard=True)),
+        TextItem(id="title", x=110, y=125, w=120, h=25, text="Holidays"),
+        PictureItem(id="small", x=105, y=130, w=40, h=30, path="c.jpg"),
+    ])
+
+
+def test_params_take_every_setting():
+    settings = PhysicsSettings(mode="paper", alpha=99.0, beta=2.5, delta=0.02, dt=0.004,
+                               steps_per_frame=300, distance="euclidean", heat_decay=0.02,
+                               gutter_mm=4.0, seed=7)
+    params = params_from_settings(settings)
+    for field in dataclasses.fields(PhysicsSettings):
+        assert getattr(params, field.name) == getattr(settings, field.name), field.name
+
+
+def test_engine_starts_at_rest_with_the_saved_layout():
+    page = sample_page()
+    engine = engine_for_page(page, PhysicsSettings())
+    assert engine.settled and engine.advance() == 0
+    assert engine.ids == tuple(item.id for item in page.items)
+    assert engine.positions()["title"] == (110.0, 125.0)
+    assert engine.positions()["caption"] == (100.0, 160.0)  # the item anchor places it
+
+
+def test_settle_project_writes_back_a_clean_rounded_layout():
+    page = sample_page()
+    project = Project(title="t", physics=PhysicsSettings(), pages=[page])
+    [report] = settle_project(project)
+    assert report.settled and report.fits
+    for item in page.items:
+        assert round(item.x, 2) == item.x and round(item.y, 2) == item.y
+    movers = [item for item in page.items if not item.decorative]
+    quality = measure_quality(210, 297, [(i.x, i.y) for i in movers],
+                              [(i.w, i.h) for i in movers], 3.0)
+    assert quality.ok, quality.summary()
+    assert (page.item("corner").x, page.item("corner").y) == (40, 40)
+    photo, caption = page.item("photo"), page.item("caption")
+    assert (caption.x, caption.y) == pytest.approx((photo.x, photo.y + 40), abs=0.011)
+    assert (page.item("backdrop").x, page.item("backdrop").y) == (105, 148.5)
+
+
+def test_write_back_skips_items_the_engine_does_not_know():
+    page = sample_page()
+    engine = engine_for_page(page, PhysicsSettings())
+    engine.move("title", 60.004, 250.126)
+    page.items.append(TextItem(id="late", x=1, y=2, w=3, h=4))
+    write_back(page, engine)
+    assert (page.item("title").x, page.item("title").y) == (60.0, 250.13)
+    assert (page.item("late").x, page.item("late").y) == (1, 2)
