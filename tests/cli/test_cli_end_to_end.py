@@ -1,0 +1,95 @@
+"""The headless workflow a Makefile runs: check, settle, render — on real files, with real LaTeX."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pypdf
+import pytest
+
+from model import BlockItem, Page, Project, TextItem, load_project, save_project
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def run(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "cli.main", *args], capture_output=True, text=True,
+                          timeout=300, cwd=cwd, stdin=subprocess.DEVNULL)
+
+
+@pytest.fixture
+def crowded_project(tmp_path) -> Path:
+    """Six items piled near one spot: check must see the overlaps, settle must remove them."""
+    items = [BlockItem(id=f"block-{i}", x=100.0 + i, y=140.0 + i, w=50.0, h=40.0, color="#3366aa")
+             for i in range(5)]
+    items.append(TextItem(id="title", x=105.0, y=150.0, w=120.0, h=25.0, text="Spring sale!"))
+    path = tmp_path / "crowded.toml"
+    save_project(Project(title="Crowded", pages=[Page(id="front", items=items)]), path)
+    return path
+
+
+def test_check_reports_overlaps_and_strict_fails(crowded_project):
+    result = run("check", str(crowded_project))
+    assert result.returncode == 0, result.stderr
+    assert "valid project" in result.stdout
+    assert "page front:" in result.stdout and "overlap" in result.stdout
+    strict = run("check", "--strict", str(crowded_project))
+    assert strict.returncode == 1
+    assert "floatpage settle" in strict.stdout
+
+
+def test_settle_removes_overlaps_and_writes_back(crowded_project):
+    before = crowded_project.read_text()
+    result = run("settle", str(crowded_project))
+    assert result.returncode == 0, result.stderr
+    assert "page front: settled after" in result.stdout
+    assert "steps in" in result.stdout
+    assert result.stderr == "", "a pipe gets no progress output"
+    assert crowded_project.read_text() != before
+    assert run("check", "--strict", str(crowded_project)).returncode == 0
+    # Settling again from a settled file is deterministic and leaves it as it is.
+    settled = crowded_project.read_text()
+    assert run("settle", str(crowded_project)).returncode == 0
+    assert crowded_project.read_text() == settled
+
+
+def test_settle_dry_run_writes_nothing(crowded_project):
+    before = crowded_project.read_text()
+    result = run("settle", "--dry-run", str(crowded_project))
+    assert result.returncode == 0
+    assert crowded_project.read_text() == before
+
+
+def test_render_writes_pdf_and_tex(crowded_project, tmp_path):
+    pdf, tex = tmp_path / "out.pdf", tmp_path / "out.tex"
+    result = run("render", str(crowded_project), "-o", str(pdf), "--tex", str(tex))
+    assert result.returncode == 0, result.stderr
+    reader = pypdf.PdfReader(pdf)
+    assert len(reader.pages) == 1
+    width, height = float(reader.pages[0].mediabox.width), float(reader.pages[0].mediabox.height)
+    assert abs(width - 210 / 25.4 * 72) < 0.5 and abs(height - 297 / 25.4 * 72) < 0.5
+    assert "Spring sale!" in reader.pages[0].extract_text()
+    assert "\\documentclass" in tex.read_text()
+
+
+def test_render_of_an_invalid_project_is_exit_1_and_keeps_the_old_pdf(crowded_project, tmp_path):
+    pdf = tmp_path / "out.pdf"
+    pdf.write_bytes(b"%PDF-1.5 the last good one")
+    project = load_project(crowded_project)
+    crowded_project.write_text(crowded_project.read_text().replace('kind = "block"', 'kind = "blob"', 1))
+    result = run("render", str(crowded_project), "-o", str(pdf))
+    assert result.returncode == 1
+    assert 'unknown item kind "blob"' in result.stderr
+    assert pdf.read_bytes() == b"%PDF-1.5 the last good one"
+    assert project.pages[0].items  # the original parsed fine
+
+
+def test_new_blank_then_the_whole_chain(tmp_path):
+    path = tmp_path / "blank.toml"
+    assert run("new", "blank", str(path)).returncode == 0
+    assert load_project(path).pages
+    again = run("new", "blank", str(path))
+    assert again.returncode == 1, "new refuses to overwrite"
+    assert run("check", "--strict", str(path)).returncode == 0
