@@ -10,6 +10,7 @@ from __future__ import annotations
 from model.document import Background, ItemAnchor, PictureItem, PointAnchor, Project, TextItem
 from starters.options import Options
 from starters.pictures import Picture
+from starters.measure import hug
 from starters.placement import Region, grid, new_page
 from starters.words import phrase, readable
 
@@ -28,9 +29,9 @@ def caption_for(photo: PictureItem, picture: Picture) -> TextItem:
     """The caption under `photo`, following it at a fixed offset."""
     dy = photo.h / 2 + CAPTION_GAP_MM + CAPTION_H_MM / 2
     w = max(photo.w, 40.0)
-    return TextItem(id=f"{photo.id}-caption", x=photo.x, y=photo.y + dy, w=w, h=CAPTION_H_MM,
-                    text=readable(picture.stem), font="serif", italic=True, color=INK,
-                    anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy))
+    return hug(TextItem(id=f"{photo.id}-caption", x=photo.x, y=photo.y + dy, w=w, h=CAPTION_H_MM,
+                        text=readable(picture.stem), font="serif", italic=True, color=INK,
+                        anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy)), w)
 
 
 def album_page(number: int, pictures: list[Picture], options: Options, with_title: bool):
@@ -39,12 +40,13 @@ def album_page(number: int, pictures: list[Picture], options: Options, with_titl
     top = MARGIN_MM
     if with_title:
         y = MARGIN_MM + TITLE_H_MM / 2
-        page.items.append(TextItem(id="album-title", x=W / 2, y=y, w=W * 0.6, h=TITLE_H_MM,
-                                   text=phrase("album_title", options.lang), font="display",
-                                   color=ACCENT, bold=True, anchor=PointAnchor(x=W / 2, y=y, gamma=1.0)))
+        page.items.append(hug(TextItem(id="album-title", x=W / 2, y=y, w=W * 0.7, h=TITLE_H_MM,
+                                       text=phrase("album_title", options.lang), font="display",
+                                       color=ACCENT, bold=True,
+                                       anchor=PointAnchor(x=W / 2, y=y, gamma=1.0)), W * 0.7))
         top += TITLE_H_MM + 8.0
     region = Region(MARGIN_MM, top, W - MARGIN_MM, H - MARGIN_MM)
-    rects = grid(region, [p.aspect for p in pictures], fill=0.86, gap=8.0,
+    rects = grid(region, [p.aspect for p in pictures], fill=0.96, gap=8.0,
                  below=CAPTION_GAP_MM + CAPTION_H_MM)
     for index, (picture, (x, y, w, h)) in enumerate(zip(pictures, rects), start=1):
         photo = PictureItem(id=f"p{number}-photo-{index}", x=x, y=y, w=w, h=h, path=picture.path)

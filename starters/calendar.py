@@ -13,11 +13,12 @@ import math
 from model.document import Background, CalendarItem, PictureItem, PointAnchor, Project, TextItem
 from starters.options import Options
 from starters.pictures import Picture
+from starters.measure import hug
 from starters.placement import Region, grid, new_page
 from starters.words import month_name
 
 PAGE_SIZE = "A4"
-MARGIN_MM = 14.0
+MARGIN_MM = 12.0
 MAX_PHOTOS_PER_MONTH = 4
 MONTH_IDS = ("jan", "feb", "mar", "apr", "may", "jun", "jul", "aug", "sep", "oct", "nov", "dec")
 
@@ -59,16 +60,17 @@ def layout_regions(width: float, height: float, orientation: str) -> tuple:
     on top, photos on the left, the month on the right.
     """
     m = MARGIN_MM
+    title_h = 24.0
+    title = (width / 2, m + title_h / 2, width - 2 * m, title_h)
+    below_title = m + title_h + 6.0
     if orientation == "portrait":
-        title = (width / 2, m + 12.0, width - 2 * m - 20, 22.0)
-        panel_w, panel_h = width - 2 * m - 10, 98.0
+        panel_w, panel_h = width - 2 * m - 8, 88.0
         panel = (width / 2, height - m - panel_h / 2, panel_w, panel_h)
-        photos = Region(m, m + 30.0, width - m, height - m - panel_h - 8.0)
+        photos = Region(m, below_title, width - m, height - m - panel_h - 6.0)
     else:
-        title = (width / 2, m + 11.0, width - 2 * m - 60, 20.0)
-        panel_w, panel_h = 128.0, 118.0
-        panel = (width - m - panel_w / 2, (m + 28 + height - m) / 2, panel_w, panel_h)
-        photos = Region(m, m + 28.0, width - m - panel_w - 8.0, height - m)
+        panel_w, panel_h = 126.0, 112.0
+        panel = (width - m - panel_w / 2, height - m - panel_h / 2, panel_w, panel_h)
+        photos = Region(m, below_title, width - m - panel_w - 6.0, height - m)
     return title, panel, photos
 
 
@@ -83,9 +85,9 @@ def build(options: Options, pictures: list[Picture]) -> Project:
         title_rect, panel_rect, region = layout_regions(page.width_mm, page.height_mm,
                                                         options.orientation)
         x, y, w, h = title_rect
-        page.items.append(TextItem(
+        page.items.append(hug(TextItem(
             id=f"{mid}-title", x=x, y=y, w=w, h=h, text=month_name(month, options.lang),
-            font="display", color=accent, bold=True, anchor=PointAnchor(x=x, y=y, gamma=1.0)))
+            font="display", color=accent, bold=True, anchor=PointAnchor(x=x, y=y, hard=True)), w))
         x, y, w, h = panel_rect
         page.items.append(CalendarItem(
             id=f"{mid}-month", x=x, y=y, w=w, h=h, year=options.year, month=month,
@@ -94,7 +96,7 @@ def build(options: Options, pictures: list[Picture]) -> Project:
         start = (month - 1) * per_month
         chosen = [pictures[(start + i) % len(pictures)] for i in range(per_month)] if pictures else []
         for index, (picture, rect) in enumerate(zip(chosen, grid(region, [p.aspect for p in chosen],
-                                                                 fill=0.88)), start=1):
+                                                                 fill=0.96)), start=1):
             x, y, w, h = rect
             page.items.append(PictureItem(id=f"{mid}-photo-{index}", x=x, y=y, w=w, h=h,
                                           path=picture.path))

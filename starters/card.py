@@ -10,6 +10,7 @@ from __future__ import annotations
 from model.document import Background, BlockItem, PictureItem, PointAnchor, Project, TextItem
 from starters.options import Options
 from starters.pictures import Picture
+from starters.measure import hug
 from starters.placement import fit, new_page
 from starters.words import phrase
 
@@ -28,14 +29,15 @@ def front(options: Options, picture: Picture):
     page = new_page("front", PAGE_SIZE, options.orientation, background=Background(color=CREAM))
     W, H = page.width_mm, page.height_mm
     page.items.append(band("front-band", page, H * 0.72, H * 0.28, WARM, 0.55))
-    title_h = H * 0.16
+    title_h = H * 0.12
     title_y = H - 12.0 - title_h / 2
     w, h = fit(picture.aspect, W - 26.0, title_y - title_h / 2 - 22.0)
     page.items.append(PictureItem(id="front-picture", x=W / 2, y=12.0 + h / 2, w=w, h=h,
                                   path=picture.path))
-    page.items.append(TextItem(id="front-greeting", x=W / 2, y=title_y, w=W - 20.0, h=title_h,
-                               text=phrase("card_front", options.lang), font="display", color=ROSE,
-                               bold=True, anchor=PointAnchor(x=W / 2, y=title_y, gamma=1.0)))
+    page.items.append(hug(TextItem(id="front-greeting", x=W / 2, y=title_y, w=W - 20.0, h=title_h,
+                                   text=phrase("card_front", options.lang), font="display",
+                                   color=ROSE, bold=True,
+                                   anchor=PointAnchor(x=W / 2, y=title_y, gamma=1.0)), W - 20.0))
     return page
 
 
@@ -48,9 +50,10 @@ def inside(options: Options, picture: Picture):
                                h=message_h, text=phrase("card_message", options.lang), font="serif",
                                italic=True, color=INK))
     signature_y = H - 16.0
-    page.items.append(TextItem(id="inside-signature", x=W * 0.6, y=signature_y, w=W * 0.55, h=12.0,
-                               text=phrase("card_signature", options.lang), font="serif", italic=True,
-                               color=ROSE, anchor=PointAnchor(x=W * 0.6, y=signature_y, gamma=1.0)))
+    page.items.append(hug(TextItem(id="inside-signature", x=W * 0.6, y=signature_y, w=W * 0.55,
+                                   h=12.0, text=phrase("card_signature", options.lang), font="serif",
+                                   italic=True, color=ROSE,
+                                   anchor=PointAnchor(x=W * 0.6, y=signature_y, gamma=1.0)), W * 0.55))
     top, bottom = 20.0 + message_h + 8.0, signature_y - 14.0
     w, h = fit(picture.aspect, W * 0.62, bottom - top)
     page.items.append(PictureItem(id="inside-picture", x=W / 2, y=(top + bottom) / 2, w=w, h=h,

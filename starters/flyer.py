@@ -12,6 +12,7 @@ from model.document import (
 )
 from starters.options import Options
 from starters.pictures import Picture
+from starters.measure import hug
 from starters.placement import Region, grid, new_page
 from starters.words import phrase, price, product_name
 
@@ -22,19 +23,22 @@ FOOTER_H_MM = 16.0
 TAG_H_MM = 14.0
 TAG_GAP_MM = 1.5
 MAX_PRODUCTS = 9
+SLOT_GAMMA = 0.5  # products lean towards their grid slots, so the flyer keeps its rows
 PAPER, GREEN, CREAM, RED, INK = "#fff8ea", "#2f6b4f", "#fff3d6", "#c0392b", "#2b2b2b"
-BUNDLED = ["apples.png", "lemons.png", "coffee-mug.png", "potted-plant.png", "teapot.png", "cupcake.png"]
+BUNDLED = ["apples.png", "lemons.png", "sunflower.jpg", "coffee-mug.png", "teapot.png", "cupcake.png",
+           "tulips.jpg", "potted-plant.png"]
 # Prices of the bundled products, in cents; a user's own products start at placeholder prices.
 PRICES = {"apples": 240, "lemons": 199, "coffee-mug": 850, "potted-plant": 1290, "teapot": 2450,
-          "cupcake": 320}
+          "cupcake": 320, "sunflower": 590, "tulips": 450}
 
 
 def price_tag(photo: PictureItem, name: str, cents: int, lang: str) -> TextItem:
     """Name and price under the product picture, following it."""
     dy = photo.h / 2 + TAG_GAP_MM + TAG_H_MM / 2
-    return TextItem(id=f"{photo.id}-price", x=photo.x, y=photo.y + dy, w=max(photo.w, 36.0),
-                    h=TAG_H_MM, text=f"{name}\n{price(cents, lang)}", font="sans", bold=True, color=RED,
-                    anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy))
+    w = max(photo.w, 36.0)
+    return hug(TextItem(id=f"{photo.id}-price", x=photo.x, y=photo.y + dy, w=w, h=TAG_H_MM,
+                        text=f"{name}\n{price(cents, lang)}", font="sans", bold=True, color=RED,
+                        anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy)), w)
 
 
 def header(page, lang: str) -> list:
@@ -45,12 +49,12 @@ def header(page, lang: str) -> list:
                   decorative=True, z=-1),
         BlockItem(id="header-stripe", x=W / 2, y=HEADER_H_MM + 2.0, w=W, h=4.0, color="#f2b84b",
                   decorative=True, z=-1),
-        TextItem(id="shop-title", x=W / 2, y=title_y, w=W - 50.0, h=26.0,
-                 text=phrase("flyer_title", lang), font="display", bold=True, color=CREAM,
-                 anchor=PointAnchor(x=W / 2, y=title_y, hard=True)),
-        TextItem(id="shop-subtitle", x=W / 2, y=subtitle_y, w=W - 90.0, h=10.0,
-                 text=phrase("flyer_subtitle", lang), font="sans", italic=True, color=CREAM,
-                 anchor=PointAnchor(x=W / 2, y=subtitle_y, hard=True)),
+        hug(TextItem(id="shop-title", x=W / 2, y=title_y, w=W - 40.0, h=26.0,
+                     text=phrase("flyer_title", lang), font="display", bold=True, color=CREAM,
+                     anchor=PointAnchor(x=W / 2, y=title_y, hard=True)), W - 40.0),
+        hug(TextItem(id="shop-subtitle", x=W / 2, y=subtitle_y, w=W - 60.0, h=10.0,
+                     text=phrase("flyer_subtitle", lang), font="sans", italic=True, color=CREAM,
+                     anchor=PointAnchor(x=W / 2, y=subtitle_y, hard=True)), W - 60.0),
     ]
 
 
@@ -59,8 +63,8 @@ def footer(page, lang: str) -> list:
     y = H - FOOTER_H_MM / 2
     return [
         BlockItem(id="footer-band", x=W / 2, y=y, w=W, h=FOOTER_H_MM, color=GREEN, decorative=True, z=-1),
-        TextItem(id="shop-footer", x=W / 2, y=y, w=W - 40.0, h=7.0, text=phrase("flyer_footer", lang),
-                 font="sans", color=CREAM, anchor=PointAnchor(x=W / 2, y=y, hard=True)),
+        hug(TextItem(id="shop-footer", x=W / 2, y=y, w=W - 30.0, h=7.0, text=phrase("flyer_footer", lang),
+                     font="sans", color=CREAM, anchor=PointAnchor(x=W / 2, y=y, hard=True)), W - 30.0),
     ]
 
 
@@ -71,9 +75,10 @@ def build(options: Options, pictures: list[Picture]) -> Project:
     products = pictures[:MAX_PRODUCTS]
     region = Region(MARGIN_MM, HEADER_H_MM + 12.0, page.width_mm - MARGIN_MM,
                     page.height_mm - FOOTER_H_MM - 8.0)
-    rects = grid(region, [p.aspect for p in products], fill=0.8, gap=8.0, below=TAG_GAP_MM + TAG_H_MM)
+    rects = grid(region, [p.aspect for p in products], fill=0.96, gap=6.0, below=TAG_GAP_MM + TAG_H_MM)
     for index, (picture, (x, y, w, h)) in enumerate(zip(products, rects), start=1):
-        photo = PictureItem(id=f"product-{index}", x=x, y=y, w=w, h=h, path=picture.path)
+        photo = PictureItem(id=f"product-{index}", x=x, y=y, w=w, h=h, path=picture.path,
+                            anchor=PointAnchor(x=x, y=y, gamma=SLOT_GAMMA))
         cents = PRICES.get(picture.stem, 100 * index + 99)
         page.items += [photo, price_tag(photo, product_name(picture.stem, options.lang), cents,
                                         options.lang)]

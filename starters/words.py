@@ -73,6 +73,10 @@ PRODUCTS = {  # bundled product picture stem -> name in each language
                      "nl": "Kamerplant"},
     "teapot": {"en": "Teapot", "de": "Teekanne", "fr": "Théière", "es": "Tetera", "it": "Teiera",
                "pt": "Bule de chá", "nl": "Theepot"},
+    "sunflower": {"en": "Sunflowers", "de": "Sonnenblumen", "fr": "Tournesols", "es": "Girasoles",
+                  "it": "Girasoli", "pt": "Girassóis", "nl": "Zonnebloemen"},
+    "tulips": {"en": "Tulips", "de": "Tulpen", "fr": "Tulipes", "es": "Tulipanes", "it": "Tulipani",
+               "pt": "Túlipas", "nl": "Tulpen"},
     "cupcake": {"en": "Cupcake", "de": "Cupcake", "fr": "Cupcake", "es": "Magdalena", "it": "Cupcake",
                 "pt": "Queque", "nl": "Cupcake"},
 }

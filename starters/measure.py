@@ -1,0 +1,41 @@
+"""Size short texts (titles, captions, price tags) to their words, so they sit centred.
+
+The typesetter fills a text box and sets its lines left-aligned (paper, section 5). A title
+in a box wider than its words therefore hugs the box's left edge. Narrowing the box to the
+widest line the typesetter will set centres the text wherever the box is centred. The lines
+come from the typesetter's own fitting (same font files, same HarfBuzz shaping), and a box
+narrowed to its widest line still fits those lines at the same size.
+"""
+
+from __future__ import annotations
+
+from model.document import TextItem
+
+MM_PER_PT = 25.4 / 72
+SLACK = 1.01  # a hair wider than the words, so rounding never forces another line break
+
+
+def widest_line_mm(item: TextItem) -> float | None:
+    """Width of the widest line the typesetter sets for `item` in its box, in mm.
+
+    None when the fonts cannot be read (no TeX fonts installed): the caller keeps its box.
+    """
+    try:
+        from typeset.text_layout import face_for, fit_in_box
+
+        fit, _ = fit_in_box(item.text, face_for(item.font, item.bold, item.italic), item.w, item.h)
+    except Exception:  # noqa: BLE001 - failing to load fonts only means "don't measure"
+        return None
+    if not fit.line_widths_pt:
+        return None
+    return max(fit.line_widths_pt) * MM_PER_PT * SLACK
+
+
+def hug(item: TextItem, max_w: float | None = None) -> TextItem:
+    """Narrow `item` about its centre to the lines it will show (its box is the widest allowed)."""
+    if max_w is not None:
+        item.w = max_w
+    width = widest_line_mm(item)
+    if width is not None:
+        item.w = min(width, item.w)
+    return item
