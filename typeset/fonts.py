@@ -18,6 +18,9 @@ from pathlib import Path
 import uharfbuzz as hb
 
 STYLES = ("regular", "bold", "italic", "bolditalic")
+# Contextual alternates off, in HarfBuzz here and in fontspec (RawFeature=-calt): Fira
+# Sans's calt turns "#&" into a lone swash ampersand, losing the "#" the user typed.
+SHAPING_FEATURES = {"calt": False}
 
 
 @dataclass(frozen=True)
@@ -142,7 +145,7 @@ class FontMetrics:
             buffer = hb.Buffer()
             buffer.add_str(word)
             buffer.guess_segment_properties()
-            hb.shape(self.font, buffer)
+            hb.shape(self.font, buffer, SHAPING_FEATURES)
             width = sum(position.x_advance for position in buffer.glyph_positions) / self.upem
             self._widths[word] = width
         return width

@@ -151,7 +151,8 @@ def build_scene(project: Project) -> DocumentScene:
             elif isinstance(item, PictureItem):
                 left, top = item.x - item.w / 2, item.y - item.h / 2
                 plan = plan_picture(project.base_dir / item.path, item.w, item.h, label)
-                made = PictureScene(item.id, label, left, top, item.w, item.h, plan)
+                made = PictureScene(item.id, f'{label} (picture file "{item.path}")', left, top,
+                                    item.w, item.h, plan)
             elif isinstance(item, BlockItem):
                 made = BlockScene(item.id, label, rect_of(item), item.color, item.opacity)
             elif isinstance(item, CalendarItem):

@@ -1,0 +1,112 @@
+"""Hostile text: 200+ strings typeset in one compile; none breaks it, each reads back as typed.
+
+The strings try every ASCII special character alone and in pairs, and the
+classic attacks: \\input, \\write18, \\catcode, \\directlua, ^^ notation,
+\\def loops, \\end{document}, unbalanced braces, control characters.
+"""
+
+from __future__ import annotations
+
+import itertools
+import string
+import unicodedata
+from pathlib import Path
+
+import pdfplumber
+import pytest
+
+from model.document import Page, Project, TextItem
+from typeset import render_pdf
+from typeset.escape import clean_text
+from typeset.fonts import FaceKey, metrics_for
+from typeset_pdfcheck import BoxPt, chars_in
+
+SPECIALS = "\\{}$&#%_^~[]"
+ATTACKS = [
+    r"\input{/etc/passwd}", r"\input /etc/passwd ", r"\include{/etc/hostname}",
+    r"\write18{touch /tmp/floatpage-pwned}", r"\immediate\write18{id}",
+    r"\catcode`\^=11 \catcode`\{=12", r"\catcode 92=12", r"\directlua{os.execute('id')}",
+    r"\directlua{io.open('/tmp/floatpage-pwned','w')}", r"\luaexec{print(1)}",
+    r"\def\x{\x}\x", r"\loop\iftrue\repeat", r"\end{document}", r"\begin{verbatim}",
+    r"\makeatletter\@@input /etc/passwd", r"\csname input\endcsname{/etc/passwd}",
+    r"\expandafter\input\string", r"\pdfobj file {/etc/passwd}", r"\special{pdf:x}",
+    r"\openin5=/etc/passwd \read5 to\x", r"\newwrite\w\openout\w=/tmp/x",
+    r"^^5cinput{/etc/passwd}", r"^^^^005cinput", r"^^M^^J^^I", r"^^7b^^7d",
+    r"$\int_0^1 x\,dx$", r"$$x$$", r"\(x\)", r"\[x\]", r"#1#2##", r"\par\par",
+    r"{{{{", r"}}}}", r"\iffalse", r"\fi\fi", r"\else", r"\relax\relax", r"\outer\def\y{}",
+    r"\\\\\\", r"\\*[3pt]", r"\newline", r"\verb|x|", r"\url{http://x}", r"%%%%", r"% comment",
+    r"~~~", r"``quotes''", r"--- -- -", r"!`?`", r"<<>>", r"a|b", r'"quoted"', r"'single'",
+    r"\char92", r"\string\input", r"\detokenize{x}", r"\noexpand\x", r"\the\catcode92",
+    r"\tikzset{every node/.style={red}}", r"\node at (0,0) {x};", r"]; \draw (0,0);",
+    r"\color{red}", r"\fontsize{1000}{1}\selectfont", r"\font\x=cmr10 at 2000pt",
+    r"\errmessage{boom}", r"\message{x}", r"\show\x", r"\batchmode", r"\scrollmode",
+    r"\endinput", r"\dump", r"\end", r"\bye", r"\shipout\hbox{}", r"\global\let\par\relax",
+    "tab\there", "nul\x00byte", "bell\x07", "esc\x1b[31mred", "del\x7f", "c1\x85next",
+    "cr\rlf", "ls\u2028ps\u2029", "bom\ufeff", "nbsp\u00a0here", "soft\u00adhyphen",
+]
+UNICODE = ["naïve café", "Ærøskøbing Łódź", "Straße ẞ", "ﬁ ﬂ ligatures", "e\u0301 decomposed",
+           "Ελληνικά", "Кириллица", "€ £ ¥ ¢", "„Anführung“ «guillemets»", "emoji 😀 here",
+           "中文 text", "עברית", "…—–·•", "½ ¼ ¾", "№ ™ © ®"]
+
+
+def hostile_strings() -> list[str]:
+    strings = [ch for ch in string.punctuation]
+    strings += [f"a{ch}b" for ch in SPECIALS]
+    strings += [f"{a}{b}" for a, b in itertools.product(SPECIALS, repeat=2)]
+    strings += ATTACKS + UNICODE
+    return strings
+
+
+@pytest.fixture(scope="module")
+def readback(tmp_path_factory):
+    strings = hostile_strings()
+    per_page, columns = 48, 4
+    pages = []
+    for start in range(0, len(strings), per_page):
+        items = []
+        for offset, text in enumerate(strings[start:start + per_page]):
+            column, row = offset % columns, offset // columns
+            items.append(TextItem(id=f"h{start + offset}", x=36 + 75 * column, y=17 + 33 * row,
+                                  w=64, h=22, text=text, font="sans"))
+        pages.append(Page(id=f"p{start // per_page}", size="A3", width_mm=297, height_mm=420,
+                          items=items))
+    project = Project(title=r"\input{/etc/passwd} 100% $hostile$", pages=pages)
+    out = tmp_path_factory.mktemp("hostile") / "hostile.pdf"
+    report = render_pdf(project, out)
+    found = []
+    with pdfplumber.open(out) as pdf:
+        for page, pdf_page in zip(pages, pdf.pages):
+            for item in page.items:
+                chars = chars_in(pdf_page, BoxPt.of_item(item), margin_pt=8)
+                found.append((item.text, "".join(c["text"] for c in chars)))
+    return strings, found, report
+
+
+def test_there_are_at_least_200_hostile_strings_and_none_broke_the_compile(readback):
+    strings, found, report = readback
+    assert len(strings) >= 200
+    assert report.pages == len(found) // 48 + (1 if len(found) % 48 else 0)
+    assert not Path("/tmp/floatpage-pwned").exists()
+
+
+def test_every_string_reads_back_as_typed_where_the_font_has_glyphs(readback):
+    _, found, _ = readback
+    """Compared without spaces (PDFs hold none; readers guess them from gaps), without
+    invisible format characters (a soft hyphen prints nothing), and in NFKC form (the
+    glyph for "ﬁ" is the "fi" ligature, which the PDF's ToUnicode spells "fi")."""
+    metrics = metrics_for(FaceKey("sans"))
+    wrong = []
+    for typed, read in found:
+        expected = "".join(ch for ch in clean_text(typed) if not ch.isspace()
+                           and metrics.has_char(ch) and unicodedata.category(ch) != "Cf")
+        expected = unicodedata.normalize("NFKC", expected)
+        if unicodedata.normalize("NFKC", read.replace(" ", "")) != expected:
+            wrong.append((typed, expected, read))
+    assert not wrong, wrong[:5]
+
+
+def test_missing_glyphs_are_warned_about_by_item_and_character(readback):
+    _, _, report = readback
+    emoji = [w for w in report.warnings if "U+1F600" in w]
+    assert emoji and 'item "h' in emoji[0] and "Fira Sans" in emoji[0]
+    assert any("U+4E2D" in w for w in report.warnings)  # 中
