@@ -8,14 +8,16 @@ picture whatever the user drags. Captions start as the file name made readable.
 from __future__ import annotations
 
 from model.document import Background, ItemAnchor, PictureItem, PointAnchor, Project, TextItem
+from model.page_sizes import page_dimensions
+from starters.measure import hug
 from starters.options import Options
 from starters.pictures import Picture
-from starters.measure import hug
 from starters.placement import Region, grid, new_page
 from starters.words import phrase, readable
 
 PAGE_SIZE = "A4"
-PHOTOS_PER_PAGE = 4
+MAX_PER_PAGE = 6
+MIN_LONG_SIDE_MM = 75.0  # a photo in an album should be at least this long on its long side
 MARGIN_MM = 14.0
 CAPTION_H_MM = 8.0
 CAPTION_GAP_MM = 1.5  # between a photo's lower edge and its caption
@@ -34,20 +36,46 @@ def caption_for(photo: PictureItem, picture: Picture) -> TextItem:
                         anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy)), w)
 
 
+def photo_region(width: float, height: float, with_title: bool) -> Region:
+    top = MARGIN_MM + (TITLE_H_MM + 8.0 if with_title else 0.0)
+    return Region(MARGIN_MM, top, width - MARGIN_MM, height - MARGIN_MM)
+
+
+def photo_rects(region: Region, pictures: list[Picture]) -> list:
+    return grid(region, [p.aspect for p in pictures], fill=0.96, gap=8.0,
+                below=CAPTION_GAP_MM + CAPTION_H_MM)
+
+
+def paginate(pictures: list[Picture], width: float, height: float) -> list[list[Picture]]:
+    """Split the photos into pages, in order: each page takes as many as it can show large.
+
+    A page takes the most photos (up to MAX_PER_PAGE) whose grid keeps every photo's long side
+    at least MIN_LONG_SIDE_MM, so wide photos share a page six at a time while tall ones, which
+    would shrink more, go four or fewer.
+    """
+    pages: list[list[Picture]] = []
+    rest = list(pictures)
+    while rest:
+        region = photo_region(width, height, with_title=not pages)
+        for count in range(min(MAX_PER_PAGE, len(rest)), 0, -1):
+            rects = photo_rects(region, rest[:count])
+            if count == 1 or min(max(w, h) for _, _, w, h in rects) >= MIN_LONG_SIDE_MM:
+                break
+        pages.append(rest[:count])
+        rest = rest[count:]
+    return pages
+
+
 def album_page(number: int, pictures: list[Picture], options: Options, with_title: bool):
     page = new_page(f"page-{number}", PAGE_SIZE, options.orientation, background=Background(color=PAPER))
     W, H = page.width_mm, page.height_mm
-    top = MARGIN_MM
     if with_title:
         y = MARGIN_MM + TITLE_H_MM / 2
         page.items.append(hug(TextItem(id="album-title", x=W / 2, y=y, w=W * 0.7, h=TITLE_H_MM,
                                        text=phrase("album_title", options.lang), font="display",
                                        color=ACCENT, bold=True,
                                        anchor=PointAnchor(x=W / 2, y=y, gamma=1.0)), W * 0.7))
-        top += TITLE_H_MM + 8.0
-    region = Region(MARGIN_MM, top, W - MARGIN_MM, H - MARGIN_MM)
-    rects = grid(region, [p.aspect for p in pictures], fill=0.96, gap=8.0,
-                 below=CAPTION_GAP_MM + CAPTION_H_MM)
+    rects = photo_rects(photo_region(W, H, with_title), pictures)
     for index, (picture, (x, y, w, h)) in enumerate(zip(pictures, rects), start=1):
         photo = PictureItem(id=f"p{number}-photo-{index}", x=x, y=y, w=w, h=h, path=picture.path)
         page.items += [photo, caption_for(photo, picture)]
@@ -55,7 +83,8 @@ def album_page(number: int, pictures: list[Picture], options: Options, with_titl
 
 
 def build(options: Options, pictures: list[Picture]) -> Project:
-    """One page per PHOTOS_PER_PAGE photos, in the order given; the first page has a title."""
-    chunks = [pictures[i:i + PHOTOS_PER_PAGE] for i in range(0, len(pictures), PHOTOS_PER_PAGE)]
+    """Pages of photos in the order given (see paginate); the first page has a title."""
+    width, height = page_dimensions(PAGE_SIZE, options.orientation)
+    chunks = paginate(pictures, width, height)
     pages = [album_page(n, chunk, options, with_title=(n == 1)) for n, chunk in enumerate(chunks, 1)]
     return Project(title=phrase("album_title", options.lang), language=options.lang, pages=pages)

@@ -98,20 +98,33 @@ def test_card_is_five_by_eight_inches_front_and_inside(tmp_path):
 
 
 def test_album_takes_photos_a_page_at_a_time_with_anchored_captions(tmp_path):
-    sources = bundled(starters.album.BUNDLED + ["rolling-hills.jpg", "night-sky.jpg"])  # 10 photos
-    _, project = build_saved("album", tmp_path, Options(year=2027), sources)
-    per_page = starters.album.PHOTOS_PER_PAGE
-    assert len(project.pages) == -(-10 // per_page)
+    names = starters.album.BUNDLED + ["rolling-hills.jpg", "night-sky.jpg"]  # 10 photos
+    _, project = build_saved("album", tmp_path, Options(year=2027), bundled(names))
     photos = [i for p in project.pages for i in p.items if isinstance(i, PictureItem)]
-    assert len(photos) == 10
+    assert [Path(p.path).name for p in photos] == names  # each once, in the order given
+    assert len(project.pages) >= -(-10 // starters.album.MAX_PER_PAGE)
     for page in project.pages:
-        for photo in (i for i in page.items if isinstance(i, PictureItem)):
+        on_page = [i for i in page.items if isinstance(i, PictureItem)]
+        assert 1 <= len(on_page) <= starters.album.MAX_PER_PAGE
+        for photo in on_page:
+            assert max(photo.w, photo.h) >= starters.album.MIN_LONG_SIDE_MM or len(on_page) == 1
             caption = page.item(f"{photo.id}-caption")
             assert isinstance(caption.anchor, ItemAnchor) and caption.anchor.to == photo.id
             assert caption.anchor.dx == pytest.approx(caption.x - photo.x)
             assert caption.anchor.dy == pytest.approx(caption.y - photo.y)
             assert caption.top >= photo.top + photo.h  # under the photo, not on it
             assert caption.text == Path(photo.path).stem.replace("-", " ").capitalize()
+
+
+def test_album_pages_take_fewer_photos_when_they_would_shrink():
+    """Wide photos go six to a portrait page at a good size; squares would shrink, so fewer."""
+    wide = [Picture(f"pictures/w{n}.jpg", 3, 2) for n in range(12)]
+    square = [Picture(f"pictures/s{n}.jpg", 1, 1) for n in range(12)]
+    per_page = lambda pictures: [sum(isinstance(i, PictureItem) for i in p.items)
+                                 for p in starters.build("album", Options(year=2027), pictures).pages]
+    assert max(per_page(wide)) == starters.album.MAX_PER_PAGE
+    assert max(per_page(square)) < starters.album.MAX_PER_PAGE
+    assert sum(per_page(square)) == 12
 
 
 def test_flyer_price_tags_follow_their_products(tmp_path):

@@ -1,0 +1,121 @@
+"""starters.create, the CLI's entry point: refusals first, then each kind end to end."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+import starters
+from model import load_project
+from model.document import CalendarItem, PictureItem
+from model.errors import FloatpageError
+from starter_pdf_checks import assert_page_sizes, check_month, day_marks
+from starters.pictures import bundled
+
+
+@pytest.fixture
+def photos(tmp_path) -> Path:
+    folder = tmp_path / "my photos"
+    folder.mkdir()
+    for source in bundled(["seaside.jpg", "tulips.jpg", "night-sky.jpg", "apples.png", "rolling-hills.jpg"]):
+        shutil.copyfile(source, folder / source.name)
+    return folder
+
+
+@pytest.mark.parametrize("kind, options, says", [
+    ("poster", {}, "unknown starter 'poster'"),
+    ("album", {}, "--photos DIR"),
+    ("calendar", {"year": 0}, "--year"),
+    ("calendar", {"lang": "klingon"}, "--lang"),
+    ("calendar", {"first_weekday": "someday"}, "--first-weekday"),
+    ("card", {"orientation": "diagonal"}, "--orientation"),
+    ("card", {"photos": Path("/nonexistent/photos")}, "no such folder"),
+])
+def test_bad_options_are_refused_before_anything_is_written(tmp_path, kind, options, says):
+    target = tmp_path / "new" / "project.toml"
+    with pytest.raises(FloatpageError, match=says):
+        starters.create(kind, target, settle=False, **options)
+    assert not (tmp_path / "new").exists()
+
+
+def test_an_existing_file_is_never_overwritten(tmp_path):
+    target = tmp_path / "mine.toml"
+    target.write_text("precious")
+    with pytest.raises(FloatpageError, match="already exists"):
+        starters.create("card", target, settle=False)
+    assert target.read_text() == "precious"
+
+
+def test_the_project_file_must_be_toml(tmp_path):
+    with pytest.raises(FloatpageError, match=r"\.toml"):
+        starters.create("card", tmp_path / "card.pdf", settle=False)
+
+
+def test_empty_photos_folder_lists_the_formats(tmp_path):
+    (tmp_path / "empty").mkdir()
+    with pytest.raises(FloatpageError, match="JPG, PNG"):
+        starters.create("album", tmp_path / "a.toml", photos=tmp_path / "empty", settle=False)
+
+
+def test_user_photos_are_copied_beside_the_project(tmp_path, photos):
+    project = starters.create("album", tmp_path / "out" / "album.toml", photos=photos, settle=False)
+    used = {i.path for p in project.pages for i in p.items if isinstance(i, PictureItem)}
+    assert used == {f"pictures/{p.name}" for p in photos.iterdir()}
+    for path in used:
+        assert (tmp_path / "out" / path).read_bytes() == (photos / Path(path).name).read_bytes()
+
+
+def test_created_project_is_settled_and_saved(tmp_path):
+    project = starters.create("flyer", tmp_path / "flyer.toml")
+    loaded = load_project(tmp_path / "flyer.toml")
+    assert project.path == tmp_path / "flyer.toml"
+    for page, saved in zip(project.pages, loaded.pages):
+        for item in page.items:
+            assert saved.item(item.id).x == pytest.approx(item.x, abs=0.01)
+            assert saved.item(item.id).y == pytest.approx(item.y, abs=0.01)
+
+
+CREATE_CASES = {
+    "blank": {},
+    "calendar": {"year": 2028, "first_weekday": "sunday", "lang": "de", "orientation": "landscape"},
+    "card": {"lang": "fr"},
+    "album": {"photos": True},
+    "flyer": {"lang": "nl"},
+}
+EXPECTED = {"blank": (1, "A4"), "calendar": (12, "A4"), "card": (2, "5x8in"), "album": (2, "A4"),
+            "flyer": (1, "A4")}
+
+
+@pytest.fixture(params=list(CREATE_CASES))
+def created(request, tmp_path_factory, render_once):
+    kind = request.param
+
+    def make():
+        folder = tmp_path_factory.mktemp(f"new-{kind}")
+        options = dict(CREATE_CASES[kind])
+        if options.pop("photos", False):
+            photos_dir = folder / "photos"
+            photos_dir.mkdir()
+            for source in bundled(["seaside.jpg", "tulips.jpg", "night-sky.jpg", "apples.png",
+                                   "rolling-hills.jpg"]):
+                shutil.copyfile(source, photos_dir / source.name)
+            options["photos"] = photos_dir
+        starters.create(kind, folder / "project" / f"{kind}.toml", **options)
+        return load_project(folder / "project" / f"{kind}.toml")
+
+    return kind, render_once(f"create-{kind}", make)
+
+
+def test_each_starter_renders_its_pages(created):
+    kind, rendered = created
+    pages, size = EXPECTED[kind]
+    assert len(rendered.project.pages) == pages
+    assert {p.size for p in rendered.project.pages} == {size}
+    assert_page_sizes(rendered.reader, rendered.project.pages)
+    if kind == "calendar":
+        assert {p.orientation for p in rendered.project.pages} == {"landscape"}
+        for page, plumber_page in zip(rendered.project.pages, rendered.plumber.pages):
+            [panel] = [i for i in page.items if isinstance(i, CalendarItem)]
+            check_month(day_marks(plumber_page, panel), 2028, panel.month, "sunday")

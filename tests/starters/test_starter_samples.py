@@ -1,0 +1,68 @@
+"""Every sample project loads, round-trips, renders, and its PDF has the right pages and days."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from model import dump_project, load_project
+from model.document import CalendarItem, PictureItem
+from starter_pdf_checks import assert_page_sizes, check_month, day_marks
+
+SAMPLES_DIR = Path(__file__).resolve().parents[2] / "sample_projects"
+SAMPLE_NAMES = ("calendar-2027", "greeting-card", "photo-album", "shop-flyer")
+EXPECTED_PAGES = {"calendar-2027": 12, "greeting-card": 2, "photo-album": 2, "shop-flyer": 1}
+EXPECTED_SIZE = {"calendar-2027": "A4", "greeting-card": "5x8in", "photo-album": "A4",
+                 "shop-flyer": "A4"}
+
+
+def sample_path(name):
+    return SAMPLES_DIR / name / f"{name}.toml"
+
+
+@pytest.fixture(params=SAMPLE_NAMES)
+def sample(request, render_once):
+    name = request.param
+    return name, render_once(f"sample-{name}", lambda: load_project(sample_path(name)))
+
+
+def test_the_four_samples_exist_and_nothing_else_is_in_their_folders():
+    for name in SAMPLE_NAMES:
+        folder = SAMPLES_DIR / name
+        assert sorted(p.name for p in folder.iterdir()) == sorted([f"{name}.toml", "pictures"])
+
+
+@pytest.mark.parametrize("name", SAMPLE_NAMES)
+def test_sample_is_self_contained_and_round_trips(name):
+    path = sample_path(name)
+    project = load_project(path)
+    assert dump_project(project) == path.read_text(encoding="utf-8")
+    used = {item.path for page in project.pages for item in page.items if isinstance(item, PictureItem)}
+    shipped = {f"pictures/{p.name}" for p in (path.parent / "pictures").iterdir()}
+    assert used == shipped  # every picture it uses is there, and no stray ones
+
+
+def test_sample_pdf_has_its_pages_at_their_size(sample):
+    name, rendered = sample
+    assert len(rendered.project.pages) == EXPECTED_PAGES[name]
+    assert {page.size for page in rendered.project.pages} == {EXPECTED_SIZE[name]}
+    assert_page_sizes(rendered.reader, rendered.project.pages)
+
+
+def test_sample_pdf_shows_each_picture(sample):
+    """One image drawn per picture item, on its own page."""
+    _, rendered = sample
+    for page, plumber_page in zip(rendered.project.pages, rendered.plumber.pages):
+        pictures = [i for i in page.items if isinstance(i, PictureItem)]
+        assert len(plumber_page.images) >= len(pictures), page.id
+
+
+def test_calendar_sample_panels_show_the_right_days(render_once):
+    rendered = render_once("sample-calendar-2027", lambda: load_project(sample_path("calendar-2027")))
+    panels = []
+    for page, plumber_page in zip(rendered.project.pages, rendered.plumber.pages):
+        [panel] = [i for i in page.items if isinstance(i, CalendarItem)]
+        check_month(day_marks(plumber_page, panel), panel.year, panel.month, panel.first_weekday)
+        panels.append(panel)
+    assert [(p.year, p.month) for p in panels] == [(2027, m) for m in range(1, 13)]
