@@ -18,7 +18,7 @@ import numpy as np
 
 FILL = 0.9  # halo-inflated item area / page area that target_gap aims at
 RADIAL_SHARE = 0.5  # share of a push directed along the line between the centres
-AXIS_SHARPNESS = 4  # how strongly a push prefers the axis of least penetration
+# A push prefers the axis of least penetration by the 4th power of the depths (see contact_pushes).
 
 
 def target_gap(sizes: np.ndarray, page_w_mm: float, page_h_mm: float, gutter_mm: float,
@@ -57,32 +57,79 @@ def candidate_pairs(centres: np.ndarray, halves: np.ndarray, rows: np.ndarray,
     return i[different], j[different]
 
 
+def blocked_axes(sizes: np.ndarray, i: np.ndarray, j: np.ndarray, page_w_mm: float,
+                 page_h_mm: float, gutter_mm: float) -> np.ndarray:
+    """Per pair, (m, 2) bool: True on an axis along which the two items cannot sit apart on
+    this page (together wider, or taller, than the page).  Such a pair must separate on the
+    other axis, however deep it overlaps there; two wide text boxes stack, they never try to
+    stand side by side."""
+    need = sizes[i] + sizes[j] + gutter_mm
+    blocked = need > np.array([page_w_mm, page_h_mm])
+    both = blocked.all(axis=1)
+    blocked[both] = False  # hopeless either way: let the cheaper axis decide
+    return blocked
+
+
 def contact_pushes(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray,
-                   gap: float) -> np.ndarray:
+                   gap: float, blocked: np.ndarray | None = None,
+                   radial_share: float = RADIAL_SHARE) -> np.ndarray:
     """For each pair, the push on j away from i (i gets the opposite), shape (m, 2).
 
     Each rectangle is grown by gap / 2; the push is the penetration depth of the grown pair,
     split between the axes so that the axis of least penetration takes nearly all of it (a soft
-    version of the minimum translation vector: continuous, hence no jitter at corners).
+    version of the minimum translation vector: continuous, hence no jitter at corners), plus
+    ``radial_share`` of it along the line between the centres.  ``blocked`` (m, 2) removes an axis on which the
+    pair cannot separate within the page.
     """
     d = centres[j] - centres[i]
-    penetration = halves[i] + halves[j] + gap - np.abs(d)
+    abs_d = np.abs(d)
+    penetration = halves[i] + halves[j] + gap - abs_d
     touching = (penetration[:, 0] > 0) & (penetration[:, 1] > 0)
-    penetration = np.where(touching[:, None], penetration, 0.0)
-    sharp = penetration**AXIS_SHARPNESS
+    penetration *= touching[:, None]
+    squared = penetration * penetration
+    sharp = squared * squared  # AXIS_SHARPNESS = 4
+    if blocked is not None:
+        sharp = np.where(blocked[:, ::-1], 0.0, sharp)  # a blocked axis gets no share
+        sharp = np.where(blocked, sharp + 1.0, sharp)  # ...and leaves it all to the other
     total = sharp[:, 0] + sharp[:, 1]
-    total = np.where(total > 0, total, 1.0)
+    total[total == 0] = 1.0
     weights = sharp[:, ::-1] / total[:, None]  # x takes the y share and vice versa
     direction = np.where(d >= 0, 1.0, -1.0)
     pushes = direction * penetration * weights
-    if RADIAL_SHARE > 0:
-        # A little push along the line between the centres lets an item squeezed in a row slip
-        # up or down into a roomier row; pure axis pushes would keep the row jammed.
-        length = np.sqrt(np.einsum("mk,mk->m", d, d))
-        unit = d / np.where(length > 0, length, 1.0)[:, None]
-        depth = np.sqrt(np.einsum("mk,mk->m", pushes, pushes))
-        pushes = pushes + RADIAL_SHARE * depth[:, None] * unit
-    return pushes
+    # A little push along the line between the centres lets an item squeezed in a row slip
+    # up or down into a roomier row; pure axis pushes would keep the row jammed.  It is not
+    # the gradient of any energy (it makes touching items slide along each other), so the
+    # fast mode fades it out as the page cools.
+    length = np.sqrt(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1])
+    length[length == 0] = 1.0
+    depth = np.sqrt(pushes[:, 0] * pushes[:, 0] + pushes[:, 1] * pushes[:, 1])
+    radial = (radial_share * depth / length)[:, None] * d
+    if blocked is not None:
+        radial[blocked] = 0.0
+    return pushes + radial
+
+
+def wall_rest_box(halves: np.ndarray, page_w_mm: float, page_h_mm: float, margin: float
+                  ) -> tuple[np.ndarray, np.ndarray]:
+    """Where each centre may rest without a wall push: lowest and highest, (n, 2) each.
+
+    An item too large for the page (with its margins) on an axis may only rest in the page's
+    middle there.
+    """
+    extent = np.array([page_w_mm, page_h_mm])
+    lowest = halves + margin
+    highest = extent - halves - margin
+    too_big = 2 * halves >= extent
+    crowded = lowest > highest  # fits, but not with both margins: rest in the middle
+    middle = np.broadcast_to(extent / 2, halves.shape)
+    lowest = np.where(too_big | crowded, middle, lowest)
+    highest = np.where(too_big | crowded, middle, highest)
+    return lowest, highest
+
+
+def wall_pushes_in(centres: np.ndarray, lowest: np.ndarray, highest: np.ndarray) -> np.ndarray:
+    """Springs back into the rest box from wall_rest_box, shape (n, 2)."""
+    return np.maximum(lowest - centres, 0.0) - np.maximum(centres - highest, 0.0)
 
 
 def wall_pushes(centres: np.ndarray, halves: np.ndarray, page_w_mm: float, page_h_mm: float,
@@ -91,9 +138,4 @@ def wall_pushes(centres: np.ndarray, halves: np.ndarray, page_w_mm: float, page_
 
     An item too large for the page on an axis is pulled to the page's middle on that axis.
     """
-    extent = np.array([page_w_mm, page_h_mm])
-    low = np.maximum(halves + margin - centres, 0.0)
-    high = np.maximum(centres + halves + margin - extent, 0.0)
-    pushes = low - high
-    too_big = 2 * halves >= extent
-    return np.where(too_big, extent / 2 - centres, pushes)
+    return wall_pushes_in(centres, *wall_rest_box(halves, page_w_mm, page_h_mm, margin))

@@ -13,7 +13,10 @@ import numpy as np
 
 from physics.bodies import Bodies
 from physics.constraints import enforce_positions, hand_forces_to_roots
-from physics.fast_forces import candidate_pairs, contact_pushes, target_gap, wall_pushes
+from physics.fast_forces import (
+    RADIAL_SHARE, blocked_axes, candidate_pairs, contact_pushes, target_gap, wall_pushes_in,
+    wall_rest_box,
+)
 from physics.params import Params, page_scale
 from physics.stillness import STILL_MM_PER_FRAME
 
@@ -23,6 +26,7 @@ K_ANCHOR = 0.2  # anchor spring per step^2 at the default beta: as stiff as a co
 BETA_DEFAULT = 1.0  # Params.beta at which a fast anchor is as stiff as a contact
 FRICTION = 0.4  # share of the velocity lost every step (d3-force's velocityDecay)
 SPEED_LIMIT_MM = 2.5  # per step on an A4 page: 25 mm per frame at most, easy to follow
+RADIAL_FADE_HEAT = 0.25  # below this heat the sliding (radial) push fades out
 COOLING_ITEMS = 1.5  # fast mode cools at heat_decay * COOLING_ITEMS / sqrt(n) (see cooling_rate)
 COOLING_SHARE_RANGE = (0.05, 0.25)
 JITTER_MM = 0.5  # size of the seeded nudge that separates items on one point (A4)
@@ -42,20 +46,30 @@ def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray
     return low, high
 
 
-def clamp_to_page(centres: np.ndarray, velocities: np.ndarray, rows: np.ndarray,
-                  low: np.ndarray, high: np.ndarray, page_w_mm: float, page_h_mm: float) -> None:
-    """Hard walls, in place: keep each group's box inside the page; a group too large for the
-    page on an axis is centred on it.  The velocity into a wall is dropped."""
+def page_bounds(rows: np.ndarray, low: np.ndarray, high: np.ndarray, page_w_mm: float,
+                page_h_mm: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest centre, (len(rows), 2) each, that keeps each group inside the page.
+
+    A group too large for the page on an axis gets one allowed value there: centred.
+    """
     extent = np.array([page_w_mm, page_h_mm])
-    lo_bound = -low[rows]
-    hi_bound = extent - high[rows]
-    too_big = lo_bound > hi_bound
+    lowest = -low[rows]
+    highest = extent - high[rows]
+    too_big = lowest > highest
     middle = extent / 2 - (low[rows] + high[rows]) / 2
+    return np.where(too_big, middle, lowest), np.where(too_big, middle, highest)
+
+
+def clamp_to_page(centres: np.ndarray, velocities: np.ndarray, rows: np.ndarray,
+                  lowest: np.ndarray, highest: np.ndarray) -> None:
+    """Hard walls, in place: keep each group's box inside the page (bounds from page_bounds).
+    The velocity into a wall is dropped."""
     current = centres[rows]
-    clamped = np.where(too_big, middle, np.clip(current, lo_bound, np.maximum(lo_bound, hi_bound)))
+    clamped = np.minimum(np.maximum(current, lowest), highest)
     hit = clamped != current
-    centres[rows] = clamped
-    velocities[rows] = np.where(hit, 0.0, velocities[rows])
+    if hit.any():
+        centres[rows] = clamped
+        velocities[rows] = np.where(hit, 0.0, velocities[rows])
 
 
 def separate_coincident(bodies: Bodies, i: np.ndarray, j: np.ndarray, movable: np.ndarray,
@@ -102,6 +116,7 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     active = bodies.active
     rows_active = np.flatnonzero(active)
     free_rows = np.flatnonzero(free)
+    moving = slice(None) if free.all() else free_rows  # plain slices copy nothing
     roots, root_offsets = bodies.group_roots()
     followers = bodies.followers
     halves = bodies.sizes / 2
@@ -110,13 +125,16 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     movable = free[roots] & ~bodies.held & active
     inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[roots], 1e-12), 0.0)
     low, high = group_extents(bodies, roots, root_offsets)
+    lowest, highest = page_bounds(free_rows, low, high, page_w_mm, page_h_mm)
+    constrained = bool((bodies.held | bodies.hard | followers).any())
 
     gap = target_gap(bodies.sizes[active], page_w_mm, page_h_mm, params.gutter_mm)
-    margin = gap / 2
+    rest_low, rest_high = wall_rest_box(halves, page_w_mm, page_h_mm, gap / 2)
     skin = max(gap / 2, 2.0 * scale)
     still_speed = STILL_MM_PER_FRAME * scale / params.fast_steps_per_frame
     speed_limit = SPEED_LIMIT_MM * scale
     anchored = ~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard
+    any_anchored, any_followers = bool(anchored.any()), bool(followers.any())
     anchor_k = K_ANCHOR * params.beta / BETA_DEFAULT * bodies.gammas
     keep = 1.0 - cooling_rate(params.heat_decay, len(rows_active))
     count = bodies.count
@@ -127,35 +145,39 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
             i, j = candidate_pairs(bodies.centres, halves, rows_active, roots, gap + skin)
         total = inverse_mass[i] + inverse_mass[j]
         total = np.where(total > 0, total, 1.0)
-        return i, j, (inverse_mass[i] / total)[:, None], (inverse_mass[j] / total)[:, None]
+        blocked = blocked_axes(bodies.sizes, i, j, page_w_mm, page_h_mm, params.gutter_mm)
+        return i, j, inverse_mass[i] / total, inverse_mass[j] / total, blocked
 
-    i, j, share_i, share_j = build()
+    i, j, share_i, share_j, blocked = build()
     built_at = bodies.centres.copy()
     for done in range(1, steps + 1):
         if np.abs(bodies.centres - built_at).max(initial=0.0) > skin / 2:
-            i, j, share_i, share_j = build()
+            i, j, share_i, share_j, blocked = build()
             built_at = bodies.centres.copy()
-        pushes = K_CONTACT * contact_pushes(bodies.centres, halves, i, j, gap)
+        pushes = K_CONTACT * contact_pushes(bodies.centres, halves, i, j, gap, blocked,
+                                            RADIAL_SHARE * min(1.0, heat / RADIAL_FADE_HEAT))
         acc = np.empty((count, 2))
         for axis in (0, 1):
-            acc[:, axis] = (np.bincount(j, pushes[:, axis] * share_j[:, 0], minlength=count)
-                            - np.bincount(i, pushes[:, axis] * share_i[:, 0], minlength=count))
-        acc += K_WALL * wall_pushes(bodies.centres, halves, page_w_mm, page_h_mm, margin)
-        if anchored.any():
+            acc[:, axis] = (np.bincount(j, pushes[:, axis] * share_j, minlength=count)
+                            - np.bincount(i, pushes[:, axis] * share_i, minlength=count))
+        acc += K_WALL * wall_pushes_in(bodies.centres, rest_low, rest_high)
+        if any_anchored:
             acc[anchored] += anchor_k[anchored, None] * (bodies.anchors[anchored]
                                                           - bodies.centres[anchored])
-        hand_forces_to_roots(acc, roots, followers)
-        velocities = (bodies.velocities[free_rows] + heat * acc[free_rows]) * (1.0 - FRICTION)
-        speeds = np.sqrt(np.einsum("ik,ik->i", velocities, velocities))
-        too_fast = speeds > speed_limit
-        if too_fast.any():
+        if any_followers:
+            hand_forces_to_roots(acc, roots, followers)
+        velocities = (bodies.velocities[moving] + heat * acc[moving]) * (1.0 - FRICTION)
+        speeds = np.sqrt(velocities[:, 0] * velocities[:, 0] + velocities[:, 1] * velocities[:, 1])
+        top_speed = speeds.max()
+        if top_speed > speed_limit:
+            too_fast = speeds > speed_limit
             velocities[too_fast] *= (speed_limit / speeds[too_fast])[:, None]
-        bodies.velocities[free_rows] = velocities
-        bodies.centres[free_rows] += velocities
-        clamp_to_page(bodies.centres, bodies.velocities, free_rows, low, high,
-                      page_w_mm, page_h_mm)
-        enforce_positions(bodies, roots, root_offsets)
+        bodies.velocities[moving] = velocities
+        bodies.centres[moving] += velocities
+        clamp_to_page(bodies.centres, bodies.velocities, moving, lowest, highest)
+        if constrained:
+            enforce_positions(bodies, roots, root_offsets)
         heat = max(heat * keep, params.heat_min)
-        if heat <= params.heat_min or speeds.max() < still_speed:
+        if heat <= params.heat_min or top_speed < still_speed:
             return done, heat, True
     return steps, heat, False

@@ -16,8 +16,8 @@ import numpy as np
 
 from physics.bodies import Bodies
 from physics.constraints import enforce_positions, hand_forces_to_roots
-from physics.fast_forces import candidate_pairs
-from physics.fast_mode import clamp_to_page, group_extents
+from physics.fast_forces import blocked_axes, candidate_pairs
+from physics.fast_mode import clamp_to_page, group_extents, page_bounds
 
 MAX_ITERATIONS = 1000
 SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
@@ -35,8 +35,10 @@ def overlap_area(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.n
 
 
 def separation_moves(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray,
-                     clearance: float) -> np.ndarray:
+                     clearance: float, blocked: np.ndarray | None = None) -> np.ndarray:
     """Move of j away from i that clears ``clearance`` on the cheaper axis, shape (m, 2).
+
+    ``blocked`` (m, 2) from blocked_axes forbids an axis on which the pair cannot fit the page.
 
     Zero for pairs already clear on either axis; slightly more than the need otherwise, so
     that the projection ends in a finite number of iterations instead of creeping up to the
@@ -46,6 +48,8 @@ def separation_moves(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: 
     need = halves[i] + halves[j] + clearance - np.abs(d)
     violating = (need[:, 0] > 0) & (need[:, 1] > 0)
     along_x = need[:, 0] <= need[:, 1]
+    if blocked is not None:
+        along_x = (along_x & ~blocked[:, 0]) | blocked[:, 1]
     direction = np.where(d >= 0, 1.0, -1.0)
     moves = np.zeros_like(d)
     moves[:, 0] = np.where(violating & along_x, need[:, 0] + SLACK_MM, 0.0)
@@ -56,8 +60,8 @@ def separation_moves(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: 
 class _Projection:
     """What one page's projection needs, computed once."""
 
-    def __init__(self, bodies: Bodies, page_w_mm: float, page_h_mm: float):
-        self.bodies, self.page = bodies, (page_w_mm, page_h_mm)
+    def __init__(self, bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float):
+        self.bodies, self.page, self.gutter_mm = bodies, (page_w_mm, page_h_mm), gutter_mm
         active = bodies.active
         self.rows_active = np.flatnonzero(active)
         self.free_rows = np.flatnonzero(bodies.free)
@@ -69,20 +73,21 @@ class _Projection:
         movable = bodies.free[self.roots] & ~bodies.held & active
         self.inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[self.roots], 1e-12),
                                      0.0)
-        self.low, self.high = group_extents(bodies, self.roots, self.root_offsets)
+        low, high = group_extents(bodies, self.roots, self.root_offsets)
+        self.bounds = page_bounds(self.free_rows, low, high, page_w_mm, page_h_mm)
 
     def clamp(self) -> None:
-        clamp_to_page(self.bodies.centres, self.bodies.velocities, self.free_rows, self.low,
-                      self.high, *self.page)
+        clamp_to_page(self.bodies.centres, self.bodies.velocities, self.free_rows, *self.bounds)
         enforce_positions(self.bodies, self.roots, self.root_offsets)
 
-    def pairs(self, reach: float) -> tuple[np.ndarray, np.ndarray]:
-        return candidate_pairs(self.bodies.centres, self.halves, self.rows_active, self.roots,
+    def pairs(self, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        i, j = candidate_pairs(self.bodies.centres, self.halves, self.rows_active, self.roots,
                                reach)
+        return i, j, blocked_axes(self.bodies.sizes, i, j, *self.page, self.gutter_mm)
 
     def violations(self, clearance: float) -> int:
-        i, j = self.pairs(clearance)
-        moves = separation_moves(self.bodies.centres, self.halves, i, j, clearance)
+        i, j, blocked = self.pairs(clearance)
+        moves = separation_moves(self.bodies.centres, self.halves, i, j, clearance, blocked)
         return int((moves != 0).any(axis=1).sum())
 
     def run(self, clearance: float, iterations: int, aim: float | None = None) -> bool:
@@ -94,17 +99,17 @@ class _Projection:
         aim = clearance if aim is None else aim
         bodies, count = self.bodies, self.bodies.count
         skin = max(clearance, 2.0)
-        i, j = self.pairs(clearance + skin)
+        i, j, blocked = self.pairs(clearance + skin)
         built_at = bodies.centres.copy()
         best, best_score = bodies.centres.copy(), np.inf
         for _ in range(iterations):
             if np.abs(bodies.centres - built_at).max() > skin / 2:
-                i, j = self.pairs(clearance + skin)
+                i, j, blocked = self.pairs(clearance + skin)
                 built_at = bodies.centres.copy()
-            moves = separation_moves(bodies.centres, self.halves, i, j, aim)
+            moves = separation_moves(bodies.centres, self.halves, i, j, aim, blocked)
             violating = (moves != 0).any(axis=1)
             if not violating.any() or not separation_moves(
-                    bodies.centres, self.halves, i, j, clearance).any():
+                    bodies.centres, self.halves, i, j, clearance, blocked).any():
                 return True
             score = (overlap_area(bodies.centres, self.halves, i, j) + np.abs(moves).sum())
             if score < best_score:
@@ -139,7 +144,7 @@ def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_m
     True when the result keeps the gutter everywhere (and so has no overlap).  If the gutter
     cannot be reached, the pass still removes every overlap it can.
     """
-    projection = _Projection(bodies, page_w_mm, page_h_mm)
+    projection = _Projection(bodies, page_w_mm, page_h_mm, gutter_mm)
     projection.clamp()
     if len(projection.rows_active) < 2 or len(projection.free_rows) == 0:
         return projection.violations(gutter_mm + ROUNDING_MM) == 0

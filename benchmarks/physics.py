@@ -1,0 +1,191 @@
+"""Physics benchmark: the fast mode against the paper's model (and a d3-force-style layout),
+in one run, on the seeded scenes of issue 3.
+
+    .venv/bin/python benchmarks/physics.py                 # everything (a few minutes)
+    .venv/bin/python benchmarks/physics.py --paper-cap 10  # shorter runs of the slow references
+
+The machine is shared and noisy, so compare ratios within one run rather than figures across
+runs.  Times are wall-clock (time.perf_counter) around the whole headless settle, the final
+no-overlap pass included for the fast mode.  The paper's model runs twice: as section 4.7
+describes it (alpha and beta cooled by 1% a step, so it stops after about 700 steps wherever it
+is), and without cooling (heat_decay = 0), run until still or until --paper-cap seconds.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from physics import Engine, Params, measure_quality  # noqa: E402
+from physics.scenes import Scene, big_item_scene, dropped_scene, load, mixed_scene  # noqa: E402
+
+FRAME_RATE = 30  # the editor's frames per second
+VISIBLY_STILL_MM = 0.5  # largest move in one frame that nobody notices
+
+
+@dataclass
+class Run:
+    seconds: float
+    steps: int
+    settled: bool
+    overlap: float  # share of item area
+    off_page: int
+    min_gap: float
+    evenness: float
+    lost: int  # items whose centre is off the page
+
+
+def scenes() -> list[Scene]:
+    return [mixed_scene(n, 0.5, seed=1) for n in (5, 20, 50, 200, 500)] + [
+        mixed_scene(40, 0.9, seed=1), dropped_scene(12), big_item_scene(seed=1)]
+
+
+def measure(engine: Engine, seconds: float, steps: int, settled: bool) -> Run:
+    quality = engine.quality()
+    centres = engine.bodies.centres
+    lost = int((~((centres >= 0) & (centres <= [engine.page_w_mm, engine.page_h_mm]))
+                .all(axis=1)).sum())
+    return Run(seconds, steps, settled, quality.overlap_fraction, len(quality.off_page),
+               quality.min_gap_mm, quality.gap_evenness, lost)
+
+
+def run_fast(scene: Scene) -> Run:
+    engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
+    load(engine, scene)
+    start = time.perf_counter()
+    report = engine.settle()
+    return measure(engine, time.perf_counter() - start, report.steps, report.settled)
+
+
+def run_paper(scene: Scene, cap_s: float, heat_decay: float | None = None) -> Run:
+    params = Params(mode="paper") if heat_decay is None else Params(mode="paper",
+                                                                    heat_decay=heat_decay)
+    engine = Engine(scene.page_w_mm, scene.page_h_mm, params)
+    load(engine, scene)
+    start, steps = time.perf_counter(), 0
+    while not engine.settled and time.perf_counter() - start < cap_s:
+        steps += engine.advance(params.steps_per_frame)
+    return measure(engine, time.perf_counter() - start, steps, engine.settled)
+
+
+def run_d3_style(scene: Scene, ticks: int = 300) -> Run:
+    """d3-force's defaults on rectangles: forceManyBody(-30), forceX/forceY(0.1) to the page
+    centre, and a rectangle collide force (push overlapping pairs apart along the axis of least
+    overlap, weighted by area, strength 1), alpha 1 -> 0.001 over 300 ticks, velocityDecay
+    0.4.  No walls: d3-force has no notion of a page."""
+    centres, sizes = scene.centres.copy(), scene.sizes
+    halves, areas = sizes / 2, sizes.prod(axis=1)
+    velocities = np.zeros_like(centres)
+    middle = np.array([scene.page_w_mm / 2, scene.page_h_mm / 2])
+    alpha, decay = 1.0, 1 - 0.001 ** (1 / 300)
+    rng = np.random.default_rng(0)
+    start = time.perf_counter()
+    for _ in range(ticks):
+        d = centres[:, None, :] - centres[None, :, :]
+        same = (np.abs(d) < 1e-9).all(axis=-1)
+        np.fill_diagonal(same, False)
+        if same.any():  # d3's jiggle
+            d = d + np.where(same[..., None], rng.uniform(-1e-6, 1e-6, d.shape), 0)
+        l2 = np.maximum((d**2).sum(axis=-1), 1.0)
+        np.fill_diagonal(l2, np.inf)
+        velocities += (d * (30 * alpha / l2)[..., None]).sum(axis=1)  # many-body, repulsive
+        velocities += (middle - centres) * 0.1 * alpha  # forceX / forceY
+        overlap = halves[:, None, :] + halves[None, :, :] - np.abs(d)
+        hit = (overlap > 0).all(axis=-1)
+        np.fill_diagonal(hit, False)
+        along_x = overlap[..., 0] < overlap[..., 1]
+        share = areas[None, :] / (areas[:, None] + areas[None, :])
+        push = np.zeros_like(d)
+        push[..., 0] = np.where(hit & along_x, np.sign(d[..., 0]) * overlap[..., 0], 0)
+        push[..., 1] = np.where(hit & ~along_x, np.sign(d[..., 1]) * overlap[..., 1], 0)
+        velocities += (push * share[..., None]).sum(axis=1) / 2  # each pair seen twice
+        velocities *= 1 - 0.4
+        centres += velocities
+        alpha += (0 - alpha) * decay
+    seconds = time.perf_counter() - start
+    quality = measure_quality(scene.page_w_mm, scene.page_h_mm, centres, sizes, 3.0)
+    lost = int((~((centres >= 0) & (centres <= [scene.page_w_mm, scene.page_h_mm]))
+                .all(axis=1)).sum())
+    return Run(seconds, ticks, True, quality.overlap_fraction, len(quality.off_page),
+               quality.min_gap_mm, quality.gap_evenness, lost)
+
+
+def live_editor(count: int = 50, edits: int = 5) -> dict[str, float]:
+    """Frames of the default mode after edits on a settled page of ``count`` items.
+
+    Each edit drags one item to the far side of the page (move + release), then frames of
+    ``advance()`` run until the engine says settled.  Returns the worst and median frame time,
+    and the worst number of seconds (at FRAME_RATE) until the page is visibly still (no item
+    moves VISIBLY_STILL_MM in a frame) and until it is settled.
+    """
+    scene = mixed_scene(count, 0.5, seed=1)
+    engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
+    load(engine, scene)
+    engine.settle()
+    frame_times, still_after, settled_after = [], [], []
+    rng = np.random.default_rng(2)
+    for _ in range(edits):
+        item = engine.ids[int(rng.integers(count))]
+        engine.move(item, float(rng.uniform(30, 180)), float(rng.uniform(30, 270)))
+        frames, still_frame = 0, None
+        while not engine.settled and frames < 10 * FRAME_RATE:
+            before = engine.bodies.centres.copy()
+            start = time.perf_counter()
+            engine.advance()
+            frame_times.append(time.perf_counter() - start)
+            frames += 1
+            moved = np.abs(engine.bodies.centres - before).max()
+            if moved >= VISIBLY_STILL_MM:
+                still_frame = None
+            elif still_frame is None:
+                still_frame = frames
+        still_after.append((still_frame or frames) / FRAME_RATE)
+        settled_after.append(frames / FRAME_RATE)
+    return {"frame_max_ms": max(frame_times) * 1e3,
+            "frame_median_ms": statistics.median(frame_times) * 1e3,
+            "still_after_s": max(still_after), "settled_after_s": max(settled_after)}
+
+
+def row(name: str, run: Run) -> str:
+    gap = "—" if np.isinf(run.min_gap) else f"{run.min_gap:.2f}"
+    return (f"| {name} | {run.seconds:.3f} | {run.steps} | {'yes' if run.settled else 'no'} | "
+            f"{run.overlap:.2%} | {run.off_page} | {run.lost} | {gap} | {run.evenness:.2f} |")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--paper-cap", type=float, default=60.0,
+                        help="seconds to let the paper model without cooling run (default 60)")
+    parser.add_argument("--skip-paper", action="store_true", help="fast mode and d3 only")
+    args = parser.parse_args()
+
+    print("| scene | mode | s | steps | settled | overlap | off page | lost | min gap mm | even |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for scene in scenes():
+        fast = run_fast(scene)
+        runs = [("fast", fast)]
+        if not args.skip_paper:
+            runs.append(("paper, 4.7 cooling", run_paper(scene, args.paper_cap)))
+            runs.append(("paper, no cooling", run_paper(scene, args.paper_cap, heat_decay=0.0)))
+        runs.append(("d3-style, 300 ticks", run_d3_style(scene)))
+        for label, run in runs:
+            ratio = "" if run is fast else f" ({run.seconds / fast.seconds:.0f}× fast)"
+            print(row(f"{scene.name} ({scene.coverage:.0%}) | {label}{ratio}", run), flush=True)
+    live = live_editor()
+    print()
+    print(f"live editor, 50 items, {Params().fast_steps_per_frame} steps a frame: "
+          f"frame max {live['frame_max_ms']:.2f} ms, median {live['frame_median_ms']:.2f} ms; "
+          f"visibly still {live['still_after_s']:.2f} s and settled {live['settled_after_s']:.2f} s "
+          f"after the worst of 5 edits (at {FRAME_RATE} frames/s)")
+
+
+if __name__ == "__main__":
+    main()
