@@ -85,3 +85,10 @@ def test_a_picture_that_is_not_a_picture_is_named(tmp_path):
     with pytest.raises(RenderError, match=r'item "photo" on page "front".*notes.png.*PNG, JPEG'):
         render_pdf(project, tmp_path / "out.pdf")
     assert not (tmp_path / "out.pdf").exists()
+
+
+def test_missing_tex_says_what_to_install(tmp_path, monkeypatch):
+    from typeset import TexNotFoundError
+    monkeypatch.setenv("PATH", str(tmp_path))  # an empty folder: no lualatex anywhere
+    with pytest.raises(TexNotFoundError, match="not installed.*texlive-luatex"):
+        render_pdf(good_project(tmp_path), tmp_path / "out.pdf")

@@ -87,3 +87,16 @@ def test_fit_is_inside_and_maximal(words, w, h, family, style):
         # ... and so the binding direction is (nearly) full.
         fill = max(max(fit.line_widths_pt) / w, fit.height_pt / h)
         assert fill > 0.999 or math.isclose(fit.font_pt, min(1000.0, h), rel_tol=1e-3)
+
+
+@settings(max_examples=200, deadline=None)
+@given(text=st.text(st.characters(blacklist_categories=("Cs",)), max_size=200),
+       w=st.floats(0.01, 2000), h=st.floats(0.01, 2000))
+def test_any_text_in_any_box_fits_without_crashing(text, w, h):
+    from typeset.text_layout import printable_text
+    metrics = metrics_for(FaceKey("sans"))
+    printable, _ = printable_text(text, metrics)
+    fit = fit_text(printable, Box(w, h), metrics)
+    if fit.lines and fit.font_pt > 0.25:
+        assert max(fit.line_widths_pt) <= w * (1 + 1e-9)
+        assert fit.height_pt <= h * (1 + 1e-9)
