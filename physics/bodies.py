@@ -100,7 +100,7 @@ class Bodies:
         """
         roots = np.arange(self.count)
         offsets = np.zeros((self.count, 2))
-        for row in range(self.count):
+        for row in np.flatnonzero(self.targets != NO_TARGET):
             current, total = row, np.zeros(2)
             for _ in range(self.count):
                 target = self.targets[current]

@@ -221,22 +221,25 @@ class Engine:
 
     def advance(self, steps: int | None = None, *, budget_s: float | None = None,
                 clock: Callable[[], float] | None = None) -> int:
-        """Run up to ``steps`` steps (default: one frame of the mode), or, given ``budget_s`` and
-        a ``clock`` (e.g. time.perf_counter), as many as fit in the budget.  Stops early once
-        settled.  Returns the number of steps run.
+        """Run up to ``steps`` steps (default: one drawn frame of the mode, ``frame_steps``).
+
+        With ``budget_s`` and a ``clock`` (e.g. time.perf_counter) it also stops once the budget
+        is spent, looking at the clock every few steps: the budget is a ceiling that keeps a
+        frame short on a big page, while the frame's step count keeps the motion smooth (a
+        budget alone would run a small page's whole settle in a few jumpy frames).  Stops early
+        once settled.  Returns the number of steps run.
         """
         if self._settled:
             return 0
+        limit = self.params.frame_steps if steps is None else max(int(steps), 0)
         if budget_s is None:
-            count = self.params.frame_steps if steps is None else int(steps)
-            return self._run(max(count, 0))
+            return self._run(limit)
         if clock is None:
             raise ValueError("a time budget needs a clock callable, e.g. time.perf_counter")
         chunk = BUDGET_CHUNK_STEPS[self.params.mode]
-        limit = math.inf if steps is None else int(steps)
         start, total = clock(), 0
         while not self._settled and total < limit and clock() - start < budget_s:
-            total += self._run(int(min(chunk, limit - total)))
+            total += self._run(min(chunk, limit - total))
         return total
 
     def finalize(self) -> bool:

@@ -4,10 +4,12 @@ push on item edges.
 Why not the paper's 1/sigma^2 between centres: a long-range force never vanishes, so the page
 only stops when cooling freezes it, and centre distances ignore item shapes (a wide banner and a
 small photo overlap long before their centres are close).  Here every item wants a gap ``gap``
-(mm) to its neighbours and ``gap / 2`` to the page edge.  ``target_gap`` chooses that gap so the
-items with their halos fill the page slightly more than fully: every item is then gently
-pressed by its neighbours, and a pressed, damped spring network comes to rest with even gaps.
-The pushes vanish at rest, so motion dies out by itself instead of by cooling alone.
+(mm) to its neighbours and ``gap / 2`` to the page edge.  ``target_gap`` chooses that gap so
+the items with their halos would cover 90% of the page, about as dense as rectangles of mixed
+shapes pack by chance: most items then touch their neighbours' halos, so a damped spring
+network comes to rest with even gaps (measured: fuller halos jam and leave overlaps, emptier
+ones leave clumps).  The pushes vanish at rest, so motion dies out by itself instead of by
+cooling alone.
 
 Pushes are accelerations in mm per step squared; the integrator scales them by heat.
 """
@@ -16,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-FILL = 0.9  # halo-inflated item area / page area that target_gap aims at
+FILL = 0.9  # halo-grown item area / page area that target_gap aims at
 RADIAL_SHARE = 0.5  # share of a push directed along the line between the centres
 # A push prefers the axis of least penetration by the 4th power of the depths (see contact_pushes).
 

@@ -112,7 +112,7 @@ def test_budget_uses_the_callers_clock():
     ticks = itertools.count()
     clock = lambda: next(ticks) * 0.001  # noqa: E731  each look costs 1 ms
     engine = engine_with(mixed_scene(30))
-    steps = engine.advance(budget_s=0.004, clock=clock)
+    steps = engine.advance(1000, budget_s=0.004, clock=clock)
     assert 0 < steps <= 20  # a few chunks of 5 steps, then the budget is spent
     with pytest.raises(ValueError):
         engine.advance(budget_s=0.01)
@@ -121,6 +121,12 @@ def test_budget_uses_the_callers_clock():
 def test_budget_respects_a_step_cap():
     engine = engine_with(mixed_scene(30))
     assert engine.advance(7, budget_s=10.0, clock=lambda: 0.0) == 7
+
+
+def test_a_budget_alone_runs_at_most_one_frame():
+    """A generous budget must not run a whole settle in one jumpy frame."""
+    engine = engine_with(mixed_scene(30))
+    assert engine.advance(budget_s=10.0, clock=lambda: 0.0) == Params().fast_steps_per_frame
 
 
 def test_settle_reaches_stillness_and_a_clean_page():
