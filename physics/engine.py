@@ -212,11 +212,8 @@ class Engine:
     # ----- running -------------------------------------------------------------------------
     def _run(self, steps: int) -> int:
         runner = run_paper if self.params.mode == "paper" else run_fast
-        args = (self._bodies, self.page_w_mm, self.page_h_mm, self.params, self._heat, steps)
-        if self.params.mode == "paper":
-            done, self._heat, self._settled = run_paper(*args)
-        else:
-            done, self._heat, self._settled = runner(*args, self._rng)
+        done, self._heat, self._settled = runner(self._bodies, self.page_w_mm, self.page_h_mm,
+                                                 self.params, self._heat, steps, self._rng)
         return done
 
     def advance(self, steps: int | None = None, *, budget_s: float | None = None,

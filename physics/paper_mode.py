@@ -10,6 +10,7 @@ import numpy as np
 from physics.bodies import Bodies
 from physics.constraints import enforce_positions, hand_forces_to_roots
 from physics.euler import damping_for_count, euler_step
+from physics.fast_mode import separate_coincident
 from physics.paper_forces import anchor_springs, repulsion, wall_forces
 from physics.params import Params, page_scale
 from physics.stillness import STILL_MM_PER_FRAME
@@ -34,8 +35,11 @@ def paper_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Par
 
 
 def run_paper(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params, heat: float,
-              steps: int) -> tuple[int, float, bool]:
+              steps: int, rng: np.random.Generator) -> tuple[int, float, bool]:
     """Advance up to ``steps`` steps in place; stop as soon as the page is still.
+
+    Items sharing one centre feel no force from each other in (2) (their displacement is
+    zero), so they are first nudged apart by a seeded jitter, as in the fast mode.
 
     Returns (steps run, heat after them, settled).  Still means every free item moves less
     than STILL_MM_PER_FRAME (scaled to the page) per frame of ``steps_per_frame`` steps, or
@@ -49,6 +53,11 @@ def run_paper(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
                    / (params.steps_per_frame * params.dt))
     roots, root_offsets = bodies.group_roots()
     followers = bodies.followers
+    rows = np.flatnonzero(bodies.active)
+    i, j = np.triu_indices(len(rows), k=1)
+    movable = free[roots] & bodies.active
+    separate_coincident(bodies, rows[i], rows[j], movable, rng,
+                        page_scale(page_w_mm, page_h_mm))
     keep = 1.0 - params.heat_decay
     for done in range(1, steps + 1):
         forces = paper_forces(bodies, page_w_mm, page_h_mm, params, heat)

@@ -124,3 +124,16 @@ def test_a_scaled_page_moves_alike():
     big.advance(400)
     small.advance(400)
     assert small.bodies.centres == pytest.approx(big.bodies.centres * s, rel=1e-9)
+
+
+def test_items_on_one_point_separate_deterministically():
+    def run(seed):
+        engine = Engine(*A4, Params(mode="paper", seed=seed))
+        engine.insert("a", 100, 100, 30, 30)
+        engine.insert("b", 100, 100, 30, 30)
+        engine.advance(500)
+        return engine.positions()
+
+    first = run(0)
+    assert first["a"] != first["b"]
+    assert run(0) == first and run(1) != first
