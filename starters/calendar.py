@@ -20,6 +20,7 @@ from starters.words import month_name
 PAGE_SIZE = "A4"
 MARGIN_MM = 12.0
 MAX_PHOTOS_PER_MONTH = 4
+PHOTO_GAMMA = 0.6
 MONTH_IDS = ("jan", "feb", "mar", "apr", "may", "jun", "jul", "aug", "sep", "oct", "nov", "dec")
 
 # Two bundled pictures per month, chosen by season: the first is the month's lead picture.
@@ -68,9 +69,9 @@ def layout_regions(width: float, height: float, orientation: str) -> tuple:
         panel = (width / 2, height - m - panel_h / 2, panel_w, panel_h)
         photos = Region(m, below_title, width - m, height - m - panel_h - 6.0)
     else:
-        panel_w, panel_h = 126.0, 112.0
+        panel_w, panel_h = 130.0, height - m - below_title
         panel = (width - m - panel_w / 2, height - m - panel_h / 2, panel_w, panel_h)
-        photos = Region(m, below_title, width - m - panel_w - 6.0, height - m)
+        photos = Region(m, below_title, width - m - panel_w - 8.0, height - m)
     return title, panel, photos
 
 
@@ -95,10 +96,10 @@ def build(options: Options, pictures: list[Picture]) -> Project:
             anchor=PointAnchor(x=x, y=y, gamma=1.0)))
         start = (month - 1) * per_month
         chosen = [pictures[(start + i) % len(pictures)] for i in range(per_month)] if pictures else []
-        for index, (picture, rect) in enumerate(zip(chosen, grid(region, [p.aspect for p in chosen],
-                                                                 fill=0.96)), start=1):
-            x, y, w, h = rect
+        rects = grid(region, [p.aspect for p in chosen], fill=0.96, stagger=0.7)
+        for index, (picture, (x, y, w, h)) in enumerate(zip(chosen, rects), start=1):
             page.items.append(PictureItem(id=f"{mid}-photo-{index}", x=x, y=y, w=w, h=h,
-                                          path=picture.path))
+                                          path=picture.path,
+                                          anchor=PointAnchor(x=x, y=y, gamma=PHOTO_GAMMA)))
         pages.append(page)
     return Project(title=f"Calendar {options.year}", language=options.lang, pages=pages)

@@ -52,11 +52,13 @@ def fit(aspect: float, max_w: float, max_h: float) -> tuple[float, float]:
 
 
 def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float = 6.0,
-         below: float = 0.0) -> list[Rect]:
+         below: float = 0.0, stagger: float = 0.0) -> list[Rect]:
     """Place len(aspects) boxes of those shapes in a grid over `region`, biggest total area.
 
     Every column count is tried; each cell holds one box scaled to `fill` of the cell, leaving
     the physics room to move. `below` reserves that many mm under each box (for a caption).
+    When the best grid is a single column, `stagger` (0..1) shifts the boxes alternately left
+    and right by that share of their spare width, so a stack reads as a lively zigzag.
     """
     n = len(aspects)
     if n == 0:
@@ -75,6 +77,8 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
             offset = (cols - in_row) * (cell_w + gap) / 2
             w, h = fit(aspect, cell_w * fill, (cell_h - below) * fill)
             x = region.left + offset + col * (cell_w + gap) + cell_w / 2
+            if cols == 1 and n > 1:
+                x += (-1) ** (index + 1) * stagger * (cell_w - w) / 2
             y = region.top + row * (cell_h + gap) + (cell_h - below) / 2
             rects.append((x, y, w, h))
         area = sum(w * h for _, _, w, h in rects)
