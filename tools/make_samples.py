@@ -31,7 +31,7 @@ ALBUM_PHOTOS = ["alpine-dawn.jpg", "sunflower.jpg", "seaside.jpg", "autumn-fores
 
 # folder name -> (kind, options for starters.create, page shown in the README, 1-based)
 SAMPLES = {
-    "calendar-2027": ("calendar", {"year": 2027}, 6),
+    "calendar-2027": ("calendar", {"year": 2027}, 10),
     "greeting-card": ("card", {}, 1),
     "photo-album": ("album", {}, 1),
     "shop-flyer": ("flyer", {}, 1),
@@ -67,7 +67,7 @@ def render_png(project_path: Path, page: int, out_png: Path) -> None:
         pdf = Path(scratch) / "sample.pdf"
         render_pdf(load_project(project_path), pdf)
         stem = Path(scratch) / "page"
-        subprocess.run(["pdftoppm", "-png", "-r", "40", "-f", str(page), "-l", str(page),
+        subprocess.run(["pdftoppm", "-png", "-r", "50", "-f", str(page), "-l", str(page),
                         "-singlefile", str(pdf), str(stem)], check=True)
         out_png.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(stem.with_suffix(".png"), out_png)

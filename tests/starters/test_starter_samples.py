@@ -12,6 +12,7 @@ from starter_pdf_checks import assert_page_sizes, check_month, day_marks
 
 SAMPLES_DIR = Path(__file__).resolve().parents[2] / "sample_projects"
 SAMPLE_NAMES = ("calendar-2027", "greeting-card", "photo-album", "shop-flyer")
+MIN_EDGE_CLEARANCE_MM = 3.0  # the physics' default gutter: printers crop closer than this
 EXPECTED_PAGES = {"calendar-2027": 12, "greeting-card": 2, "photo-album": 2, "shop-flyer": 1}
 EXPECTED_SIZE = {"calendar-2027": "A4", "greeting-card": "5x8in", "photo-album": "A4",
                  "shop-flyer": "A4"}
@@ -48,6 +49,22 @@ def test_sample_pdf_has_its_pages_at_their_size(sample):
     assert len(rendered.project.pages) == EXPECTED_PAGES[name]
     assert {page.size for page in rendered.project.pages} == {EXPECTED_SIZE[name]}
     assert_page_sizes(rendered.reader, rendered.project.pages)
+
+
+def test_sample_is_spread_out_clear_of_the_edges(sample):
+    """After settling: no two items overlap, and none is pressed against the page edge."""
+    _, rendered = sample
+    for page in rendered.project.pages:
+        items = [i for i in page.items if not i.decorative]
+        for item in items:
+            clearance = min(item.left, item.top, page.width_mm - item.left - item.w,
+                            page.height_mm - item.top - item.h)
+            assert clearance >= MIN_EDGE_CLEARANCE_MM, (page.id, item.id, clearance)
+        for n, a in enumerate(items):
+            for b in items[n + 1:]:
+                overlap_x = min(a.left + a.w, b.left + b.w) - max(a.left, b.left)
+                overlap_y = min(a.top + a.h, b.top + b.h) - max(a.top, b.top)
+                assert overlap_x <= 0.01 or overlap_y <= 0.01, (page.id, a.id, b.id)
 
 
 def test_sample_pdf_shows_each_picture(sample):
