@@ -11,7 +11,7 @@ from model.document import Background, BlockItem, PictureItem, PointAnchor, Proj
 from starters.options import Options
 from starters.pictures import Picture
 from starters.measure import hug
-from starters.placement import fit, new_page
+from starters.placement import Region, fit, new_page
 from starters.words import phrase
 
 PAGE_SIZE = "5x8in"
@@ -19,45 +19,73 @@ BUNDLED = ["sunflower.jpg", "tulips.jpg"]
 CREAM, WARM, ROSE, INK = "#fdf4e6", "#f2b84b", "#c4473a", "#3b3027"
 
 
-def band(item_id: str, page, top: float, height: float, colour: str, opacity: float) -> BlockItem:
-    """A full-width decorative strip, behind everything else."""
-    return BlockItem(id=item_id, x=page.width_mm / 2, y=top + height / 2, w=page.width_mm, h=height,
-                     color=colour, opacity=opacity, decorative=True, z=-1)
+def band(item_id: str, x: float, y: float, w: float, h: float) -> BlockItem:
+    """A decorative strip of warm colour, behind everything else."""
+    return BlockItem(id=item_id, x=x, y=y, w=w, h=h, color=WARM, opacity=0.55, decorative=True, z=-1)
+
+
+def picture_in(item_id: str, picture: Picture, region: Region) -> PictureItem:
+    """The picture as large as `region` allows, centred in it."""
+    w, h = fit(picture.aspect, region.width, region.height)
+    x, y = region.centre
+    return PictureItem(id=item_id, x=x, y=y, w=w, h=h, path=picture.path)
+
+
+def anchored_text(item_id: str, text: str, x: float, y: float, w: float, h: float, **style) -> TextItem:
+    """A short text held near (x, y) by a spring, its box narrowed to its words."""
+    return hug(TextItem(id=item_id, x=x, y=y, w=w, h=h, text=text,
+                        anchor=PointAnchor(x=x, y=y, gamma=1.0), **style))
 
 
 def front(options: Options, picture: Picture):
+    """Portrait: picture above, greeting on a band below. Landscape: picture left, band right."""
     page = new_page("front", PAGE_SIZE, options.orientation, background=Background(color=CREAM))
     W, H = page.width_mm, page.height_mm
-    page.items.append(band("front-band", page, H * 0.72, H * 0.28, WARM, 0.55))
-    title_h = H * 0.12
-    title_y = H - 12.0 - title_h / 2
-    w, h = fit(picture.aspect, W - 26.0, title_y - title_h / 2 - 22.0)
-    page.items.append(PictureItem(id="front-picture", x=W / 2, y=12.0 + h / 2, w=w, h=h,
-                                  path=picture.path))
-    page.items.append(hug(TextItem(id="front-greeting", x=W / 2, y=title_y, w=W - 20.0, h=title_h,
-                                   text=phrase("card_front", options.lang), font="display",
-                                   color=ROSE, bold=True,
-                                   anchor=PointAnchor(x=W / 2, y=title_y, gamma=1.0)), W - 20.0))
+    greeting = dict(font="display", color=ROSE, bold=True)
+    text = phrase("card_front", options.lang)
+    if options.orientation == "portrait":
+        band_h, title_h = H * 0.28, H * 0.12
+        title_y = H - 12.0 - title_h / 2
+        page.items += [band("front-band", W / 2, H - band_h / 2, W, band_h),
+                       picture_in("front-picture", picture, Region(13.0, 12.0, W - 13.0, H - band_h - 10.0)),
+                       anchored_text("front-greeting", text, W / 2, title_y, W - 20.0, title_h, **greeting)]
+    else:
+        band_w = W * 0.42
+        x = W - band_w / 2
+        page.items += [band("front-band", x, H / 2, band_w, H),
+                       picture_in("front-picture", picture, Region(12.0, 12.0, W - band_w - 10.0, H - 12.0)),
+                       anchored_text("front-greeting", text, x, H / 2, band_w - 14.0, H * 0.36, **greeting)]
     return page
 
 
 def inside(options: Options, picture: Picture):
+    """The message, a picture and the signature; side by side on a landscape card."""
     page = new_page("inside", PAGE_SIZE, options.orientation, background=Background(color="#fffaf2"))
     W, H = page.width_mm, page.height_mm
-    page.items.append(band("inside-band", page, 0.0, 10.0, WARM, 0.55))
-    message_h = H * 0.22
-    page.items.append(TextItem(id="inside-message", x=W / 2, y=20.0 + message_h / 2, w=W - 28.0,
-                               h=message_h, text=phrase("card_message", options.lang), font="serif",
-                               italic=True, color=INK))
+    page.items.append(band("inside-band", W / 2, 5.0, W, 10.0))
+    message = dict(text=phrase("card_message", options.lang), font="serif", italic=True, color=INK)
+    signature = phrase("card_signature", options.lang)
+    signature_style = dict(font="serif", italic=True, color=ROSE)
     signature_y = H - 16.0
-    page.items.append(hug(TextItem(id="inside-signature", x=W * 0.6, y=signature_y, w=W * 0.55,
-                                   h=12.0, text=phrase("card_signature", options.lang), font="serif",
-                                   italic=True, color=ROSE,
-                                   anchor=PointAnchor(x=W * 0.6, y=signature_y, gamma=1.0)), W * 0.55))
-    top, bottom = 20.0 + message_h + 8.0, signature_y - 14.0
-    w, h = fit(picture.aspect, W * 0.62, bottom - top)
-    page.items.append(PictureItem(id="inside-picture", x=W / 2, y=(top + bottom) / 2, w=w, h=h,
-                                  path=picture.path))
+    if options.orientation == "portrait":
+        message_h = H * 0.22
+        page.items += [
+            TextItem(id="inside-message", x=W / 2, y=20.0 + message_h / 2, w=W - 28.0, h=message_h,
+                     **message),
+            anchored_text("inside-signature", signature, W * 0.6, signature_y, W * 0.55, 12.0,
+                          **signature_style),
+            picture_in("inside-picture", picture,
+                       Region(W * 0.19, 20.0 + message_h + 8.0, W * 0.81, signature_y - 14.0)),
+        ]
+    else:
+        column = W * 0.46
+        page.items += [
+            TextItem(id="inside-message", x=12.0 + column / 2, y=H * 0.42, w=column, h=H * 0.42,
+                     **message),
+            anchored_text("inside-signature", signature, 12.0 + column / 2, signature_y, column, 11.0,
+                          **signature_style),
+            picture_in("inside-picture", picture, Region(W * 0.56, 20.0, W - 12.0, H - 12.0)),
+        ]
     return page
 
 
