@@ -1,13 +1,21 @@
 """Fit a text to its box: the largest font size at which greedy line breaking fits it.
 
 Pure: `fit_text(text, box, metrics) -> TextFit`. Lines are decided here and
-emitted one by one, so LaTeX never re-breaks them. The vertical model is the
-em box PDF readers report for every glyph: a line is one em tall and the
-lines are `leading` em apart, so n lines are s * (1 + (n - 1) * leading) tall.
+emitted one by one, so LaTeX never re-breaks them.
 
-Feasibility is monotone in the size (a larger size leaves a narrower measure
-in em, and greedy breaking then needs as many lines or more, while the box
-allows fewer), so bisection finds the largest feasible size.
+Two boxes bound every glyph, and both must stay inside the item's rectangle:
+- the em box PDF readers report (the advance width, from the descent below the
+  baseline to one em above that): a line is one em tall and lines are `leading`
+  em apart, so n lines are s * (1 + (n - 1) * leading) tall;
+- the ink: an accent on a capital rises above the em box, an italic f leans out
+  of its advance. The first line's ink may raise the top, the last line's the
+  bottom, and each line's ends its width.
+The fill is measured on the em boxes, so it falls below 1 only where ink sticks out.
+
+Feasibility is monotone in the size for the em boxes (a larger size leaves a
+narrower measure in em, so greedy breaking needs as many lines or more while
+the box allows fewer); ink can break that in rare cases, and bisection then
+still returns a size that fits.
 """
 
 from __future__ import annotations
@@ -27,8 +35,11 @@ PRECISION = 1e-6  # relative; the binding direction ends up this close to full
 
 class Metrics(Protocol):
     space_em: float
+    descent_em: float  # of the em box, below the baseline
 
     def advance_em(self, word: str) -> float: ...
+
+    def ink_em(self, word: str): ...  # -> object with left, right, top, bottom (em)
 
 
 @dataclass(frozen=True)
@@ -43,25 +54,38 @@ class Box:
 class TextFit:
     font_pt: float
     lines: tuple[str, ...]
-    line_widths_pt: tuple[float, ...]
+    line_widths_pt: tuple[float, ...]   # advance widths
     leading: float = LEADING
     broken_words: tuple[str, ...] = ()  # words split across lines to avoid overflowing
     below_minimum: bool = False         # the text only fits below MIN_PT
+    top_em: float = 0.75                # first baseline below the block's top
+    bottom_em: float = 0.25             # block's bottom below the last baseline
+    line_offsets_pt: tuple[float, ...] = ()  # each line's origin right of the box's left edge
 
     @property
     def height_pt(self) -> float:
         if not self.lines:
             return 0.0
-        return self.font_pt * (1 + (len(self.lines) - 1) * self.leading)
+        return self.font_pt * (self.top_em + (len(self.lines) - 1) * self.leading + self.bottom_em)
+
+
+@dataclass(frozen=True)
+class _Line:
+    words: tuple[str, ...]
+    width: float   # advance width, em
+    left: float    # ink left of the origin (<= 0 when it leans out), em
+    right: float   # ink (or advance) right end, em
+    top: float     # ink above the baseline, em
+    bottom: float  # ink below the baseline, em
 
 
 class _Segment:
     """Words that must start on a fresh line, with prefix sums for O(log n) greedy steps."""
 
-    __slots__ = ("words", "widths", "glues", "prefix")
+    __slots__ = ("words", "widths", "glues", "prefix", "inks")
 
-    def __init__(self, words: list[str], widths: list[float], glues: list[float]):
-        self.words, self.widths, self.glues = words, widths, glues
+    def __init__(self, words: list[str], widths: list[float], glues: list[float], inks: list):
+        self.words, self.widths, self.glues, self.inks = words, widths, glues, inks
         self.prefix = [0.0]
         for glue, width in zip(glues, widths):
             self.prefix.append(self.prefix[-1] + glue + width)
@@ -79,6 +103,22 @@ class _Segment:
             out.append((start, end, prefix[end] - prefix[start] - glues[start]))
             start = end
         return out
+
+    def line(self, start: int, end: int, width: float) -> _Line:
+        if start == end:
+            return _Line((), 0.0, 0.0, 0.0, 0.0, 0.0)
+        inks = self.inks[start:end]
+        last_origin = width - self.widths[end - 1]
+        return _Line(tuple(self.words[start:end]), width, min(0.0, inks[0].left),
+                     max(width, last_origin + inks[-1].right),
+                     max(ink.top for ink in inks), max(ink.bottom for ink in inks))
+
+
+class _EmInk:
+    """Ink for metrics that know none: the em box itself."""
+
+    def __init__(self, width: float, descent: float):
+        self.left, self.right, self.top, self.bottom = 0.0, width, 1 - descent, descent
 
 
 def paragraphs(text: str) -> list[list[str]]:
@@ -117,6 +157,8 @@ def segments_of(paras: list[list[str]], metrics: Metrics, break_limit_em: float 
                 ) -> tuple[list[_Segment], tuple[str, ...]]:
     """Build segments; with a limit, words wider than it are broken and each piece gets its line."""
     space = metrics.space_em
+    descent = getattr(metrics, "descent_em", 0.25)
+    ink_of = getattr(metrics, "ink_em", None)
     segments, broken = [], []
     for words in paras:
         current: list[str] = []
@@ -135,34 +177,54 @@ def segments_of(paras: list[list[str]], metrics: Metrics, break_limit_em: float 
     built = []
     for words in segments:
         widths = [metrics.advance_em(word) for word in words]
-        built.append(_Segment(words, widths, [0.0] + [space] * (len(words) - 1)))
+        inks = [ink_of(word) if ink_of else _EmInk(width, descent)
+                for word, width in zip(words, widths)]
+        built.append(_Segment(words, widths, [0.0] + [space] * (len(words) - 1), inks))
     return built, tuple(broken)
 
 
-def layout(segments: list[_Segment], size_pt: float, box: Box, leading: float):
-    """All lines at `size_pt` as (segment, start, end, width_em), or None if they do not fit."""
+@dataclass(frozen=True)
+class _Layout:
+    lines: list[_Line]
+    top: float     # em above the first baseline
+    bottom: float  # em below the last baseline
+
+
+def layout(segments: list[_Segment], size_pt: float, box: Box, leading: float,
+           descent: float = 0.25) -> _Layout | None:
+    """All lines at `size_pt`, or None if their em boxes or their ink do not fit the box."""
     limit = box.w_pt / size_pt
-    max_lines = (box.h_pt / size_pt - 1) / leading + 1 + 1e-9
-    lines = []
+    height = box.h_pt / size_pt
+    max_lines = (height - 1) / leading + 1 + 1e-9  # the em boxes alone
+    lines: list[_Line] = []
     for segment in segments:
         found = segment.breaks(limit)
         if found is None:
             return None
-        lines.extend((segment, start, end, width) for start, end, width in found)
+        for start, end, width in found:
+            line = segment.line(start, end, width)
+            if line.right - line.left > limit * (1 + 1e-12):
+                return None  # ink leans out of the box's side
+            lines.append(line)
         if len(lines) > max_lines:
             return None
-    return lines
+    top = max(1 - descent, lines[0].top)
+    bottom = max(descent, lines[-1].bottom)
+    if top + (len(lines) - 1) * leading + bottom > height * (1 + 1e-12):
+        return None
+    return _Layout(lines, top, bottom)
 
 
-def largest_size(segments, box: Box, leading: float, low: float, high: float) -> float | None:
+def largest_size(segments, box: Box, leading: float, descent: float, low: float, high: float
+                 ) -> float | None:
     """Largest size in [low, high] at which the segments fit, or None if not even `low` does."""
-    if layout(segments, high, box, leading) is not None:
+    if layout(segments, high, box, leading, descent) is not None:
         return high
-    if layout(segments, low, box, leading) is None:
+    if layout(segments, low, box, leading, descent) is None:
         return None
     while high / low > 1 + PRECISION:
         middle = math.sqrt(low * high)
-        if layout(segments, middle, box, leading) is None:
+        if layout(segments, middle, box, leading, descent) is None:
             high = middle
         else:
             low = middle
@@ -180,20 +242,25 @@ def fit_text(text: str, box: Box, metrics: Metrics, *, leading: float = LEADING,
     paras = paragraphs(text)
     if not paras or box.w_pt <= 0 or box.h_pt <= 0:
         return TextFit(0.0, (), (), leading)
+    descent = getattr(metrics, "descent_em", 0.25)
     high = max(min(max_pt, box.h_pt), FLOOR_PT)
+    low = min(min_pt, high)
     segments, broken = segments_of(paras, metrics, None)
-    size = largest_size(segments, box, leading, min(min_pt, high), high)
+    size = largest_size(segments, box, leading, descent, low, high)
     below = False
     if size is None:
         segments, broken = segments_of(paras, metrics, box.w_pt / min_pt)
-        size = largest_size(segments, box, leading, min(min_pt, high), high)
+        size = largest_size(segments, box, leading, descent, low, high)
         if size is None:
             below = True
-            size = largest_size(segments, box, leading, FLOOR_PT, min(min_pt, high)) or FLOOR_PT
-            if layout(segments, size, box, leading) is None:  # a box too small for anything
+            size = largest_size(segments, box, leading, descent, FLOOR_PT, low)
+            if size is None:  # a box too small for anything: break at the floor size
                 segments, broken = segments_of(paras, metrics, box.w_pt / FLOOR_PT)
+                size = largest_size(segments, box, leading, descent, FLOOR_PT, low) or FLOOR_PT
     size = math.floor(size * 1e4) / 1e4  # the .tex carries 4 decimals; never round up
-    lines = layout(segments, size, box, leading) or layout(segments, FLOOR_PT, box, leading) or []
-    texts = tuple(" ".join(segment.words[start:end]) for segment, start, end, _ in lines)
-    widths = tuple(width * size for _, _, _, width in lines)
-    return TextFit(size, texts, widths, leading, broken, below)
+    found = layout(segments, size, box, leading, descent)
+    if found is None:  # nothing fits even at the floor: report it, print nothing
+        return TextFit(size, (), (), leading, broken, True)
+    return TextFit(size, tuple(" ".join(line.words) for line in found.lines),
+                   tuple(line.width * size for line in found.lines), leading, broken, below,
+                   found.top, found.bottom, tuple(-line.left * size for line in found.lines))

@@ -116,6 +116,17 @@ def font_path(face: FaceKey) -> Path:
     return path
 
 
+@dataclass(frozen=True)
+class Ink:
+    """A word's ink box in em: left and right of its origin, above (top) and below (bottom)
+    the baseline. An accent on a capital reaches above the em box PDF readers report."""
+
+    left: float
+    right: float
+    top: float
+    bottom: float
+
+
 class FontMetrics:
     """Shaped widths of words in one font file, in em, plus the em box's descent.
 
@@ -135,20 +146,47 @@ class FontMetrics:
         hhea = self.face.reference_table("hhea").data
         descender = struct.unpack(">h", hhea[6:8])[0]
         self.descent_em = int(-descender * 1000 / self.upem) / 1000
-        self._widths: dict[str, float] = {}
+        self._shaped: dict[str, tuple[float, Ink]] = {}
         self.space_em = self.advance_em(" ")
 
+    def shape(self, word: str) -> tuple[float, "Ink"]:
+        """Advance width and ink box of `word` as HarfBuzz shapes it (ligatures, kerning), in em."""
+        known = self._shaped.get(word)
+        if known is not None:
+            return known
+        buffer = hb.Buffer()
+        buffer.add_str(word)
+        buffer.guess_segment_properties()
+        hb.shape(self.font, buffer, SHAPING_FEATURES)
+        pen = 0
+        left = right = top = bottom = None
+        for info, position in zip(buffer.glyph_infos, buffer.glyph_positions):
+            extents = self.font.get_glyph_extents(info.codepoint)
+            if extents is not None and (extents.width or extents.height):
+                x0 = pen + position.x_offset + extents.x_bearing
+                y0 = position.y_offset + extents.y_bearing
+                left = x0 if left is None else min(left, x0)
+                right = x0 + extents.width if right is None else max(right, x0 + extents.width)
+                top = y0 if top is None else max(top, y0)
+                low = -(y0 + extents.height)
+                bottom = low if bottom is None else max(bottom, low)
+            pen += position.x_advance
+        scale = 1 / self.upem
+        if left is None:  # nothing visible, e.g. a space
+            ink = Ink(0.0, 0.0, 0.0, 0.0)
+        else:
+            ink = Ink(left * scale, right * scale, top * scale, bottom * scale)
+        known = (pen * scale, ink)
+        self._shaped[word] = known
+        return known
+
     def advance_em(self, word: str) -> float:
-        """Advance width of `word` as HarfBuzz shapes it (ligatures, kerning), in em."""
-        width = self._widths.get(word)
-        if width is None:
-            buffer = hb.Buffer()
-            buffer.add_str(word)
-            buffer.guess_segment_properties()
-            hb.shape(self.font, buffer, SHAPING_FEATURES)
-            width = sum(position.x_advance for position in buffer.glyph_positions) / self.upem
-            self._widths[word] = width
-        return width
+        """Advance width of `word`, in em: what TeX moves the pen by."""
+        return self.shape(word)[0]
+
+    def ink_em(self, word: str) -> "Ink":
+        """Where the word's glyphs put ink, in em from its origin on the baseline."""
+        return self.shape(word)[1]
 
     def has_char(self, char: str) -> bool:
         return self.font.get_nominal_glyph(ord(char)) is not None

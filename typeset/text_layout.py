@@ -63,10 +63,12 @@ def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: floa
     (or centred in a box `widths_mm` wide)."""
     size = fit.font_pt
     spare_mm = max(0.0, h_mm - fit.height_pt * MM_PER_PT) / 2
-    first_baseline_mm = top_mm + spare_mm + size * (1 - metrics.descent_em) * MM_PER_PT
+    first_baseline_mm = top_mm + spare_mm + size * fit.top_em * MM_PER_PT
     runs = []
-    for index, (line, width_pt) in enumerate(zip(fit.lines, fit.line_widths_pt)):
-        x_mm = left_mm
+    offsets = fit.line_offsets_pt or (0.0,) * len(fit.lines)
+    for index, (line, width_pt, offset_pt) in enumerate(zip(fit.lines, fit.line_widths_pt,
+                                                            offsets)):
+        x_mm = left_mm + offset_pt * MM_PER_PT
         if centre and widths_mm is not None:
             x_mm += max(0.0, widths_mm - width_pt * MM_PER_PT) / 2
         y_mm = first_baseline_mm + index * fit.leading * size * MM_PER_PT

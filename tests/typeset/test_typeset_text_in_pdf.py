@@ -9,9 +9,12 @@ from __future__ import annotations
 
 import random
 import statistics
+import subprocess
 
+import numpy as np
 import pdfplumber
 import pytest
+from PIL import Image
 
 from model.document import Page, Project, TextItem
 from typeset import render_pdf
@@ -98,11 +101,11 @@ def typeset(tmp_path_factory):
                 box = BoxPt.of_item(item)
                 chars = chars_in(pdf_page, box, margin_pt=4 * 72 / 25.4)
                 results.append((item, box, chars, lines[item.id]))
-    return results, report
+    return results, report, out
 
 
 def test_there_are_enough_boxes_of_every_kind(typeset):
-    results, _ = typeset
+    results, *_ = typeset
     assert len(results) >= 200
     texts = [item.text for item, *_ in results]
     assert any(w in t for t in texts for w in LONG_WORDS)
@@ -112,7 +115,7 @@ def test_there_are_enough_boxes_of_every_kind(typeset):
 
 
 def test_every_glyph_lies_inside_its_box(typeset):
-    results, _ = typeset
+    results, *_ = typeset
     worst = max(((box.overflow(c), item.id, c["text"]) for item, box, chars, _ in results
                  for c in chars), default=(0.0, "", ""))
     assert worst[0] <= 0.25, f"glyph {worst[2]!r} of {worst[1]} overflows by {worst[0]:.3f} pt"
@@ -120,7 +123,7 @@ def test_every_glyph_lies_inside_its_box(typeset):
 
 def test_the_pdf_holds_exactly_the_fitted_lines(typeset):
     """LaTeX did not re-break, drop or add anything: the glyphs spell the lines we emitted."""
-    results, _ = typeset
+    results, *_ = typeset
     for item, _, chars, lines in results:
         expected = "".join(lines).replace(" ", "")
         assert "".join(c["text"] for c in chars) == expected, item.id
@@ -131,7 +134,7 @@ def test_the_pdf_holds_exactly_the_fitted_lines(typeset):
 
 
 def test_text_fills_its_box_in_the_binding_direction(typeset):
-    results, _ = typeset
+    results, *_ = typeset
     fills = sorted(max(fill(chars, box)) for item, box, chars, _ in results)
     median = statistics.median(fills)
     fifth_percentile = fills[int(0.05 * len(fills))]
@@ -140,6 +143,33 @@ def test_text_fills_its_box_in_the_binding_direction(typeset):
 
 
 def test_one_engine_run_for_all_pages(typeset):
-    _, report = typeset
+    _, report, _ = typeset
     assert report.pages == PAGES
     assert report.engine_seconds < report.seconds
+
+
+def test_no_ink_outside_any_box(typeset, tmp_path):
+    """Rasterise the pages and look for ink outside the boxes: this sees accents above
+    capitals and italic overhangs, which the PDF's advance boxes do not."""
+    results, _, out = typeset
+    dpi = 100
+    px_per_pt = dpi / 72
+    subprocess.run(["pdftoppm", "-gray", "-r", str(dpi), str(out), str(tmp_path / "page")],
+                   check=True, timeout=300)
+    pages = sorted(tmp_path.glob("page-*.pgm"))
+    assert len(pages) == PAGES
+    slack_px = 0.25 * px_per_pt + 1.5  # the 0.25 pt allowance plus anti-aliasing
+    by_page: dict[int, list[BoxPt]] = {}
+    for item, box, *_ in results:
+        by_page.setdefault(int(item.id[1:].split("-")[0]), []).append(box)
+    for index, path in enumerate(pages):
+        ink = np.asarray(Image.open(path)) < 200
+        allowed = np.zeros_like(ink)
+        for box in by_page[index]:
+            x0 = max(0, int(np.floor(box.x0 * px_per_pt - slack_px)))
+            y0 = max(0, int(np.floor(box.top * px_per_pt - slack_px)))
+            x1 = int(np.ceil(box.x1 * px_per_pt + slack_px))
+            y1 = int(np.ceil(box.bottom * px_per_pt + slack_px))
+            allowed[y0:y1, x0:x1] = True
+        stray = np.argwhere(ink & ~allowed)
+        assert len(stray) == 0, f"page {index}: ink outside every box at (row, col) {stray[:5]}"
