@@ -6,15 +6,8 @@ a page comes from here, in the project's language. The texts are only a start: u
 
 from __future__ import annotations
 
-MONTHS = {
-    "en": "January February March April May June July August September October November December",
-    "de": "Januar Februar März April Mai Juni Juli August September Oktober November Dezember",
-    "fr": "janvier février mars avril mai juin juillet août septembre octobre novembre décembre",
-    "es": "enero febrero marzo abril mayo junio julio agosto septiembre octubre noviembre diciembre",
-    "it": "gennaio febbraio marzo aprile maggio giugno luglio agosto settembre ottobre novembre dicembre",
-    "pt": "janeiro fevereiro março abril maio junho julho agosto setembro outubro novembro dezembro",
-    "nl": "januari februari maart april mei juni juli augustus september oktober november december",
-}
+from model.calendar_month import LANGUAGES
+from model.calendar_month import month_name as panel_month_name
 
 PHRASES = {
     "card_front": {
@@ -40,7 +33,7 @@ PHRASES = {
         "es": "Nuestro álbum de fotos", "it": "Il nostro album", "pt": "O nosso álbum",
         "nl": "Ons fotoalbum",
     },
-    "flyer_title": {lang: "The Corner Shop" for lang in MONTHS} | {
+    "flyer_title": {lang: "The Corner Shop" for lang in LANGUAGES} | {
         "de": "Der Eckladen", "fr": "L'Épicerie du Coin", "es": "La Tienda de la Esquina",
         "it": "La Bottega all'Angolo", "pt": "A Mercearia da Esquina", "nl": "De Hoekwinkel",
     },
@@ -83,9 +76,8 @@ PRODUCTS = {  # bundled product picture stem -> name in each language
 
 
 def month_name(month: int, lang: str) -> str:
-    """The month's name, capitalised as a title (French and Spanish write them in lower case)."""
-    name = MONTHS[lang].split()[month - 1]
-    return name[:1].upper() + name[1:]
+    """The month's name as the panel prints it, so the page title and the panel agree."""
+    return panel_month_name(month, lang)
 
 
 def phrase(key: str, lang: str) -> str:
