@@ -141,6 +141,8 @@ def main() -> int:
           f"(engine inside it {statistics.median(engines):.3f} s)")
     print(f"bare lualatex on the same .tex, median of {args.repeat}: {bare_median:.3f} s")
     print(f"ratio render / bare: {render_median / bare_median:.3f} (target <= 1.3)")
+    outside = statistics.median(r - e for r, e in zip(renders, engines))
+    print(f"time outside the engine run, median: {outside:.3f} s")
     print(f"fitting one text box ({boxes} boxes): median {statistics.median(warm) * 1e3:.3f} ms "
           f"warm, {statistics.median(cold) * 1e3:.3f} ms cold (first shaping); "
           f"max {max(cold) * 1e3:.3f} ms (target median < 1 ms)")

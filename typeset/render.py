@@ -50,8 +50,10 @@ def tex_from_scene(scene: DocumentScene, *, fragment: bool = False) -> str:
                            picture_dir=scene.picture_dir, trailer_id=NoEscape("0" * 32))
     if fragment:
         return body
-    # The PDF's ID is the hash of everything else, so equal projects give equal bytes.
-    trailer = hashlib.md5(body.encode("utf-8")).hexdigest().upper()
+    # The PDF's ID is the hash of everything else, so equal projects give equal bytes; the
+    # picture cache's folder is left out, so it does not matter whose cache the pictures are in.
+    hashed = body.replace(str(scene.picture_dir), "") if scene.picture_dir else body
+    trailer = hashlib.md5(hashed.encode("utf-8")).hexdigest().upper()
     return body.replace("<" + "0" * 32 + ">", f"<{trailer}>")
 
 

@@ -3,6 +3,10 @@
 Templates write `\\VAR{value}` and `\\BLOCK{for ...}`; every substituted value is
 escaped by the `finalize` hook unless it is PyLaTeX's `NoEscape`, which only
 the filters below return. Numbers arrive computed and are only formatted here.
+
+PyLaTeX is used for `NoEscape` only: the four packages are fixed `\\usepackage`
+lines in page.tex.j2, next to what needs them, and PyLaTeX's `escape_latex` and
+`generate_pdf` do not meet our needs (see typeset.escape and typeset.compile).
 """
 
 from __future__ import annotations

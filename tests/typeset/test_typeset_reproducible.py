@@ -50,3 +50,13 @@ def test_a_different_project_gives_a_different_pdf_id(tmp_path):
     project.pages[0].items[0].text = "Other bytes"
     render_pdf(project, tmp_path / "two.pdf")
     assert sha256(tmp_path / "one.pdf") != sha256(tmp_path / "two.pdf")
+
+
+def test_the_picture_cache_location_does_not_change_the_bytes(tmp_path, monkeypatch):
+    project = project_in(tmp_path)
+    monkeypatch.setenv("FLOATPAGE_CACHE_DIR", str(tmp_path / "cache-one"))
+    render_pdf(project, tmp_path / "one.pdf")
+    monkeypatch.setenv("FLOATPAGE_CACHE_DIR", str(tmp_path / "cache-two"))
+    render_pdf(project, tmp_path / "two.pdf")
+    assert (tmp_path / "cache-two").is_dir()
+    assert sha256(tmp_path / "one.pdf") == sha256(tmp_path / "two.pdf")
