@@ -50,6 +50,7 @@ class EditorScreen(Screen):
         self.export_state: str | None = None
         self._release_timer = None
         self._composed = False
+        self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
 
     def compose(self) -> ComposeResult:
         yield Label("", id="page-bar")
@@ -82,6 +83,7 @@ class EditorScreen(Screen):
         self.redraw()
         now = time.perf_counter()
         self.meter.record(now, steps, now - start)
+        self.frames_ticked += 1
         if engine.settled:
             self.frame_timer.pause()
             self.redraw()

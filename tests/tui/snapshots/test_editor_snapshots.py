@@ -1,4 +1,5 @@
-"""Snapshots of the editor with the physics frozen (paused, fixed seed, a fixed number of steps).
+"""Snapshots of the editor with the physics frozen: paused (autostart=False), fixed seed, and
+the page at rest as saved, so frames repeat whatever the physics' tuning.
 
 Review a changed snapshot in the report before running `pytest --snapshot-update`.
 """
@@ -14,11 +15,6 @@ def frozen_app(project_path):
     return app
 
 
-async def twenty_steps(pilot) -> None:
-    pilot.app.editor.step_physics(20)
-    await pilot.pause()
-
-
 def test_main_screen(project_path, snap_compare):
     """The front page of the test card, A5 portrait, centred on a dark surround: a pink 'title'
     box with 'Happy Birthday Anna', the 'photo' thumbnail (red over blue) with a dotted blue
@@ -26,7 +22,6 @@ def test_main_screen(project_path, snap_compare):
     'month' calendar (March 2027 grid) with a magenta '+' anchor; 'block' is selected (yellow
     frame). Page bar on top; two status lines ('paused', quality); the footer keys."""
     async def run_before(pilot) -> None:
-        await twenty_steps(pilot)
         pilot.app.editor.selected_id = "block"
         await pilot.pause()
 
@@ -37,25 +32,24 @@ def test_main_screen_80x24(project_path, snap_compare):
     """The same page in the smallest supported terminal: the whole page still fits, with ids
     readable and the calendar grid cut to what fits; nothing selected, so Edit, Delete and
     Anchor are greyed out in the footer."""
-    assert snap_compare(frozen_app(project_path), terminal_size=(80, 24), run_before=twenty_steps)
+    assert snap_compare(frozen_app(project_path), terminal_size=(80, 24))
 
 
 def test_help_screen(project_path, snap_compare):
     """The help dialog over the editor: 'floatpage keys', then groups (Select, Move and resize,
     Insert, ...) listing each key and what it does."""
     assert snap_compare(frozen_app(project_path), press=["question_mark"],
-                        terminal_size=(100, 34), run_before=twenty_steps)
+                        terminal_size=(100, 34))
 
 
 def test_insert_dialog(project_path, snap_compare):
     """The Insert dialog over the editor: Text box (highlighted), Picture…, Colour block,
     Calendar month, Background…, with 'Enter chooses · Esc cancels' under the list."""
-    assert snap_compare(frozen_app(project_path), press=["i"], terminal_size=(100, 34),
-                        run_before=twenty_steps)
+    assert snap_compare(frozen_app(project_path), press=["i"], terminal_size=(100, 34))
 
 
 def test_insert_text_dialog(project_path, snap_compare):
     """The text box form: a 'Text' area holding 'Hello', an empty error line, the hint and
     OK / Cancel buttons."""
     assert snap_compare(frozen_app(project_path), press=["t", "H", "e", "l", "l", "o"],
-                        terminal_size=(100, 34), run_before=twenty_steps)
+                        terminal_size=(100, 34))
