@@ -2,8 +2,10 @@
 
 Each page holds the month's panel, a title and the photos, which the physics spreads. The
 title is the month's name in large display type (the panel repeats it small, with the year,
-as its own heading). The title and the panel are anchored to their places by soft springs (section 4.5), so the photos
-flow around them instead of pushing the month off its spot; the user can still drag them.
+as its own heading) and is hard-anchored, so it stays centred at the top. The panel sits on a
+stiff spring (section 4.5) and each photo on a soft one (PHOTO_GAMMA) to its starting slot:
+the physics still moves them apart, but without the spring it would press photos flat against
+the page edge, where a printer crops them. The user can drag or unanchor any of them.
 """
 
 from __future__ import annotations
@@ -11,9 +13,9 @@ from __future__ import annotations
 import math
 
 from model.document import Background, CalendarItem, PictureItem, PointAnchor, Project, TextItem
+from starters.measure import hug
 from starters.options import Options
 from starters.pictures import Picture
-from starters.measure import hug
 from starters.placement import Region, grid, new_page
 from starters.words import month_name
 

@@ -88,7 +88,3 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
         raise ValueError(f"region {region} is too small for {n} boxes")
     return best[1]
 
-
-def spread(items: list, count: int) -> list:
-    """`count` entries taken from `items` in turn, wrapping round when there are too few."""
-    return [items[i % len(items)] for i in range(count)] if items else []

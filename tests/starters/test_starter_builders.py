@@ -6,7 +6,7 @@ import pytest
 
 import starters
 from model import ItemAnchor, load_project, save_project
-from model.document import CalendarItem, PictureItem, TextItem
+from model.document import CalendarItem, PictureItem
 from model.page_sizes import page_dimensions
 from starters.options import Options
 from starters.pictures import Picture, bundled, copy_beside
