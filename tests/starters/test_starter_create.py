@@ -77,6 +77,23 @@ def test_created_project_is_settled_and_saved(tmp_path):
             assert saved.item(item.id).y == pytest.approx(item.y, abs=0.01)
 
 
+def test_created_calendar_is_at_rest(tmp_path):
+    """create() settles: the physics moved the photos, and settling again barely moves anything."""
+    from model.layout import settle_project
+
+    unsettled = starters.create("calendar", tmp_path / "raw.toml", year=2027, settle=False)
+    starters.create("calendar", tmp_path / "settled.toml", year=2027)
+    project = load_project(tmp_path / "settled.toml")
+    positions = {i.id: (i.x, i.y) for page in project.pages for i in page.items}
+    start = {i.id: (i.x, i.y) for page in unsettled.pages for i in page.items}
+    moved = max(abs(positions[k][0] - start[k][0]) + abs(positions[k][1] - start[k][1]) for k in start)
+    assert moved > 1.0
+    settle_project(project)
+    again = max(abs(i.x - positions[i.id][0]) + abs(i.y - positions[i.id][1])
+                for page in project.pages for i in page.items)
+    assert again < 0.5
+
+
 CREATE_CASES = {
     "blank": {},
     "calendar": {"year": 2028, "first_weekday": "sunday", "lang": "de", "orientation": "landscape"},
