@@ -26,7 +26,8 @@ class LogError:
 
     def __str__(self) -> str:
         where = self.item or (f"line {self.line} of the .tex" if self.line else "the document")
-        return f"{where}: {self.message}"
+        line = f" (.tex line {self.line})" if self.item and self.line else ""
+        return f"{where}: {self.message}{line}"
 
 
 class LatexCompileError(RenderError):

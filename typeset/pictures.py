@@ -18,8 +18,8 @@ from __future__ import annotations
 import hashlib
 import math
 import os
-import re
 from dataclasses import dataclass
+from io import BytesIO
 from pathlib import Path
 
 from PIL import Image, ImageOps, UnidentifiedImageError
@@ -115,7 +115,6 @@ def materialize(plan: PicturePlan) -> Path:
         image = ImageOps.exif_transpose(opened) if opened.format == "JPEG" else opened.copy()
     if plan.target_size is not None:
         image = image.resize(plan.target_size, Image.Resampling.LANCZOS)
-    from io import BytesIO
     out = BytesIO()
     if plan.cache_path.suffix == ".jpg":
         if image.mode not in ("RGB", "L", "CMYK"):

@@ -8,6 +8,7 @@ output, so a failed render never overwrites the last good PDF.
 from __future__ import annotations
 
 import hashlib
+import re
 import tempfile
 import time
 from dataclasses import dataclass, field
@@ -70,11 +71,11 @@ def text_fit_warnings(project: Project) -> list[str]:
         raise RenderError(str(error)) from None
 
 
-def count_pages(pdf: bytes) -> int:
-    from io import BytesIO
-
-    from pypdf import PdfReader
-    return len(PdfReader(BytesIO(pdf)).pages)
+def count_pages(build: Path, expected: int) -> int:
+    """Pages LuaLaTeX says it wrote ("Output written on main.pdf (12 pages, ...)")."""
+    log = (build / "main.log").read_text(encoding="utf-8", errors="replace")
+    found = re.search(r"Output written on main\.pdf \((\d+) pages?", log)
+    return int(found.group(1)) if found else expected
 
 
 def log_path_for(out_pdf: Path) -> Path:
@@ -113,9 +114,10 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
                           picture_dir=cache_dir(),
                           keep_log=log_path_for(out_pdf))
         data = pdf.read_bytes()
+        pages = count_pages(Path(build), len(scene.pages))
     engine_seconds = time.perf_counter() - engine_started
     atomic_write(out_pdf, data, backup=False)
     log_path_for(out_pdf).unlink(missing_ok=True)  # a failed render's log is now stale
     say(f"wrote {out_pdf}")
-    return RenderReport(out_pdf, count_pages(data), scene.warnings,
+    return RenderReport(out_pdf, pages, scene.warnings,
                         time.perf_counter() - started, engine_seconds)

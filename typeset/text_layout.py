@@ -87,7 +87,10 @@ def fit_warnings(label: str, face: FaceKey, fit: TextFit, missing: list[str]) ->
     warnings = []
     if missing:
         warnings.append(missing_glyph_warning(label, face, missing))
-    if fit.below_minimum:
+    if fit.below_minimum and not fit.lines:
+        warnings.append(f"{label}: the box is too small to hold this text at any size "
+                        f"(enlarge the box or shorten the text)")
+    elif fit.below_minimum:
         warnings.append(f"{label}: the text only fits at {fit.font_pt:.1f} pt, below the "
                         f"{MIN_PT:g} pt minimum (enlarge the box or shorten the text)")
     if fit.broken_words:
