@@ -90,9 +90,11 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
     log_path = None
     log = log_file.read_text(encoding="utf-8", errors="replace") if log_file.is_file() else ""
     if log and keep_log is not None:
-        keep_log.parent.mkdir(parents=True, exist_ok=True)
-        shutil.copyfile(log_file, keep_log)
-        log_path = keep_log
+        try:
+            shutil.copyfile(log_file, keep_log)
+            log_path = keep_log
+        except OSError:  # e.g. the output folder does not exist: say so without a log
+            log_path = None
     elif log:
         log_path = log_file
     if code is None:

@@ -12,6 +12,7 @@ import functools
 import shutil
 import struct
 import subprocess
+import unicodedata
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -192,12 +193,21 @@ class FontMetrics:
         return self.font.get_nominal_glyph(ord(char)) is not None
 
     def missing_chars(self, text: str) -> list[str]:
-        """Characters of `text` this font has no glyph for, in order of first appearance."""
+        """Visible characters of `text` this font has no glyph for, in order of appearance.
+
+        Invisible format characters (zero-width space, joiners, marks of direction) are
+        not reported: a font without them prints exactly what the user sees anyway.
+        """
         missing: dict[str, None] = {}
         for char in text:
-            if char not in " \n" and char not in missing and not self.has_char(char):
+            if char not in " \n" and char not in missing and not self.has_char(char) \
+                    and unicodedata.category(char) != "Cf":
                 missing[char] = None
         return list(missing)
+
+    def lacks(self, char: str) -> bool:
+        """True for a character the engine would drop: no glyph in this font."""
+        return char not in " \n" and not self.has_char(char)
 
 
 @functools.lru_cache(maxsize=None)

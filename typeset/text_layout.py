@@ -51,10 +51,9 @@ def printable_text(text: str, metrics: FontMetrics) -> tuple[str, list[str]]:
     """The cleaned text without characters the font lacks, and those characters."""
     cleaned = clean_text(text)
     missing = metrics.missing_chars(cleaned)
-    if missing:
-        lost = set(missing)
-        cleaned = "".join(ch for ch in cleaned if ch not in lost)
-    return cleaned, missing
+    # Drop everything the font lacks, warned about or invisible, so HarfBuzz measures
+    # exactly what LuaLaTeX (which drops such characters) prints.
+    return "".join(ch for ch in cleaned if not metrics.lacks(ch)), missing
 
 
 def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: float,
