@@ -211,8 +211,8 @@ def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
             write_chunks(handle, data)
             handle.flush()
             os.fsync(handle.fileno())
+        os.chmod(temporary, path.stat().st_mode & 0o777 if path.exists() else 0o666 & ~current_umask())
         if path.exists():
-            os.chmod(temporary, path.stat().st_mode & 0o777)
             if backup:
                 backup_path = path.with_name(path.name + ".bak")
                 shutil.copy2(path, temporary + ".bak")
@@ -234,6 +234,13 @@ def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
                 pass
         raise FloatpageError(f"{path}: could not save: {error.strerror or error}"
                              " (check that the folder exists and is writable)") from None
+
+
+def current_umask() -> int:
+    """The process umask (reading it means setting it, so set it straight back)."""
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def save_project(project: Project, path: str | Path | None = None) -> Path:

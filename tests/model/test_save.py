@@ -187,3 +187,12 @@ def test_any_project_survives_dump_load_dump(tmp_path_factory, project):
     for before, after in zip(project.pages[0].items, loaded.pages[0].items):
         assert abs(before.x - after.x) <= 0.005 and abs(before.w - after.w) <= 0.005
         assert type(before) is type(after) and before.id == after.id
+
+
+def test_a_new_file_gets_the_usual_permissions_not_mkstemps_0600(tmp_path):
+    old = os.umask(0o022)
+    try:
+        path = save_project(Project(pages=[Page(id="p")]), tmp_path / "new.toml")
+    finally:
+        os.umask(old)
+    assert path.stat().st_mode & 0o777 == 0o644
