@@ -39,31 +39,49 @@ class Glyph:
 
 
 class CellCanvas:
-    """cols x rows cells = cols x (2 rows) pixels. Drawing clips to the canvas."""
+    """cols x rows cells = cols x (2 rows) pixels. Drawing clips to the canvas.
+
+    Something drawn over a glyph hides it. Rather than deleting glyphs cell by cell, every fill
+    stamps the cells it touches with a rising layer number (one numpy slice), and a glyph is
+    shown only if it was written after the last fill of its cell.
+    """
 
     def __init__(self, cols: int, rows: int, fill: RGB):
         self.cols, self.rows = cols, rows
         self.pixels = np.empty((2 * rows, cols, 3), dtype=np.uint8)
         self.pixels[:] = fill
-        self.glyphs: dict[tuple[int, int], Glyph] = {}
+        self.layers = np.zeros((rows, cols), dtype=np.int32)
+        self.layer = 0
+        self._glyphs: dict[tuple[int, int], tuple[Glyph, int]] = {}
 
     def _clip(self, x0: int, y0: int, x1: int, y1: int) -> tuple[int, int, int, int]:
         return max(x0, 0), max(y0, 0), min(x1, self.cols), min(y1, 2 * self.rows)
 
-    def clear_glyphs(self, x0: int, y0: int, x1: int, y1: int) -> None:
-        """Forget glyphs in the cells a pixel box touches (something was drawn over them)."""
-        if not self.glyphs:
-            return
-        x0, y0, x1, y1 = self._clip(x0, y0, x1, y1)
-        for row in range(y0 // 2, (y1 + 1) // 2):
-            for col in range(x0, x1):
-                self.glyphs.pop((row, col), None)
+    def _cover(self, x0: int, y0: int, x1: int, y1: int) -> None:
+        """Hide the glyphs in every cell a clipped pixel box touches."""
+        self.layer += 1
+        self.layers[y0 // 2:(y1 + 1) // 2, x0:x1] = self.layer
+
+    @property
+    def glyphs(self) -> dict[tuple[int, int], Glyph]:
+        """The glyphs still visible, by (row, col)."""
+        layers = self.layers
+        return {cell: glyph for cell, (glyph, layer) in self._glyphs.items()
+                if layer >= layers[cell]}
+
+    def glyph_at(self, col: int, row: int) -> Glyph | None:
+        if not (0 <= col < self.cols and 0 <= row < self.rows):
+            return None
+        entry = self._glyphs.get((row, col))
+        if entry is None or entry[1] < self.layers[row, col]:
+            return None
+        return entry[0]
 
     def fill(self, x0: int, y0: int, x1: int, y1: int, rgb: RGB) -> None:
         cx0, cy0, cx1, cy1 = self._clip(x0, y0, x1, y1)
         if cx0 < cx1 and cy0 < cy1:
             self.pixels[cy0:cy1, cx0:cx1] = rgb
-            self.clear_glyphs(cx0, cy0, cx1, cy1)
+            self._cover(cx0, cy0, cx1, cy1)
 
     def blit(self, x0: int, y0: int, image: np.ndarray) -> None:
         """Copy an (h, w, 3) image with its top-left at pixel (x0, y0)."""
@@ -71,10 +89,10 @@ class CellCanvas:
         cx0, cy0, cx1, cy1 = self._clip(x0, y0, x0 + w, y0 + h)
         if cx0 < cx1 and cy0 < cy1:
             self.pixels[cy0:cy1, cx0:cx1] = image[cy0 - y0:cy1 - y0, cx0 - x0:cx1 - x0]
-            self.clear_glyphs(cx0, cy0, cx1, cy1)
+            self._cover(cx0, cy0, cx1, cy1)
 
     def outline(self, x0: int, y0: int, x1: int, y1: int, rgb: RGB) -> None:
-        """A one-pixel frame just outside the box (x0, y0, x1, y1)."""
+        """A one-pixel frame just outside the box (x0, y0, x1, y1); glyphs stay visible."""
         for box in ((x0 - 1, y0 - 1, x1 + 1, y0), (x0 - 1, y1, x1 + 1, y1 + 1),
                     (x0 - 1, y0, x0, y1), (x1, y0, x1 + 1, y1)):
             cx0, cy0, cx1, cy1 = self._clip(*box)
@@ -83,16 +101,18 @@ class CellCanvas:
 
     def put(self, col: int, row: int, glyph: Glyph) -> None:
         if 0 <= col < self.cols and 0 <= row < self.rows:
-            self.glyphs[(row, col)] = glyph
+            self._glyphs[(row, col)] = (glyph, self.layer)
 
     def write(self, col: int, row: int, text: str, fg: RGB, bg: RGB | None = None,
               bold: bool = False, end_col: int | None = None) -> None:
         """Write text from (col, row), stopping before end_col (default: the canvas edge)."""
+        if not 0 <= row < self.rows:
+            return
         end = self.cols if end_col is None else min(end_col, self.cols)
-        for offset, char in enumerate(text):
-            if col + offset >= end:
-                break
-            self.put(col + offset, row, Glyph(char, fg, bg, bold))
+        layer, glyphs = self.layer, self._glyphs
+        for offset, char in enumerate(text[:max(end - col, 0)]):
+            if col + offset >= 0:
+                glyphs[(row, col + offset)] = (Glyph(char, fg, bg, bold), layer)
 
 
 class StripCache:

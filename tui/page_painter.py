@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import textwrap
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 
 from rich.cells import cell_len
@@ -59,9 +60,16 @@ def readable_on(bg: RGB) -> RGB:
     return BLACK if luminance > 140 else WHITE
 
 
+@lru_cache(maxsize=4096)
 def printable(text: str) -> str:
     """One cell per character: anything wider (or a control character) becomes '?'."""
     return "".join(char if char.isprintable() and cell_len(char) == 1 else "?" for char in text)
+
+
+@lru_cache(maxsize=1024)
+def wrapped(text: str, width: int) -> tuple[str, ...]:
+    """Greedy line breaks of a paragraph at a cell width (cached: texts rarely change)."""
+    return tuple(textwrap.wrap(printable(text), width) or [""])
 
 
 def calendar_lines(item: CalendarItem) -> list[str]:
@@ -178,11 +186,10 @@ class PagePainter:
             return
         lines: list[str] = []
         for paragraph in paragraphs:
-            paragraph = printable(paragraph)
             if wrap:
-                lines += textwrap.wrap(paragraph, width) or [""]
+                lines += wrapped(paragraph, width)
             else:
-                lines.append(paragraph[:width])
+                lines.append(printable(paragraph)[:width])
         for row, line in zip(range(first, row1), lines):
             canvas.write(col0, row, line, fg, bg, bold=bold, end_col=col1)
 
@@ -196,7 +203,7 @@ class PagePainter:
             end = self.projection.cell_of(*centres[item.anchor.to])
             self._dots(canvas, start, end, LINK)
             for end_cell in (start, end):
-                if (end_cell[1], end_cell[0]) not in canvas.glyphs:  # labels stay readable
+                if canvas.glyph_at(*end_cell) is None:  # labels stay readable
                     canvas.put(*end_cell, Glyph("o", WHITE, LINK, bold=True))
 
     @staticmethod
@@ -207,5 +214,6 @@ class PagePainter:
         for i in range(1, steps):
             col = round(c0 + (c1 - c0) * i / steps)
             row = round(r0 + (r1 - r0) * i / steps)
-            if (row, col) not in canvas.glyphs:
+            if 0 <= row < canvas.rows and 0 <= col < canvas.cols \
+                    and canvas.glyph_at(col, row) is None:
                 canvas.put(col, row, Glyph("\u00b7", colour, None, bold=True))
