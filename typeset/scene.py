@@ -120,7 +120,8 @@ def background_scenes(project: Project, page: Page) -> list:
     background = page.background
     if background is None:
         return []
-    label = f'the background of page "{page.id}"'
+    label = f'the background of page "{page.id}"' + (
+        f' (picture file "{background.picture}")' if background.picture else '')
     whole = Rect(0.0, 0.0, page.width_mm, page.height_mm)
     if background.picture:
         plan = plan_picture(project.base_dir / background.picture, page.width_mm, page.height_mm,
