@@ -46,9 +46,12 @@ def scene_of(project: Project) -> DocumentScene:
 def tex_from_scene(scene: DocumentScene, *, fragment: bool = False) -> str:
     env = make_environment()
     template = env.get_template("fragment.tex.j2" if fragment else "page.tex.j2")
-    body = template.render(title=scene.title or "untitled", pages=scene.pages,
-                           faces=scene.faces, colors=scene.colors,
-                           picture_dir=scene.picture_dir, trailer_id=NoEscape("0" * 32))
+    try:
+        body = template.render(title=scene.title or "untitled", pages=scene.pages,
+                               faces=scene.faces, colors=scene.colors,
+                               picture_dir=scene.picture_dir, trailer_id=NoEscape("0" * 32))
+    except ValueError as error:  # a filter refused a value (a font path TeX cannot take...)
+        raise RenderError(f"could not write the LaTeX: {error}") from None
     if fragment:
         return body
     # The PDF's ID is the hash of everything else, so equal projects give equal bytes; the

@@ -7,6 +7,8 @@ picture files (to hash them) but writes nothing.
 
 from __future__ import annotations
 
+import math
+import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -14,6 +16,7 @@ from model.document import (
     BlockItem, CalendarItem, Page, PictureItem, Project, TextItem,
 )
 from typeset.calendar_panel import Rect, layout_calendar
+from typeset.errors import RenderError
 from typeset.pictures import PicturePlan, plan_picture
 from typeset.templates import SAFE_PATH
 from typeset.fonts import FaceKey, font_path, metrics_for
@@ -94,6 +97,22 @@ def item_label(item, page: Page) -> str:
     return f'item "{item.id}" on page "{page.id}"'
 
 
+HEX_COLOUR = re.compile(r"^#[0-9a-fA-F]{6}$")
+
+
+def check_item(item, label: str) -> None:
+    """Refuse what the loader would have refused, for projects built in code (the editor)."""
+    numbers = (item.x, item.y, item.w, item.h)
+    if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in numbers):
+        raise RenderError(f"{label}: its position or size is not a finite number {numbers} "
+                          "(move or resize it, or run the layout again)")
+    if item.w <= 0 or item.h <= 0:
+        raise RenderError(f"{label}: its width and height must be greater than 0")
+    colour = getattr(item, "color", "#000000")
+    if not isinstance(colour, str) or not HEX_COLOUR.match(colour):
+        raise RenderError(f'{label}: colour {colour!r} is not written as "#rrggbb"')
+
+
 def rect_of(item) -> Rect:
     return Rect(item.x - item.w / 2, item.y - item.h / 2, item.x + item.w / 2, item.y + item.h / 2)
 
@@ -134,6 +153,8 @@ def background_scenes(project: Project, page: Page) -> list:
         return [PictureScene("background", label, (page.width_mm - w) / 2, (page.height_mm - h) / 2,
                              w, h, plan, clip=whole)]
     if background.color:
+        if not HEX_COLOUR.match(str(background.color)):
+            raise RenderError(f'{label}: colour {background.color!r} is not written as "#rrggbb"')
         return [BlockScene("background", label, whole, background.color, 1.0)]
     return []
 
@@ -147,6 +168,7 @@ def build_scene(project: Project) -> DocumentScene:
         ordered = sorted(enumerate(page.items), key=lambda pair: (pair[1].z, pair[0]))
         for _, item in ordered:
             label = item_label(item, page)
+            check_item(item, label)
             if isinstance(item, TextItem):
                 made = text_scene(item, label, warnings)
             elif isinstance(item, PictureItem):
@@ -155,7 +177,8 @@ def build_scene(project: Project) -> DocumentScene:
                 made = PictureScene(item.id, f'{label} (picture file "{item.path}")', left, top,
                                     item.w, item.h, plan)
             elif isinstance(item, BlockItem):
-                made = BlockScene(item.id, label, rect_of(item), item.color, item.opacity)
+                made = BlockScene(item.id, label, rect_of(item), item.color,
+                                  min(1.0, max(0.0, float(item.opacity))))
             elif isinstance(item, CalendarItem):
                 made = calendar_scene(item, label, warnings)
             else:

@@ -92,3 +92,18 @@ def test_missing_tex_says_what_to_install(tmp_path, monkeypatch):
     monkeypatch.setenv("PATH", str(tmp_path))  # an empty folder: no lualatex anywhere
     with pytest.raises(TexNotFoundError, match="not installed.*texlive-luatex"):
         render_pdf(good_project(tmp_path), tmp_path / "out.pdf")
+
+
+@pytest.mark.parametrize("change, message", [
+    ({"x": float("nan")}, "not a finite number"),
+    ({"w": 0.0}, "greater than 0"),
+    ({"color": "#fff}\\input{x}"}, "is not written as"),
+])
+def test_bad_values_from_code_are_refused_with_the_item_named(tmp_path, change, message):
+    item = TextItem(id="caption", x=50, y=50, w=40, h=10, text="Hi")
+    for key, value in change.items():
+        setattr(item, key, value)
+    project = Project(pages=[Page(id="p", items=[item])])
+    with pytest.raises(RenderError, match=message) as caught:
+        render_pdf(project, tmp_path / "out.pdf")
+    assert 'item "caption" on page "p"' in str(caught.value)
