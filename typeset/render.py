@@ -8,6 +8,7 @@ output, so a failed render never overwrites the last good PDF.
 from __future__ import annotations
 
 import hashlib
+import os
 import re
 import tempfile
 import time
@@ -81,6 +82,17 @@ def count_pages(build: Path, expected: int) -> int:
     return int(found.group(1)) if found else expected
 
 
+def write_output(path: Path, data: bytes) -> None:
+    """Atomically replace `path`; a new file gets the usual rw-r--r-- (umask) permissions,
+    not the owner-only ones of the temporary file it was renamed from."""
+    existed = path.exists()
+    atomic_write(path, data, backup=False)
+    if not existed:
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(path, 0o666 & ~umask)
+
+
 def log_path_for(out_pdf: Path) -> Path:
     """Where a failed render leaves the LaTeX log: beside the PDF, named after it."""
     return out_pdf.with_name(out_pdf.name + ".log")
@@ -106,10 +118,9 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
             raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
     tex = tex_from_scene(scene)
     if tex_out is not None:
-        atomic_write(Path(tex_out), tex.encode("utf-8"), backup=False)
+        write_output(Path(tex_out), tex.encode("utf-8"))
     if fragment_out is not None:
-        atomic_write(Path(fragment_out), tex_from_scene(scene, fragment=True).encode("utf-8"),
-                     backup=False)
+        write_output(Path(fragment_out), tex_from_scene(scene, fragment=True).encode("utf-8"))
     say("typesetting with LuaLaTeX")
     engine_started = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="floatpage-") as build:
@@ -119,7 +130,7 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
         data = pdf.read_bytes()
         pages = count_pages(Path(build), len(scene.pages))
     engine_seconds = time.perf_counter() - engine_started
-    atomic_write(out_pdf, data, backup=False)
+    write_output(out_pdf, data)
     log_path_for(out_pdf).unlink(missing_ok=True)  # a failed render's log is now stale
     say(f"wrote {out_pdf}")
     return RenderReport(out_pdf, pages, scene.warnings,

@@ -107,3 +107,14 @@ def test_bad_values_from_code_are_refused_with_the_item_named(tmp_path, change, 
     with pytest.raises(RenderError, match=message) as caught:
         render_pdf(project, tmp_path / "out.pdf")
     assert 'item "caption" on page "p"' in str(caught.value)
+
+
+def test_a_new_pdf_is_readable_by_others_like_any_new_file(tmp_path):
+    import os
+    umask = os.umask(0o022)
+    try:
+        render_pdf(good_project(tmp_path), tmp_path / "card.pdf", tex_out=tmp_path / "card.tex")
+    finally:
+        os.umask(umask)
+    assert (tmp_path / "card.pdf").stat().st_mode & 0o777 == 0o644
+    assert (tmp_path / "card.tex").stat().st_mode & 0o777 == 0o644
