@@ -29,6 +29,7 @@ ANCHOR: RGB = (214, 40, 170)
 LINK: RGB = (0, 150, 200)
 MISSING_PICTURE: RGB = (150, 150, 150)
 WHITE: RGB = (255, 255, 255)
+TEXT_TINT = 0.12  # how much of its ink colour a text box's background takes
 BLACK: RGB = (0, 0, 0)
 
 
@@ -151,19 +152,20 @@ class PagePainter:
                 canvas.blit(x0, y0, image)
             self._label(canvas, item, box, WHITE, BLACK)
             return
+        under = tuple(int(v) for v in canvas.pixels[
+            min(max((y0 + y1) // 2, 0), canvas.pixels.shape[0] - 1),
+            min(max((x0 + x1) // 2, 0), canvas.cols - 1)])
         if isinstance(item, BlockItem):
-            under = tuple(int(v) for v in canvas.pixels[
-                min(max((y0 + y1) // 2, 0), canvas.pixels.shape[0] - 1),
-                min(max((x0 + x1) // 2, 0), canvas.cols - 1)])
             fill = mix(under, hex_to_rgb(item.color, MISSING_PICTURE), item.opacity)
             canvas.fill(*box, fill)
             self._label(canvas, item, box, readable_on(fill), fill)
             return
+        # Text is printed straight on the page, so its box is only a faint tint of what lies
+        # under it, and the text keeps the contrast it will have on paper.
         ink = hex_to_rgb(getattr(item, "color", None))
-        fill = mix(ink, WHITE, 0.82)
+        fill = mix(under, ink, TEXT_TINT)
         canvas.fill(*box, fill)
-        label_fg = mix(ink, fill, 0.35)
-        self._label(canvas, item, box, label_fg, fill)
+        self._label(canvas, item, box, mix(readable_on(fill), fill, 0.45), fill)
         if isinstance(item, TextItem):
             self._body(canvas, box, [item.text], ink, fill, bold=item.bold)
         elif isinstance(item, CalendarItem):
@@ -198,7 +200,9 @@ class PagePainter:
         if isinstance(item.anchor, PointAnchor):
             end = self.projection.cell_of(item.anchor.x, item.anchor.y)
             self._dots(canvas, start, end, ANCHOR)
-            canvas.put(*end, Glyph("#" if item.anchor.hard else "+", WHITE, ANCHOR, bold=True))
+            under = canvas.glyph_at(*end)  # a letter of a text stays readable, on the anchor colour
+            char = under.char if under is not None else ("#" if item.anchor.hard else "+")
+            canvas.put(*end, Glyph(char, WHITE, ANCHOR, bold=True))
         elif isinstance(item.anchor, ItemAnchor) and item.anchor.to in centres:
             end = self.projection.cell_of(*centres[item.anchor.to])
             self._dots(canvas, start, end, LINK)

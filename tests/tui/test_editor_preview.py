@@ -75,9 +75,14 @@ async def test_anchors_and_links_are_visible(project_path):
         canvas = screen_of(app).preview.canvas
         preview = screen_of(app).preview
         col, row = preview.projection.cell_of(74.0, 170.0)  # the month's anchor point
-        assert canvas.glyphs[(row, col)].char == "+"
-        assert canvas.glyphs[(row, col)].bg == ANCHOR
-        link_dots = [g for g in canvas.glyphs.values() if g.fg == LINK and g.char == "\u00b7"]
+        assert canvas.glyphs[(row, col)].bg == ANCHOR  # over the calendar's text: its letter
+        screen_of(app).selected_id = "block"
+        await pilot.press("a")  # a block shows no text: the anchor shows as '+'
+        col, row = preview.projection.cell_of(*app.session.engine.positions()["block"])
+        assert preview.canvas.glyphs[(row, col)].char == "+"
+        assert preview.canvas.glyphs[(row, col)].bg == ANCHOR
+        link_dots = [g for g in preview.canvas.glyphs.values()
+                     if g.fg == LINK and g.char == "\u00b7"]
         assert len(link_dots) >= 3  # caption follows photo: a dotted line between them
 
 
