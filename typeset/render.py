@@ -8,7 +8,6 @@ output, so a failed render never overwrites the last good PDF.
 from __future__ import annotations
 
 import hashlib
-import os
 import re
 import tempfile
 import time
@@ -83,14 +82,8 @@ def count_pages(build: Path, expected: int) -> int:
 
 
 def write_output(path: Path, data: bytes) -> None:
-    """Atomically replace `path`; a new file gets the usual rw-r--r-- (umask) permissions,
-    not the owner-only ones of the temporary file it was renamed from."""
-    existed = path.exists()
+    """Atomically replace `path` (a new file gets the umask's permissions, as any new file)."""
     atomic_write(path, data, backup=False)
-    if not existed:
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(path, 0o666 & ~umask)
 
 
 def log_path_for(out_pdf: Path) -> Path:
