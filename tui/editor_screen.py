@@ -30,7 +30,7 @@ from tui.session import EditError, EditSession
 from tui.status_line import Status, StatusLine
 
 FRAME_S = 1 / 30
-PHYSICS_BUDGET_S = 0.012  # leaves most of a 33 ms frame for drawing and for keys
+PHYSICS_BUDGET_S = 0.008  # leaves most of a 33 ms frame for drawing and for keys
 RELEASE_AFTER_S = 0.6  # a nudged item is let go this long after the last arrow key
 QUALITY_EVERY_S = 0.25  # the quality measure is O(n^2): while settling, refresh it 4 times a second
 
