@@ -179,7 +179,7 @@ def main() -> None:
             runs.append(("paper, no cooling", run_paper(scene, args.paper_cap, heat_decay=0.0)))
         runs.append(("d3-style, 300 ticks", run_d3_style(scene)))
         for label, run in runs:
-            ratio = "" if run is fast else f" ({run.seconds / fast.seconds:.0f}× fast)"
+            ratio = "" if run is fast else f" ({run.seconds / fast.seconds:.2g}× fast)"
             print(row(f"{scene.name} ({scene.coverage:.0%}) | {label}{ratio}", run), flush=True)
     live = live_editor()
     print()
