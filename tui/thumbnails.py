@@ -20,6 +20,7 @@ def _working_copy(path: str, mtime_ns: int):
     from PIL import Image
 
     with Image.open(path) as image:
+        image.draft("RGB", (WORKING_SIZE, WORKING_SIZE))  # JPEG: decode at reduced scale, fast
         image = image.convert("RGB")
         image.thumbnail((WORKING_SIZE, WORKING_SIZE))
         return image.copy()

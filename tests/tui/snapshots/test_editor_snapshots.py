@@ -16,11 +16,12 @@ def frozen_app(project_path):
 
 
 def test_main_screen(project_path, snap_compare):
-    """The front page of the test card, A5 portrait, centred on a dark surround: a pink 'title'
-    box with 'Happy Birthday Anna', the 'photo' thumbnail (red over blue) with a dotted blue
-    link down to its 'caption', a green 'block', the yellow decorative '~band' behind the
-    'month' calendar (March 2027 grid) with a magenta '+' anchor; 'block' is selected (yellow
-    frame). Page bar on top; two status lines ('paused', quality); the footer keys."""
+    """The front page of the test card, A5 portrait, centred on a dark surround: a faintly
+    pink 'title' box with 'Happy Birthday Anna' in dark red, the 'photo' thumbnail (red over
+    blue) with a dotted blue link and 'o' ends down to its grey 'caption', a green 'block'
+    framed in yellow (selected, named in the page bar), and the decorative yellow '~band'
+    behind the 'month' calendar (March 2027 grid) whose anchor shows as a magenta cell on the
+    weekday row. Two status lines ('paused', the quality summary) and the footer keys."""
     async def run_before(pilot) -> None:
         pilot.app.editor.selected_id = "block"
         await pilot.pause()

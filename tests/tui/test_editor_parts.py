@@ -1,0 +1,75 @@
+"""The editor's UI-free parts: reading order, history, frame meter, key labels, the canvas."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import pytest
+
+from tui.cell_canvas import UPPER_HALF, CellCanvas, Glyph, StripCache
+from tui.frame_meter import FrameMeter
+from tui.history import History, Snapshot
+from tui.keymap import COMMANDS, key_label
+from tui.reading_order import reading_order, step_through
+
+
+@dataclass
+class Box:
+    id: str
+    x: float
+    y: float
+    h: float = 10.0
+
+
+def test_reading_order_reads_rows_left_to_right_even_when_slightly_staggered():
+    boxes = [Box("right", 150, 22), Box("left", 40, 20), Box("below", 40, 60),
+             Box("middle", 95, 24)]
+    assert reading_order(boxes) == ["left", "middle", "right", "below"]
+
+
+def test_step_through_wraps_and_starts_at_either_end():
+    order = ["a", "b", "c"]
+    assert step_through(order, None, 1) == "a"
+    assert step_through(order, None, -1) == "c"
+    assert step_through(order, "c", 1) == "a"
+    assert step_through(order, "a", -1) == "c"
+    assert step_through([], None, 1) is None
+
+
+def test_history_undo_redo_and_a_new_edit_clears_redo():
+    history = History(limit=3)
+    snap = lambda label: Snapshot(label, [], 0, None)  # noqa: E731
+    for label in "abcd":
+        history.record(snap(label))
+    assert [s.label for s in history.undo_stack] == ["b", "c", "d"]  # bounded
+    assert history.undo(snap("now")).label == "d"
+    assert history.redo(snap("d")).label == "now"
+    history.undo(snap("now"))
+    history.record(snap("e"))
+    assert not history.can_redo
+
+
+def test_frame_meter_counts_frames_and_steps_over_the_window():
+    meter = FrameMeter(window_s=1.0)
+    for frame in range(31):
+        meter.record(frame / 30, 10, 0.005)
+    assert meter.fps == pytest.approx(30)
+    assert meter.steps_per_s == pytest.approx(300)
+
+
+def test_key_labels_read_as_typed():
+    assert key_label("plus,equals_sign") == "+ ="
+    assert key_label("shift+left,H") == "Shift+Left H"
+    assert all("ctrl+shift" not in command.keys for command in COMMANDS)
+
+
+def test_canvas_rows_become_half_block_strips_and_later_fills_hide_glyphs():
+    canvas = CellCanvas(4, 2, (0, 0, 0))
+    canvas.fill(0, 0, 4, 1, (255, 0, 0))  # the top pixel row only
+    canvas.write(0, 1, "ab", (255, 255, 255))
+    canvas.fill(1, 2, 2, 4, (0, 0, 255))  # covers the "b"
+    strips = StripCache().strips(canvas)
+    assert strips[0].text == UPPER_HALF * 4
+    assert strips[1].text == "a   "
+    assert canvas.glyph_at(1, 1) is None and canvas.glyph_at(0, 1) == Glyph("a", (255, 255, 255))
+    assert all(strip.cell_length == 4 for strip in strips)
