@@ -2,6 +2,7 @@
 deterministic for a seed.  Examples are kept few so the folder stays fast."""
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -87,3 +88,42 @@ def test_paper_mode_never_produces_nan(scene):
     engine.advance(1000)
     assert np.isfinite(engine.bodies.centres).all()
     assert np.isfinite(engine.kinetic_energy)
+
+
+@st.composite
+def edited_scenes(draw):
+    """A scene plus a random mix of decorations, held items, point anchors and followers."""
+    scene = draw(scenes(max_items=8))
+    count = len(scene[2])
+    roles = draw(st.lists(st.sampled_from(["free", "decorative", "held", "hard", "soft",
+                                           "follower"]), min_size=count, max_size=count))
+    return scene, roles
+
+
+@FAST
+@given(edited_scenes())
+def test_constraints_keep_the_page_finite_and_in_order(data):
+    scene, roles = data
+    page_w, page_h, items, seed = scene
+    engine = Engine(page_w, page_h, Params(seed=seed))
+    for k, ((x, y, w, h), role) in enumerate(zip(items, roles)):
+        engine.insert(f"i{k}", x, y, w, h, decorative=role == "decorative")
+    for k, role in enumerate(roles):
+        if role == "held":
+            engine.hold(f"i{k}")
+        elif role in ("hard", "soft"):
+            engine.anchor_point(f"i{k}", page_w / 3, page_h / 3, gamma=0.5, hard=role == "hard")
+        elif role == "follower" and k > 0:
+            engine.anchor_to(f"i{k}", f"i{k - 1}", 5.0, 5.0)
+    before = engine.positions()
+    engine.settle(max_steps=2000)
+    after = engine.positions()
+    assert np.isfinite(engine.bodies.centres).all()
+    for k, role in enumerate(roles):
+        if role in ("decorative", "held"):
+            assert after[f"i{k}"] == before[f"i{k}"]
+        elif role == "hard":
+            assert after[f"i{k}"] == (page_w / 3, page_h / 3)
+        elif role == "follower" and k > 0:
+            tx, ty = after[f"i{k - 1}"]
+            assert after[f"i{k}"] == pytest.approx((tx + 5.0, ty + 5.0))
