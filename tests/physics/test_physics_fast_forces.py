@@ -68,3 +68,26 @@ def test_candidate_pairs_skip_far_pairs_and_rigid_groups():
     groups = np.array([0, 1, 2, 0])  # row 3 follows row 0
     i, j = candidate_pairs(centres, halves, rows, groups, reach=3.0)
     assert sorted(zip(i.tolist(), j.tolist())) == [(0, 1), (1, 3)]
+
+
+def test_sweep_and_prune_finds_exactly_the_brute_force_pairs():
+    rng = np.random.default_rng(0)
+    for trial in range(100):
+        count = int(rng.integers(0, 40))
+        centres = rng.uniform(0, 100, (count, 2))
+        halves = rng.uniform(0.5, 20, (count, 2))
+        if count > 2 and trial % 5 == 0:
+            centres[1] = centres[0]  # a tie in left edges
+        rows = np.flatnonzero(rng.random(count) < 0.8)
+        groups = np.arange(count)
+        if count > 3:
+            groups[3] = 0
+        reach = float(rng.uniform(0.1, 10))
+        i, j = candidate_pairs(centres, halves, rows, groups, reach)
+        upper_i, upper_j = np.triu_indices(len(rows), k=1)
+        a, b = rows[upper_i], rows[upper_j]
+        clear = np.abs(centres[b] - centres[a]) - halves[a] - halves[b]
+        near = (clear < reach).all(axis=1) & (groups[a] != groups[b])
+        expected = set(zip(a[near].tolist(), b[near].tolist()))
+        assert set(zip(i.tolist(), j.tolist())) == expected
+        assert len(i) == len(expected)
