@@ -2,8 +2,8 @@
 
 Every user operation (insert, delete, move, hold, release, resize, anchor, page resize) reheats
 the page, as section 4.7 asks: alpha and beta go back to full strength.  ``advance`` runs a
-number of steps or fills a time budget measured by a clock the caller passes in; the engine
-itself never reads a clock.
+number of steps (one drawn frame by default), cut short by an optional time budget measured
+by a clock the caller passes in; the engine itself never reads a clock.
 """
 
 from __future__ import annotations

@@ -5,9 +5,9 @@ a user may stop it any time).  This pass makes it exactly right when the items f
 positions until every pair of items is at least ``gutter`` apart edge to edge and every item is
 inside the page, moving each pair apart along the axis that needs the smaller move, so the
 layout the physics found is kept, only nudged.  It is position-based (Jacobi projection, as in
-position-based dynamics), so it cannot blow up.  When the gutter cannot be reached it settles
-for no overlap at all, and when even that fails (an over-full page) it keeps the arrangement
-with the least overlap it saw.  (A crowd can make the gutter impossible even on a half-empty
+position-based dynamics), so it cannot blow up.  When the gutter cannot be reached it tries
+half of it, then plain no-overlap, and when even that fails (an over-full page) it keeps the
+arrangement with the least overlap it saw.  (A crowd can make the gutter impossible even on a half-empty
 page: 500 small items covering half of A4 need 94% of it once each grows by a 3 mm gutter.)
 """
 
