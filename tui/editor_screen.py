@@ -23,7 +23,7 @@ from model.errors import FloatpageError
 from tui import item_forms
 from tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from tui.frame_meter import FrameMeter
-from tui.keymap import ITEM_ACTIONS, bindings
+from tui.keymap import ITEM_ACTIONS, bindings, footer_rank, in_footer
 from tui.page_painter import Scene
 from tui.page_preview import PagePreview
 from tui.session import EditError, EditSession
@@ -59,7 +59,7 @@ class EditorScreen(Screen):
         yield Label("", id="page-bar")
         yield PagePreview(id="preview")
         yield StatusLine("", id="status")
-        yield Footer()
+        yield Footer(compact=True)
 
     def on_mount(self) -> None:
         self._composed = True
@@ -171,6 +171,16 @@ class EditorScreen(Screen):
             return False
         self.after_edit()
         return True
+
+    @property
+    def active_bindings(self):
+        """The footer's order: first what makes sense now (item commands when one is selected,
+        page commands when not), then the rest, greyed where they cannot run. Display only."""
+        selected = self.selected_id is not None
+        shown = list(super().active_bindings.items())
+        shown.sort(key=lambda entry: (not in_footer(entry[1].binding.action, selected),
+                                      footer_rank(entry[1].binding.action)))
+        return dict(shown)
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         if action in ITEM_ACTIONS and self.selected_id is None:

@@ -26,9 +26,11 @@ class Command:
     label: str
     help: str
     group: str
-    footer: bool = False
+    footer: str = "page"  # footer context: "item" (something selected), "page" (nothing) or "both"
+    rank: int = 50  # footer order, left to right
     needs_item: bool = False
     priority: bool = False
+    key_display: str | None = None
 
     @property
     def action_name(self) -> str:
@@ -36,18 +38,26 @@ class Command:
         return self.action.split("(", 1)[0]
 
 
+ARROWS = {"left": "\u2190", "right": "\u2192", "up": "\u2191", "down": "\u2193"}
+
+
 def _move(keys: str, dx: int, dy: int, step: float, name: str) -> Command:
+    first = keys.split(",")[0]
+    large = first.startswith("shift+")
+    display = "\u21e7" + ARROWS[first[6:]] if large else ARROWS[first]
     return Command(keys, f"nudge({dx * step},{dy * step})", f"Move {name}",
                    f"Move the selected item {name} by {step:g} mm; the others make way",
-                   "Move and resize", needs_item=True)
+                   "Move and resize", footer="item", rank=16 if large else 2, needs_item=True,
+                   key_display=display)
 
 
 COMMANDS: tuple[Command, ...] = (
     Command("tab", "select_next", "Next", "Select the next item in reading order", "Select",
-            footer=True, priority=True),
-    Command("shift+tab", "select_previous", "Previous", "Select the previous item in reading order",
-            "Select", priority=True),
-    Command("escape", "select_none", "Deselect", "Clear the selection", "Select"),
+            footer="both", rank=1, priority=True),
+    Command("shift+tab", "select_previous", "Previous",
+            "Select the previous item in reading order", "Select", rank=17, priority=True),
+    Command("escape", "select_none", "Deselect", "Clear the selection", "Select", footer="item",
+            rank=17),
     _move("left,h", -1, 0, SMALL_STEP_MM, "left"),
     _move("right,l", 1, 0, SMALL_STEP_MM, "right"),
     _move("up,k", 0, -1, SMALL_STEP_MM, "up"),
@@ -57,65 +67,72 @@ COMMANDS: tuple[Command, ...] = (
     _move("shift+up,K", 0, -1, LARGE_STEP_MM, "far up"),
     _move("shift+down,J", 0, 1, LARGE_STEP_MM, "far down"),
     Command("plus,equals_sign", f"resize({GROW},{GROW})", "Grow",
-            "Make the selected item larger, keeping its shape", "Move and resize", needs_item=True),
+            "Make the selected item larger, keeping its shape", "Move and resize",
+            footer="item", rank=3, needs_item=True),
     Command("minus", f"resize({SHRINK},{SHRINK})", "Shrink",
-            "Make the selected item smaller, keeping its shape", "Move and resize", needs_item=True),
+            "Make the selected item smaller, keeping its shape", "Move and resize",
+            footer="item", rank=3, needs_item=True),
     Command("greater_than_sign", f"resize({GROW},1)", "Wider",
             "Make the selected item wider (a picture keeps its aspect ratio)", "Move and resize",
-            needs_item=True),
+            footer="item", rank=3, needs_item=True),
     Command("less_than_sign", f"resize({SHRINK},1)", "Narrower",
             "Make the selected item narrower (a picture keeps its aspect ratio)", "Move and resize",
-            needs_item=True),
+            footer="item", rank=3, needs_item=True),
     Command("circumflex_accent", f"resize(1,{GROW})", "Taller",
             "Make the selected item taller (a picture keeps its aspect ratio)", "Move and resize",
-            needs_item=True),
+            footer="item", rank=3, needs_item=True),
     Command("underscore", f"resize(1,{SHRINK})", "Shorter",
             "Make the selected item shorter (a picture keeps its aspect ratio)", "Move and resize",
-            needs_item=True),
+            footer="item", rank=3, needs_item=True),
     Command("i", "insert", "Insert", "Insert an item or a background (asks which)", "Insert",
-            footer=True),
-    Command("t", "insert_kind('text')", "Text", "Insert a text box", "Insert"),
-    Command("p", "insert_kind('picture')", "Picture", "Insert a picture from a file", "Insert"),
-    Command("b", "insert_kind('block')", "Block", "Insert a colour block", "Insert"),
-    Command("c", "insert_kind('calendar')", "Calendar", "Insert a calendar month panel", "Insert"),
+            rank=2),
+    Command("t", "insert_kind('text')", "Text", "Insert a text box", "Insert", rank=2),
+    Command("p", "insert_kind('picture')", "Picture", "Insert a picture from a file", "Insert",
+            rank=2),
+    Command("b", "insert_kind('block')", "Block", "Insert a colour block", "Insert", rank=2),
+    Command("c", "insert_kind('calendar')", "Calendar", "Insert a calendar month panel",
+            "Insert", rank=2),
     Command("g", "insert_kind('background')", "Background",
-            "Set the page background: a colour or a picture", "Insert"),
+            "Set the page background: a colour or a picture", "Insert", rank=2),
     Command("enter,e", "edit", "Edit", "Edit the selected item's text and properties "
-            "(font, colour, gamma, decorative)", "Edit", footer=True, needs_item=True),
+            "(font, colour, gamma, decorative)", "Edit", footer="item", rank=4, needs_item=True),
     Command("d", "toggle_decorative", "Decorative",
             "Toggle decorative: a decoration sits behind and is never pushed", "Edit",
-            needs_item=True),
-    Command("delete,x", "delete", "Delete", "Delete the selected item", "Edit", footer=True,
-            needs_item=True),
+            footer="item", rank=15, needs_item=True),
+    Command("delete,x", "delete", "Delete", "Delete the selected item", "Edit", footer="item",
+            rank=5, needs_item=True),
     Command("a", "anchor_here", "Anchor", "Anchor the selected item to the point where it is",
-            "Anchor", footer=True, needs_item=True),
+            "Anchor", footer="item", rank=6, needs_item=True),
     Command("A", "anchor_to_item", "Anchor to item",
             "Anchor the selected item to another item, keeping their offset", "Anchor",
-            needs_item=True),
+            footer="item", rank=6, needs_item=True),
     Command("u", "unanchor", "Unanchor", "Remove the selected item's anchor", "Anchor",
-            needs_item=True),
+            footer="item", rank=6, needs_item=True),
     Command("space", "toggle_pause", "Pause", "Pause or resume the physics", "Physics",
-            footer=True),
+            footer="both", rank=9),
     Command("r", "reheat", "Reheat", "Reheat the physics so the items spread out again",
-            "Physics"),
+            "Physics", rank=14),
     Command("ctrl+z", "undo", "Undo", "Undo the last edit (positions too)", "History",
-            footer=True),
-    Command("ctrl+y", "redo", "Redo", "Redo the edit you undid", "History"),
+            footer="both", rank=10),
+    Command("ctrl+y", "redo", "Redo", "Redo the edit you undid", "History",
+            footer="both", rank=10),
     Command("right_square_bracket,pagedown", "switch_page(1)", "Next page",
-            "Show the next page", "Pages"),
+            "Show the next page", "Pages", rank=3),
     Command("left_square_bracket,pageup", "switch_page(-1)", "Previous page",
-            "Show the previous page", "Pages"),
-    Command("N", "add_page", "Add page", "Add a page after this one", "Pages"),
-    Command("D", "remove_page", "Remove page", "Remove this page (asks first)", "Pages"),
-    Command("S", "page_size", "Page size", "Change this page's size", "Pages"),
+            "Show the previous page", "Pages", rank=3),
+    Command("N", "add_page", "Add page", "Add a page after this one", "Pages", rank=3),
+    Command("D", "remove_page", "Remove page", "Remove this page (asks first)", "Pages", rank=3),
+    Command("S", "page_size", "Page size", "Change this page's size", "Pages", rank=3),
     Command("o", "toggle_orientation", "Orientation",
-            "Switch this page between portrait and landscape", "Pages"),
-    Command("ctrl+s", "save", "Save", "Save the project file", "File", footer=True),
+            "Switch this page between portrait and landscape", "Pages", rank=3),
+    Command("ctrl+s", "save", "Save", "Save the project file", "File", footer="both",
+            rank=11),
     Command("ctrl+e", "export_pdf", "Export PDF",
-            "Typeset the project into a PDF beside the project file", "File", footer=True),
-    Command("question_mark,f1", "help", "Help", "Show every key", "File", footer=True),
+            "Typeset the project into a PDF beside the project file", "File", footer="both",
+            rank=12),
+    Command("question_mark,f1", "help", "Help", "Show every key", "File", footer="both", rank=0),
     Command("q,ctrl+q", "quit", "Quit", "Quit, asking first if there are unsaved changes",
-            "File", footer=True, priority=True),
+            "File", footer="both", rank=13, priority=True),
 )
 
 ITEM_ACTIONS = frozenset(command.action_name for command in COMMANDS if command.needs_item)
@@ -138,7 +155,47 @@ def key_label(keys: str) -> str:
     return " ".join(one(key) for key in keys.split(","))
 
 
+FOOTER_GROUPS = {
+    "Insert": Binding.Group("Insert", compact=True),
+    "Anchor": Binding.Group("Anchor", compact=True),
+    "History": Binding.Group("Undo/Redo", compact=True),
+    "Pages": Binding.Group("Page", compact=True),
+}
+FAR_GROUP = Binding.Group("Far", compact=True)
+MOVE_GROUP = Binding.Group("Move", compact=True)
+SIZE_GROUP = Binding.Group("Size", compact=True)
+
+
+def footer_group(command: Command) -> Binding.Group | None:
+    """The footer shows related keys as one group ("←→↑↓ Move") so that, with only the commands
+    that make sense in the moment (see `in_footer`), every command appears in the footer; the
+    help screen spells each one out."""
+    if command.group == "Move and resize":
+        if command.action_name == "nudge":
+            return FAR_GROUP if command.rank == 16 else MOVE_GROUP
+        return SIZE_GROUP
+    return FOOTER_GROUPS.get(command.group)
+
+
 def bindings() -> list[Binding]:
-    """The editor screen's BINDINGS, built from COMMANDS."""
-    return [Binding(command.keys, command.action, command.label, show=command.footer,
-                    priority=command.priority) for command in COMMANDS]
+    """The editor screen's BINDINGS, built from COMMANDS: every command shows in the footer."""
+    return [Binding(command.keys, command.action, command.label, show=True,
+                    priority=command.priority, group=footer_group(command),
+                    key_display=command.key_display)
+            for command in COMMANDS]
+
+
+COMMAND_BY_ACTION = {command.action: command for command in COMMANDS}
+
+
+def in_footer(action: str, item_selected: bool) -> bool:
+    """Whether a binding's action shows in the footer in this context (unknown ones do)."""
+    command = COMMAND_BY_ACTION.get(action)
+    if command is None or command.footer == "both":
+        return True
+    return command.footer == ("item" if item_selected else "page")
+
+
+def footer_rank(action: str) -> int:
+    command = COMMAND_BY_ACTION.get(action)
+    return command.rank if command is not None else 99

@@ -162,3 +162,24 @@ def test_every_command_names_an_action_the_screen_has():
     for command in COMMANDS:
         assert hasattr(EditorScreen, f"action_{command.action_name}"), command.action
         assert "ctrl+shift" not in command.keys
+
+
+def footer_actions(app) -> list[str]:
+    footer = screen_of(app).query_one("Footer")
+    return [key.action for key in footer.query("FooterKey")]
+
+
+async def test_the_footer_shows_every_command_what_matters_now_first(project_path):
+    async with editor(project_path, size=(100, 40)) as (app, pilot):
+        page_footer = footer_actions(app)
+        for command in COMMANDS:
+            assert command.action in page_footer, command.label
+        assert page_footer.index("insert") < page_footer.index("nudge(-2.0,0.0)")
+        delete = next(key for key in app.editor.query("FooterKey") if key.action == "delete")
+        assert delete.has_class("-disabled")  # greyed: nothing is selected
+        await pilot.press("tab")
+        await pilot.pause()
+        item_footer = footer_actions(app)
+        assert item_footer.index("nudge(-2.0,0.0)") < item_footer.index("insert")
+        assert not next(key for key in app.editor.query("FooterKey")
+                        if key.action == "delete").has_class("-disabled")

@@ -21,7 +21,8 @@ def test_main_screen(project_path, snap_compare):
     blue) with a dotted blue link and 'o' ends down to its grey 'caption', a green 'block'
     framed in yellow (selected, named in the page bar), and the decorative yellow '~band'
     behind the 'month' calendar (March 2027 grid) whose anchor shows as a magenta cell on the
-    weekday row. Two status lines ('paused', the quality summary) and the footer keys."""
+    weekday row. Two status lines ('paused', the quality summary); the footer starts with
+    '? Help', 'tab Next', then the item commands: arrows 'Move', '+-><^_ Size', Edit, Delete."""
     async def run_before(pilot) -> None:
         pilot.app.editor.selected_id = "block"
         await pilot.pause()
@@ -31,8 +32,8 @@ def test_main_screen(project_path, snap_compare):
 
 def test_main_screen_80x24(project_path, snap_compare):
     """The same page in the smallest supported terminal: the whole page still fits, with ids
-    readable and the calendar grid cut to what fits; nothing selected, so Edit, Delete and
-    Anchor are greyed out in the footer."""
+    readable and the calendar grid cut to what fits; nothing is selected, so the footer starts
+    with the page commands: '? Help', 'tab Next', 'itpbcg Insert', '][NDSo Page', Pause."""
     assert snap_compare(frozen_app(project_path), terminal_size=(80, 24))
 
 
