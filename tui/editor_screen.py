@@ -400,8 +400,20 @@ class EditorScreen(Screen):
         self.app.push_screen(
             ChoiceDialog("Page size", item_forms.PAGE_SIZE_CHOICES, highlighted=page.size,
                          dialog_id="page-size-dialog"),
-            callback=lambda size: size and self.attempt(self.session.set_page_size, size,
-                                                        page.orientation))
+            callback=self.choose_page_size)
+
+    def choose_page_size(self, size: str | None) -> None:
+        page = self.session.page
+        if size == "custom":
+            self.app.push_screen(
+                FormDialog("Custom page size", item_forms.custom_size_fields(page.width_mm,
+                                                                             page.height_mm),
+                           item_forms.parse_custom_size, dialog_id="custom-size-dialog"),
+                callback=lambda values: values and self.attempt(
+                    self.session.set_page_size, "custom", page.orientation,
+                    values["width_mm"], values["height_mm"]))
+        elif size:
+            self.attempt(self.session.set_page_size, size, page.orientation)
 
     def action_toggle_orientation(self) -> None:
         self.release_held()

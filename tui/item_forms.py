@@ -90,7 +90,19 @@ def parse_background_colour(values: dict[str, Any]) -> dict[str, Any]:
     return {"color": colour(values["color"])}
 
 
-PAGE_SIZE_CHOICES = [(f"{name}  ({w:g} × {h:g} mm)", name) for name, (w, h) in PAGE_SIZES_MM.items()]
+PAGE_SIZE_CHOICES = [(f"{name}  ({w:g} × {h:g} mm)", name)
+                     for name, (w, h) in PAGE_SIZES_MM.items()] + [("Custom…", "custom")]
+
+
+def custom_size_fields(width_mm: float, height_mm: float) -> list[Field]:
+    return [Field("width_mm", "Width (mm)", "line", f"{width_mm:g}"),
+            Field("height_mm", "Height (mm)", "line", f"{height_mm:g}")]
+
+
+def parse_custom_size(values: dict[str, Any]) -> dict[str, Any]:
+    """The loader's limits: 10 to 5000 mm a side."""
+    return {"width_mm": number(values["width_mm"], "the width", 10, 5000),
+            "height_mm": number(values["height_mm"], "the height", 10, 5000)}
 
 
 # -- editing --------------------------------------------------------------------------------

@@ -167,7 +167,7 @@ class PagePainter:
         canvas.fill(*box, fill)
         self._label(canvas, item, box, mix(readable_on(fill), fill, 0.45), fill)
         if isinstance(item, TextItem):
-            self._body(canvas, box, [item.text], ink, fill, bold=item.bold)
+            self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold)
         elif isinstance(item, CalendarItem):
             self._body(canvas, box, calendar_lines(item), ink, fill, wrap=False)
 

@@ -354,10 +354,18 @@ class EditSession:
         self.engine = self._build_engine()
         return removed.id
 
-    def set_page_size(self, size: str, orientation: str) -> None:
-        """Change size and orientation; items keep their relative place on the page."""
+    def set_page_size(self, size: str, orientation: str, width_mm: float | None = None,
+                      height_mm: float | None = None) -> None:
+        """Change size and orientation; items keep their relative place on the page.
+
+        A named size takes the orientation; a custom one takes width and height (default: the
+        page's own), and its orientation follows from them.
+        """
         page = self.page
-        width, height = page_dimensions(size, orientation, page.width_mm, page.height_mm)
+        width, height = page_dimensions(size, orientation, width_mm or page.width_mm,
+                                        height_mm or page.height_mm)
+        if size == "custom":
+            orientation = "landscape" if width > height else "portrait"
         if (size, orientation, width, height) == (page.size, page.orientation, page.width_mm,
                                                  page.height_mm):
             return
@@ -368,7 +376,8 @@ class EditSession:
             item.w, item.h = min(item.w, width), min(item.h, height)
             if isinstance(item.anchor, PointAnchor):
                 item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
-        page.size, page.orientation, page.width_mm, page.height_mm = size, orientation, width, height
+        page.size, page.orientation = size, orientation
+        page.width_mm, page.height_mm = width, height
         self.held_id = None
         self.engine = self._build_engine()
         self.engine.reheat()
@@ -376,18 +385,11 @@ class EditSession:
     def toggle_orientation(self) -> str:
         page = self.page
         if page.size == "custom":
-            self.checkpoint("page orientation")
-            page.width_mm, page.height_mm = page.height_mm, page.width_mm
-            page.orientation = "landscape" if page.width_mm > page.height_mm else "portrait"
-            for item in page.items:
-                item.x, item.y = item.y * page.width_mm / page.height_mm, \
-                    item.x * page.height_mm / page.width_mm
-            self.engine = self._build_engine()
-            self.engine.reheat()
-            return page.orientation
-        orientation = "landscape" if page.orientation == "portrait" else "portrait"
-        self.set_page_size(page.size, orientation)
-        return orientation
+            self.set_page_size("custom", page.orientation, page.height_mm, page.width_mm)
+        else:
+            self.set_page_size(page.size, "landscape" if page.orientation == "portrait"
+                               else "portrait")
+        return self.page.orientation
 
     # -- files -------------------------------------------------------------------------------
 

@@ -337,3 +337,30 @@ async def test_changing_the_page_size_keeps_items_in_place_relatively(project_pa
         assert position(app, "block") == pytest.approx((x * 210 / 148, y * 148 / 210), abs=0.01)
         await pilot.press("ctrl+z")
         assert (app.session.page.width_mm, app.session.page.height_mm) == (148, 210)
+
+
+async def test_a_custom_page_size_and_its_orientation(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("S")
+        options = [str(o.prompt) for o in app.screen.query_one("OptionList").options]
+        await pilot.press(*["down"] * (len(options) - 1 - options.index(
+            next(o for o in options if o.startswith("A5")))), "enter")  # "Custom…", the last
+        assert app.screen.id == "custom-size-dialog"
+        app.screen.query_one("#field-width_mm").value = "200"
+        app.screen.query_one("#field-height_mm").value = "100"
+        await pilot.press("ctrl+s")
+        page = app.session.page
+        assert (page.size, page.width_mm, page.height_mm, page.orientation) == (
+            "custom", 200, 100, "landscape")
+        await pilot.press("o")
+        assert (page.width_mm, page.height_mm, page.orientation) == (100, 200, "portrait")
+
+
+async def test_a_multi_line_text_shows_line_by_line(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("t", *"Line", "enter", *"Two", "ctrl+s")
+        await pilot.pause()
+        assert item(app, "text-1").text == "Line\nTwo"
+        lines = preview_text(app).splitlines()
+        row = next(i for i, line in enumerate(lines) if "Line" in line)
+        assert "Two" in lines[row + 1]
