@@ -59,7 +59,7 @@ class EditorScreen(Screen):
         yield Label("", id="page-bar")
         yield PagePreview(id="preview")
         yield StatusLine("", id="status")
-        yield Footer(compact=True)
+        yield Footer()
 
     def on_mount(self) -> None:
         self._composed = True

@@ -127,7 +127,7 @@ COMMANDS: tuple[Command, ...] = (
             "Switch this page between portrait and landscape", "Pages", rank=3),
     Command("ctrl+s", "save", "Save", "Save the project file", "File", footer="both",
             rank=11),
-    Command("ctrl+e", "export_pdf", "Export PDF",
+    Command("ctrl+e", "export_pdf", "Export",
             "Typeset the project into a PDF beside the project file", "File", footer="both",
             rank=12),
     Command("question_mark,f1", "help", "Help", "Show every key", "File", footer="both", rank=0),
