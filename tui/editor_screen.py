@@ -2,9 +2,10 @@
 
 Edits go through the EditSession; this screen only turns keys, clicks and
 dialog answers into session calls, then redraws and wakes the physics loop.
-The loop is a 30 Hz interval that runs as many steps as fit a small time
-budget and pauses itself once the page settles, so an idle editor sends
-nothing over the wire.
+The loop is a 30 Hz interval: each tick runs one frame of physics steps (the
+engine's frame_steps, cut short by a time budget so a big page cannot stall
+the keys), redraws once, and pauses itself once the page settles, so an idle
+editor sends nothing over the wire.
 """
 
 from __future__ import annotations
@@ -12,13 +13,14 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from rich.markup import escape
 from textual import work
 from textual.app import ComposeResult
 from textual.reactive import reactive
 from textual.screen import Screen
 from textual.widgets import Footer, Label
 
-from model.document import Background, PictureItem
+from model.document import Background
 from model.errors import FloatpageError
 from tui import item_forms
 from tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
@@ -83,13 +85,12 @@ class EditorScreen(Screen):
             return
         start = time.perf_counter()
         steps = engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
+        if engine.settled:
+            self.frame_timer.pause()
         self.redraw()
         now = time.perf_counter()
         self.meter.record(now, steps, now - start)
         self.frames_ticked += 1
-        if engine.settled:
-            self.frame_timer.pause()
-            self.redraw()
 
     def wake(self) -> None:
         """Start the frame timer if the physics has something to do."""
@@ -148,13 +149,18 @@ class EditorScreen(Screen):
     def page_bar_text(self) -> str:
         session = self.session
         page = session.page
-        title = session.project.title or (session.project.path.stem if session.project.path else "")
+        title = escape(session.project.title
+                       or (session.project.path.stem if session.project.path else ""))
         selected = session.selected_item
         chosen = f" · [b]{selected.id}[/b] ({selected.kind})" if selected else ""
         unsaved = " · [b]● unsaved[/b]" if session.unsaved else ""
         return (f"[b]{title}[/b] · page {session.page_index + 1}/{len(session.project.pages)} "
                 f"[b]{page.id}[/b] · {page.size} {page.orientation} · "
                 f"{len(page.items)} items{chosen}{unsaved}")
+
+    def notify(self, message: str, *, markup: bool = False, **kwargs) -> None:
+        """Notifications quote file names, ids and errors: plain text, never Rich markup."""
+        super().notify(message, markup=markup, **kwargs)
 
     def after_edit(self) -> None:
         """Push the session's selection up into the UI state, redraw, wake the physics."""

@@ -183,3 +183,17 @@ async def test_the_footer_shows_every_command_what_matters_now_first(project_pat
         assert item_footer.index("nudge(-2.0,0.0)") < item_footer.index("insert")
         assert not next(key for key in app.editor.query("FooterKey")
                         if key.action == "delete").has_class("-disabled")
+
+
+async def test_brackets_in_titles_and_errors_are_shown_as_typed(project_path):
+    text = project_path.read_text().replace('title = "Test card"', 'title = "[draft] card"')
+    project_path.write_text(text)
+    async with editor(project_path) as (app, pilot):
+        assert "[draft] card" in str(screen_of(app).query_one("#page-bar").render())
+        await pilot.press("b", "ctrl+a", "ctrl+k", *"[red", "enter")
+        assert '"[red"' in str(app.screen.query_one("#form-error").render())
+        await pilot.press("escape", "x")  # nothing selected: a plain-text warning
+        await pilot.press("tab")
+        screen_of(app).notify("[bold]literal[/bold]")
+        await pilot.pause()
+        assert app.screen is screen_of(app)

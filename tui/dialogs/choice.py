@@ -27,9 +27,9 @@ class ChoiceDialog(ModalScreen[Any]):
 
     def compose(self) -> ComposeResult:
         with Vertical(classes="dialog"):
-            yield Label(self.title_text, classes="dialog-title")
+            yield Label(self.title_text, classes="dialog-title", markup=False)
             if self.message:
-                yield Label(self.message, classes="dialog-message")
+                yield Label(self.message, classes="dialog-message", markup=False)
             yield OptionList(*[Option(label, id=str(index))
                                for index, (label, _) in enumerate(self.choices)])
             yield Label("Enter chooses · Esc cancels", classes="dialog-hint")

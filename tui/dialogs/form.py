@@ -50,7 +50,7 @@ class FormDialog(ModalScreen[dict | None]):
             with VerticalScroll(classes="form-fields"):
                 for field in self.fields:
                     yield from self._field(field)
-            yield Label("", id="form-error", classes="dialog-error")
+            yield Label("", id="form-error", classes="dialog-error", markup=False)
             multi_line = any(field.kind == "text" for field in self.fields)
             yield Label("Tab moves · " + ("Ctrl+S" if multi_line else "Enter or Ctrl+S")
                         + " applies · Esc cancels", classes="dialog-hint")

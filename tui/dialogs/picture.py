@@ -39,7 +39,7 @@ class PictureDialog(ModalScreen[Path | None]):
             yield PictureTree(self.folder, id="picture-tree")
             yield Label("…or type a path (relative to the project folder):", classes="field-label")
             yield Input(placeholder="photos/sunset.jpg", id="picture-path")
-            yield Label("", id="picture-error", classes="dialog-error")
+            yield Label("", id="picture-error", classes="dialog-error", markup=False)
             yield Label("Enter chooses · Tab moves · Esc cancels", classes="dialog-hint")
 
     def on_mount(self) -> None:
