@@ -20,11 +20,12 @@ class Snapshot:
     pages: list[Page]
     page_index: int
     selected_id: str | None
+    version: int = 0  # which document state this is, to tell whether it is the saved one
 
     @classmethod
     def take(cls, label: str, pages: list[Page], page_index: int,
-             selected_id: str | None) -> "Snapshot":
-        return cls(label, copy.deepcopy(pages), page_index, selected_id)
+             selected_id: str | None, version: int = 0) -> "Snapshot":
+        return cls(label, copy.deepcopy(pages), page_index, selected_id, version)
 
 
 class History:

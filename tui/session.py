@@ -58,7 +58,9 @@ class EditSession:
         self.page_index = 0
         self.selected_id: str | None = None
         self.history = History()
-        self.edits_since_save = 0
+        self.version = 0  # the document state: every edit makes a new one, undo returns to one
+        self.saved_version = 0
+        self._versions = itertools.count(1)
         self.held_id: str | None = None
         self.engine: Engine = self._build_engine()
 
@@ -70,7 +72,7 @@ class EditSession:
 
     @property
     def unsaved(self) -> bool:
-        return self.edits_since_save > 0
+        return self.version != self.saved_version
 
     @property
     def selected_item(self):
@@ -104,18 +106,20 @@ class EditSession:
 
     def _snapshot(self, label: str) -> Snapshot:
         self.sync_positions()
-        return Snapshot.take(label, self.project.pages, self.page_index, self.selected_id)
+        return Snapshot.take(label, self.project.pages, self.page_index, self.selected_id,
+                             self.version)
 
     def checkpoint(self, label: str) -> None:
-        """Record the state before an edit, and count the edit as unsaved."""
+        """Record the state before an edit; the edit makes a new (unsaved) document state."""
         self.history.record(self._snapshot(label))
-        self.edits_since_save += 1
+        self.version = next(self._versions)
 
     def _restore(self, snapshot: Snapshot) -> None:
         self.held_id = None
         self.project.pages[:] = copy.deepcopy(snapshot.pages)
         self.page_index = min(snapshot.page_index, len(self.project.pages) - 1)
         self.selected_id = snapshot.selected_id
+        self.version = snapshot.version
         self.engine = self._build_engine()
 
     def undo(self) -> str:
@@ -123,7 +127,6 @@ class EditSession:
         if snapshot is None:
             raise EditError("nothing to undo")
         self._restore(snapshot)
-        self.edits_since_save -= 1
         return snapshot.label
 
     def redo(self) -> str:
@@ -132,7 +135,6 @@ class EditSession:
             raise EditError("nothing to redo")
         label = self.history.undo_stack[-1].label if self.history.undo_stack else ""
         self._restore(snapshot)
-        self.edits_since_save += 1
         return label
 
     # -- ids and placement -------------------------------------------------------------------
@@ -397,7 +399,7 @@ class EditSession:
         self.end_move()
         self.sync_positions()
         path = save_project(self.project)
-        self.edits_since_save = 0
+        self.saved_version = self.version
         return path
 
     def finalize_for_export(self) -> Project:

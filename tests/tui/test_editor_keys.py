@@ -364,3 +364,16 @@ async def test_a_multi_line_text_shows_line_by_line(project_path):
         lines = preview_text(app).splitlines()
         row = next(i for i, line in enumerate(lines) if "Line" in line)
         assert "Two" in lines[row + 1]
+
+
+async def test_unsaved_follows_undo_and_redo_across_a_save(project_path):
+    async with editor(project_path) as (app, pilot):
+        session = app.session
+        await pilot.press("tab", "d", "ctrl+s")
+        assert not session.unsaved
+        await pilot.press("ctrl+z")
+        assert session.unsaved  # the document differs from the file again
+        await pilot.press("ctrl+y")
+        assert not session.unsaved  # back to exactly what was saved
+        await pilot.press("ctrl+z", "d")
+        assert session.unsaved  # a different edit: not the saved state
