@@ -182,7 +182,8 @@ def main() -> None:
             runs.append(("paper, no cooling", run_paper(scene, args.paper_cap, heat_decay=0.0)))
         runs.append(("d3-style, 300 ticks", run_d3_style(scene)))
         for label, run in runs:
-            ratio = "" if run is fast else f" ({run.seconds / fast.seconds:.2g}× fast)"
+            times = run.seconds / fast.seconds
+            ratio = "" if run is fast else f" ({times:.{1 if times < 10 else 0}f}× fast)"
             print(row(f"{scene.name} ({scene.coverage:.0%}) | {label}{ratio}", run), flush=True)
     live = live_editor()
     print()
