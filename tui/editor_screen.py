@@ -169,10 +169,10 @@ class EditorScreen(Screen):
         self.wake()
 
     def attempt(self, edit, *args) -> bool:
-        """Run a session edit; an EditError or FloatpageError becomes a notification."""
+        """Run a session edit; a refusal (EditError, or the engine's ValueError) is a notice."""
         try:
             edit(*args)
-        except FloatpageError as error:
+        except (FloatpageError, ValueError) as error:
             self.notify(str(error), severity="warning")
             return False
         self.after_edit()
@@ -431,8 +431,10 @@ class EditorScreen(Screen):
         self.release_held()
         try:
             path = self.session.save()
-        except FloatpageError as error:
-            self.notify(str(error), title="Not saved", severity="error", timeout=10)
+        except Exception as error:  # the work stays in the editor; say why and let them retry
+            message = str(error) if isinstance(error, FloatpageError) else \
+                f"{type(error).__name__}: {error}"
+            self.notify(message, title="Not saved", severity="error", timeout=10)
             return
         self.notify(f"saved {path}", timeout=3)
         self.redraw()

@@ -42,7 +42,7 @@ def picture_aspect(path: Path) -> float | None:
         with Image.open(path) as image:
             width, height = image.size
         return height / width if width else None
-    except (OSError, ValueError):
+    except Exception:  # unreadable: the item keeps the default shape
         return None
 
 

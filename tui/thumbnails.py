@@ -43,5 +43,5 @@ def thumbnail(path: Path, width_px: int, height_px: int) -> np.ndarray | None:
     try:
         mtime_ns = path.stat().st_mtime_ns
         return _thumbnail(str(path), mtime_ns, width_px, height_px)
-    except (OSError, ValueError, SyntaxError):
-        return None  # missing or not a picture: the preview draws a placeholder instead
+    except Exception:  # missing, truncated, not a picture, a decompression bomb...
+        return None  # ...the preview draws a placeholder instead; it never stops the editor
