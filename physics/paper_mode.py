@@ -55,7 +55,7 @@ def run_paper(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
     followers = bodies.followers
     rows = np.flatnonzero(bodies.active)
     i, j = np.triu_indices(len(rows), k=1)
-    movable = free[roots] & bodies.active
+    movable = free[roots] & ~bodies.held & bodies.active
     separate_coincident(bodies, rows[i], rows[j], movable, rng,
                         page_scale(page_w_mm, page_h_mm))
     keep = 1.0 - params.heat_decay

@@ -40,8 +40,10 @@ class Params:
     """Every constant the engine reads; immutable so one value can be shared by many pages.
 
     ``alpha``, ``beta``, ``delta``, ``dt`` and ``distance`` shape the paper mode; the fast mode
-    reads ``beta`` (anchor stiffness relative to its own contact stiffness), ``heat_decay``,
-    ``heat_min``, ``gutter_mm``, ``seed`` and ``fast_steps_per_frame``.
+    reads ``beta`` (anchor stiffness relative to its own contact stiffness), ``heat_decay``
+    (cooled at a fraction of it per step, see ``physics.fast_mode.cooling_rate``),
+    ``heat_min``, ``gutter_mm``, ``seed`` and ``fast_steps_per_frame``; it ignores alpha,
+    delta, dt and distance.
     """
 
     mode: str = "fast"  # "fast" | "paper"
