@@ -11,6 +11,15 @@ from model.document import (
 from tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
 
 
+def label_cell(app, item_id: str) -> tuple[int, int]:
+    """(col, row) where the preview shows the start of the item's id."""
+    for row, line in enumerate(preview_text(app).splitlines()):
+        col = line.find(item_id)
+        if col >= 0:
+            return col, row
+    raise AssertionError(f"{item_id} is not in the preview")
+
+
 async def test_tab_walks_the_items_in_reading_order_and_shift_tab_walks_back(project_path):
     async with editor(project_path) as (app, pilot):
         seen = []
@@ -42,6 +51,7 @@ async def test_arrows_move_the_selected_item_which_is_held_then_released(project
     async with editor(project_path) as (app, pilot):
         await pilot.press("tab", "tab", "tab")  # block
         x, y = position(app, "block")
+        label_before = label_cell(app, "block")
         await pilot.press("left")
         assert position(app, "block") == pytest.approx((x - SMALL_STEP_MM, y))
         engine = app.session.engine
@@ -50,6 +60,10 @@ async def test_arrows_move_the_selected_item_which_is_held_then_released(project
         assert position(app, "block") == pytest.approx((x - SMALL_STEP_MM, y))
         await pilot.press("J")
         assert position(app, "block") == pytest.approx((x - SMALL_STEP_MM, y + LARGE_STEP_MM))
+        scale = screen_of(app).preview.projection.scale  # pixels (cells across) per mm
+        col, row = label_cell(app, "block")  # the preview shows it there too
+        assert col - label_before[0] == pytest.approx(-SMALL_STEP_MM * scale, abs=1)
+        assert row - label_before[1] == pytest.approx(LARGE_STEP_MM * scale / 2, abs=1)
         screen_of(app).release_held()
         assert not engine.bodies.held[engine.ids.index("block")]
         assert item(app, "block").x == pytest.approx(x - SMALL_STEP_MM)
@@ -70,8 +84,14 @@ async def test_a_held_item_pushes_the_others_and_is_not_pushed(project_path):
 async def test_resize_grows_and_shrinks_and_a_picture_keeps_its_aspect(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("tab", "tab", "tab")  # block, 30 x 30
+        width_before = screen_of(app).preview.projection.rect(*position(app, "block"), 30, 30)
         await pilot.press("plus")
         assert (item(app, "block").w, item(app, "block").h) == pytest.approx((33, 33))
+        canvas = screen_of(app).preview.canvas
+        green = {(c, r) for r in range(canvas.pixels.shape[0]) for c in range(canvas.cols)
+                 if tuple(canvas.pixels[r, c]) == (0x22, 0xAA, 0x44)}
+        wide = max(c for c, _ in green) - min(c for c, _ in green) + 1
+        assert wide > width_before[2] - width_before[0]  # the preview draws it larger
         await pilot.press("minus", "greater_than_sign")
         assert (item(app, "block").w, item(app, "block").h) == pytest.approx((33, 30))
         assert app.session.engine.sizes()["block"] == pytest.approx((33, 30))
