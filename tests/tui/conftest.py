@@ -20,17 +20,7 @@ from model.document import (
 )
 from model.save import save_project
 
-RED = (220, 30, 30)
-BLUE = (30, 60, 220)
-
-
-def paint_picture(path: Path, size=(40, 30)) -> Path:
-    """A 4:3 picture, red on top and blue below, so a thumbnail is easy to recognise."""
-    image = Image.new("RGB", size, BLUE)
-    image.paste(RED, (0, 0, size[0], size[1] // 2))
-    path.parent.mkdir(parents=True, exist_ok=True)
-    image.save(path)
-    return path
+from editor_helpers import BLUE, RED, paint_picture  # noqa: F401  (fixtures use them)
 
 
 def build_project(folder: Path) -> Path:

@@ -5,10 +5,23 @@ from __future__ import annotations
 from contextlib import asynccontextmanager
 from pathlib import Path
 
+from PIL import Image
+
 from tui.app import FloatpageApp, make_app
 from tui.editor_screen import EditorScreen
 
 SIZE = (100, 40)
+RED = (220, 30, 30)
+BLUE = (30, 60, 220)
+
+
+def paint_picture(path: Path, size=(40, 30)) -> Path:
+    """A 4:3 picture, red on top and blue below, so a thumbnail is easy to recognise."""
+    image = Image.new("RGB", size, BLUE)
+    image.paste(RED, (0, 0, size[0], size[1] // 2))
+    path.parent.mkdir(parents=True, exist_ok=True)
+    image.save(path)
+    return path
 
 
 @asynccontextmanager

@@ -104,7 +104,7 @@ def test_projection_round_trips_cells_and_millimetres():
 
 
 def test_thumbnails_are_cached_and_a_missing_file_is_none(tmp_path):
-    from conftest import paint_picture
+    from editor_helpers import paint_picture
 
     path = paint_picture(tmp_path / "p.png")
     first = thumbnail(path, 8, 6)
