@@ -20,7 +20,7 @@ from textual.reactive import reactive
 from textual.screen import Screen
 from textual.widgets import Footer, Label
 
-from model.document import Background
+from model.document import Background, ItemAnchor, PointAnchor
 from model.errors import FloatpageError
 from tui import item_forms
 from tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
@@ -35,6 +35,18 @@ FRAME_S = 1 / 30
 PHYSICS_BUDGET_S = 0.008  # leaves most of a 33 ms frame for drawing and for keys
 RELEASE_AFTER_S = 0.6  # a nudged item is let go this long after the last arrow key
 QUALITY_EVERY_S = 0.25  # the quality measure is O(n^2): while settling, refresh it 4 times a second
+
+
+def describe_item(item) -> str:
+    """Kind, size and how the item is held in place, for the page bar."""
+    words = [item.kind, f"{item.w:.0f}×{item.h:.0f} mm"]
+    if item.decorative:
+        words.append("decorative")
+    if isinstance(item.anchor, PointAnchor):
+        words.append("hard anchor" if item.anchor.hard else f"anchored γ {item.anchor.gamma:g}")
+    elif isinstance(item.anchor, ItemAnchor):
+        words.append(f"follows {item.anchor.to}")
+    return ", ".join(words)
 
 
 class EditorScreen(Screen):
@@ -152,7 +164,7 @@ class EditorScreen(Screen):
         title = escape(session.project.title
                        or (session.project.path.stem if session.project.path else ""))
         selected = session.selected_item
-        chosen = f" · [b]{selected.id}[/b] ({selected.kind})" if selected else ""
+        chosen = f" · [b]{selected.id}[/b] ({describe_item(selected)})" if selected else ""
         unsaved = " · [b]● unsaved[/b]" if session.unsaved else ""
         return (f"[b]{title}[/b] · page {session.page_index + 1}/{len(session.project.pages)} "
                 f"[b]{page.id}[/b] · {page.size} {page.orientation} · "

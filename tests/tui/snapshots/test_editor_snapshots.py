@@ -19,7 +19,7 @@ def test_main_screen(project_path, snap_compare):
     """The front page of the test card, A5 portrait, centred on a dark surround: a faintly
     pink 'title' box with 'Happy Birthday Anna' in dark red, the 'photo' thumbnail (red over
     blue) with a dotted blue link and 'o' ends down to its grey 'caption', a green 'block'
-    framed in yellow (selected, named in the page bar), and the decorative yellow '~band'
+    framed in yellow (selected; the page bar says 'block (block, 30×30 mm)'), and the decorative yellow '~band'
     behind the 'month' calendar (March 2027 grid) whose anchor shows as a magenta cell on the
     weekday row. Two status lines ('paused', the quality summary); the footer starts with
     '? Help', 'tab Next', then the item commands: arrows 'Move', '+-><^_ Size', Edit, Delete."""
