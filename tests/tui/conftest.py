@@ -12,7 +12,6 @@ import inspect
 from pathlib import Path
 
 import pytest
-from PIL import Image
 
 from model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, Project,
