@@ -33,7 +33,10 @@ Parser = Callable[[dict[str, Any]], dict[str, Any]]
 
 
 class FormDialog(ModalScreen[dict | None]):
-    """Fields, an error line and OK / Cancel. Enter in a one-line field or Ctrl+S applies."""
+    """Fields, an error line and OK / Cancel. Enter in a one-line field or Ctrl+S applies.
+
+    Compact widgets and a scrolling field list keep the buttons on screen at 80 x 24.
+    """
 
     BINDINGS = [Binding("escape", "cancel", "Cancel"), Binding("ctrl+s", "apply", "Apply")]
 
@@ -55,8 +58,8 @@ class FormDialog(ModalScreen[dict | None]):
             yield Label("Tab moves · " + ("Ctrl+S" if multi_line else "Enter or Ctrl+S")
                         + " applies · Esc cancels", classes="dialog-hint")
             with Horizontal(classes="dialog-buttons"):
-                yield Button("OK", variant="primary", id="ok")
-                yield Button("Cancel", id="cancel")
+                yield Button("OK", variant="primary", id="ok", compact=True)
+                yield Button("Cancel", id="cancel", compact=True)
 
     def _field(self, field: Field) -> ComposeResult:
         widget_id = f"field-{field.name}"
@@ -65,12 +68,13 @@ class FormDialog(ModalScreen[dict | None]):
             return
         yield Label(field.label, classes="field-label")
         if field.kind == "line":
-            yield Input(str(field.value), id=widget_id)
+            yield Input(str(field.value), id=widget_id, compact=True)
         elif field.kind == "text":
             yield TextArea(str(field.value), id=widget_id, tab_behavior="focus",
                            classes="field-text")
         else:
-            yield Select(list(field.choices), value=field.value, allow_blank=False, id=widget_id)
+            yield Select(list(field.choices), value=field.value, allow_blank=False, id=widget_id,
+                         compact=True)
 
     def on_mount(self) -> None:
         for widget in self.query("Input, TextArea"):
