@@ -7,6 +7,7 @@ default screen; everything else lives in the screen, its widgets and dialogs.
 
 from __future__ import annotations
 
+import gc
 from functools import partial
 from pathlib import Path
 from typing import Iterable
@@ -31,6 +32,12 @@ class FloatpageApp(App):
         super().__init__()
         self.session = session
         self.autostart = autostart
+
+    def on_mount(self) -> None:
+        # Everything alive now (Textual, numpy, the project) lives as long as the app: move it
+        # out of the collector's sight, so a full collection during a frame is short. Without
+        # this, frames at 200 items spiked to 40-50 ms once a few seconds (measured).
+        gc.freeze()
 
     def get_default_screen(self) -> Screen:
         return EditorScreen(self.session, autostart=self.autostart)
