@@ -149,7 +149,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     edit = commands.add_parser("edit", help="open the editor", description="Open the terminal editor.")
     edit.add_argument("path")
-    edit.add_argument("--seed", type=int, default=0, help=argparse.SUPPRESS)
+    edit.add_argument("--seed", type=int, default=None,
+                      help="seed the physics jitter for this session (default: the project's seed)")
     edit.set_defaults(run=cmd_edit)
 
     settle = commands.add_parser("settle", help="run the physics until the layout settles",

@@ -62,11 +62,15 @@ class FloatpageApp(App):
         self.editor.action_quit()
 
 
-def make_app(project_path: str | Path, *, seed: int = 0, autostart: bool = True) -> FloatpageApp:
+def make_app(project_path: str | Path, *, seed: int | None = None,
+             autostart: bool = True) -> FloatpageApp:
     """Load a project and build the editor for it; raises ProjectFileError on a bad file.
 
-    `seed` seeds the physics jitter (it does not change the project's own seed);
+    `seed` seeds the physics jitter for this session (it does not change the project's own
+    seed); None, the default, uses the project's `[physics] seed`, so the editor and
+    `floatpage settle` lay the same file out the same way.
     `autostart=False` starts with the physics paused, so tests see repeatable frames.
     """
     project = load_project(project_path)
-    return FloatpageApp(EditSession(project, seed=seed), autostart=autostart)
+    session_seed = project.physics.seed if seed is None else seed
+    return FloatpageApp(EditSession(project, seed=session_seed), autostart=autostart)
