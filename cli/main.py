@@ -115,14 +115,11 @@ def cmd_check(args: argparse.Namespace) -> int:
         quality = engine_for_page(page, project.physics).quality()
         print(f"page {page.id}: {quality.summary()}")
         issues += len(quality.overlapping_pairs) + len(quality.off_page)
-    try:
-        from typeset import text_fit_warnings
-    except ImportError:  # pragma: no cover - typesetting is part of the package
-        text_fit_warnings = None
-    if text_fit_warnings is not None:
-        for warning in text_fit_warnings(project):
-            print(f"warning: {warning}")
-            issues += 1
+    from typeset import text_fit_warnings
+
+    for warning in text_fit_warnings(project):
+        print(f"warning: {warning}")
+        issues += 1
     if issues and args.strict:
         print(f"{issues} layout problem(s); run `floatpage settle {args.path}` to fix overlaps")
         return EXIT_USER_ERROR
