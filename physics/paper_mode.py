@@ -1,6 +1,8 @@
 """The paper's model as one loop: forces (2)+(3), walls (4.4), springs (6), Euler (4)+(5),
 cooling and growing damping (4.7).  Kept faithful on purpose, flaws included, so that it can
-serve as the reference the fast mode is measured against.
+serve as the reference the fast mode is measured against, and kept lean for the same reason:
+what does not change between steps (active rows, pair reaches, anchors) is worked out once per
+call, and the common page with nothing held, anchored or decorative skips the bookkeeping.
 """
 
 from __future__ import annotations
@@ -11,27 +13,52 @@ from physics.bodies import Bodies
 from physics.constraints import enforce_positions, hand_forces_to_roots
 from physics.euler import damping_for_count, euler_step
 from physics.fast_mode import separate_coincident
-from physics.paper_forces import anchor_springs, repulsion, wall_forces
+from physics.paper_forces import anchor_springs, contact_reach, repulsion, wall_forces
 from physics.params import Params, page_scale
 from physics.stillness import STILL_MM_PER_FRAME
+
+
+class PaperForces:
+    """The resultant force on every row for one page whose items keep their sizes and flags.
+
+    Decorations neither push nor are pushed; every other row gets repulsion (2)+(3), the walls
+    (4.4) and, where anchored, its spring (6).
+    """
+
+    def __init__(self, bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params):
+        self.page = (page_w_mm, page_h_mm)
+        self.params = params
+        self.alpha = params.alpha * page_scale(page_w_mm, page_h_mm)
+        active = bodies.active
+        self.everyone = bool(active.all())
+        self.rows = slice(None) if self.everyone else np.flatnonzero(active)
+        self.sizes = bodies.sizes[self.rows]
+        self.reach = contact_reach(self.sizes)
+        self.anchored = bool(np.isfinite(bodies.anchors[self.rows]).any())
+        self.anchors, self.gammas = bodies.anchors[self.rows], bodies.gammas[self.rows]
+        self.count = bodies.count
+
+    def __call__(self, centres: np.ndarray, heat: float) -> np.ndarray:
+        """Forces (n, 2) for ``centres`` (n, 2) at the given heat (4.7)."""
+        alpha = self.alpha * heat
+        mine = centres[self.rows]
+        force = (repulsion(mine, self.sizes, alpha, self.params.distance, reach=self.reach)
+                 + wall_forces(mine, self.sizes, *self.page, alpha))
+        if self.anchored:
+            force += anchor_springs(mine, self.anchors, self.gammas, self.params.beta * heat)
+        if self.everyone:
+            return force
+        forces = np.zeros((self.count, 2))
+        forces[self.rows] = force
+        return forces
 
 
 def paper_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
                  heat: float) -> np.ndarray:
     """Resultant force on every row, shape (n, 2); decorations neither push nor are pushed."""
-    forces = np.zeros_like(bodies.centres)
-    active = bodies.active
-    if not active.any():
-        return forces
-    alpha = params.alpha * page_scale(page_w_mm, page_h_mm) * heat
-    centres, sizes = bodies.centres[active], bodies.sizes[active]
-    forces[active] = (
-        repulsion(centres, sizes, alpha, params.distance)
-        + wall_forces(centres, sizes, page_w_mm, page_h_mm, alpha)
-        + anchor_springs(centres, bodies.anchors[active], bodies.gammas[active],
-                         params.beta * heat)
-    )
-    return forces
+    if not bodies.active.any():
+        return np.zeros_like(bodies.centres)
+    return PaperForces(bodies, page_w_mm, page_h_mm, params)(bodies.centres, heat)
 
 
 def run_paper(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params, heat: float,
@@ -53,20 +80,28 @@ def run_paper(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
                    / (params.steps_per_frame * params.dt))
     roots, root_offsets = bodies.group_roots()
     followers = bodies.followers
+    has_followers = bool(followers.any())
     rows = np.flatnonzero(bodies.active)
     i, j = np.triu_indices(len(rows), k=1)
     movable = free[roots] & ~bodies.held & bodies.active
     separate_coincident(bodies, rows[i], rows[j], movable, rng,
                         page_scale(page_w_mm, page_h_mm))
+    forces_at = PaperForces(bodies, page_w_mm, page_h_mm, params)
+    all_free = bool(free.all())
+    moved = slice(None) if all_free else free
+    constrained = not all_free or has_followers
     keep = 1.0 - params.heat_decay
     for done in range(1, steps + 1):
-        forces = paper_forces(bodies, page_w_mm, page_h_mm, params, heat)
-        hand_forces_to_roots(forces, roots, followers)
-        bodies.centres[free], bodies.velocities[free] = euler_step(
-            bodies.centres[free], bodies.velocities[free], forces[free], params.dt, delta)
-        enforce_positions(bodies, roots, root_offsets)
+        forces = forces_at(bodies.centres, heat)
+        if has_followers:
+            hand_forces_to_roots(forces, roots, followers)
+        bodies.centres[moved], bodies.velocities[moved] = euler_step(
+            bodies.centres[moved], bodies.velocities[moved], forces[moved], params.dt, delta)
+        if constrained:
+            enforce_positions(bodies, roots, root_offsets)
         heat = max(heat * keep, params.heat_min)
-        speeds = np.sqrt(np.einsum("ik,ik->i", bodies.velocities[free], bodies.velocities[free]))
-        if heat <= params.heat_min or speeds.max() < still_speed:
+        velocities = bodies.velocities[moved]
+        fastest = float(np.max(velocities[:, 0] ** 2 + velocities[:, 1] ** 2))
+        if heat <= params.heat_min or fastest < still_speed**2:
             return done, heat, True
     return steps, heat, False

@@ -7,7 +7,8 @@ import pytest
 
 from physics.euler import damping_for_count, euler_step, kinetic_energy
 from physics.paper_forces import (
-    SIGMA_MIN_MM, anchor_springs, axis_distance, euclidean_distance, pair_displacements,
+    SIGMA_MIN_MM, anchor_springs, axis_distance, contact_reach, euclidean_distance,
+    pair_displacements,
     repulsion, wall_forces,
 )
 
@@ -36,7 +37,7 @@ def test_resultant_is_the_sum_eq3():
 
 def test_euclidean_distance_eq7():
     centres = np.array([[1.0, 1.0], [4.0, 5.0], [1.0, 1.0]])
-    sigma = euclidean_distance(pair_displacements(centres))
+    sigma = euclidean_distance(*pair_displacements(centres))
     assert sigma[0, 1] == pytest.approx(5.0)
     assert sigma[1, 0] == pytest.approx(5.0)
     assert sigma[0, 2] == 0.0
@@ -54,7 +55,7 @@ def test_euclidean_distance_eq7():
 def test_axis_distance_eq8(b_centre, expected):
     centres = np.array([[0.0, 0.0], b_centre])
     sizes = np.array([[2.0, 2.0], [2.0, 2.0]])
-    sigma = axis_distance(pair_displacements(centres), sizes)
+    sigma = axis_distance(*pair_displacements(centres), contact_reach(sizes))
     assert sigma[0, 1] == pytest.approx(expected)
     assert sigma[1, 0] == pytest.approx(expected)
 
