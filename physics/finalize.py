@@ -5,10 +5,19 @@ a user may stop it any time).  This pass makes it exactly right when the items f
 positions until every pair of items is at least ``gutter`` apart edge to edge and every item is
 inside the page, moving each pair apart along the axis that needs the smaller move, so the
 layout the physics found is kept, only nudged.  It is position-based (Jacobi projection, as in
-position-based dynamics), so it cannot blow up.  When the gutter cannot be reached it tries
-half of it, then plain no-overlap, and when even that fails (an over-full page) it keeps the
-arrangement with the least overlap it saw.  (A crowd can make the gutter impossible even on a half-empty
-page: 500 small items covering half of A4 need 94% of it once each grows by a 3 mm gutter.)
+position-based dynamics), so it cannot blow up.
+
+A crowd can make the gutter impossible even on a half-empty page: 500 small items covering half
+of A4 need 94% of it once each grows by a 3 mm gutter, more than rectangles of mixed shapes
+pack to.  Then the pass keeps the *widest* gap it can reach rather than a fixed fallback (it
+used to drop to exactly half the gutter, leaving 1.5 mm where 2 mm fitted).  Every run
+remembers the arrangement with the widest clearance it passed through; the pass bisects
+between that clearance and the gutter, each attempt starting from the widest arrangement so
+far and aiming only just beyond its clearance, and ends on the widest arrangement seen.  If no
+arrangement without overlap turns up, it first runs for plain no-overlap, and when even that
+fails (an over-full page) it keeps the arrangement with the least overlap it saw.  Every
+clearance aimed at includes ``ROUNDING_MM``, so positions saved to 0.01 mm keep the gap reached
+(the widest clearance less ``ROUNDING_MM``), and the full gutter when the pass reports success.
 """
 
 from __future__ import annotations
@@ -25,6 +34,12 @@ SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
 ROUNDING_MM = 0.01  # positions are saved to 0.01 mm: keep this much beyond the gutter
 AIM_BEYOND_MM = 0.3  # pairs that break the gutter are pushed this far beyond it
 RELAXATION = 1.0
+# When the gutter does not fit: at most this many bisection steps between the widest clearance
+# reached and the gutter, stopping once they are this close; each step aims only this far beyond
+# its clearance (near the limit, aiming further asks for room that is not there).
+FALLBACK_ATTEMPTS = 5
+FALLBACK_TOLERANCE_MM = 0.05
+FALLBACK_AIM_MM = 0.03
 
 
 def overlap_area(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray) -> float:
@@ -33,6 +48,14 @@ def overlap_area(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.n
     depth = np.clip(halves[i] + halves[j] - d, 0.0, None)
     depth = np.minimum(depth, 2 * np.minimum(halves[i], halves[j]))
     return float((depth[:, 0] * depth[:, 1]).sum())
+
+
+def pair_clearances(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray
+                    ) -> np.ndarray:
+    """Clearance of each pair (i, j): the larger of its edge-to-edge gaps along x and along y,
+    negative when the two overlap.  A pair keeps a clearance c when this is at least c."""
+    gaps = np.abs(centres[j] - centres[i]) - halves[i] - halves[j]
+    return gaps.max(axis=1)
 
 
 def separation_moves(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray,
@@ -76,6 +99,21 @@ class _Projection:
                                      0.0)
         low, high = group_extents(bodies, self.roots, self.root_offsets)
         self.bounds = page_bounds(self.free_rows, low, high, page_w_mm, page_h_mm)
+        # The arrangement with the widest clearance seen by any run so far, and that clearance
+        # (a lower bound, exact below the clearance the run aimed at).
+        self.widest, self.widest_state = -np.inf, bodies.centres.copy()
+
+    def note_clearance(self, i: np.ndarray, j: np.ndarray, cap: float) -> None:
+        """Remember the current arrangement if its clearance (capped at ``cap``) is the widest
+        yet.  (i, j) must hold every pair closer than ``cap``."""
+        reached = cap if len(i) == 0 else min(
+            float(pair_clearances(self.bodies.centres, self.halves, i, j).min()), cap)
+        if reached > self.widest:
+            self.widest, self.widest_state = reached, self.bodies.centres.copy()
+
+    def restore_widest(self) -> None:
+        self.bodies.centres[:] = self.widest_state
+        self.clamp()
 
     def clamp(self) -> None:
         clamp_to_page(self.bodies.centres, self.bodies.velocities, self.free_rows, *self.bounds)
@@ -107,6 +145,7 @@ class _Projection:
             if np.abs(bodies.centres - built_at).max() > skin / 2:
                 i, j, blocked = self.pairs(clearance + skin)
                 built_at = bodies.centres.copy()
+            self.note_clearance(i, j, clearance)
             moves = separation_moves(bodies.centres, self.halves, i, j, aim, blocked)
             violating = (moves != 0).any(axis=1)
             if not violating.any() or not separation_moves(
@@ -131,10 +170,21 @@ class _Projection:
             bodies.centres[self.free_rows] += shift[self.free_rows]
             self.clamp()
         if self.violations(clearance) == 0:
+            self.note_reached(clearance)
             return True
         bodies.centres[:] = best
         self.clamp()
-        return self.violations(clearance) == 0
+        if self.violations(clearance) == 0:
+            self.note_reached(clearance)
+            return True
+        return False
+
+    def note_reached(self, clearance: float) -> None:
+        """The current arrangement keeps ``clearance``: remember it if that is the widest yet."""
+        if clearance > self.widest:
+            self.widest, self.widest_state = clearance, self.bodies.centres.copy()
+
+
 
 
 def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
@@ -143,7 +193,7 @@ def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_m
 
     Held items, hard anchors and their followers stay put; decorations are ignored.  Returns
     True when the result keeps the gutter everywhere (and so has no overlap).  If the gutter
-    cannot be reached, the pass tries half the gutter, then plain no-overlap.
+    cannot be reached, the pass keeps the widest clearance it can reach (see the module doc).
     """
     projection = _Projection(bodies, page_w_mm, page_h_mm, gutter_mm)
     projection.clamp()
@@ -151,9 +201,20 @@ def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_m
         return projection.violations(gutter_mm + ROUNDING_MM) == 0
     if projection.run(gutter_mm + ROUNDING_MM, max_iterations, aim=gutter_mm + AIM_BEYOND_MM):
         return True
-    # The gutter does not fit: keep half of it if that fits, else at least remove overlaps.
-    for clearance in (gutter_mm / 2, 0.0):
-        if projection.run(clearance + ROUNDING_MM, max_iterations // 3,
-                          aim=clearance + AIM_BEYOND_MM):
+    iterations = max(max_iterations // 3, 1)
+    if projection.widest < ROUNDING_MM:
+        # No arrangement without overlap seen yet: first remove the overlaps.  If even that
+        # fails the page is over-full, and the run left the arrangement with least overlap.
+        if not projection.run(ROUNDING_MM, iterations, aim=AIM_BEYOND_MM):
+            return False
+    low, high = projection.widest, gutter_mm + ROUNDING_MM
+    for _ in range(FALLBACK_ATTEMPTS):
+        if high - low < FALLBACK_TOLERANCE_MM:
             break
+        clearance = (low + high) / 2
+        projection.restore_widest()
+        if not projection.run(clearance, iterations, aim=clearance + FALLBACK_AIM_MM):
+            high = clearance
+        low = projection.widest
+    projection.restore_widest()
     return False

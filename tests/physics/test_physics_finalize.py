@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from physics import Engine, Params
+from physics.quality import measure_quality
 
 A4 = (210.0, 297.0)
 
@@ -67,3 +68,36 @@ def test_a_clean_page_is_left_alone():
     before = engine.positions()
     assert engine.finalize()
     assert engine.positions() == before
+
+
+def rounded_quality(engine):
+    """Quality of the layout as saved: positions rounded to 0.01 mm."""
+    return measure_quality(engine.page_w_mm, engine.page_h_mm,
+                           np.round(engine.bodies.centres, 2), engine.bodies.sizes,
+                           engine.params.gutter_mm)
+
+
+def test_when_the_gutter_cannot_fit_the_widest_reachable_gap_is_kept():
+    # A 6 x 6 grid of 30 mm squares on a 200 mm page leaves room for 4 mm between them, not 6.
+    # The old pass fell back to half the gutter (3 mm); this one keeps nearly all of the 4.
+    rng = np.random.default_rng(0)
+    engine = Engine(200, 200, Params(gutter_mm=6.0))
+    for a in range(6):
+        for b in range(6):
+            x, y = 23.5 + 30.6 * a + rng.uniform(-3, 3), 23.5 + 30.6 * b + rng.uniform(-3, 3)
+            engine.insert(f"s{a}{b}", x, y, 30, 30)
+    assert not engine.finalize()
+    quality = rounded_quality(engine)
+    assert not quality.overlapping_pairs and not quality.off_page
+    assert 3.8 < quality.min_gap_mm <= 4.0
+
+
+def test_a_row_too_tight_for_the_gutter_spreads_as_far_as_it_can():
+    # Four 20 mm squares in a 100 mm row: 6.67 mm between them at most, the gutter asks 8.
+    engine = Engine(100, 30, Params(gutter_mm=8.0))
+    for k, x in enumerate((40, 45, 50, 55)):
+        engine.insert(f"s{k}", x, 15 + k % 2, 20, 20)
+    assert not engine.finalize()
+    quality = rounded_quality(engine)
+    assert not quality.off_page
+    assert 6.5 < quality.min_gap_mm <= 20 / 3
