@@ -134,13 +134,19 @@ class Engine:
         self.reheat()
 
     def move(self, item_id: str, x_mm: float, y_mm: float) -> None:
-        """A user move: the item jumps there at rest.  A hard anchor moves along with it."""
+        """A user move: the item jumps there at rest.  A hard anchor moves along with it, and an
+        item that follows another keeps its new place beside it (its offset becomes the new
+        one), as the editor does at the end of a drag; otherwise the next step would snap it
+        back."""
         _finite("position", x_mm, y_mm)
         row = self._row(item_id)
         self._bodies.centres[row] = (x_mm, y_mm)
         self._bodies.velocities[row] = 0.0
         if self._bodies.hard[row]:
             self._bodies.anchors[row] = (x_mm, y_mm)
+        target = int(self._bodies.targets[row])
+        if target != NO_TARGET:
+            self._bodies.offsets[row] = self._bodies.centres[row] - self._bodies.centres[target]
         self.reheat()
 
     def hold(self, item_id: str) -> None:

@@ -247,3 +247,16 @@ def test_a5_and_a4_give_the_same_quality():
     small.settle()
     assert big.quality().ok and small.quality().ok
     assert small.quality().gap_evenness == pytest.approx(big.quality().gap_evenness, abs=0.15)
+
+
+@pytest.mark.parametrize("mode", ["fast", "paper"])
+def test_moving_a_follower_keeps_it_where_it_was_put(mode):
+    """Like the editor's drag: the follower's offset becomes the new one, it does not snap back."""
+    engine = Engine(210, 297, Params(mode=mode))
+    engine.insert("photo", 100, 100, 60, 40)
+    engine.insert("caption", 100, 130, 60, 10)
+    engine.anchor_to("caption", "photo", 0, 30)
+    engine.move("caption", 100, 70)  # from below the photo to above it
+    engine.advance(200)
+    (px, py), (cx, cy) = engine.positions()["photo"], engine.positions()["caption"]
+    assert (cx - px, cy - py) == pytest.approx((0.0, -30.0))
