@@ -185,8 +185,6 @@ class _Projection:
             self.widest, self.widest_state = clearance, self.bodies.centres.copy()
 
 
-
-
 def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                     max_iterations: int = MAX_ITERATIONS) -> bool:
     """Project positions in place until no two active items are closer than ``gutter_mm``.
