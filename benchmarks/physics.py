@@ -63,6 +63,13 @@ def scenes() -> list[Scene]:
         mixed_scene(40, 0.9, seed=1), dropped_scene(12), big_item_scene(seed=1)]
 
 
+def loaded(scene: Scene, params: Params = Params()) -> Engine:
+    """A new engine on the scene's page holding its items where the scene scattered them."""
+    engine = Engine(scene.page_w_mm, scene.page_h_mm, params)
+    load(engine, scene)
+    return engine
+
+
 def measure(engine: Engine, seconds: float, steps: int, settled: bool) -> Run:
     quality = engine.quality()
     centres = engine.bodies.centres
@@ -73,8 +80,7 @@ def measure(engine: Engine, seconds: float, steps: int, settled: bool) -> Run:
 
 
 def run_fast(scene: Scene) -> Run:
-    engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
-    load(engine, scene)
+    engine = loaded(scene)
     start = time.perf_counter()
     report = engine.settle()
     return measure(engine, time.perf_counter() - start, report.steps, report.settled)
@@ -85,8 +91,7 @@ PAPER_COOLING = (("1 %/step", 0.01), ("0.01 %/step", 0.0001), ("none", 0.0))
 
 def run_paper(scene: Scene, cap_s: float, heat_decay: float) -> Run:
     params = Params(mode="paper", heat_decay=heat_decay)
-    engine = Engine(scene.page_w_mm, scene.page_h_mm, params)
-    load(engine, scene)
+    engine = loaded(scene, params)
     start, steps = time.perf_counter(), 0
     while not engine.settled and time.perf_counter() - start < cap_s:
         steps += engine.advance(params.steps_per_frame)
@@ -97,8 +102,7 @@ def fast_steps_to_match(scene: Scene, target: Run, limit: int = 20_000) -> int |
     """Fewest fast-mode steps after which the layout is at least as good as ``target``: no
     more overlap, no more items off the page and gaps at least as even (the final pass counts
     as one more step if the physics settles first).  None if it never gets there."""
-    engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
-    load(engine, scene)
+    engine = loaded(scene)
     for steps in range(1, limit + 1):
         engine.advance(1)
         if engine.settled:
@@ -118,8 +122,7 @@ def time_fast_steps(scene: Scene, steps: int, repeats: int = 5) -> float:
     pass if the physics settles within them (as in fast_steps_to_match)."""
     best = float("inf")
     for _ in range(repeats):
-        engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
-        load(engine, scene)
+        engine = loaded(scene)
         start = time.perf_counter()
         engine.advance(steps)
         if engine.settled:
@@ -181,8 +184,7 @@ def live_editor(count: int = 50, edits: int = 5) -> dict[str, float]:
     percentile over frames): the motion has to stay slow enough to follow.
     """
     scene = mixed_scene(count, 0.5, seed=1)
-    engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
-    load(engine, scene)
+    engine = loaded(scene)
     engine.settle()
     frame_times, still_after, settled_after, frame_moves = [], [], [], []
     rng = np.random.default_rng(2)
@@ -235,9 +237,8 @@ def main() -> None:
     for scene in scenes():
         if args.only not in scene.name:
             continue
-        start = Engine(scene.page_w_mm, scene.page_h_mm, Params())
-        load(start, scene)
-        print(row(f"{scene.name} ({scene.coverage:.0%}) | start", measure(start, 0.0, 0, False)))
+        print(row(f"{scene.name} ({scene.coverage:.0%}) | start",
+                  measure(loaded(scene), 0.0, 0, False)))
         fast = run_fast(scene)
         runs = [("fast", fast)]
         if not args.skip_paper:

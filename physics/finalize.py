@@ -106,10 +106,8 @@ class _Projection:
     def note_clearance(self, i: np.ndarray, j: np.ndarray, cap: float) -> None:
         """Remember the current arrangement if its clearance (capped at ``cap``) is the widest
         yet.  (i, j) must hold every pair closer than ``cap``."""
-        reached = cap if len(i) == 0 else min(
-            float(pair_clearances(self.bodies.centres, self.halves, i, j).min()), cap)
-        if reached > self.widest:
-            self.widest, self.widest_state = reached, self.bodies.centres.copy()
+        self.note_reached(cap if len(i) == 0 else min(
+            float(pair_clearances(self.bodies.centres, self.halves, i, j).min()), cap))
 
     def restore_widest(self) -> None:
         self.bodies.centres[:] = self.widest_state

@@ -89,7 +89,7 @@ def run_paper(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
     forces_at = PaperForces(bodies, page_w_mm, page_h_mm, params)
     all_free = bool(free.all())
     moved = slice(None) if all_free else free
-    constrained = not all_free or has_followers
+    constrained = not all_free  # held, hard-anchored, decorative or following rows
     keep = 1.0 - params.heat_decay
     for done in range(1, steps + 1):
         forces = forces_at(bodies.centres, heat)
