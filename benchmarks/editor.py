@@ -25,14 +25,13 @@ import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from textual import events  # noqa: E402
+from textual import events
 
-from model.document import BlockItem, Page, Project, TextItem  # noqa: E402
-from model.save import save_project  # noqa: E402
-from tui.app import make_app  # noqa: E402
-from tui.editor_screen import PHYSICS_BUDGET_S  # noqa: E402
+from floatpage.model.document import BlockItem, Page, Project, TextItem
+from floatpage.model.save import save_project
+from floatpage.tui.app import make_app
+from floatpage.tui.editor_screen import PHYSICS_BUDGET_S
 
 
 def build_page(folder: Path, count: int, seed: int = 1) -> Path:

@@ -32,15 +32,14 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from physics import Engine, Params, measure_quality  # noqa: E402
-from physics.params import A4_W_MM  # noqa: E402
-from physics.scenes import Scene, big_item_scene, dropped_scene, load, mixed_scene  # noqa: E402
+from floatpage.physics import Engine, Params, measure_quality
+from floatpage.physics.params import A4_W_MM
+from floatpage.physics.scenes import Scene, big_item_scene, dropped_scene, load, mixed_scene
 
 FRAME_RATE = 30  # the editor's frames per second
 try:  # the editor's physics budget per frame, so the live figures follow the editor
-    from tui.editor_screen import PHYSICS_BUDGET_S as FRAME_BUDGET_S  # noqa: E402
+    from floatpage.tui.editor_screen import PHYSICS_BUDGET_S as FRAME_BUDGET_S
 except ImportError:  # the editor is not importable: its value when this was written
     FRAME_BUDGET_S = 0.008
 VISIBLY_STILL_MM = 0.5  # largest move in one frame that nobody notices

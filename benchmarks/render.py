@@ -24,16 +24,15 @@ import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-import typeset.compile as compile_module  # noqa: E402
-from model import load_project  # noqa: E402
-from model.document import TextItem  # noqa: E402
-from typeset import render_pdf, render_tex  # noqa: E402
-from typeset.fit import Box, fit_text  # noqa: E402
-from typeset.fonts import FontMetrics, font_path  # noqa: E402
-from typeset.pictures import cache_dir  # noqa: E402
-from typeset.text_layout import PT_PER_MM, face_for, printable_text  # noqa: E402
+import floatpage.typeset.compile as compile_module
+from floatpage.model import load_project
+from floatpage.model.document import TextItem
+from floatpage.typeset import render_pdf, render_tex
+from floatpage.typeset.fit import Box, fit_text
+from floatpage.typeset.fonts import FontMetrics, font_path
+from floatpage.typeset.pictures import cache_dir
+from floatpage.typeset.text_layout import PT_PER_MM, face_for, printable_text
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_PROJECT = ROOT / "sample_projects" / "calendar-2027" / "calendar-2027.toml"

@@ -14,7 +14,7 @@ import time
 from pathlib import Path
 from typing import Callable, Sequence
 
-from model.errors import FloatpageError
+from floatpage.model.errors import FloatpageError
 
 EXIT_OK, EXIT_USER_ERROR, EXIT_MISUSE = 0, 1, 2
 STARTER_KINDS = ("blank", "calendar", "card", "album", "flyer")
@@ -37,8 +37,7 @@ def finish_progress(show: Callable[[str], None]) -> None:
 
 
 def cmd_new(args: argparse.Namespace) -> int:
-    import starters
-
+    from floatpage import starters
     project = starters.create(
         args.kind, Path(args.path), year=args.year,
         photos=Path(args.photos) if args.photos else None,
@@ -51,18 +50,18 @@ def cmd_new(args: argparse.Namespace) -> int:
 
 
 def cmd_edit(args: argparse.Namespace) -> int:
-    from model import load_project
+    from floatpage.model import load_project
 
     load_project(args.path)  # fail here, with a clear message, before the screen is taken over
-    from tui.app import make_app
+    from floatpage.tui.app import make_app
 
     make_app(Path(args.path), seed=args.seed).run()
     return EXIT_OK
 
 
 def cmd_settle(args: argparse.Namespace) -> int:
-    from model import load_project, save_project
-    from model.layout import settle_project
+    from floatpage.model import load_project, save_project
+    from floatpage.model.layout import settle_project
 
     project = load_project(args.path)
     show = progress_printer(args.quiet)
@@ -83,9 +82,9 @@ def cmd_settle(args: argparse.Namespace) -> int:
 
 
 def cmd_render(args: argparse.Namespace) -> int:
-    from model import load_project
-    from model.layout import settle_project
-    from typeset import render_pdf
+    from floatpage.model import load_project
+    from floatpage.model.layout import settle_project
+    from floatpage.typeset import render_pdf
 
     project = load_project(args.path)
     show = progress_printer(args.quiet)
@@ -104,10 +103,10 @@ def cmd_render(args: argparse.Namespace) -> int:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from model import load_project
+    from floatpage.model import load_project
 
     project = load_project(args.path)
-    from model.layout import engine_for_page
+    from floatpage.model.layout import engine_for_page
 
     print(f"{args.path}: valid project, {len(project.pages)} page(s)")
     issues = 0
@@ -115,7 +114,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         quality = engine_for_page(page, project.physics).quality()
         print(f"page {page.id}: {quality.summary()}")
         issues += len(quality.overlapping_pairs) + len(quality.off_page)
-    from typeset import text_fit_warnings
+    from floatpage.typeset import text_fit_warnings
 
     for warning in text_fit_warnings(project):
         print(f"warning: {warning}")

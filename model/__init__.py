@@ -1,12 +1,12 @@
 """The document model and its project files: UI-free, LaTeX-free, physics-free."""
 
-from model.document import (
+from floatpage.model.document import (
     FORMAT_VERSION, Background, BlockItem, CalendarItem, ItemAnchor, Page, PhysicsSettings,
     PictureItem, PointAnchor, Project, TextItem,
 )
-from model.errors import FloatpageError, Problem, ProjectFileError
-from model.project_file import load_project
-from model.save import atomic_write, dump_project, save_project
+from floatpage.model.errors import FloatpageError, Problem, ProjectFileError
+from floatpage.model.project_file import load_project
+from floatpage.model.save import atomic_write, dump_project, save_project
 
 __all__ = [
     "FORMAT_VERSION", "Background", "BlockItem", "CalendarItem", "ItemAnchor", "Page",

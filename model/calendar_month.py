@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import calendar
 
-from model.document import WEEKDAYS
+from floatpage.model.document import WEEKDAYS
 
 LANGUAGES = ("en", "de", "fr", "es", "it", "pt", "nl")
 

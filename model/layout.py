@@ -6,8 +6,8 @@ stays model-free; this module is the only place that knows both.
 
 from __future__ import annotations
 
-from physics import Engine, Params, SettleReport
-from model.document import ItemAnchor, Page, PhysicsSettings, PointAnchor, Project
+from floatpage.physics import Engine, Params, SettleReport
+from floatpage.model.document import ItemAnchor, Page, PhysicsSettings, PointAnchor, Project
 
 POSITION_DECIMALS = 2  # positions are written back to 0.01 mm
 

@@ -15,17 +15,17 @@ from typing import Any
 
 import tomlkit
 
-from model.document import (
+from floatpage.model.document import (
     ITEM_CLASSES, ITEM_KINDS, Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
 )
-from model.errors import Problem, ProjectFileError
-from model.locate import LineFinder
-from model.page_sizes import CUSTOM, PAGE_SIZES_MM, canonical_size_name, page_dimensions
-from model.schema import (
+from floatpage.model.errors import Problem, ProjectFileError
+from floatpage.model.locate import LineFinder
+from floatpage.model.page_sizes import CUSTOM, PAGE_SIZES_MM, canonical_size_name, page_dimensions
+from floatpage.model.schema import (
     BACKGROUND_KEYS, COMMON_ITEM_KEYS, ITEM_ANCHOR_KEYS, KIND_KEYS, PAGE_KEYS, PHYSICS_KEYS,
     POINT_ANCHOR_KEYS, TOP_KEYS, TYPE_WORDS, Key, type_matches,
 )
-from model.document import FORMAT_VERSION
+from floatpage.model.document import FORMAT_VERSION
 
 MAX_FILE_BYTES = 16 * 1024 * 1024
 

@@ -18,11 +18,11 @@ from typing import Any
 import tomlkit
 from tomlkit.items import AoT, Table
 
-from model.document import (
+from floatpage.model.document import (
     Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
 )
-from model.errors import FloatpageError
-from model.page_sizes import CUSTOM
+from floatpage.model.errors import FloatpageError
+from floatpage.model.page_sizes import CUSTOM
 
 Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 

@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass
 from typing import Any, Callable
 
-from model.document import WEEKDAYS
+from floatpage.model.document import WEEKDAYS
 
 HEX_COLOUR = re.compile(r"^#[0-9a-fA-F]{6}$")
 CALENDAR_LANGUAGES = ("en", "de", "fr", "es", "it", "pt", "nl")

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from physics.bodies import Bodies
+from floatpage.physics.bodies import Bodies
 
 
 def hand_forces_to_roots(forces: np.ndarray, roots: np.ndarray, followers: np.ndarray) -> None:

@@ -14,13 +14,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from physics.bodies import NO_TARGET, Bodies
-from physics.euler import kinetic_energy
-from physics.fast_mode import run_fast
-from physics.finalize import remove_overlaps
-from physics.paper_mode import run_paper
-from physics.params import Params
-from physics.quality import Quality, measure_quality
+from floatpage.physics.bodies import NO_TARGET, Bodies
+from floatpage.physics.euler import kinetic_energy
+from floatpage.physics.fast_mode import run_fast
+from floatpage.physics.finalize import remove_overlaps
+from floatpage.physics.paper_mode import run_paper
+from floatpage.physics.params import Params
+from floatpage.physics.quality import Quality, measure_quality
 
 BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the clock
 

@@ -12,14 +12,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from physics.bodies import Bodies
-from physics.constraints import enforce_positions, hand_forces_to_roots
-from physics.fast_forces import (
+from floatpage.physics.bodies import Bodies
+from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
+from floatpage.physics.fast_forces import (
     RADIAL_SHARE, blocked_axes, candidate_pairs, contact_pushes, target_gap, wall_pushes_in,
     wall_rest_box,
 )
-from physics.params import Params, page_scale
-from physics.stillness import STILL_MM_PER_FRAME
+from floatpage.physics.params import Params, page_scale
+from floatpage.physics.stillness import STILL_MM_PER_FRAME
 
 K_CONTACT = 0.2  # fraction of a penetration turned into acceleration per step
 K_WALL = 0.2

@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from physics.bodies import Bodies
-from physics.constraints import enforce_positions, hand_forces_to_roots
-from physics.euler import damping_for_count, euler_step
-from physics.fast_mode import separate_coincident
-from physics.paper_forces import anchor_springs, contact_reach, repulsion, wall_forces
-from physics.params import Params, page_scale
-from physics.stillness import STILL_MM_PER_FRAME
+from floatpage.physics.bodies import Bodies
+from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
+from floatpage.physics.euler import damping_for_count, euler_step
+from floatpage.physics.fast_mode import separate_coincident
+from floatpage.physics.paper_forces import anchor_springs, contact_reach, repulsion, wall_forces
+from floatpage.physics.params import Params, page_scale
+from floatpage.physics.stillness import STILL_MM_PER_FRAME
 
 
 class PaperForces:

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from physics.params import A4_H_MM, A4_W_MM
+from floatpage.physics.params import A4_H_MM, A4_W_MM
 
 PHOTO_ASPECTS = (4 / 3, 3 / 4, 1.0, 3 / 2, 2 / 3)  # width / height
 TEXT_ASPECTS = (2.5, 3.0, 4.0, 5.0)

@@ -11,12 +11,12 @@ from __future__ import annotations
 from pathlib import Path
 from types import ModuleType
 
-from model.document import Project
-from model.errors import FloatpageError
-from model.save import save_project
-from starters import album, blank, calendar, card, flyer
-from starters.options import Options, check_options
-from starters.pictures import Picture, accepted_formats, bundled, copy_beside, find_photos
+from floatpage.model.document import Project
+from floatpage.model.errors import FloatpageError
+from floatpage.model.save import save_project
+from floatpage.starters import album, blank, calendar, card, flyer
+from floatpage.starters.options import Options, check_options
+from floatpage.starters.pictures import Picture, accepted_formats, bundled, copy_beside, find_photos
 
 KINDS: dict[str, ModuleType] = {
     "blank": blank, "calendar": calendar, "card": card, "album": album, "flyer": flyer,
@@ -73,7 +73,7 @@ def create(kind: str, path: Path, *, year: int | None = None, photos: Path | Non
     project = module.build(options, pictures)
     project.path = path
     if settle:
-        from model.layout import settle_project  # the physics bridge; imported only when used
+        from floatpage.model.layout import settle_project  # the physics bridge; imported only when used
 
         settle_project(project)
     save_project(project, path)

@@ -7,13 +7,13 @@ picture whatever the user drags. Captions start as the file name made readable.
 
 from __future__ import annotations
 
-from model.document import Background, ItemAnchor, PictureItem, PointAnchor, Project, TextItem
-from model.page_sizes import page_dimensions
-from starters.measure import hug
-from starters.options import Options
-from starters.pictures import Picture
-from starters.placement import Region, grid, new_page
-from starters.words import phrase, readable
+from floatpage.model.document import Background, ItemAnchor, PictureItem, PointAnchor, Project, TextItem
+from floatpage.model.page_sizes import page_dimensions
+from floatpage.starters.measure import hug
+from floatpage.starters.options import Options
+from floatpage.starters.pictures import Picture
+from floatpage.starters.placement import Region, grid, new_page
+from floatpage.starters.words import phrase, readable
 
 PAGE_SIZE = "A4"
 MAX_PER_PAGE = 6

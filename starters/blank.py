@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from model.document import PictureItem, Project, TextItem
-from starters.options import Options
-from starters.pictures import Picture
-from starters.placement import Region, grid, new_page
+from floatpage.model.document import PictureItem, Project, TextItem
+from floatpage.starters.options import Options
+from floatpage.starters.pictures import Picture
+from floatpage.starters.placement import Region, grid, new_page
 
 PAGE_SIZE = "A4"
 BUNDLED: list[str] = []

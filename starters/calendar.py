@@ -12,12 +12,12 @@ from __future__ import annotations
 
 import math
 
-from model.document import Background, CalendarItem, PictureItem, PointAnchor, Project, TextItem
-from starters.measure import hug
-from starters.options import Options
-from starters.pictures import Picture
-from starters.placement import Region, grid, new_page
-from starters.words import month_name
+from floatpage.model.document import Background, CalendarItem, PictureItem, PointAnchor, Project, TextItem
+from floatpage.starters.measure import hug
+from floatpage.starters.options import Options
+from floatpage.starters.pictures import Picture
+from floatpage.starters.placement import Region, grid, new_page
+from floatpage.starters.words import month_name
 
 PAGE_SIZE = "A4"
 MARGIN_MM = 12.0

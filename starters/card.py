@@ -7,12 +7,12 @@ content floats over them, as in the paper's prototype.
 
 from __future__ import annotations
 
-from model.document import Background, BlockItem, PictureItem, PointAnchor, Project, TextItem
-from starters.options import Options
-from starters.pictures import Picture
-from starters.measure import hug
-from starters.placement import Region, fit, new_page
-from starters.words import phrase
+from floatpage.model.document import Background, BlockItem, PictureItem, PointAnchor, Project, TextItem
+from floatpage.starters.options import Options
+from floatpage.starters.pictures import Picture
+from floatpage.starters.measure import hug
+from floatpage.starters.placement import Region, fit, new_page
+from floatpage.starters.words import phrase
 
 PAGE_SIZE = "5x8in"
 BUNDLED = ["sunflower.jpg", "tulips.jpg"]

@@ -7,14 +7,14 @@ fixed, and the title is hard-anchored on it so nothing pushes the shop's name of
 
 from __future__ import annotations
 
-from model.document import (
+from floatpage.model.document import (
     Background, BlockItem, ItemAnchor, PictureItem, PointAnchor, Project, TextItem,
 )
-from starters.options import Options
-from starters.pictures import Picture
-from starters.measure import hug
-from starters.placement import Region, grid, new_page
-from starters.words import phrase, price, product_name
+from floatpage.starters.options import Options
+from floatpage.starters.pictures import Picture
+from floatpage.starters.measure import hug
+from floatpage.starters.placement import Region, grid, new_page
+from floatpage.starters.words import phrase, price, product_name
 
 PAGE_SIZE = "A4"
 MARGIN_MM = 14.0

@@ -9,7 +9,7 @@ narrowed to its widest line still fits those lines at the same size.
 
 from __future__ import annotations
 
-from model.document import TextItem
+from floatpage.model.document import TextItem
 
 MM_PER_PT = 25.4 / 72
 SLACK = 1.01  # a hair wider than the words, so rounding never forces another line break
@@ -21,7 +21,7 @@ def widest_line_mm(item: TextItem) -> float | None:
     None when the fonts cannot be read (no TeX fonts installed): the caller keeps its box.
     """
     try:
-        from typeset.text_layout import face_for, fit_in_box
+        from floatpage.typeset.text_layout import face_for, fit_in_box
 
         fit, _ = fit_in_box(item.text, face_for(item.font, item.bold, item.italic), item.w, item.h)
     except Exception:  # noqa: BLE001 - failing to load fonts only means "don't measure"

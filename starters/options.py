@@ -5,9 +5,9 @@ from __future__ import annotations
 import datetime
 from dataclasses import dataclass
 
-from model.document import WEEKDAYS
-from model.errors import FloatpageError
-from model.schema import CALENDAR_LANGUAGES
+from floatpage.model.document import WEEKDAYS
+from floatpage.model.errors import FloatpageError
+from floatpage.model.schema import CALENDAR_LANGUAGES
 
 ORIENTATIONS = ("portrait", "landscape")
 

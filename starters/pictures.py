@@ -15,7 +15,7 @@ from pathlib import Path
 
 from PIL import Image, UnidentifiedImageError
 
-from model.errors import FloatpageError
+from floatpage.model.errors import FloatpageError
 
 PICTURES_DIR = "pictures"
 # What the typesetter accepts: JPEG and PNG go to LaTeX as they are, the rest are converted.

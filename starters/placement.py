@@ -10,8 +10,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from model.document import Page
-from model.page_sizes import page_dimensions
+from floatpage.model.document import Page
+from floatpage.model.page_sizes import page_dimensions
 
 Rect = tuple[float, float, float, float]
 

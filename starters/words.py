@@ -6,8 +6,8 @@ a page comes from here, in the project's language. The texts are only a start: u
 
 from __future__ import annotations
 
-from model.calendar_month import LANGUAGES
-from model.calendar_month import month_name as panel_month_name
+from floatpage.model.calendar_month import LANGUAGES
+from floatpage.model.calendar_month import month_name as panel_month_name
 
 PHRASES = {
     "card_front": {

@@ -18,10 +18,9 @@ import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT))
 
-import starters  # noqa: E402
-from starters.pictures import bundled  # noqa: E402
+from floatpage import starters
+from floatpage.starters.pictures import bundled
 
 SAMPLES_DIR = ROOT / "sample_projects"
 IMAGES_DIR = ROOT / "docs" / "images"
@@ -60,8 +59,8 @@ def make(name: str) -> Path:
 
 def render_png(project_path: Path, page: int, out_png: Path) -> None:
     """Render the project and keep one page as a small PNG for the README."""
-    from model import load_project
-    from typeset import render_pdf
+    from floatpage.model import load_project
+    from floatpage.typeset import render_pdf
 
     with tempfile.TemporaryDirectory() as scratch:
         pdf = Path(scratch) / "sample.pdf"

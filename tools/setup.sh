@@ -39,10 +39,19 @@ if [[ ! -x .venv/bin/python ]]; then
   echo "setup: creating .venv with $($PYTHON --version)"
   "$PYTHON" -m venv .venv
 fi
+# A strict editable install: a tree of links under build/ that type checkers can follow, with
+# floatpage.physics -> physics/ and so on. It links files, not folders, so a new or removed
+# module means installing again; the stamp holds the list of files it was made from.
 stamp=.venv/.floatpage-installed
+package_files=$(find physics model typeset tui cli starters latex_templates -type f \
+  \( -name '*.py' -o -name '*.j2' -o -name '*.tcss' -o -path 'starters/bundled/*' \) | LC_ALL=C sort)
 if [[ ! -f $stamp || pyproject.toml -nt $stamp ]]; then
   echo "setup: installing Python packages into .venv"
   .venv/bin/python -m pip install -q --upgrade pip
-  .venv/bin/python -m pip install -q -e '.[test]'
-  touch "$stamp"
+  .venv/bin/python -m pip install -q -e '.[test]' --config-settings editable_mode=strict
+  printf '%s\n' "$package_files" > "$stamp"
+elif [[ "$(cat "$stamp")" != "$package_files" ]]; then
+  echo "setup: package files were added or removed; linking them into the editable install"
+  .venv/bin/python -m pip install -q --no-deps -e . --config-settings editable_mode=strict
+  printf '%s\n' "$package_files" > "$stamp"
 fi

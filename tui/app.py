@@ -15,10 +15,10 @@ from typing import Iterable
 from textual.app import App, SystemCommand
 from textual.screen import Screen
 
-from model.project_file import load_project
-from tui.editor_screen import EditorScreen
-from tui.keymap import COMMANDS, key_label
-from tui.session import EditSession
+from floatpage.model.project_file import load_project
+from floatpage.tui.editor_screen import EditorScreen
+from floatpage.tui.keymap import COMMANDS, key_label
+from floatpage.tui.session import EditSession
 
 
 class FloatpageApp(App):

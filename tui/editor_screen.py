@@ -20,16 +20,16 @@ from textual.reactive import reactive
 from textual.screen import Screen
 from textual.widgets import Footer, Label
 
-from model.document import Background, ItemAnchor, PointAnchor
-from model.errors import FloatpageError
-from tui import item_forms
-from tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
-from tui.frame_meter import FrameMeter
-from tui.keymap import ITEM_ACTIONS, bindings, footer_rank, in_footer
-from tui.page_painter import Scene
-from tui.page_preview import PagePreview
-from tui.session import EditError, EditSession
-from tui.status_line import Status, StatusLine
+from floatpage.model.document import Background, ItemAnchor, PointAnchor
+from floatpage.model.errors import FloatpageError
+from floatpage.tui import item_forms
+from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
+from floatpage.tui.frame_meter import FrameMeter
+from floatpage.tui.keymap import ITEM_ACTIONS, bindings, footer_rank, in_footer
+from floatpage.tui.page_painter import Scene
+from floatpage.tui.page_preview import PagePreview
+from floatpage.tui.session import EditError, EditSession
+from floatpage.tui.status_line import Status, StatusLine
 
 FRAME_S = 1 / 30
 PHYSICS_BUDGET_S = 0.008  # leaves most of a 33 ms frame for drawing and for keys
@@ -479,7 +479,7 @@ class EditorScreen(Screen):
             self.app.call_from_thread(self.export_progress, words)
 
         try:
-            from typeset import render_pdf
+            from floatpage.typeset import render_pdf
 
             report = render_pdf(project, out, progress=progress)
         except FloatpageError as error:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import copy
 from dataclasses import dataclass
 
-from model.document import Page
+from floatpage.model.document import Page
 
 
 @dataclass(frozen=True)

@@ -10,10 +10,10 @@ import calendar
 import re
 from typing import Any
 
-from model.document import WEEKDAYS, BlockItem, CalendarItem, PictureItem, PointAnchor, TextItem
-from model.page_sizes import PAGE_SIZES_MM
-from model.schema import CALENDAR_LANGUAGES, FONT_FAMILIES
-from tui.dialogs.form import Field
+from floatpage.model.document import WEEKDAYS, BlockItem, CalendarItem, PictureItem, PointAnchor, TextItem
+from floatpage.model.page_sizes import PAGE_SIZES_MM
+from floatpage.model.schema import CALENDAR_LANGUAGES, FONT_FAMILIES
+from floatpage.tui.dialogs.form import Field
 
 HEX_COLOUR = re.compile(r"^#?[0-9a-fA-F]{6}$")
 MONTHS = tuple((calendar.month_name[number], number) for number in range(1, 13))

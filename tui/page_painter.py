@@ -14,13 +14,13 @@ from pathlib import Path
 
 from rich.cells import cell_len
 
-from model.calendar_month import month_name, month_weeks, weekday_names
-from model.document import (
+from floatpage.model.calendar_month import month_name, month_weeks, weekday_names
+from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
-from tui.cell_canvas import RGB, CellCanvas, Glyph
-from tui.projection import Projection
-from tui.thumbnails import thumbnail
+from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
+from floatpage.tui.projection import Projection
+from floatpage.tui.thumbnails import thumbnail
 
 SURROUND: RGB = (38, 38, 46)
 PAPER: RGB = (250, 250, 246)

@@ -15,9 +15,9 @@ from textual.message import Message
 from textual.strip import Strip
 from textual.widget import Widget
 
-from tui.cell_canvas import CellCanvas, StripCache
-from tui.page_painter import PagePainter, Scene
-from tui.projection import Projection
+from floatpage.tui.cell_canvas import CellCanvas, StripCache
+from floatpage.tui.page_painter import PagePainter, Scene
+from floatpage.tui.projection import Projection
 
 
 class PagePreview(Widget, can_focus=True):

@@ -15,17 +15,17 @@ import itertools
 import os
 from pathlib import Path
 
-from model.document import (
+from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, Project,
     TextItem,
 )
-from model.errors import FloatpageError
-from model.layout import engine_for_page, write_back
-from model.page_sizes import page_dimensions
-from model.save import save_project
-from physics import Engine
-from tui.history import History, Snapshot
-from tui.reading_order import reading_order, step_through
+from floatpage.model.errors import FloatpageError
+from floatpage.model.layout import engine_for_page, write_back
+from floatpage.model.page_sizes import page_dimensions
+from floatpage.model.save import save_project
+from floatpage.physics import Engine
+from floatpage.tui.history import History, Snapshot
+from floatpage.tui.reading_order import reading_order, step_through
 
 MIN_SIDE_MM = 3.0
 

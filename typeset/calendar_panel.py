@@ -8,11 +8,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from model.calendar_month import month_name, month_weeks, weekday_names, weekend_columns
-from model.document import CalendarItem
-from typeset.fit import Box, fit_text
-from typeset.fonts import FaceKey, metrics_for
-from typeset.text_layout import MM_PER_PT, PT_PER_MM, Run, RunGroup, face_for, place_lines
+from floatpage.model.calendar_month import month_name, month_weeks, weekday_names, weekend_columns
+from floatpage.model.document import CalendarItem
+from floatpage.typeset.fit import Box, fit_text
+from floatpage.typeset.fonts import FaceKey, metrics_for
+from floatpage.typeset.text_layout import MM_PER_PT, PT_PER_MM, Run, RunGroup, face_for, place_lines
 
 TITLE_SHARE = 0.2    # of the panel's height
 HEADS_SHARE = 0.1

@@ -20,8 +20,8 @@ import subprocess
 import time
 from pathlib import Path
 
-from typeset.errors import LatexCompileError, LogError, TexNotFoundError
-from typeset.latex_log import errors_with_items
+from floatpage.typeset.errors import LatexCompileError, LogError, TexNotFoundError
+from floatpage.typeset.latex_log import errors_with_items
 
 ENGINE = "lualatex"
 # 2026-01-01T00:00:00Z: any fixed instant works; a changing one breaks reproducibility.

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from model.errors import FloatpageError
+from floatpage.model.errors import FloatpageError
 
 
 class RenderError(FloatpageError):

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-from typeset.errors import LogError
+from floatpage.typeset.errors import LogError
 
 FILE_LINE = re.compile(r"^(?P<file>[^\s:][^:]*):(?P<line>\d+): (?P<message>.*)$")
 BANG = re.compile(r"^! (?P<message>.*)$")

@@ -24,8 +24,8 @@ from pathlib import Path
 
 from PIL import Image, ImageOps, UnidentifiedImageError
 
-from model.save import atomic_write
-from typeset.errors import RenderError
+from floatpage.model.save import atomic_write
+from floatpage.typeset.errors import RenderError
 
 PRINT_DPI = 300
 DOWNSAMPLE_ABOVE = 1.5  # only shrink pictures with more than 1.5x the pixels print needs

@@ -17,14 +17,14 @@ from typing import Callable
 
 from pylatex.utils import NoEscape
 
-from model.document import Project
-from model.save import atomic_write
-from typeset.compile import compile_pdf, engine_path
-from typeset.errors import RenderError
-from typeset.fonts import FontNotFoundError
-from typeset.pictures import cache_dir, materialize
-from typeset.scene import DocumentScene, build_scene, text_warnings
-from typeset.templates import make_environment
+from floatpage.model.document import Project
+from floatpage.model.save import atomic_write
+from floatpage.typeset.compile import compile_pdf, engine_path
+from floatpage.typeset.errors import RenderError
+from floatpage.typeset.fonts import FontNotFoundError
+from floatpage.typeset.pictures import cache_dir, materialize
+from floatpage.typeset.scene import DocumentScene, build_scene, text_warnings
+from floatpage.typeset.templates import make_environment
 
 
 @dataclass

@@ -12,15 +12,15 @@ import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from model.document import (
+from floatpage.model.document import (
     BlockItem, CalendarItem, Page, PictureItem, Project, TextItem,
 )
-from typeset.calendar_panel import Rect, layout_calendar
-from typeset.errors import RenderError
-from typeset.pictures import PicturePlan, plan_picture
-from typeset.templates import SAFE_PATH
-from typeset.fonts import FaceKey, font_path, metrics_for
-from typeset.text_layout import (
+from floatpage.typeset.calendar_panel import Rect, layout_calendar
+from floatpage.typeset.errors import RenderError
+from floatpage.typeset.pictures import PicturePlan, plan_picture
+from floatpage.typeset.templates import SAFE_PATH
+from floatpage.typeset.fonts import FaceKey, font_path, metrics_for
+from floatpage.typeset.text_layout import (
     RunGroup, face_for, fit_in_box, fit_warnings, missing_glyph_warning, place_lines,
 )
 

@@ -12,15 +12,15 @@ lines in page.tex.j2, next to what needs them, and PyLaTeX's `escape_latex` and
 from __future__ import annotations
 
 import re
+from importlib import resources
 from pathlib import Path
 
 import jinja2
 from pylatex.utils import NoEscape
 
-import latex_templates
-from typeset.escape import finalize
+from floatpage.typeset.escape import finalize
 
-TEMPLATE_DIR = Path(latex_templates.__file__).parent
+TEMPLATES = "floatpage.latex_templates"
 SAFE_PATH = re.compile(r"^[A-Za-z0-9/._+-]+$")
 HEX = re.compile(r"^#?([0-9a-fA-F]{6})$")
 
@@ -61,9 +61,14 @@ def control_sequence(name: str) -> NoEscape:
     return NoEscape("\\" + name)
 
 
+def load_template(name: str) -> str:
+    """A template's source, read as package data so an installed wheel needs no source tree."""
+    return resources.files(TEMPLATES).joinpath(name).read_text(encoding="utf-8")
+
+
 def make_environment() -> jinja2.Environment:
     env = jinja2.Environment(
-        loader=jinja2.FileSystemLoader(str(TEMPLATE_DIR)),
+        loader=jinja2.FunctionLoader(load_template),
         block_start_string=r"\BLOCK{",
         block_end_string="}",
         variable_start_string=r"\VAR{",

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from typeset.escape import clean_text
-from typeset.fit import MIN_PT, Box, TextFit, fit_text
-from typeset.fonts import FaceKey, TYPEFACES, FontMetrics, metrics_for, style_of
+from floatpage.typeset.escape import clean_text
+from floatpage.typeset.fit import MIN_PT, Box, TextFit, fit_text
+from floatpage.typeset.fonts import FaceKey, TYPEFACES, FontMetrics, metrics_for, style_of
 
 MM_PER_PT = 25.4 / 72  # PostScript points: what PDF readers and `bp` in TeX use
 PT_PER_MM = 72 / 25.4

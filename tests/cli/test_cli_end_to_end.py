@@ -9,7 +9,7 @@ from pathlib import Path
 import pypdf
 import pytest
 
-from model import BlockItem, Page, Project, TextItem, load_project, save_project
+from floatpage.model import BlockItem, Page, Project, TextItem, load_project, save_project
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from cli.main import main
+from floatpage.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[2]
 COMMANDS = ["new", "edit", "settle", "render", "check"]

@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from cli.main import main
-from model import ProjectFileError, load_project
+from floatpage.cli.main import main
+from floatpage.model import ProjectFileError, load_project
 
 MALFORMED = sorted((Path(__file__).parent / "malformed").glob("*.toml"))
 

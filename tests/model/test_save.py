@@ -12,11 +12,11 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from model import (
+from floatpage.model import (
     BlockItem, CalendarItem, ItemAnchor, Page, PointAnchor, Project, TextItem, dump_project,
     load_project, save_project,
 )
-from model.page_sizes import page_dimensions
+from floatpage.model.page_sizes import page_dimensions
 
 ROOT = Path(__file__).resolve().parents[2]
 SAMPLES = sorted((ROOT / "sample_projects").glob("**/*.toml"))
@@ -113,8 +113,8 @@ def test_a_save_killed_midway_leaves_the_old_file_intact(tmp_path):
     original = path.read_bytes()
     script = textwrap.dedent(f"""
         import sys, time
-        import model.save as save
-        from model import load_project, save_project
+        import floatpage.model.save as save
+        from floatpage.model import load_project, save_project
         project = load_project({str(path)!r})
         project.title = "half-written"
         def slow_write(handle, data, chunk=1 << 12):
@@ -138,7 +138,7 @@ def test_a_save_killed_midway_leaves_the_old_file_intact(tmp_path):
 
 
 def test_saving_into_a_missing_folder_is_a_clear_error(tmp_path):
-    from model import FloatpageError
+    from floatpage.model import FloatpageError
 
     project = Project(pages=[Page(id="p")])
     with pytest.raises(FloatpageError, match="could not save"):

@@ -5,8 +5,8 @@ import itertools
 import numpy as np
 import pytest
 
-from physics import Engine, Params
-from physics.scenes import dropped_scene, load, mixed_scene
+from floatpage.physics import Engine, Params
+from floatpage.physics.scenes import dropped_scene, load, mixed_scene
 
 A4 = (210.0, 297.0)
 

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from physics import fast_forces
-from physics.fast_forces import candidate_pairs, contact_pushes, target_gap, wall_pushes
+from floatpage.physics import fast_forces
+from floatpage.physics.fast_forces import candidate_pairs, contact_pushes, target_gap, wall_pushes
 
 
 def test_target_gap_solves_the_fill_equation():

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from physics import Engine, Params
-from physics.quality import measure_quality
+from floatpage.physics import Engine, Params
+from floatpage.physics.quality import measure_quality
 
 A4 = (210.0, 297.0)
 

@@ -4,11 +4,11 @@ import dataclasses
 
 import pytest
 
-from model.document import (
+from floatpage.model.document import (
     BlockItem, ItemAnchor, Page, PhysicsSettings, PictureItem, PointAnchor, Project, TextItem,
 )
-from model.layout import engine_for_page, params_from_settings, settle_project, write_back
-from physics import measure_quality
+from floatpage.model.layout import engine_for_page, params_from_settings, settle_project, write_back
+from floatpage.physics import measure_quality
 
 
 def sample_page():

@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from physics.euler import damping_for_count, euler_step, kinetic_energy
-from physics.paper_forces import (
+from floatpage.physics.euler import damping_for_count, euler_step, kinetic_energy
+from floatpage.physics.paper_forces import (
     SIGMA_MIN_MM, anchor_springs, axis_distance, contact_reach, euclidean_distance,
     pair_displacements,
     repulsion, wall_forces,

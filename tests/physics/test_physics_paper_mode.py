@@ -4,9 +4,9 @@ held, decorative and anchored items, and page-size scaling."""
 import numpy as np
 import pytest
 
-from physics import Engine, Params, page_scale
-from physics.euler import damping_for_count
-from physics.paper_mode import paper_forces
+from floatpage.physics import Engine, Params, page_scale
+from floatpage.physics.euler import damping_for_count
+from floatpage.physics.paper_mode import paper_forces
 
 A4 = (210.0, 297.0)
 PAPER = Params(mode="paper")

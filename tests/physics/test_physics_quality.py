@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from physics import measure_quality
+from floatpage.physics import measure_quality
 
 # Page 100 x 100.  A [10,30]x[10,30]; B [25,45]x[20,30] overlaps A by 5 x 10;
 # C [85,105]x[40,60] sticks 5 mm out on the right; D is a decorative backdrop over everything.

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from physics.fast_mode import COOLING_SHARE_RANGE, cooling_rate
-from physics.scenes import big_item_scene, dropped_scene, mixed_scene
+from floatpage.physics.fast_mode import COOLING_SHARE_RANGE, cooling_rate
+from floatpage.physics.scenes import big_item_scene, dropped_scene, mixed_scene
 
 
 @pytest.mark.parametrize("count, coverage", [(5, 0.5), (50, 0.5), (40, 0.9)])

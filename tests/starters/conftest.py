@@ -25,8 +25,8 @@ class Rendered:
 
 
 def render(project, out_pdf: Path) -> Rendered:
-    from model.layout import settle_project
-    from typeset import render_pdf
+    from floatpage.model.layout import settle_project
+    from floatpage.typeset import render_pdf
 
     settle_project(project)
     report = render_pdf(project, out_pdf)

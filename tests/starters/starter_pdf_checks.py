@@ -12,7 +12,7 @@ import calendar
 import datetime
 from dataclasses import dataclass
 
-from model.document import WEEKDAYS
+from floatpage.model.document import WEEKDAYS
 
 PT_PER_MM = 72 / 25.4
 SIZE_TOLERANCE_PT = 0.5

@@ -4,12 +4,12 @@ from pathlib import Path
 
 import pytest
 
-import starters
-from model import ItemAnchor, load_project, save_project
-from model.document import CalendarItem, PictureItem
-from model.page_sizes import page_dimensions
-from starters.options import Options
-from starters.pictures import Picture, bundled, copy_beside
+from floatpage import starters
+from floatpage.model import ItemAnchor, load_project, save_project
+from floatpage.model.document import CalendarItem, PictureItem
+from floatpage.model.page_sizes import page_dimensions
+from floatpage.starters.options import Options
+from floatpage.starters.pictures import Picture, bundled, copy_beside
 
 
 def build_saved(kind: str, tmp_path: Path, options: Options, sources=None):

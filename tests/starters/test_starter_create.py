@@ -7,12 +7,12 @@ from pathlib import Path
 
 import pytest
 
-import starters
-from model import load_project
-from model.document import CalendarItem, PictureItem
-from model.errors import FloatpageError
+from floatpage import starters
+from floatpage.model import load_project
+from floatpage.model.document import CalendarItem, PictureItem
+from floatpage.model.errors import FloatpageError
 from starter_pdf_checks import assert_page_sizes, check_month, day_marks
-from starters.pictures import bundled
+from floatpage.starters.pictures import bundled
 
 
 @pytest.fixture
@@ -79,7 +79,7 @@ def test_created_project_is_settled_and_saved(tmp_path):
 
 def test_created_calendar_is_at_rest(tmp_path):
     """create() settles: the physics moved the photos, and settling again barely moves anything."""
-    from model.layout import settle_project
+    from floatpage.model.layout import settle_project
 
     unsettled = starters.create("calendar", tmp_path / "raw.toml", year=2027, settle=False)
     starters.create("calendar", tmp_path / "settled.toml", year=2027)

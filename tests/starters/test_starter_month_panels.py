@@ -11,10 +11,10 @@ import datetime
 
 import pytest
 
-from model.document import WEEKDAYS, CalendarItem, Project
-from model.schema import CALENDAR_LANGUAGES
+from floatpage.model.document import WEEKDAYS, CalendarItem, Project
+from floatpage.model.schema import CALENDAR_LANGUAGES
 from starter_pdf_checks import check_month, day_marks
-from starters.placement import new_page
+from floatpage.starters.placement import new_page
 
 LEAP_CASES = [(2027, 2, 28), (2028, 2, 29), (2100, 2, 28), (2000, 2, 29)]
 

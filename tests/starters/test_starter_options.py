@@ -4,8 +4,8 @@ import datetime
 
 import pytest
 
-from model.errors import FloatpageError
-from starters.options import check_options
+from floatpage.model.errors import FloatpageError
+from floatpage.starters.options import check_options
 
 
 def test_year_defaults_to_next_year():

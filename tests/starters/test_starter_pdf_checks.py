@@ -8,7 +8,7 @@ import datetime
 
 import pytest
 
-from model.document import WEEKDAYS
+from floatpage.model.document import WEEKDAYS
 from starter_pdf_checks import DayMark, check_month, cluster
 
 CELL = 20.0

@@ -5,8 +5,8 @@ from pathlib import Path
 import pytest
 from PIL import Image
 
-from model.errors import FloatpageError
-from starters.pictures import bundled_dir, copy_beside, displayed_size, find_photos
+from floatpage.model.errors import FloatpageError
+from floatpage.starters.pictures import bundled_dir, copy_beside, displayed_size, find_photos
 
 
 def picture(path: Path, size=(40, 30), colour=(200, 80, 40), exif_orientation=None) -> Path:

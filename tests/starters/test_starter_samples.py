@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from model import dump_project, load_project
-from model.document import CalendarItem, PictureItem
+from floatpage.model import dump_project, load_project
+from floatpage.model.document import CalendarItem, PictureItem
 from starter_pdf_checks import assert_page_sizes, check_month, day_marks
 
 SAMPLES_DIR = Path(__file__).resolve().parents[2] / "sample_projects"

@@ -7,11 +7,11 @@ or orientation.
 
 import pytest
 
-import starters
-from model.schema import CALENDAR_LANGUAGES
-from starters.options import Options
-from starters.pictures import bundled, copy_beside
-from typeset import text_fit_warnings
+from floatpage import starters
+from floatpage.model.schema import CALENDAR_LANGUAGES
+from floatpage.starters.options import Options
+from floatpage.starters.pictures import bundled, copy_beside
+from floatpage.typeset import text_fit_warnings
 
 
 @pytest.fixture(scope="module")

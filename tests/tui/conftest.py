@@ -13,11 +13,11 @@ from pathlib import Path
 
 import pytest
 
-from model.document import (
+from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, Project,
     TextItem,
 )
-from model.save import save_project
+from floatpage.model.save import save_project
 
 from editor_helpers import BLUE, RED, paint_picture  # noqa: F401  (fixtures use them)
 

@@ -7,8 +7,8 @@ from pathlib import Path
 
 from PIL import Image
 
-from tui.app import FloatpageApp, make_app
-from tui.editor_screen import EditorScreen
+from floatpage.tui.app import FloatpageApp, make_app
+from floatpage.tui.editor_screen import EditorScreen
 
 SIZE = (100, 40)
 RED = (220, 30, 30)

@@ -7,9 +7,9 @@ import shutil
 import pytest
 
 from editor_helpers import editor, item, position, screen_of
-from model.errors import FloatpageError
-from model.project_file import load_project
-from tui.keymap import COMMANDS, key_label
+from floatpage.model.errors import FloatpageError
+from floatpage.model.project_file import load_project
+from floatpage.tui.keymap import COMMANDS, key_label
 
 
 def notifications(app) -> list[str]:
@@ -46,8 +46,7 @@ async def test_a_failed_save_is_shown_not_crashed_on(project_path):
 
 
 async def test_export_reports_a_typesetting_error_and_the_editor_stays(project_path, monkeypatch):
-    import typeset
-
+    from floatpage import typeset
     def failing_render(project, out_pdf, *, progress=None):
         progress("page 1 of 2")
         raise FloatpageError("LaTeX stopped: missing font (see card.log)")
@@ -157,7 +156,7 @@ async def test_every_command_is_in_the_palette_and_runs_from_it(project_path):
 
 
 def test_every_command_names_an_action_the_screen_has():
-    from tui.editor_screen import EditorScreen
+    from floatpage.tui.editor_screen import EditorScreen
 
     for command in COMMANDS:
         assert hasattr(EditorScreen, f"action_{command.action_name}"), command.action

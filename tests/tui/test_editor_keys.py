@@ -5,10 +5,10 @@ from __future__ import annotations
 import pytest
 
 from editor_helpers import editor, item, position, preview_text, screen_of, type_text
-from model.document import (
+from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, PictureItem, PointAnchor, TextItem,
 )
-from tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
+from floatpage.tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
 
 
 def label_cell(app, item_id: str) -> tuple[int, int]:

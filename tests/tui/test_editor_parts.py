@@ -6,11 +6,11 @@ from dataclasses import dataclass
 
 import pytest
 
-from tui.cell_canvas import UPPER_HALF, CellCanvas, Glyph, StripCache
-from tui.frame_meter import FrameMeter
-from tui.history import History, Snapshot
-from tui.keymap import COMMANDS, key_label
-from tui.reading_order import reading_order, step_through
+from floatpage.tui.cell_canvas import UPPER_HALF, CellCanvas, Glyph, StripCache
+from floatpage.tui.frame_meter import FrameMeter
+from floatpage.tui.history import History, Snapshot
+from floatpage.tui.keymap import COMMANDS, key_label
+from floatpage.tui.reading_order import reading_order, step_through
 
 
 @dataclass

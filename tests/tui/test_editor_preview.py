@@ -5,9 +5,9 @@ from __future__ import annotations
 import pytest
 
 from editor_helpers import editor, item_pixel_box, pixel, preview_text, screen_of
-from tui.page_painter import ANCHOR, LINK, PAPER, SELECTION, SURROUND
-from tui.projection import Projection
-from tui.thumbnails import thumbnail
+from floatpage.tui.page_painter import ANCHOR, LINK, PAPER, SELECTION, SURROUND
+from floatpage.tui.projection import Projection
+from floatpage.tui.thumbnails import thumbnail
 
 async def test_page_fits_with_its_aspect_ratio_and_refits_on_resize(project_path):
     async with editor(project_path, size=(100, 40)) as (app, pilot):

@@ -7,10 +7,10 @@ import datetime
 import pdfplumber
 import pytest
 
-from model.calendar_month import month_name, weekday_names
-from model.document import WEEKDAYS, CalendarItem, Page, Project
-from typeset import render_pdf
-from typeset.calendar_panel import HEADS_SHARE, TITLE_SHARE
+from floatpage.model.calendar_month import month_name, weekday_names
+from floatpage.model.document import WEEKDAYS, CalendarItem, Page, Project
+from floatpage.typeset import render_pdf
+from floatpage.typeset.calendar_panel import HEADS_SHARE, TITLE_SHARE
 from typeset_pdfcheck import PT_PER_MM, BoxPt
 
 PANELS = [  # (year, month, first weekday, language)

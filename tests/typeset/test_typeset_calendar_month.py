@@ -5,10 +5,10 @@ import datetime
 
 import pytest
 
-from model.calendar_month import (
+from floatpage.model.calendar_month import (
     LANGUAGES, month_name, month_weeks, weekday_names, weekend_columns,
 )
-from model.document import WEEKDAYS
+from floatpage.model.document import WEEKDAYS
 
 
 @pytest.mark.parametrize("year", [1, 1582, 1900, 2000, 2024, 2027, 9999])

@@ -6,10 +6,10 @@ from pathlib import Path
 
 import pytest
 
-from model.document import Page, PictureItem, Project, TextItem
-from model.errors import FloatpageError
-from typeset import LatexCompileError, RenderError, compile_pdf, render_pdf
-from typeset.latex_log import errors_with_items, marker_at, parse_log
+from floatpage.model.document import Page, PictureItem, Project, TextItem
+from floatpage.model.errors import FloatpageError
+from floatpage.typeset import LatexCompileError, RenderError, compile_pdf, render_pdf
+from floatpage.typeset.latex_log import errors_with_items, marker_at, parse_log
 
 DATA = Path(__file__).parent / "data"
 
@@ -88,7 +88,7 @@ def test_a_picture_that_is_not_a_picture_is_named(tmp_path):
 
 
 def test_missing_tex_says_what_to_install(tmp_path, monkeypatch):
-    from typeset import TexNotFoundError
+    from floatpage.typeset import TexNotFoundError
     monkeypatch.setenv("PATH", str(tmp_path))  # an empty folder: no lualatex anywhere
     with pytest.raises(TexNotFoundError, match="not installed.*texlive-luatex"):
         render_pdf(good_project(tmp_path), tmp_path / "out.pdf")

@@ -3,7 +3,7 @@
 import pytest
 from pylatex.utils import NoEscape
 
-from typeset.escape import clean_text, escape_latex, finalize
+from floatpage.typeset.escape import clean_text, escape_latex, finalize
 
 
 @pytest.mark.parametrize("char, tex", [

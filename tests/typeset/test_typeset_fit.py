@@ -3,8 +3,8 @@
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from typeset.fit import LEADING, MIN_PT, Box, fit_text, layout, paragraphs, segments_of
-from typeset.fonts import FaceKey, metrics_for
+from floatpage.typeset.fit import LEADING, MIN_PT, Box, fit_text, layout, paragraphs, segments_of
+from floatpage.typeset.fonts import FaceKey, metrics_for
 
 
 class Mono:
@@ -92,7 +92,7 @@ def test_fit_is_inside_and_maximal(words, w, h, family, style):
 @given(text=st.text(st.characters(blacklist_categories=("Cs",)), max_size=200),
        w=st.floats(0.01, 2000), h=st.floats(0.01, 2000))
 def test_any_text_in_any_box_fits_without_crashing(text, w, h):
-    from typeset.text_layout import printable_text
+    from floatpage.typeset.text_layout import printable_text
     metrics = metrics_for(FaceKey("sans"))
     printable, _ = printable_text(text, metrics)
     fit = fit_text(printable, Box(w, h), metrics)
@@ -105,7 +105,7 @@ class TallAccent(Mono):
     """Like Mono, but "Ê" inks up to 1.0 em above the baseline and "j" 0.4 em below it."""
 
     def ink_em(self, word):
-        from typeset.fonts import Ink
+        from floatpage.typeset.fonts import Ink
         return Ink(0.0, 0.5 * len(word), 1.0 if "Ê" in word else 0.75,
                    0.4 if "j" in word else 0.25)
 

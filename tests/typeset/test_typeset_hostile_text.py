@@ -15,10 +15,10 @@ from pathlib import Path
 import pdfplumber
 import pytest
 
-from model.document import Page, Project, TextItem
-from typeset import render_pdf
-from typeset.escape import clean_text
-from typeset.fonts import FaceKey, metrics_for
+from floatpage.model.document import Page, Project, TextItem
+from floatpage.typeset import render_pdf
+from floatpage.typeset.escape import clean_text
+from floatpage.typeset.fonts import FaceKey, metrics_for
 from typeset_pdfcheck import BoxPt, chars_in
 
 SPECIALS = "\\{}$&#%_^~[]"

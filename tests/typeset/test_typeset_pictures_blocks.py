@@ -9,9 +9,9 @@ import pytest
 from PIL import Image
 from pypdf import PdfReader
 
-from model.document import Background, BlockItem, Page, PictureItem, Project
-from typeset import render_pdf
-from typeset.pictures import plan_picture
+from floatpage.model.document import Background, BlockItem, Page, PictureItem, Project
+from floatpage.typeset import render_pdf
+from floatpage.typeset.pictures import plan_picture
 from typeset_pdfcheck import PT_PER_MM, BoxPt, edges_match
 
 EXIF_ORIENTATION = 0x0112

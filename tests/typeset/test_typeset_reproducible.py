@@ -9,8 +9,8 @@ from pathlib import Path
 
 from PIL import Image
 
-from model.document import Background, BlockItem, CalendarItem, Page, PictureItem, Project, TextItem
-from typeset import render_pdf
+from floatpage.model.document import Background, BlockItem, CalendarItem, Page, PictureItem, Project, TextItem
+from floatpage.typeset import render_pdf
 
 
 def project_in(folder: Path) -> Project:

@@ -13,8 +13,8 @@ from pathlib import Path
 import pdfplumber
 import pytest
 
-from model.document import Background, BlockItem, CalendarItem, Page, Project, TextItem
-from typeset import render_pdf, render_tex, text_fit_warnings
+from floatpage.model.document import Background, BlockItem, CalendarItem, Page, Project, TextItem
+from floatpage.typeset import render_pdf, render_tex, text_fit_warnings
 
 GOLDEN = Path(__file__).parent / "golden"
 

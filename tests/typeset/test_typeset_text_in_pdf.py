@@ -16,10 +16,10 @@ import pdfplumber
 import pytest
 from PIL import Image
 
-from model.document import Page, Project, TextItem
-from typeset import render_pdf
-from typeset.escape import clean_text
-from typeset.scene import build_scene
+from floatpage.model.document import Page, Project, TextItem
+from floatpage.typeset import render_pdf
+from floatpage.typeset.escape import clean_text
+from floatpage.typeset.scene import build_scene
 from typeset_pdfcheck import BoxPt, chars_in, fill
 
 SEED = 20261121

@@ -11,7 +11,7 @@ from textual.containers import Vertical, VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Label, Static
 
-from tui.keymap import COMMANDS, key_label
+from floatpage.tui.keymap import COMMANDS, key_label
 
 MOUSE = (("click", "Select an item (or nothing, on empty paper)"),
          ("drag", "Move the item; the others make way"))

@@ -6,7 +6,7 @@ Review a changed snapshot in the report before running `pytest --snapshot-update
 
 from __future__ import annotations
 
-from tui.app import make_app
+from floatpage.tui.app import make_app
 
 
 def frozen_app(project_path):

@@ -1,0 +1,52 @@
+"""floatpage installs as one package, and every module is imported by one name only.
+
+Seven generic top-level packages (`physics`, `tui`, ...) would collide with other
+distributions in site-packages (PyPI has a `tui`), and a module reachable under two names
+runs twice with two copies of its state.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+PARTS = ("physics", "model", "typeset", "tui", "cli", "starters", "latex_templates")
+BARE_IMPORT = re.compile(rf"^\s*(?:from|import)\s+(?:{'|'.join(PARTS)})(?:[.\s]|$)", re.M)
+
+
+def test_the_wheel_has_floatpage_as_its_only_top_level_package(tmp_path: Path) -> None:
+    subprocess.run(
+        [sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w", str(tmp_path), str(ROOT)],
+        check=True, capture_output=True, timeout=300,
+    )
+    (wheel,) = tmp_path.glob("floatpage-*.whl")
+    names = zipfile.ZipFile(wheel).namelist()
+    top_level = {name.split("/")[0] for name in names if not name.split("/")[0].endswith(".dist-info")}
+    assert top_level == {"floatpage"}
+    for needed in ("floatpage/latex_templates/page.tex.j2", "floatpage/latex_templates/items/text.tex.j2",
+                   "floatpage/tui/app.tcss", "floatpage/physics/engine.py"):
+        assert needed in names
+    entry_points = next(n for n in names if n.endswith(".dist-info/entry_points.txt"))
+    assert "floatpage = floatpage.cli.main:main" in zipfile.ZipFile(wheel).read(entry_points).decode()
+
+
+def test_no_module_imports_a_part_by_its_bare_folder_name() -> None:
+    offenders = []
+    for folder in (*PARTS, "tests", "benchmarks", "tools"):
+        for path in (ROOT / folder).rglob("*.py"):
+            for match in BARE_IMPORT.finditer(path.read_text(encoding="utf-8")):
+                offenders.append(f"{path.relative_to(ROOT)}: {match.group(0).strip()}")
+    assert not offenders, "import these as floatpage.X:\n" + "\n".join(offenders)
+
+
+def test_the_installed_package_is_the_repo_folders() -> None:
+    import floatpage.physics
+    import floatpage.tui
+
+    assert Path(floatpage.physics.__file__).resolve().parent == ROOT / "physics"
+    assert Path(floatpage.tui.__file__).resolve().parent == ROOT / "tui"
+    assert "physics" not in sys.modules and "tui" not in sys.modules
