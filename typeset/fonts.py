@@ -64,24 +64,69 @@ def style_of(bold: bool, italic: bool) -> str:
 
 @dataclass(frozen=True)
 class FaceKey:
-    """One font file: a family in one style."""
+    """One font file: a family in one style; with a fallback chain for text it cannot set.
+
+    `fallbacks` holds indices into `fallback_candidates(style)`, only the fonts this
+    text needs, in candidate order, so luaotfload (which takes the first font of the
+    chain that has a character) picks what `ChainMetrics` measured. A face without
+    fallbacks uses the plain node renderer: Latin-only text pays nothing for them.
+    """
 
     family: str
     style: str = "regular"
+    fallbacks: tuple[int, ...] = ()
+    harf: bool = False  # HarfBuzz mode: marks, right-to-left or fallback text
+
+    @property
+    def rich(self) -> bool:
+        return bool(self.fallbacks) or self.harf
 
     @property
     def tex_command(self) -> str:
         """The `\\newfontface` command name, letters only as TeX requires."""
-        return "fpface" + self.family.capitalize() + self.style.capitalize()
+        chain = "".join("X" + letters_of(index) for index in self.fallbacks)
+        return ("fpface" + self.family.capitalize() + self.style.capitalize()
+                + ("H" if self.rich else "") + chain)
+
+    @property
+    def chain_key(self) -> str:
+        return chain_key(self.family, self.style)
+
+    @property
+    def chain_name(self) -> str:
+        return self.tex_command.lower()
+
+    @property
+    def fallback_specs(self) -> list[str]:
+        """luaotfload font requests for the chain: HarfBuzz mode, the file by path."""
+        specs = []
+        for index in self.fallbacks:
+            spec = fallback_candidates(self.chain_key)[index].spec
+            script = rtl_script_of(self.chain_key, index)
+            specs.append(spec + (f"script={script};" if script else ""))
+        return specs
 
     @property
     def file_name(self) -> str:
         return TYPEFACES[self.family].files[self.style]
 
     @property
+    def plain(self) -> "FaceKey":
+        return FaceKey(self.family, self.style)
+
+    @property
     def label(self) -> str:
         name = TYPEFACES[self.family].name
         return name if self.style == "regular" else f"{name} {self.style.replace('bolditalic', 'bold italic')}"
+
+
+def letters_of(index: int) -> str:
+    out = ""
+    while True:
+        out = chr(ord("a") + index % 26) + out
+        index //= 26
+        if not index:
+            return out
 
 
 class FontNotFoundError(FileNotFoundError):
@@ -135,10 +180,10 @@ class FontMetrics:
     once, at the font's units per em, and cached.
     """
 
-    def __init__(self, path: Path):
+    def __init__(self, path: Path, index: int = 0):
         self.path = Path(path)
         blob = hb.Blob.from_file_path(str(self.path))
-        self.face = hb.Face(blob)
+        self.face = hb.Face(blob, index)
         self.font = hb.Font(self.face)
         self.upem = self.face.upem
         # PDF readers place a glyph's box from the FontDescriptor's Descent, which LuaTeX
@@ -214,3 +259,169 @@ class FontMetrics:
 def metrics_for(face: FaceKey) -> FontMetrics:
     """One FontMetrics per face per process: loading and shaping caches are worth keeping."""
     return FontMetrics(font_path(face))
+
+
+# ---- fallback: Debian's Noto fonts, for every script the three faces lack ----
+
+NOTO_DIRS = (Path("/usr/share/fonts/truetype/noto"), Path("/usr/share/fonts/opentype/noto"))
+FALLBACK_PACKAGES = "fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji"
+# Tried first, in this order: the general Latin/Greek/Cyrillic face, then the big scripts
+# (CJK as Simplified Chinese, index 2 of the collection), then emoji; every other Noto
+# face of the folder follows in name order, so rarer scripts are found too.
+# The sans face tries Noto's sans faces first, the others Noto's serif faces.
+PREFERRED_SERIF = ("NotoSerif", "NotoSans", "NotoSerifCJK-{Style}.ttc:2", "NotoNaskhArabic",
+                   "NotoSansArabic", "NotoSerifHebrew", "NotoSansHebrew", "NotoSerifDevanagari",
+                   "NotoSansDevanagari", "NotoSerifThai", "NotoSansThai", "NotoSansSymbols",
+                   "NotoSansSymbols2", "NotoSansMath", "NotoColorEmoji.ttf")
+PREFERRED_SANS = ("NotoSans", "NotoSerif", "NotoSansCJK-{Style}.ttc:2", "NotoSansArabic",
+                  "NotoNaskhArabic", "NotoSansHebrew", "NotoSerifHebrew", "NotoSansDevanagari",
+                  "NotoSerifDevanagari", "NotoSansThai", "NotoSerifThai", "NotoSansSymbols",
+                  "NotoSansSymbols2", "NotoSansMath", "NotoColorEmoji.ttf")
+
+
+@dataclass(frozen=True)
+class Candidate:
+    path: Path
+    index: int = 0
+
+    @property
+    def spec(self) -> str:
+        sub = f"({self.index})" if self.path.suffix == ".ttc" else ""
+        return f"[{self.path}]{sub}:mode=harf;"
+
+
+def noto_file(stem: str, style: str) -> Candidate | None:
+    """The file of a Noto family in this style, else its regular one."""
+    index = 0
+    if ":" in stem:
+        stem, number = stem.split(":")
+        index = int(number)
+    styles = {"regular": ["Regular"], "bold": ["Bold", "Regular"], "italic": ["Italic", "Regular"],
+              "bolditalic": ["BoldItalic", "Bold", "Italic", "Regular"]}[style]
+    for folder in NOTO_DIRS:
+        if "{Style}" in stem or "." in stem:
+            for name in styles:
+                path = folder / stem.replace("{Style}", name)
+                if path.is_file():
+                    return Candidate(path, index)
+            continue
+        for name in styles:
+            for ext in (".ttf", ".otf"):
+                path = folder / f"{stem}-{name}{ext}"
+                if path.is_file():
+                    return Candidate(path, index)
+    return None
+
+
+def chain_key(family: str, style: str) -> str:
+    """Which candidate list a face uses: its Noto kind and style, e.g. "sans:bold"."""
+    return ("sans:" if family == "sans" else "serif:") + style
+
+
+@functools.lru_cache(maxsize=None)
+def fallback_candidates(key: str) -> tuple[Candidate, ...]:
+    """Every fallback font for a chain key, in the order the chain tries them."""
+    kind, style = key.split(":")
+    found: dict[Candidate, None] = {}
+    for stem in PREFERRED_SANS if kind == "sans" else PREFERRED_SERIF:
+        candidate = noto_file(stem, style)
+        if candidate is not None:
+            found[candidate] = None
+    stems = sorted({path.name.split("-")[0] for folder in NOTO_DIRS if folder.is_dir()
+                    for path in folder.glob("Noto*-Regular.[to]tf")})
+    for stem in stems:
+        candidate = noto_file(stem, style)
+        if candidate is not None:
+            found[candidate] = None
+    return tuple(found)
+
+
+@functools.lru_cache(maxsize=None)
+def candidate_metrics(key: str, index: int) -> "FontMetrics":
+    candidate = fallback_candidates(key)[index]
+    return FontMetrics(candidate.path, candidate.index)
+
+
+@functools.lru_cache(maxsize=None)
+def rtl_script_of(key: str, index: int) -> str | None:
+    """The OpenType script tag of a right-to-left font ("arab", "hebr"), else None.
+
+    luaotfload's HarfBuzz mode shapes a fallback font's run inside `\\textdir TRT`
+    backwards unless the font is requested with its right-to-left script.
+    """
+    metrics = candidate_metrics(key, index)
+    for code in metrics.face.unicodes:
+        if unicodedata.bidirectional(chr(code)) in ("R", "AL"):
+            buffer = hb.Buffer()
+            buffer.add_str(chr(code))
+            buffer.guess_segment_properties()
+            tag = str(buffer.script).lower()
+            if tag.isalpha() and len(tag) == 4 and tag not in ("zyyy", "zinh", "zzzz", "none"):
+                return tag
+    return None
+
+
+def fallback_index(key: str, char: str) -> int | None:
+    """The first fallback font (index) with a glyph for `char`, or None."""
+    for index in range(len(fallback_candidates(key))):
+        if candidate_metrics(key, index).has_char(char):
+            return index
+    return None
+
+
+class ChainMetrics:
+    """Widths of text set in a face plus its fallback chain, as luaotfload sets it.
+
+    Each character goes to the first font of [face, *chain] that has it; runs of one
+    font are shaped by HarfBuzz in that font (its own script and direction), so
+    Arabic joins and Devanagari conjuncts are measured as the engine sets them.
+    """
+
+    def __init__(self, face: FaceKey):
+        self.face = face
+        self.primary = metrics_for(face.plain)
+        self.fonts = [self.primary] + [candidate_metrics(face.chain_key, i) for i in face.fallbacks]
+        self.descent_em = self.primary.descent_em
+        self.space_em = self.primary.space_em
+        self._shaped: dict[str, tuple[float, Ink]] = {}
+
+    def font_of(self, char: str) -> "FontMetrics":
+        for font in self.fonts:
+            if font.has_char(char):
+                return font
+        return self.primary
+
+    def shape(self, word: str) -> tuple[float, Ink]:
+        known = self._shaped.get(word)
+        if known is not None:
+            return known
+        runs: list[tuple[FontMetrics, str]] = []
+        for char in word:
+            font = self.font_of(char)
+            if runs and runs[-1][0] is font:
+                runs[-1] = (font, runs[-1][1] + char)
+            else:
+                runs.append((font, char))
+        pen, left, right, top, bottom = 0.0, None, None, None, None
+        for font, text in runs:
+            width, ink = font.shape(text)
+            if ink.right > ink.left or ink.top > ink.bottom:
+                left = pen + ink.left if left is None else min(left, pen + ink.left)
+                right = pen + ink.right if right is None else max(right, pen + ink.right)
+                top = ink.top if top is None else max(top, ink.top)
+                bottom = ink.bottom if bottom is None else max(bottom, ink.bottom)
+            pen += width
+        known = (pen, Ink(0.0, 0.0, 0.0, 0.0) if left is None else Ink(left, right, top, bottom))
+        self._shaped[word] = known
+        return known
+
+    def advance_em(self, word: str) -> float:
+        return self.shape(word)[0]
+
+    def ink_em(self, word: str) -> Ink:
+        return self.shape(word)[1]
+
+
+@functools.lru_cache(maxsize=256)
+def chain_metrics_for(face: FaceKey) -> "FontMetrics | ChainMetrics":
+    return ChainMetrics(face) if face.rich else metrics_for(face)

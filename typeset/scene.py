@@ -119,11 +119,11 @@ def rect_of(item) -> Rect:
 
 def text_scene(item: TextItem, label: str, warnings: list[str]) -> TextScene | None:
     face = face_for(item.font, item.bold, item.italic)
-    fit, missing = fit_in_box(item.text, face, item.w, item.h)
+    fit, missing, face = fit_in_box(item.text, face, item.w, item.h)
     warnings += fit_warnings(label, face, fit, missing)
     if not fit.lines:
         return None
-    runs = place_lines(fit, metrics_for(face), item.x - item.w / 2, item.y - item.h / 2, item.h)
+    runs = place_lines(fit, None, item.x - item.w / 2, item.y - item.h / 2, item.h)
     return TextScene(item.id, label, (RunGroup(face, fit.font_pt, item.color, runs),))
 
 
@@ -208,7 +208,7 @@ def build_scene(project: Project) -> DocumentScene:
     picture_dir = folders.pop() if len(folders) == 1 else None
     if picture_dir is not None and not SAFE_PATH.match(str(picture_dir)):
         picture_dir = None
-    return DocumentScene(project.title, pages, [(face, font_path(face)) for face in faces],
+    return DocumentScene(project.title, pages, [(face, font_path(face.plain)) for face in faces],
                          list(colors), list(pictures.values()), warnings, labels, picture_dir)
 
 

@@ -61,6 +61,15 @@ def control_sequence(name: str) -> NoEscape:
     return NoEscape("\\" + name)
 
 
+def lua_fallback(face) -> NoEscape:
+    """luaotfload's fallback chain for a face, as a Lua call; only characters of file names."""
+    specs = ", ".join(f'"{spec}"' for spec in face.fallback_specs)
+    call = f'luaotfload.add_fallback("{face.chain_name}", {{{specs}}})'
+    if not re.fullmatch(r'[A-Za-z0-9_./\-\[\]():;=", {}+]+', call):
+        raise ValueError(f"font paths {face.fallback_specs!r} have characters LaTeX cannot take")
+    return NoEscape(call)
+
+
 def load_template(name: str) -> str:
     """A template's source, read as package data so an installed wheel needs no source tree."""
     return resources.files(TEMPLATES).joinpath(name).read_text(encoding="utf-8")
@@ -83,5 +92,6 @@ def make_environment() -> jinja2.Environment:
         finalize=finalize,
     )
     env.filters.update(mm=number, bp=number, num=number, path=tex_path, color=color_name,
-                       hex=hex_digits, cs=control_sequence)
+                       hex=hex_digits, cs=control_sequence,
+                       lua_fallback=lua_fallback)
     return env

@@ -6,11 +6,16 @@ in the templates.
 
 from __future__ import annotations
 
+import unicodedata
 from dataclasses import dataclass
 
-from floatpage.typeset.escape import clean_text
+from pylatex.utils import NoEscape
+
+from floatpage.typeset.bidi import line_markup
+from floatpage.typeset.escape import clean_text, escape_latex
 from floatpage.typeset.fit import MIN_PT, Box, TextFit, fit_text
-from floatpage.typeset.fonts import FaceKey, TYPEFACES, FontMetrics, metrics_for, style_of
+from floatpage.typeset.fonts import (
+    FaceKey, TYPEFACES, FontMetrics, chain_metrics_for, fallback_index, metrics_for, style_of)
 
 MM_PER_PT = 25.4 / 72  # PostScript points: what PDF readers and `bp` in TeX use
 PT_PER_MM = 72 / 25.4
@@ -24,6 +29,11 @@ class Run:
     y_mm: float
     text: str
     width_pt: float = 0.0
+
+    @property
+    def tex(self) -> NoEscape:
+        """The line as TeX: escaped, its right-to-left runs marked for LuaTeX to reorder."""
+        return line_markup(self.text, escape_latex)
 
 
 @dataclass(frozen=True)
@@ -43,16 +53,54 @@ def face_for(family: str, bold: bool, italic: bool) -> FaceKey:
 def missing_glyph_warning(label: str, face: FaceKey, missing: list[str]) -> str:
     shown = ", ".join(f"'{ch}' (U+{ord(ch):04X})" for ch in missing[:12])
     more = f" and {len(missing) - 12} more" if len(missing) > 12 else ""
-    return (f"{label}: the font {face.label} has no glyph for {shown}{more}; they are left out "
-            f"(pick another font for this item, or remove those characters)")
+    return (f"{label}: no installed font (neither {face.label} nor its fallbacks) has a glyph for "
+            f"{shown}{more}; they are left out (remove those characters, or install a font "
+            f"that has them)")
+
+
+RTL_CLASSES = ("R", "AL")
+
+
+def rich_text(text: str, face: FaceKey) -> tuple[str, FaceKey, list[str]]:
+    """What will be printed, the face (with the fallback chain it needs), what cannot be.
+
+    A character the face lacks goes to the first fallback font that has it; a space
+    no font has becomes a plain space; an invisible format character no font has is
+    left out silently; any other character no font has is left out and reported.
+    Base letters are kept whatever their marks do. Marks, right-to-left letters and
+    fallback text switch the face to HarfBuzz mode, which shapes them and writes a
+    text layer that gives back what was typed.
+    """
+    cleaned = clean_text(text)
+    primary = metrics_for(face.plain)
+    kept: list[str] = []
+    missing: dict[str, None] = {}
+    fallbacks: set[int] = set()
+    harf = False
+    for char in cleaned:
+        if char == "\n" or primary.has_char(char):
+            kept.append(char)
+            harf = harf or bool(unicodedata.combining(char)) \
+                or unicodedata.bidirectional(char) in RTL_CLASSES
+            continue
+        index = fallback_index(face.chain_key, char)
+        category = unicodedata.category(char)
+        if index is not None:
+            fallbacks.add(index)
+            kept.append(char)
+        elif category == "Zs":
+            kept.append(" ")
+        elif category != "Cf":
+            missing[char] = None
+    chained = FaceKey(face.family, face.style, tuple(sorted(fallbacks)),
+                      harf or bool(fallbacks))
+    return "".join(kept), chained, list(missing)
 
 
 def printable_text(text: str, metrics: FontMetrics) -> tuple[str, list[str]]:
-    """The cleaned text without characters the font lacks, and those characters."""
+    """The cleaned text without characters the font lacks, and those characters (no fallback)."""
     cleaned = clean_text(text)
     missing = metrics.missing_chars(cleaned)
-    # Drop everything the font lacks, warned about or invisible, so HarfBuzz measures
-    # exactly what LuaLaTeX (which drops such characters) prints.
     return "".join(ch for ch in cleaned if not metrics.lacks(ch)), missing
 
 
@@ -75,11 +123,13 @@ def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: floa
     return tuple(runs)
 
 
-def fit_in_box(text: str, face: FaceKey, w_mm: float, h_mm: float) -> tuple[TextFit, list[str]]:
-    """Fit cleaned text in a w x h mm box with the face's real metrics; also the missing chars."""
-    metrics = metrics_for(face)
-    printable, missing = printable_text(text, metrics)
-    return fit_text(printable, Box(w_mm * PT_PER_MM, h_mm * PT_PER_MM), metrics), missing
+def fit_in_box(text: str, face: FaceKey, w_mm: float, h_mm: float
+               ) -> tuple[TextFit, list[str], FaceKey]:
+    """Fit text in a w x h mm box with the fonts that will set it; also the missing chars
+    and the face (with its fallback chain) to set it in."""
+    printable, chained, missing = rich_text(text, face)
+    metrics = chain_metrics_for(chained)
+    return fit_text(printable, Box(w_mm * PT_PER_MM, h_mm * PT_PER_MM), metrics), missing, chained
 
 
 def fit_warnings(label: str, face: FaceKey, fit: TextFit, missing: list[str]) -> list[str]:
