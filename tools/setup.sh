@@ -10,6 +10,8 @@ DEBIAN_PACKAGES=(
   texlive-latex-base texlive-latex-recommended texlive-latex-extra
   texlive-luatex texlive-xetex texlive-fonts-recommended texlive-fonts-extra
   lmodern fonts-texgyre poppler-utils
+  # fallback fonts for the scripts and emoji the three faces lack (typeset/fonts.py)
+  fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji
 )
 
 missing=()

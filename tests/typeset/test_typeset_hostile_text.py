@@ -18,7 +18,8 @@ import pytest
 from floatpage.model.document import Page, Project, TextItem
 from floatpage.typeset import render_pdf
 from floatpage.typeset.escape import clean_text
-from floatpage.typeset.fonts import FaceKey, metrics_for
+from floatpage.typeset.fonts import ChainMetrics, FaceKey
+from floatpage.typeset.text_layout import rich_text
 from typeset_pdfcheck import BoxPt, chars_in
 
 SPECIALS = "\\{}$&#%_^~[]"
@@ -46,7 +47,7 @@ ATTACKS = [
 ]
 UNICODE = ["naïve café", "Ærøskøbing Łódź", "Straße ẞ", "ﬁ ﬂ ligatures", "e\u0301 decomposed",
            "Ελληνικά", "Кириллица", "€ £ ¥ ¢", "„Anführung“ «guillemets»", "emoji 😀 here",
-           "中文 text", "עברית", "…—–·•", "½ ¼ ¾", "№ ™ © ®"]
+           "中文 text", "עברית", "…—–·•", "½ ¼ ¾", "№ ™ © ®", "private \ue000 use"]
 
 
 def hostile_strings() -> list[str]:
@@ -89,24 +90,31 @@ def test_there_are_at_least_200_hostile_strings_and_none_broke_the_compile(readb
     assert not Path("/tmp/floatpage-pwned").exists()
 
 
+def is_colour_emoji(char: str) -> bool:
+    """Colour emoji are pictures in the PDF (their text is checked by the multilingual tests)."""
+    chain = ChainMetrics(rich_text(char, FaceKey("sans"))[1])
+    return chain.font_of(char).path.name == "NotoColorEmoji.ttf"
+
+
 def test_every_string_reads_back_as_typed_where_the_font_has_glyphs(readback):
     _, found, _ = readback
     """Compared without spaces (PDFs hold none; readers guess them from gaps), without
     invisible format characters (a soft hyphen prints nothing), and in NFKC form (the
     glyph for "ﬁ" is the "fi" ligature, which the PDF's ToUnicode spells "fi")."""
-    metrics = metrics_for(FaceKey("sans"))
     wrong = []
     for typed, read in found:
-        expected = "".join(ch for ch in clean_text(typed) if not ch.isspace()
-                           and metrics.has_char(ch) and unicodedata.category(ch) != "Cf")
+        printable = rich_text(typed, FaceKey("sans"))[0]
+        expected = "".join(ch for ch in printable if not ch.isspace()
+                           and unicodedata.category(ch) != "Cf" and not is_colour_emoji(ch))
         expected = unicodedata.normalize("NFKC", expected)
         if unicodedata.normalize("NFKC", read.replace(" ", "")) != expected:
             wrong.append((typed, expected, read))
     assert not wrong, wrong[:5]
 
 
-def test_missing_glyphs_are_warned_about_by_item_and_character(readback):
+def test_characters_no_font_has_are_warned_about_by_item_and_code_point(readback):
+    """Emoji and CJK come from the fallback fonts now; a private-use character has no font."""
     _, _, report = readback
-    emoji = [w for w in report.warnings if "U+1F600" in w]
-    assert emoji and 'item "h' in emoji[0] and "Fira Sans" in emoji[0]
-    assert any("U+4E2D" in w for w in report.warnings)  # 中
+    private = [w for w in report.warnings if "U+E000" in w]
+    assert private and 'item "h' in private[0] and "Fira Sans" in private[0]
+    assert not any("U+1F600" in w or "U+4E2D" in w for w in report.warnings)

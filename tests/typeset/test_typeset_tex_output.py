@@ -95,11 +95,14 @@ def test_fit_warnings_name_the_item_and_the_problem():
     project = Project(pages=[Page(id="p", items=[
         TextItem(id="crowded", x=20, y=20, w=10, h=5, text="word " * 300),
         TextItem(id="emoji", x=100, y=100, w=60, h=20, text="Hi 😀 中", font="serif"),
+        TextItem(id="private", x=100, y=150, w=60, h=20, text="a\ue000b\U0010fffd", font="serif"),
         TextItem(id="fine", x=100, y=200, w=60, h=20, text="All good"),
         TextItem(id="long", x=100, y=250, w=12, h=40, text="Rindfleischetikettierung")])])
     warnings = text_fit_warnings(project)
     assert any('item "crowded"' in w and "below the 6 pt minimum" in w for w in warnings)
-    assert any('item "emoji"' in w and "U+1F600" in w and "U+4E2D" in w and "Pagella" in w
+    # Emoji and CJK come from the fallback fonts; private-use characters have no font at all.
+    assert not any('item "emoji"' in w for w in warnings)
+    assert any('item "private"' in w and "U+E000" in w and "U+10FFFD" in w and "Pagella" in w
                for w in warnings)
     assert any('item "long"' in w and "broken across lines" in w for w in warnings)
     assert not any('"fine"' in w for w in warnings)
