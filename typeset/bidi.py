@@ -64,7 +64,7 @@ def directional_runs(line: str, base: str) -> list[tuple[str, str]]:
             last = positions[index]
         index += 1
         end = last + 1
-        while end < len(line) and unicodedata.combining(line[end]):
+        while end < len(line) and unicodedata.category(line[end]).startswith("M"):
             end += 1
         if first > start:
             runs.append((base, line[start:first]))

@@ -13,6 +13,7 @@ import shutil
 import struct
 import subprocess
 import unicodedata
+from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -102,7 +103,7 @@ class FaceKey:
         specs = []
         for index in self.fallbacks:
             spec = fallback_candidates(self.chain_key)[index].spec
-            script = rtl_script_of(self.chain_key, index)
+            script = script_of(self.chain_key, index)
             specs.append(spec + (f"script={script};" if script else ""))
         return specs
 
@@ -193,6 +194,7 @@ class FontMetrics:
         descender = struct.unpack(">h", hhea[6:8])[0]
         self.descent_em = int(-descender * 1000 / self.upem) / 1000
         self._shaped: dict[str, tuple[float, Ink]] = {}
+        self.em_extents: dict[str, tuple[float, float]] = {}  # word -> (above, below) baseline
         self.space_em = self.advance_em(" ")
 
     def shape(self, word: str) -> tuple[float, "Ink"]:
@@ -206,6 +208,11 @@ class FontMetrics:
         hb.shape(self.font, buffer, SHAPING_FEATURES)
         pen = 0
         left = right = top = bottom = None
+        raised = min(0, *(p.y_offset for p in buffer.glyph_positions)) if buffer.glyph_positions else 0
+        lifted = max(0, *(p.y_offset for p in buffer.glyph_positions)) if buffer.glyph_positions else 0
+        # The em box PDF readers draw around each glyph moves with the glyph's offset.
+        self.em_extents[word] = (1 - self.descent_em + lifted / self.upem,
+                                 self.descent_em - raised / self.upem)
         for info, position in zip(buffer.glyph_infos, buffer.glyph_positions):
             extents = self.font.get_glyph_extents(info.codepoint)
             if extents is not None and (extents.width or extents.height):
@@ -269,14 +276,16 @@ FALLBACK_PACKAGES = "fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji"
 # (CJK as Simplified Chinese, index 2 of the collection), then emoji; every other Noto
 # face of the folder follows in name order, so rarer scripts are found too.
 # The sans face tries Noto's sans faces first, the others Noto's serif faces.
-PREFERRED_SERIF = ("NotoSerif", "NotoSans", "NotoSerifCJK-{Style}.ttc:2", "NotoNaskhArabic",
-                   "NotoSansArabic", "NotoSerifHebrew", "NotoSansHebrew", "NotoSerifDevanagari",
-                   "NotoSansDevanagari", "NotoSerifThai", "NotoSansThai", "NotoSansSymbols",
-                   "NotoSansSymbols2", "NotoSansMath", "NotoColorEmoji.ttf")
-PREFERRED_SANS = ("NotoSans", "NotoSerif", "NotoSansCJK-{Style}.ttc:2", "NotoSansArabic",
-                  "NotoNaskhArabic", "NotoSansHebrew", "NotoSerifHebrew", "NotoSansDevanagari",
-                  "NotoSerifDevanagari", "NotoSansThai", "NotoSerifThai", "NotoSansSymbols",
-                  "NotoSansSymbols2", "NotoSansMath", "NotoColorEmoji.ttf")
+# Symbols come before CJK: the CJK fonts draw ① and ➀ with one glyph, which the PDF's
+# text layer can only name one way (➀), so ① must come from Noto Sans Symbols.
+PREFERRED_SERIF = ("NotoSerif", "NotoSans", "NotoSansSymbols", "NotoSansSymbols2", "NotoSansMath",
+                   "NotoSerifCJK-{Style}.ttc:2", "NotoNaskhArabic", "NotoSansArabic",
+                   "NotoSerifHebrew", "NotoSansHebrew", "NotoSerifDevanagari",
+                   "NotoSansDevanagari", "NotoSerifThai", "NotoSansThai", "NotoColorEmoji.ttf")
+PREFERRED_SANS = ("NotoSans", "NotoSerif", "NotoSansSymbols", "NotoSansSymbols2", "NotoSansMath",
+                  "NotoSansCJK-{Style}.ttc:2", "NotoSansArabic", "NotoNaskhArabic",
+                  "NotoSansHebrew", "NotoSerifHebrew", "NotoSansDevanagari",
+                  "NotoSerifDevanagari", "NotoSansThai", "NotoSerifThai", "NotoColorEmoji.ttf")
 
 
 @dataclass(frozen=True)
@@ -338,27 +347,55 @@ def fallback_candidates(key: str) -> tuple[Candidate, ...]:
 
 @functools.lru_cache(maxsize=None)
 def candidate_metrics(key: str, index: int) -> "FontMetrics":
+    """A fallback font's metrics, with the descent PDF readers will see for it.
+
+    LuaTeX describes a TrueType font loaded in HarfBuzz mode by its letters: the
+    Descent it writes is the depth of "p" (Noto Sans: 240/1000) and 0 in a font
+    without Latin letters (Noto Sans Thaana), whatever the font's own tables say;
+    readers hang each glyph's em box from that (measured with pdfminer here).
+    """
     candidate = fallback_candidates(key)[index]
-    return FontMetrics(candidate.path, candidate.index)
+    metrics = FontMetrics(candidate.path, candidate.index)
+    if metrics.face.reference_table("CFF ").data:
+        return metrics  # CFF outlines (the CJK fonts): the hhea descender, as for the faces
+    depth = metrics.ink_em("p").bottom if metrics.has_char("p") and metrics.has_char("h") else 0.0
+    metrics.descent_em = int(depth * 1000) / 1000
+    metrics._shaped.clear()
+    metrics.em_extents.clear()
+    return metrics
 
 
 @functools.lru_cache(maxsize=None)
-def rtl_script_of(key: str, index: int) -> str | None:
-    """The OpenType script tag of a right-to-left font ("arab", "hebr"), else None.
+def script_of(key: str, index: int) -> str | None:
+    """The script tag ("arab", "deva", "mong") of a fallback font made for one script.
 
-    luaotfload's HarfBuzz mode shapes a fallback font's run inside `\\textdir TRT`
-    backwards unless the font is requested with its right-to-left script.
+    luaotfload's HarfBuzz mode otherwise shapes a fallback font's text with the main
+    face's script (Latin): Arabic comes out backwards inside `\\textdir TRT`, Mongolian
+    unjoined. Fonts for Latin with Greek and Cyrillic (Noto Serif, Noto Sans) and
+    emoji get none, and HarfBuzz guesses per run as the fitter does.
     """
     metrics = candidate_metrics(key, index)
+    words: Counter[str] = Counter()
+    sample: dict[str, int] = {}
     for code in metrics.face.unicodes:
-        if unicodedata.bidirectional(chr(code)) in ("R", "AL"):
-            buffer = hb.Buffer()
-            buffer.add_str(chr(code))
-            buffer.guess_segment_properties()
-            tag = str(buffer.script).lower()
-            if tag.isalpha() and len(tag) == 4 and tag not in ("zyyy", "zinh", "zzzz", "none"):
-                return tag
-    return None
+        if code < 0x250:
+            continue
+        try:
+            word = unicodedata.name(chr(code)).split()[0]
+        except ValueError:
+            continue
+        words[word] += 1
+        sample.setdefault(word, code)
+    if not words:
+        return None
+    word, count = words.most_common(1)[0]
+    if word in ("LATIN", "GREEK", "CYRILLIC", "COMBINING") or count < sum(words.values()) / 3:
+        return None
+    buffer = hb.Buffer()
+    buffer.add_str(chr(sample[word]))
+    buffer.guess_segment_properties()
+    tag = str(buffer.script).lower()
+    return tag if tag.isalpha() and len(tag) == 4 and tag not in ("zyyy", "zinh", "zzzz") else None
 
 
 def fallback_index(key: str, char: str) -> int | None:
@@ -405,6 +442,13 @@ class ChainMetrics:
         pen, left, right, top, bottom = 0.0, None, None, None, None
         for font, text in runs:
             width, ink = font.shape(text)
+            above, below = font.em_extents[text]
+            if font is not self.primary or above > 1 - self.descent_em + 1e-9 \
+                    or below > self.descent_em + 1e-9:
+                # A fallback font's em box (its own descent) or a raised mark's is what
+                # PDF readers report; it must stay in the box like ink does.
+                ink = Ink(min(ink.left, 0.0), max(ink.right, width), max(ink.top, above),
+                          max(ink.bottom, below))
             if ink.right > ink.left or ink.top > ink.bottom:
                 left = pen + ink.left if left is None else min(left, pen + ink.left)
                 right = pen + ink.right if right is None else max(right, pen + ink.right)

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from pylatex.utils import NoEscape
 
-from floatpage.typeset.bidi import line_markup
+from floatpage.typeset.bidi import base_direction, line_markup
 from floatpage.typeset.escape import clean_text, escape_latex
 from floatpage.typeset.fit import MIN_PT, Box, TextFit, fit_text
 from floatpage.typeset.fonts import (
@@ -29,11 +29,12 @@ class Run:
     y_mm: float
     text: str
     width_pt: float = 0.0
+    direction: str = "L"  # the paragraph's: "R" when its first strong letter is right to left
 
     @property
     def tex(self) -> NoEscape:
         """The line as TeX: escaped, its right-to-left runs marked for LuaTeX to reorder."""
-        return line_markup(self.text, escape_latex)
+        return line_markup(self.text, escape_latex, self.direction)
 
 
 @dataclass(frozen=True)
@@ -51,14 +52,18 @@ def face_for(family: str, bold: bool, italic: bool) -> FaceKey:
 
 
 def missing_glyph_warning(label: str, face: FaceKey, missing: list[str]) -> str:
-    shown = ", ".join(f"'{ch}' (U+{ord(ch):04X})" for ch in missing[:12])
-    more = f" and {len(missing) - 12} more" if len(missing) > 12 else ""
+    """Every character no font could set, each with its code point: the user can find them."""
+    shown = ", ".join(f"'{ch}' (U+{ord(ch):04X})" for ch in missing)
     return (f"{label}: no installed font (neither {face.label} nor its fallbacks) has a glyph for "
-            f"{shown}{more}; they are left out (remove those characters, or install a font "
+            f"{shown}; they are left out (remove those characters, or install a font "
             f"that has them)")
 
 
 RTL_CLASSES = ("R", "AL")
+# Invisible characters that only steer breaking or direction (bidi.py sets directions): left
+# out, since HarfBuzz gives them no width while LuaTeX's node mode prints a font's glyph.
+STEERING = frozenset("\u200b\u200e\u200f\u2060\ufeff\u202a\u202b\u202c\u202d\u202e"
+                     "\u2066\u2067\u2068\u2069\u00ad")
 
 
 def rich_text(text: str, face: FaceKey) -> tuple[str, FaceKey, list[str]]:
@@ -78,9 +83,11 @@ def rich_text(text: str, face: FaceKey) -> tuple[str, FaceKey, list[str]]:
     fallbacks: set[int] = set()
     harf = False
     for char in cleaned:
+        if char in STEERING:  # HarfBuzz skips them, LuaTeX's node mode would print the glyph
+            continue
         if char == "\n" or primary.has_char(char):
             kept.append(char)
-            harf = harf or bool(unicodedata.combining(char)) \
+            harf = harf or unicodedata.category(char).startswith("M") \
                 or unicodedata.bidirectional(char) in RTL_CLASSES
             continue
         index = fallback_index(face.chain_key, char)
@@ -112,6 +119,7 @@ def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: floa
     spare_mm = max(0.0, h_mm - fit.height_pt * MM_PER_PT) / 2
     first_baseline_mm = top_mm + spare_mm + size * fit.top_em * MM_PER_PT
     runs = []
+    direction = base_direction("".join(fit.lines))
     offsets = fit.line_offsets_pt or (0.0,) * len(fit.lines)
     for index, (line, width_pt, offset_pt) in enumerate(zip(fit.lines, fit.line_widths_pt,
                                                             offsets)):
@@ -119,7 +127,7 @@ def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: floa
         if centre and widths_mm is not None:
             x_mm += max(0.0, widths_mm - width_pt * MM_PER_PT) / 2
         y_mm = first_baseline_mm + index * fit.leading * size * MM_PER_PT
-        runs.append(Run(x_mm, y_mm, line, width_pt))
+        runs.append(Run(x_mm, y_mm, line, width_pt, direction))
     return tuple(runs)
 
 
