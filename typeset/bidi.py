@@ -9,7 +9,8 @@ algorithm done here, for one line without explicit embeddings:
   to the last one before the next left-to-right letter, taking the spaces,
   punctuation and numbers between them;
 - in a right-to-left line, the same with the directions swapped;
-- numbers inside a right-to-left run stay left to right (2027 never reads 7202).
+- a number belongs to the run of the letter before it (rules W7 and N1), and inside
+  a right-to-left run it stays left to right (2027 never reads 7202).
 The fitter needs none of this: a line is as wide in either order.
 """
 
@@ -49,17 +50,27 @@ def directional_runs(line: str, base: str) -> list[tuple[str, str]]:
     """(direction, text) pieces in logical order: runs of the opposite direction between
     two of its strong letters, the rest in the base direction."""
     other = "R" if base == "L" else "L"
-    positions = [i for i, char in enumerate(line) if strong(char)]
+    kinds: dict[int, str] = {}
+    previous = base
+    for i, char in enumerate(line):
+        kind = strong(char)
+        if kind:
+            kinds[i] = previous = kind
+        elif previous == "L" and unicodedata.bidirectional(char) == "EN":
+            kinds[i] = "L"  # a number after a left-to-right letter joins it ("Happy 30th, 2027")
+        elif previous == "R" and unicodedata.bidirectional(char) in NUMBER:
+            kinds[i] = "R"  # after a right-to-left letter, it is read within that run
+    positions = sorted(kinds)
     runs: list[tuple[str, str]] = []
     start = 0
     index = 0
     while index < len(positions):
         first = positions[index]
-        if strong(line[first]) != other:
+        if kinds[first] != other or strong(line[first]) is None:
             index += 1
             continue
         last = first
-        while index + 1 < len(positions) and strong(line[positions[index + 1]]) == other:
+        while index + 1 < len(positions) and kinds[positions[index + 1]] == other:
             index += 1
             last = positions[index]
         index += 1

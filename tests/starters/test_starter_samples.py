@@ -11,11 +11,12 @@ from floatpage.model.document import CalendarItem, PictureItem
 from starter_pdf_checks import assert_page_sizes, check_month, day_marks
 
 SAMPLES_DIR = Path(__file__).resolve().parents[2] / "sample_projects"
-SAMPLE_NAMES = ("calendar-2027", "greeting-card", "photo-album", "shop-flyer")
+SAMPLE_NAMES = ("calendar-2027", "greeting-card", "photo-album", "shop-flyer", "multilingual-card")
 MIN_EDGE_CLEARANCE_MM = 3.0  # the physics' default gutter: printers crop closer than this
-EXPECTED_PAGES = {"calendar-2027": 12, "greeting-card": 2, "photo-album": 2, "shop-flyer": 1}
+EXPECTED_PAGES = {"calendar-2027": 12, "greeting-card": 2, "photo-album": 2, "shop-flyer": 1,
+                  "multilingual-card": 1}
 EXPECTED_SIZE = {"calendar-2027": "A4", "greeting-card": "5x8in", "photo-album": "A4",
-                 "shop-flyer": "A4"}
+                 "shop-flyer": "A4", "multilingual-card": "5x8in"}
 
 
 def sample_path(name):
@@ -28,7 +29,7 @@ def sample(request, render_once):
     return name, render_once(f"sample-{name}", lambda: load_project(sample_path(name)))
 
 
-def test_the_four_samples_exist_and_nothing_else_is_in_their_folders():
+def test_the_samples_exist_and_nothing_else_is_in_their_folders():
     for name in SAMPLE_NAMES:
         folder = SAMPLES_DIR / name
         assert sorted(p.name for p in folder.iterdir()) == sorted([f"{name}.toml", "pictures"])
