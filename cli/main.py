@@ -46,6 +46,9 @@ def cmd_new(args: argparse.Namespace) -> int:
     items = sum(len(page.items) for page in project.pages)
     print(f"created {project.path}: {len(project.pages)} page(s), {items} item(s)")
     print(f"next: floatpage edit {project.path}")
+    if args.kind == "album" and not args.photos:
+        print("it holds the bundled sample photos; for your own, start again with "
+              f"`floatpage new album {args.path} --photos DIR`")
     return EXIT_OK
 
 
@@ -107,13 +110,30 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     project = load_project(args.path)
     from floatpage.model.layout import engine_for_page
+    from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
 
     print(f"{args.path}: valid project, {len(project.pages)} page(s)")
     issues = 0
+    gutter = project.physics.gutter_mm
     for page in project.pages:
-        quality = engine_for_page(page, project.physics).quality()
+        engine = engine_for_page(page, project.physics)
+        quality = engine.quality()
         print(f"page {page.id}: {quality.summary()}")
         issues += len(quality.overlapping_pairs) + len(quality.off_page)
+        if quality.overlapping_pairs or quality.min_gap_mm >= gutter - GAP_TOLERANCE_MM:
+            continue
+        need = gutter_need(page.width_mm, page.height_mm, engine.bodies.sizes, gutter,
+                           decorative=engine.bodies.decorative)
+        if need > GUTTER_FITS_SHARE:
+            print(f"  note: the {gutter:g} mm gutter cannot fit on page {page.id}: its items, "
+                  f"each grown by the gutter, need {need:.0%} of the page (more than the "
+                  f"{GUTTER_FITS_SHARE:.0%} rectangles pack to), so settle keeps the widest gap "
+                  f"that fits; make items smaller, move some to another page or lower "
+                  f"gutter_mm to keep it")
+        else:
+            print(f"  the {gutter:g} mm gutter fits on page {page.id} (its items grown by it "
+                  f"need {need:.0%} of the page) but is not kept: run `floatpage settle`")
+            issues += 1
     from floatpage.typeset import text_fit_warnings
 
     for warning in text_fit_warnings(project):

@@ -6,10 +6,20 @@ stays model-free; this module is the only place that knows both.
 
 from __future__ import annotations
 
-from floatpage.physics import Engine, Params, SettleReport
+import copy
+import math
+from dataclasses import dataclass, replace
+
+
+from floatpage.physics import Engine, Params, Quality, SettleReport
+from floatpage.physics.finalize import ROUNDING_MM
 from floatpage.model.document import ItemAnchor, Page, PhysicsSettings, PointAnchor, Project
 
 POSITION_DECIMALS = 2  # positions are written back to 0.01 mm
+FIXED_POINT_ROUNDS = 20  # probes before giving up on a fixed point (most pages need 1-3)
+PROBE_HEAT = 0.02  # the heat of the gentle run that tells whether a layout is at rest
+AT_REST_MM = 0.25  # a layout that settling moves no further than this is at rest (below what print shows)
+STUCK_ROUNDS = 3  # probes without gain that prove a too-full page stuck
 
 
 def params_from_settings(settings: PhysicsSettings) -> Params:
@@ -49,28 +59,158 @@ def engine_for_page(page: Page, settings: PhysicsSettings) -> Engine:
     return engine
 
 
-def write_back(page: Page, engine: Engine) -> None:
-    """Copy the engine's positions into the page's items, rounded to 0.01 mm.
+def safe_round(centre_mm: float, half_mm: float, page_mm: float) -> float:
+    """A centre rounded to 0.01 mm, towards safety: an item that lies inside the page stays
+    inside once rounded (rounding to the nearest would push an item flush with an edge 0.005 mm
+    past it).  Gaps between items survive rounding because the no-overlap pass keeps
+    ``physics.finalize.ROUNDING_MM`` beyond the gutter."""
+    step = 10.0 ** -POSITION_DECIMALS
+    nearest = round(centre_mm, POSITION_DECIMALS)
+    inside = centre_mm - half_mm >= -1e-9 and centre_mm + half_mm <= page_mm + 1e-9
+    if inside and half_mm * 2 <= page_mm:
+        if nearest - half_mm < 0:
+            nearest = round(math.ceil(round(half_mm / step, 6)) * step, POSITION_DECIMALS)
+        if nearest + half_mm > page_mm:
+            nearest = round(math.floor(round((page_mm - half_mm) / step, 6)) * step,
+                            POSITION_DECIMALS)
+    return nearest + 0.0  # + 0.0 turns -0.0 into 0.0
 
-    Items the engine does not know (added to the page since) are left as they are.
+
+def write_back(page: Page, engine: Engine) -> float:
+    """Copy the engine's positions into the page's items, rounded to 0.01 mm towards safety.
+
+    Items the engine does not know (added to the page since) are left as they are.  Returns how
+    far the farthest item moved, in mm (0.0 when the page is unchanged).
     """
-    positions = engine.positions()
+    positions, sizes = engine.positions(), engine.sizes()
+    moved = 0.0
     for item in page.items:
         if item.id in positions:
-            x, y = positions[item.id]
-            item.x = round(x, POSITION_DECIMALS)
-            item.y = round(y, POSITION_DECIMALS)
+            (x, y), (w, h) = positions[item.id], sizes[item.id]
+            new_x = safe_round(x, w / 2, page.width_mm)
+            new_y = safe_round(y, h / 2, page.height_mm)
+            moved = max(moved, abs(new_x - item.x), abs(new_y - item.y))
+            item.x, item.y = new_x, new_y
+            if isinstance(item.anchor, PointAnchor) and item.anchor.hard:
+                # A hard anchor *is* the position: round it the same safe way, or the saved
+                # anchor, rounded to the nearest, would put the item 0.005 mm past an edge.
+                item.anchor.x, item.anchor.y = new_x, new_y
+    return moved
+
+
+def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_000,
+                max_rounds: int = FIXED_POINT_ROUNDS) -> SettleReport:
+    """Settle one page to a fixed point: settling the result again changes nothing, so a settled
+    file *is* the layout that the editor shows and render prints.
+
+    One run of the physics and the no-overlap pass does not end at a fixed point: the pass
+    nudges items off the physics' equilibrium, and the next full run from the nudged, rounded
+    layout moves them again (up to 30 mm on a crowded page).  So a settle first *probes* the
+    layout: a gentle run (heat ``PROBE_HEAT``) from the page as it is, the same numbers and seed
+    every time.  The layout is kept exactly as it is when it is
+
+    - *at rest*: the probe moves no item more than ``AT_REST_MM`` and the layout already keeps
+      every guarantee the probe reaches; or
+    - *stuck*: a page whose probes only shuffle its items (too full, or torn between the
+      physics and the no-overlap pass): the next ``STUCK_ROUNDS`` probes, each from the last
+      one's result, never reach rest and never improve on it (``layout_score``: fewer overlaps,
+      fewer items off the page, a wider smallest gap, or a probe that moves items less).
+
+    Otherwise one full run, then probes, each adopting its own result, until one finds the
+    layout at rest, or the best layout of the sequence proves stuck.  Both tests are repeated
+    by a later settle on the same numbers and find the same, so it changes no byte.
+    """
+    first = probe_rest(page, settings, max_steps)
+    if first.at_rest:
+        return replace(first.report, fixed_point=True)
+    if proves_stuck(first, settings, max_steps):
+        return replace(first.report, fixed_point=True)
+    engine = engine_for_page(page, settings)
+    engine.reheat()
+    report = engine.settle(max_steps)
+    write_back(page, engine)
+    best: tuple[list, tuple, SettleReport] | None = None  # items, score, report
+    rounds_without_gain = 0
+    for _ in range(max_rounds):
+        probe = probe_rest(page, settings, max_steps)
+        if probe.at_rest:
+            return replace(report, fixed_point=True)
+        if best is None or probe.score < best[1]:
+            best = (page.items, probe.score, probe.report)
+            rounds_without_gain = 0
+        else:
+            rounds_without_gain += 1
+            if rounds_without_gain >= STUCK_ROUNDS:
+                page.items = best[0]
+                return replace(best[2], fixed_point=True)
+        page.items, report = probe.trial.items, probe.report
+    return replace(report, fixed_point=False)
+
+
+def proves_stuck(first: "Probe", settings: PhysicsSettings, max_steps: int) -> bool:
+    """Whether the page that ``first`` probed is *stuck* (see ``settle_page``): the
+    ``STUCK_ROUNDS`` probes that follow neither reach rest nor improve on it."""
+    trial = first.trial
+    for _ in range(STUCK_ROUNDS):
+        probe = probe_rest(trial, settings, max_steps)
+        if probe.at_rest or probe.score < first.score:
+            return False
+        trial = probe.trial
+    return True
+
+
+@dataclass(frozen=True)
+class Probe:
+    """What a gentle run from a page as it is tells (see ``settle_page``)."""
+
+    report: SettleReport
+    trial: Page  # the page the probe leaves, positions rounded as a save would write them
+    at_rest: bool
+    score: tuple[int, int, float, float]  # lower is better (see layout_score)
+
+
+def probe_rest(page: Page, settings: PhysicsSettings, max_steps: int) -> Probe:
+    """A gentle run from the page as it is, then the no-overlap pass and the rounding of a
+    save: what settling would make of the page if it were nearly at rest."""
+    engine = engine_for_page(page, settings)
+    before = engine.quality()
+    engine.reheat(PROBE_HEAT)
+    report = engine.settle(max_steps)
+    trial = copy_of(page)
+    moved = write_back(trial, engine)
+    at_rest = moved <= AT_REST_MM and keeps_guarantees(before, engine.quality())
+    return Probe(report, trial, at_rest, layout_score(before, moved))
+
+
+def layout_score(quality: Quality, probe_moved_mm: float) -> tuple[int, int, float, float]:
+    """How sound and how still a layout is, lower is better: overlaps, then items off the
+    page, then the smallest gap (up to the gutter), then how far its probe moved an item (both
+    to 0.01 mm, so that noise is no gain)."""
+    gap = min(quality.min_gap_mm, quality.gutter_mm)
+    return (len(quality.overlapping_pairs), len(quality.off_page),
+            0.0 if math.isinf(gap) else -round(gap, POSITION_DECIMALS),
+            round(probe_moved_mm, POSITION_DECIMALS))
+
+
+def copy_of(page: Page) -> Page:
+    """A page whose items can be moved without touching ``page``'s."""
+    return Page(id=page.id, width_mm=page.width_mm, height_mm=page.height_mm,
+                items=copy.deepcopy(page.items))
+
+
+def keeps_guarantees(layout: Quality, settled: Quality) -> bool:
+    """Whether ``layout`` is as sound as what settling reaches: no overlap or item off the page
+    that the settled layout avoids, and a minimum gap at least the settled one's (or the gutter),
+    less the rounding slack."""
+    if len(layout.overlapping_pairs) > len(settled.overlapping_pairs):
+        return False
+    if len(layout.off_page) > len(settled.off_page):
+        return False
+    wanted = min(settled.min_gap_mm, settled.gutter_mm)
+    return math.isinf(wanted) or layout.min_gap_mm >= wanted - ROUNDING_MM
 
 
 def settle_project(project: Project, *, max_steps: int = 200_000) -> list[SettleReport]:
-    """Headless: settle every page (physics, then the no-overlap pass) and write positions back.
-
-    Returns one report per page, in page order.
-    """
-    reports = []
-    for page in project.pages:
-        engine = engine_for_page(page, project.physics)
-        engine.reheat()
-        reports.append(engine.settle(max_steps))
-        write_back(page, engine)
-    return reports
+    """Headless: settle every page to its fixed point (see ``settle_page``), positions written
+    back.  Returns one report per page, in page order."""
+    return [settle_page(page, project.physics, max_steps=max_steps) for page in project.pages]

@@ -31,6 +31,7 @@ class SettleReport:
     energy: float  # kinetic energy (1) at the end
     settled: bool
     fits: bool = True  # the final pass reached zero overlap and the gutter (True if not run)
+    fixed_point: bool = True  # settling the result again changes nothing (see model.layout)
 
 
 def _finite(name: str, *values: float) -> None:
@@ -96,7 +97,8 @@ class Engine:
     def quality(self) -> Quality:
         return measure_quality(self.page_w_mm, self.page_h_mm, self._bodies.centres,
                                self._bodies.sizes, self.params.gutter_mm,
-                               decorative=self._bodies.decorative)
+                               decorative=self._bodies.decorative,
+                               groups=self._bodies.group_roots()[0])
 
     # ----- editing -------------------------------------------------------------------------
     def _row(self, item_id: str) -> int:
@@ -105,8 +107,11 @@ class Engine:
         except KeyError:
             raise KeyError(f"no item {item_id!r} on this page") from None
 
-    def reheat(self) -> None:
-        self._heat = 1.0
+    def reheat(self, heat: float = 1.0) -> None:
+        """Section 4.7's restart: alpha and beta back to ``heat`` (full strength by default; a
+        lower heat gives a gentle run that only tells whether a layout is at rest)."""
+        _positive("heat", heat)
+        self._heat = min(float(heat), 1.0)
         self._settled = False
 
     def mark_settled(self) -> None:

@@ -21,7 +21,6 @@ from floatpage.starters.pictures import Picture, accepted_formats, bundled, copy
 KINDS: dict[str, ModuleType] = {
     "blank": blank, "calendar": calendar, "card": card, "album": album, "flyer": flyer,
 }
-NEEDS_PHOTOS = ("album",)  # an album of someone else's pictures makes no sense
 
 __all__ = ["KINDS", "Options", "Picture", "build", "create", "check_options"]
 
@@ -59,14 +58,11 @@ def create(kind: str, path: Path, *, year: int | None = None, photos: Path | Non
     With `photos` the pictures in that folder are used, otherwise the bundled ones; either way
     they are copied into a `pictures/` folder beside the project, so the folder is complete.
     Raises FloatpageError for an unknown kind, bad options, a photos folder without readable
-    pictures, an album without photos, or a path that already exists.
+    pictures, or a path that already exists.
     """
     module = starter(kind)
     options = check_options(year=year, first_weekday=first_weekday, lang=lang, orientation=orientation)
     path = check_target(Path(path))
-    if photos is None and kind in NEEDS_PHOTOS:
-        raise FloatpageError(f"an {kind} is made of your own photos: add --photos DIR "
-                             f"(a folder of {accepted_formats()} files)")
     sources = find_photos(Path(photos)) if photos is not None else bundled(module.BUNDLED)
     path.parent.mkdir(parents=True, exist_ok=True)
     pictures = copy_beside(sources, path.parent)

@@ -48,7 +48,7 @@ def accepted_formats() -> str:
 
 def bundled_dir() -> Path:
     """Folder of the pictures shipped inside the package (painted by tools/paint_sample_pictures.py)."""
-    return Path(str(resources.files("starters") / "bundled"))
+    return Path(str(resources.files("floatpage.starters") / "bundled"))
 
 
 def bundled(names: list[str]) -> list[Path]:

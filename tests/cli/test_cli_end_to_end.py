@@ -15,7 +15,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def run(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "cli.main", *args], capture_output=True, text=True,
+    return subprocess.run([sys.executable, "-m", "floatpage.cli.main", *args], capture_output=True, text=True,
                           timeout=300, cwd=cwd, stdin=subprocess.DEVNULL)
 
 

@@ -73,7 +73,7 @@ def test_several_problems_are_reported_together(tmp_path):
 @pytest.mark.parametrize("stem", ["syntax_unclosed_string", "anchor_cycle", "not_utf8"])
 def test_the_installed_command_exits_1_without_traceback(stem):
     path = Path(__file__).parent / "malformed" / f"{stem}.toml"
-    result = subprocess.run([sys.executable, "-m", "cli.main", "check", str(path)],
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "check", str(path)],
                             capture_output=True, text=True, timeout=60)
     assert result.returncode == 1
     assert expectation(path) in result.stderr

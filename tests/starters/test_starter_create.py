@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import shutil
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -26,7 +28,6 @@ def photos(tmp_path) -> Path:
 
 @pytest.mark.parametrize("kind, options, says", [
     ("poster", {}, "unknown starter 'poster'"),
-    ("album", {}, "--photos DIR"),
     ("calendar", {"year": 0}, "--year"),
     ("calendar", {"lang": "klingon"}, "--lang"),
     ("calendar", {"first_weekday": "someday"}, "--first-weekday"),
@@ -38,6 +39,16 @@ def test_bad_options_are_refused_before_anything_is_written(tmp_path, kind, opti
     with pytest.raises(FloatpageError, match=says):
         starters.create(kind, target, settle=False, **options)
     assert not (tmp_path / "new").exists()
+
+
+def test_an_album_without_photos_starts_with_the_bundled_ones_and_says_how_to_use_yours(tmp_path):
+    target = tmp_path / "album.toml"
+    done = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "album", str(target)],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "--photos DIR" in done.stdout
+    pictures = sorted(path.name for path in (tmp_path / "pictures").iterdir())
+    assert pictures and set(pictures) <= set(starters.album.BUNDLED)
 
 
 def test_an_existing_file_is_never_overwritten(tmp_path):

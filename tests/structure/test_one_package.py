@@ -16,6 +16,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 PARTS = ("physics", "model", "typeset", "tui", "cli", "starters", "latex_templates")
 BARE_IMPORT = re.compile(rf"^\s*(?:from|import)\s+(?:{'|'.join(PARTS)})(?:[.\s]|$)", re.M)
+BARE_NAME_STRING = re.compile(rf"""(?:"-m",\s*|files\()["'](?:{'|'.join(PARTS)})\b""")
 
 
 def test_the_wheel_has_floatpage_as_its_only_top_level_package(tmp_path: Path) -> None:
@@ -38,7 +39,8 @@ def test_no_module_imports_a_part_by_its_bare_folder_name() -> None:
     offenders = []
     for folder in (*PARTS, "tests", "benchmarks", "tools"):
         for path in (ROOT / folder).rglob("*.py"):
-            for match in BARE_IMPORT.finditer(path.read_text(encoding="utf-8")):
+            text = path.read_text(encoding="utf-8")
+            for match in [*BARE_IMPORT.finditer(text), *BARE_NAME_STRING.finditer(text)]:
                 offenders.append(f"{path.relative_to(ROOT)}: {match.group(0).strip()}")
     assert not offenders, "import these as floatpage.X:\n" + "\n".join(offenders)
 
