@@ -14,9 +14,10 @@ import time
 from pathlib import Path
 from typing import Callable, Sequence
 
-from floatpage.model.errors import FloatpageError
+from floatpage.model.errors import FloatpageError, printable
 
 EXIT_OK, EXIT_USER_ERROR, EXIT_MISUSE = 0, 1, 2
+EXIT_INTERNAL_ERROR = 70  # sysexits' EX_SOFTWARE: a bug of ours, never the user's mistake
 STARTER_KINDS = ("blank", "calendar", "card", "album", "flyer")
 WEEKDAY_NAMES = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
 
@@ -55,18 +56,35 @@ def cmd_new(args: argparse.Namespace) -> int:
 def cmd_edit(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
 
-    load_project(args.path)  # fail here, with a clear message, before the screen is taken over
-    from floatpage.tui.app import make_app
+    from floatpage.model.project_lock import ProjectLock
 
-    make_app(Path(args.path), seed=args.seed).run()
+    # Fail here, with a clear message, before the screen is taken over; hold the project's lock
+    # for the whole session, so a `settle` meanwhile refuses rather than being overwritten.
+    with ProjectLock(args.path, wait_s=0.0, purpose="floatpage edit"):
+        load_project(args.path)
+        from floatpage.tui.app import make_app
+
+        make_app(Path(args.path), seed=args.seed).run()
     return EXIT_OK
 
 
 def cmd_settle(args: argparse.Namespace) -> int:
     from floatpage.model import load_project, save_project
+    from floatpage.model.project_lock import ProjectLock
+
+    if args.dry_run:
+        return settle_and_report(load_project(args.path), args)
+    with ProjectLock(args.path, purpose="floatpage settle"):
+        project = load_project(args.path)
+        settle_and_report(project, args)
+        save_project(project)
+    print(f"wrote positions to {project.path}")
+    return EXIT_OK
+
+
+def settle_and_report(project, args: argparse.Namespace) -> int:
     from floatpage.model.layout import settle_project
 
-    project = load_project(args.path)
     show = progress_printer(args.quiet)
     show(f"settling {len(project.pages)} page(s)…")
     started = time.perf_counter()
@@ -78,9 +96,6 @@ def cmd_settle(args: argparse.Namespace) -> int:
         print(f"page {page.id}: {state} after {report.steps} steps, final energy {report.energy:.3g}")
     steps = sum(report.steps for report in reports)
     print(f"{steps} steps in {elapsed:.2f} s")
-    if not args.dry_run:
-        save_project(project)
-        print(f"wrote positions to {project.path}")
     return EXIT_OK
 
 
@@ -201,7 +216,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return args.run(args)
     except FloatpageError as error:
-        print(f"floatpage: {error}", file=sys.stderr)
+        print(f"floatpage: {printable(str(error))}", file=sys.stderr)
         return EXIT_USER_ERROR
     except KeyboardInterrupt:
         print("floatpage: interrupted", file=sys.stderr)
@@ -210,10 +225,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_OK
     except Exception as error:  # a bug of ours: keep the details, show a short message
         log = write_crash_log()
-        print(f"floatpage: internal error: {type(error).__name__}: {error}\n"
-              f"  this is a bug in floatpage, not in your project; details are in {log}",
+        print(f"floatpage: internal error: {type(error).__name__}: {printable(str(error))}\n"
+              f"  this is a bug in floatpage, not in your project; details are in {log}\n"
+              "  please report it with that file and the project",
               file=sys.stderr)
-        return EXIT_USER_ERROR
+        return EXIT_INTERNAL_ERROR
 
 
 def write_crash_log() -> Path:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, replace
 
 from floatpage.physics import Engine, Params, Quality, SettleReport
 from floatpage.physics.finalize import ROUNDING_MM
+from floatpage.model.errors import FloatpageError
 from floatpage.model.document import ItemAnchor, Page, PhysicsSettings, PointAnchor, Project
 
 POSITION_DECIMALS = 2  # positions are written back to 0.01 mm
@@ -87,6 +88,11 @@ def write_back(page: Page, engine: Engine) -> float:
     for item in page.items:
         if item.id in positions:
             (x, y), (w, h) = positions[item.id], sizes[item.id]
+            if not (math.isfinite(x) and math.isfinite(y)):
+                raise FloatpageError(
+                    f'page "{page.id}", item "{item.id}": the physics diverged (its position '
+                    "became inf or NaN); nothing was saved. Lower [physics] alpha or dt, or "
+                    "report this as a bug with the project file")
             new_x = safe_round(x, w / 2, page.width_mm)
             new_y = safe_round(y, h / 2, page.height_mm)
             moved = max(moved, abs(new_x - item.x), abs(new_y - item.y))

@@ -28,6 +28,7 @@ from floatpage.model.schema import (
 from floatpage.model.document import FORMAT_VERSION
 
 MAX_FILE_BYTES = 16 * 1024 * 1024
+MAX_PAGES_AWAY = 100  # sizes and places beyond this many page sizes cannot be laid out
 
 
 def load_project(path: str | Path) -> Project:
@@ -38,12 +39,23 @@ def load_project(path: str | Path) -> Project:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
         raise ProjectFileError([syntax_problem(path, error)]) from None
+    except RecursionError:
+        raise too_deep(path) from None
     reader = _Reader(path, text)
     project = reader.project(data)
     if reader.problems:
         raise ProjectFileError(reader.problems)
-    project.source_document = tomlkit.parse(text)
+    try:
+        project.source_document = tomlkit.parse(text)
+    except RecursionError:
+        raise too_deep(path) from None
     return project
+
+
+def too_deep(path: Path) -> ProjectFileError:
+    """Python's parsers recurse per level of nesting; thousands of levels exhaust the stack."""
+    return ProjectFileError([Problem(path, None, "", "tables or arrays are nested too deeply",
+                                     "a project file nests a few levels at most; is this the right file?")])
 
 
 def read_text(path: Path) -> str:
@@ -153,6 +165,7 @@ class _Reader:
             project.pages.append(page)
         for page_index, page in enumerate(project.pages):
             self.check_anchors(page, page_index)
+            self.check_extent(page, page_index)
         return project
 
     def page(self, table: dict, page_index: int, seen_items: dict[str, str]) -> Page | None:
@@ -254,6 +267,22 @@ class _Reader:
             return None
         return PointAnchor(x=float(values["x"]), y=float(values["y"]),
                            gamma=float(values.get("gamma", 1.0)), hard=values.get("hard", False))
+
+    def check_extent(self, page: Page, page_index: int) -> None:
+        """Sizes and places beyond MAX_PAGES_AWAY pages cannot be laid out: refuse them here,
+        before the physics turns them into inf and NaN (h = 1e308 did)."""
+        reach = MAX_PAGES_AWAY * max(page.width_mm, page.height_mm)
+        for index, item in enumerate(page.items):
+            numbers = {"w": item.w, "h": item.h, "x": item.x, "y": item.y}
+            if isinstance(item.anchor, PointAnchor):
+                numbers |= {"anchor x": item.anchor.x, "anchor y": item.anchor.y}
+            elif isinstance(item.anchor, ItemAnchor):
+                numbers |= {"anchor dx": item.anchor.dx, "anchor dy": item.anchor.dy}
+            for name, value in numbers.items():
+                if abs(value) > reach:
+                    self.add(self.lines.item_line(page_index, index), f'item "{item.id}"',
+                             f'"{name}" is {value:g} mm, more than {MAX_PAGES_AWAY} times '
+                             f'the page "{page.id}"', "use millimetres, within a few pages' size")
 
     def check_anchors(self, page: Page, page_index: int) -> None:
         """Item anchors must name an item on the same page and must not form a cycle."""

@@ -8,9 +8,7 @@ version is kept beside it as `NAME.bak`.
 
 from __future__ import annotations
 
-import os
-import shutil
-import tempfile
+import math
 from dataclasses import fields
 from pathlib import Path
 from typing import Any
@@ -21,6 +19,7 @@ from tomlkit.items import AoT, Table
 from floatpage.model.document import (
     Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
 )
+from floatpage.model.atomic_file import atomic_write, write_chunks  # noqa: F401 (re-exported)
 from floatpage.model.errors import FloatpageError
 from floatpage.model.page_sizes import CUSTOM
 
@@ -190,57 +189,27 @@ def dump_project(project: Project) -> str:
     return tomlkit.dumps(to_document(project))
 
 
-def write_chunks(handle, data: bytes, chunk: int = 1 << 16) -> None:
-    """Write in chunks; a separate function so a test can interrupt a save midway."""
-    for start in range(0, len(data), chunk):
-        handle.write(data[start:start + chunk])
-
-
-def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
-    """Replace `path` with `data` so that a crash at any moment leaves the old or the new file.
-
-    Write a temporary file in the same folder, flush and fsync it, copy the old
-    version to NAME.bak, then rename over the original (atomic on POSIX).
-    """
-    path = Path(path)
-    folder = path.parent if str(path.parent) else Path(".")
-    temporary = ""
-    try:
-        fd, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".floatpage-tmp", dir=folder)
-        with os.fdopen(fd, "wb") as handle:
-            write_chunks(handle, data)
-            handle.flush()
-            os.fsync(handle.fileno())
-        os.chmod(temporary, path.stat().st_mode & 0o777 if path.exists() else 0o666 & ~current_umask())
-        if path.exists():
-            if backup:
-                backup_path = path.with_name(path.name + ".bak")
-                shutil.copy2(path, temporary + ".bak")
-                os.replace(temporary + ".bak", backup_path)
-        os.replace(temporary, path)
-        try:
-            dir_fd = os.open(folder, os.O_RDONLY)
-            try:
-                os.fsync(dir_fd)
-            finally:
-                os.close(dir_fd)
-        except OSError:
-            pass
-    except OSError as error:
-        for leftover in (temporary, temporary + ".bak") if temporary else ():
-            try:
-                os.unlink(leftover)
-            except OSError:
-                pass
-        raise FloatpageError(f"{path}: could not save: {error.strerror or error}"
-                             " (check that the folder exists and is writable)") from None
-
-
-def current_umask() -> int:
-    """The process umask (reading it means setting it, so set it straight back)."""
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
+def non_finite_numbers(project: Project) -> list[str]:
+    """Where the project holds inf or NaN: such a file would no longer load, so it is never saved."""
+    found = []
+    for page in project.pages:
+        for number_name in ("width_mm", "height_mm"):
+            if not math.isfinite(getattr(page, number_name)):
+                found.append(f'page "{page.id}" {number_name}')
+        for item in page.items:
+            numbers = {name: getattr(item, name) for name in ("x", "y", "w", "h")}
+            anchor = item.anchor
+            if isinstance(anchor, PointAnchor):
+                numbers |= {"anchor x": anchor.x, "anchor y": anchor.y, "anchor gamma": anchor.gamma}
+            elif isinstance(anchor, ItemAnchor):
+                numbers |= {"anchor dx": anchor.dx, "anchor dy": anchor.dy}
+            found += [f'item "{item.id}" {name}' for name, value in numbers.items()
+                      if not math.isfinite(value)]
+    physics = project.physics
+    found += [f"[physics] {f.name}" for f in fields(PhysicsSettings)
+              if isinstance(getattr(physics, f.name), float)
+              and not math.isfinite(getattr(physics, f.name))]
+    return found
 
 
 def save_project(project: Project, path: str | Path | None = None) -> Path:
@@ -248,6 +217,13 @@ def save_project(project: Project, path: str | Path | None = None) -> Path:
     target = Path(path) if path is not None else project.path
     if target is None:
         raise FloatpageError("the project has no file name yet (save it with a path)")
+    broken = non_finite_numbers(project)
+    if broken:
+        raise FloatpageError(
+            f"{target}: not saved, because {broken[0]}"
+            + (f" and {len(broken) - 1} more values" if len(broken) > 1 else "")
+            + " would be written as inf or NaN (the file on disk is unchanged; "
+            "lower [physics] alpha or dt, or report this as a bug)")
     doc = to_document(project)
     atomic_write(target, tomlkit.dumps(doc).encode("utf-8"))
     project.source_document = doc

@@ -63,6 +63,12 @@ def non_negative(value: float) -> str | None:
     return finite(value) or (None if value >= 0 else "must not be negative")
 
 
+def positive_up_to(high: float) -> Check:
+    def check(value: float) -> str | None:
+        return positive(value) or (None if value <= high else f"must be at most {high:g}")
+    return check
+
+
 def between(low: float, high: float) -> Check:
     def check(value: float) -> str | None:
         return finite(value) or (None if low <= value <= high else f"must be between {low} and {high}")
@@ -95,15 +101,17 @@ TOP_KEYS = [
 
 PHYSICS_KEYS = [
     Key("mode", "str", check=one_of("fast", "paper")),
-    Key("alpha", "number", check=positive),
-    Key("beta", "number", check=non_negative),
+    # Upper bounds keep the Euler update (4, 5) finite: alpha = dt = 1e308 overflows to inf,
+    # then NaN, and a NaN written to the file loses the layout.
+    Key("alpha", "number", check=positive_up_to(1e6)),
+    Key("beta", "number", check=between(0.0, 1e6)),
     Key("delta", "number", check=between(0.0, 1.0)),
-    Key("dt", "number", check=positive),
-    Key("steps_per_frame", "int", check=positive),
+    Key("dt", "number", check=positive_up_to(1.0)),
+    Key("steps_per_frame", "int", check=between(1, 100_000)),
     Key("distance", "str", check=one_of("euclidean", "axis")),
     Key("heat_decay", "number", check=between(0.0, 0.5)),
     Key("gutter_mm", "number", check=between(0.0, 100.0)),
-    Key("seed", "int"),
+    Key("seed", "int", check=between(0, 2**63 - 1)),
 ]
 
 PAGE_KEYS = [

@@ -113,7 +113,7 @@ def test_a_save_killed_midway_leaves_the_old_file_intact(tmp_path):
     original = path.read_bytes()
     script = textwrap.dedent(f"""
         import sys, time
-        import floatpage.model.save as save
+        import floatpage.model.atomic_file as save
         from floatpage.model import load_project, save_project
         project = load_project({str(path)!r})
         project.title = "half-written"

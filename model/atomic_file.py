@@ -1,0 +1,141 @@
+"""Replace a file so that a crash at any moment leaves the old version or the new one, never half.
+
+The new bytes go to a hidden temporary file in the same folder, are flushed to disk, and are
+renamed over the original: rename is atomic on POSIX.  Three cases need more than that:
+
+- a symlinked project is saved *through* the link, to the real file, so the link survives and
+  its target is not left stale;
+- a hard-linked project (``st_nlink > 1``) is rewritten in place after the backup is safe,
+  since a rename would split the links and leave the other names on the old text;
+- a save killed half-way leaves its temporary file behind; the next save of the same file
+  removes such leftovers once they are older than ``STALE_AFTER_S``.
+"""
+
+from __future__ import annotations
+
+import os
+import secrets
+import shutil
+import stat
+import time
+from pathlib import Path
+
+from floatpage.model.errors import FloatpageError
+
+TEMPORARY_SUFFIX = ".floatpage-tmp"
+STALE_AFTER_S = 60.0  # a save takes well under a second; older temporaries are leftovers
+
+
+def write_chunks(handle, data: bytes, chunk: int = 1 << 16) -> None:
+    """Write in chunks; a separate function so a test can interrupt a save midway."""
+    for start in range(0, len(data), chunk):
+        handle.write(data[start:start + chunk])
+
+
+def real_target(path: Path) -> Path:
+    """The file a save must change: through any symlinks, refusing what is not a regular file."""
+    target = Path(os.path.realpath(path))
+    if target.exists() and not target.is_file():
+        raise FloatpageError(f"{path}: not saved, because it is not a regular file "
+                             "(a folder, device or pipe); choose a file name")
+    return target
+
+
+def temporary_name(target: Path, extra: str = "") -> Path:
+    return target.with_name(
+        f".{target.name}.{os.getpid()}.{secrets.token_hex(4)}{TEMPORARY_SUFFIX}{extra}")
+
+
+def remove_stale_temporaries(target: Path, *, now: float | None = None) -> list[Path]:
+    """Remove this file's temporaries left by a save that was killed (older than STALE_AFTER_S)."""
+    now = time.time() if now is None else now
+    removed = []
+    try:
+        candidates = list(target.parent.glob(f".{glob_escape(target.name)}.*{TEMPORARY_SUFFIX}*"))
+    except OSError:
+        return removed
+    for leftover in candidates:
+        if not (leftover.name.endswith(TEMPORARY_SUFFIX)
+                or leftover.name.endswith(TEMPORARY_SUFFIX + ".bak")):
+            continue
+        try:
+            info = leftover.lstat()
+            if stat.S_ISREG(info.st_mode) and now - info.st_mtime > STALE_AFTER_S:
+                leftover.unlink()
+                removed.append(leftover)
+        except OSError:
+            pass
+    return removed
+
+
+def glob_escape(name: str) -> str:
+    return "".join(f"[{c}]" if c in "*?[" else c for c in name)
+
+
+def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
+    """Replace the file at ``path`` with ``data``; keep the old version as NAME.bak if asked."""
+    path = Path(path)
+    target = real_target(path)
+    remove_stale_temporaries(target)
+    temporary: Path | None = None
+    try:
+        exists = target.exists()
+        if exists and backup:
+            keep_backup(target)
+        if exists and target.stat().st_nlink > 1:
+            write_in_place(target, data)
+            return
+        temporary = temporary_name(target)
+        mode = stat.S_IMODE(target.stat().st_mode) if exists else 0o666  # the umask applies
+        fd = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, mode)
+        with os.fdopen(fd, "wb") as handle:
+            if exists:
+                os.fchmod(handle.fileno(), mode)
+            write_chunks(handle, data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(temporary, target)
+        temporary = None
+        sync_folder(target.parent)
+    except OSError as error:
+        if temporary is not None:
+            try:
+                temporary.unlink()
+            except OSError:
+                pass
+        raise FloatpageError(f"{path}: could not save: {error.strerror or error}"
+                             " (check that the folder exists and is writable)") from None
+
+
+def keep_backup(target: Path) -> None:
+    """Copy the current version to NAME.bak, itself atomically (a killed copy leaves no half .bak)."""
+    backup_path = target.with_name(target.name + ".bak")  # a rename replaces a link, not its target
+    copy = temporary_name(target, ".bak")
+    try:
+        shutil.copy2(target, copy)
+        os.replace(copy, backup_path)
+    except OSError:
+        copy.unlink(missing_ok=True)
+        raise
+
+
+def write_in_place(target: Path, data: bytes) -> None:
+    """Rewrite a hard-linked file through its own inode so every name sees the new text.
+    Not atomic, which is why the backup is written first."""
+    with open(target, "r+b") as handle:
+        handle.truncate(0)
+        write_chunks(handle, data)
+        handle.flush()
+        os.fsync(handle.fileno())
+
+
+def sync_folder(folder: Path) -> None:
+    """Flush the rename itself to disk; some filesystems refuse, which costs only durability."""
+    try:
+        dir_fd = os.open(folder, os.O_RDONLY)
+        try:
+            os.fsync(dir_fd)
+        finally:
+            os.close(dir_fd)
+    except OSError:
+        pass

@@ -1,0 +1,101 @@
+"""One writer per project at a time: an advisory lock every writer (CLI and editor) takes.
+
+Two `settle` runs at once both saved, and the second one's `.bak` held the first one's result,
+so the text from before either run survived nowhere.  With the lock, the second writer waits a
+moment (a `settle` takes about a second) and then refuses, naming the process that holds it.
+
+The lock is `flock` on a hidden sidecar, `.NAME.lock` beside the real file (through symlinks),
+holding the owner's PID for the message.  The kernel drops an flock when its process dies,
+so a killed editor never leaves a project locked.  The sidecar is never deleted: deleting a
+lock file lets a waiter lock an orphaned inode while a newcomer locks a fresh one.
+"""
+
+from __future__ import annotations
+
+import errno
+import fcntl
+import os
+import time
+from pathlib import Path
+
+from floatpage.model.errors import FloatpageError
+
+WAIT_S = 2.0  # how long a second writer waits before it refuses
+POLL_S = 0.05
+
+
+class ProjectLockedError(FloatpageError):
+    """Another process is writing this project."""
+
+
+def lock_path_for(project: Path) -> Path:
+    real = Path(os.path.realpath(project))
+    return real.with_name(f".{real.name}.lock")
+
+
+class ProjectLock:
+    """``with ProjectLock(path):`` holds the project's lock for the block.
+
+    Where no lock file can be made (a read-only folder), the lock is skipped: nobody can save
+    there anyway, and the save says so clearly.
+    """
+
+    def __init__(self, project: str | Path, *, wait_s: float = WAIT_S, purpose: str = ""):
+        self.project = Path(project)
+        self.path = lock_path_for(self.project)
+        self.wait_s = wait_s
+        self.purpose = purpose
+        self.fd: int | None = None
+
+    def acquire(self) -> "ProjectLock":
+        try:
+            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC | os.O_NOFOLLOW, 0o666)
+        except OSError as error:
+            if error.errno in (errno.EACCES, errno.EROFS, errno.EPERM, errno.ENOENT):
+                return self
+            raise FloatpageError(f"{self.path}: cannot lock the project: {error.strerror}") from None
+        deadline = time.monotonic() + self.wait_s
+        while True:
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                break
+            except BlockingIOError:
+                if time.monotonic() >= deadline:
+                    holder = read_holder(fd)
+                    os.close(fd)
+                    raise ProjectLockedError(
+                        f"{self.project}: is being edited by {holder}; close it there, "
+                        "or wait for it to finish, then try again") from None
+                time.sleep(POLL_S)
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, f"{os.getpid()} {self.purpose}\n".encode(), 0)
+        self.fd = fd
+        return self
+
+    def release(self) -> None:
+        if self.fd is not None:
+            try:
+                os.ftruncate(self.fd, 0)
+            except OSError:
+                pass
+            fcntl.flock(self.fd, fcntl.LOCK_UN)
+            os.close(self.fd)
+            self.fd = None
+
+    def __enter__(self) -> "ProjectLock":
+        return self.acquire()
+
+    def __exit__(self, *exc) -> None:
+        self.release()
+
+
+def read_holder(fd: int) -> str:
+    """'PID 1234 (floatpage edit)' from the lock file, or a vaguer phrase if it holds nothing."""
+    try:
+        words = os.pread(fd, 200, 0).decode("utf-8", "replace").split(maxsplit=1)
+    except OSError:
+        words = []
+    if not words or not words[0].isdigit():
+        return "another process"
+    purpose = f" ({words[1].strip()})" if len(words) > 1 and words[1].strip() else ""
+    return f"PID {words[0]}{purpose}"
