@@ -61,10 +61,11 @@ def cmd_edit(args: argparse.Namespace) -> int:
     # Fail here, with a clear message, before the screen is taken over; hold the project's lock
     # for the whole session, so a `settle` meanwhile refuses rather than being overwritten.
     with ProjectLock(args.path, wait_s=0.0, purpose="floatpage edit"):
-        load_project(args.path)
+        load_project(args.path, allow_outside_files=args.allow_outside_files)
         from floatpage.tui.app import make_app
 
-        make_app(Path(args.path), seed=args.seed).run()
+        make_app(Path(args.path), seed=args.seed,
+                 allow_outside_files=args.allow_outside_files).run()
     return EXIT_OK
 
 
@@ -73,9 +74,9 @@ def cmd_settle(args: argparse.Namespace) -> int:
     from floatpage.model.project_lock import ProjectLock
 
     if args.dry_run:
-        return settle_and_report(load_project(args.path), args)
+        return settle_and_report(load_project(args.path, allow_outside_files=args.allow_outside_files), args)
     with ProjectLock(args.path, purpose="floatpage settle"):
-        project = load_project(args.path)
+        project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         settle_and_report(project, args)
         save_project(project)
     print(f"wrote positions to {project.path}")
@@ -104,7 +105,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.model.layout import settle_project
     from floatpage.typeset import render_pdf
 
-    project = load_project(args.path)
+    project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     show = progress_printer(args.quiet)
     if not args.no_settle:
         show("settling the layout…")
@@ -115,7 +116,7 @@ def cmd_render(args: argparse.Namespace) -> int:
                         progress=show)
     finish_progress(show)
     for warning in report.warnings:
-        print(f"warning: {warning}", file=sys.stderr)
+        print(f"warning: {printable(warning)}", file=sys.stderr)
     print(f"wrote {report.pdf} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
 
@@ -123,7 +124,7 @@ def cmd_render(args: argparse.Namespace) -> int:
 def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
 
-    project = load_project(args.path)
+    project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     from floatpage.model.layout import engine_for_page
     from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
 
@@ -150,14 +151,37 @@ def cmd_check(args: argparse.Namespace) -> int:
                   f"need {need:.0%} of the page) but is not kept: run `floatpage settle`")
             issues += 1
     from floatpage.typeset import text_fit_warnings
+    from floatpage.typeset.render import picture_warnings
 
-    for warning in text_fit_warnings(project):
-        print(f"warning: {warning}")
+    for warning in text_fit_warnings(project) + picture_warnings(project):
+        print(f"warning: {printable(warning)}")
         issues += 1
+    for where, picture in pictures_outside(project):
+        print(f"note: {where} uses {picture}, outside the project folder (allowed)")
     if issues and args.strict:
         print(f"{issues} layout problem(s); run `floatpage settle {args.path}` to fix overlaps")
         return EXIT_USER_ERROR
     return EXIT_OK
+
+
+def allow_outside_option(command: argparse.ArgumentParser) -> None:
+    command.add_argument("--allow-outside-files", action="store_true",
+                         help="let pictures lie outside the project's folder (as "
+                              "`[files] allow_outside = true` does)")
+
+
+def pictures_outside(project) -> list[tuple[str, str]]:
+    """(where, path) of each picture outside the project's folder; only an allowing project has any."""
+    from floatpage.model.picture_files import is_outside
+
+    found = []
+    for page in project.pages:
+        named = [(f'item "{item.id}"', item.path) for item in page.items if item.kind == "picture"]
+        if page.background is not None and page.background.picture:
+            named.append((f'page "{page.id}" background', page.background.picture))
+        found += [(where, path) for where, path in named
+                  if is_outside(project.base_dir / path, project.base_dir)]
+    return found
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -182,6 +206,7 @@ def build_parser() -> argparse.ArgumentParser:
     edit.add_argument("path")
     edit.add_argument("--seed", type=int, default=None,
                       help="seed the physics jitter for this session (default: the project's seed)")
+    allow_outside_option(edit)
     edit.set_defaults(run=cmd_edit)
 
     settle = commands.add_parser("settle", help="run the physics until the layout settles",
@@ -190,6 +215,7 @@ def build_parser() -> argparse.ArgumentParser:
     settle.add_argument("path")
     settle.add_argument("--dry-run", action="store_true", help="report only; do not write the file")
     settle.add_argument("-q", "--quiet", action="store_true", help="no progress output")
+    allow_outside_option(settle)
     settle.set_defaults(run=cmd_settle)
 
     render = commands.add_parser("render", help="typeset the project to PDF",
@@ -200,6 +226,7 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--fragment", metavar="OUT.tex", help="also write a TikZ-only fragment for \\input")
     render.add_argument("--no-settle", action="store_true", help="render the positions as saved")
     render.add_argument("-q", "--quiet", action="store_true", help="no progress output")
+    allow_outside_option(render)
     render.set_defaults(run=cmd_render)
 
     check = commands.add_parser("check", help="validate and report layout quality",
@@ -207,12 +234,23 @@ def build_parser() -> argparse.ArgumentParser:
                                             "the page and text that would not fit.")
     check.add_argument("path")
     check.add_argument("--strict", action="store_true", help="exit 1 when the layout has problems")
+    allow_outside_option(check)
     check.set_defaults(run=cmd_check)
     return parser
 
 
+def stop_on_terminate(signum, frame) -> None:
+    """SIGTERM (kill, a Makefile's Ctrl+C, CI's timeout) unwinds like Ctrl+C, so temporary
+    files and build folders are removed on the way out."""
+    raise KeyboardInterrupt
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    import signal
+
+    if signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
+        signal.signal(signal.SIGTERM, stop_on_terminate)
     try:
         return args.run(args)
     except FloatpageError as error:

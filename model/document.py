@@ -186,6 +186,9 @@ class Project:
     language: str = "en"
     physics: PhysicsSettings = field(default_factory=PhysicsSettings)
     pages: list[Page] = field(default_factory=list)
+    # `[files] allow_outside` or --allow-outside-files: pictures may lie outside the folder.
+    allow_outside_files: bool = False
+    utf8_bom: bool = field(default=False, compare=False)  # kept on save, as the user wrote it
     # The parsed tomlkit document the project was read from; saving edits it in place so
     # the user's comments and key order survive.
     source_document: Any = field(default=None, repr=False, compare=False)

@@ -20,9 +20,10 @@ from floatpage.model.document import (
 )
 from floatpage.model.errors import Problem, ProjectFileError
 from floatpage.model.locate import LineFinder
+from floatpage.model.picture_files import is_outside, read_header
 from floatpage.model.page_sizes import CUSTOM, PAGE_SIZES_MM, canonical_size_name, page_dimensions
 from floatpage.model.schema import (
-    BACKGROUND_KEYS, COMMON_ITEM_KEYS, ITEM_ANCHOR_KEYS, KIND_KEYS, PAGE_KEYS, PHYSICS_KEYS,
+    BACKGROUND_KEYS, COMMON_ITEM_KEYS, FILES_KEYS, ITEM_ANCHOR_KEYS, KIND_KEYS, PAGE_KEYS, PHYSICS_KEYS,
     POINT_ANCHOR_KEYS, TOP_KEYS, TYPE_WORDS, Key, type_matches,
 )
 from floatpage.model.document import FORMAT_VERSION
@@ -31,8 +32,11 @@ MAX_FILE_BYTES = 16 * 1024 * 1024
 MAX_PAGES_AWAY = 100  # sizes and places beyond this many page sizes cannot be laid out
 
 
-def load_project(path: str | Path) -> Project:
-    """Parse and validate a project file; raise ProjectFileError naming every problem."""
+def load_project(path: str | Path, *, allow_outside_files: bool = False) -> Project:
+    """Parse and validate a project file; raise ProjectFileError naming every problem.
+
+    Pictures must lie inside the project's folder unless ``allow_outside_files`` (the CLI's
+    --allow-outside-files) or the file's own ``[files] allow_outside = true`` says otherwise."""
     path = Path(path)
     text = read_text(path)
     try:
@@ -41,7 +45,8 @@ def load_project(path: str | Path) -> Project:
         raise ProjectFileError([syntax_problem(path, error)]) from None
     except RecursionError:
         raise too_deep(path) from None
-    reader = _Reader(path, text)
+    reader = _Reader(path, text, allow_outside=allow_outside_files)
+    reader.had_bom = starts_with_bom(path)
     project = reader.project(data)
     if reader.problems:
         raise ProjectFileError(reader.problems)
@@ -49,7 +54,13 @@ def load_project(path: str | Path) -> Project:
         project.source_document = tomlkit.parse(text)
     except RecursionError:
         raise too_deep(path) from None
+    project.utf8_bom = reader.had_bom
     return project
+
+
+def starts_with_bom(path: Path) -> bool:
+    with open(path, "rb") as handle:
+        return handle.read(3) == b"\xef\xbb\xbf"
 
 
 def too_deep(path: Path) -> ProjectFileError:
@@ -95,8 +106,9 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError) -> Problem:
 class _Reader:
     """Walks parsed TOML against the schema, building the model and collecting problems."""
 
-    def __init__(self, path: Path, text: str):
+    def __init__(self, path: Path, text: str, *, allow_outside: bool = False):
         self.path = path
+        self.allow_outside = allow_outside
         self.lines = LineFinder(text)
         self.problems: list[Problem] = []
 
@@ -132,7 +144,7 @@ class _Reader:
             if key.check is not None:
                 complaint = key.check(value)
                 if complaint:
-                    self.add(line, where, f'"{key.name}" {complaint}', f"it is {value!r}")
+                    self.add(line, where, f'"{key.name}" {complaint}', f"it is {short_repr(value)}")
                     continue
             good[key.name] = value
         return good
@@ -146,9 +158,13 @@ class _Reader:
         physics_line = self.lines.table_line("physics")
         physics_values = self.check_table(top.get("physics", {}), PHYSICS_KEYS, "[physics]",
                                           physics_line)
+        files = self.check_table(top.get("files", {}), FILES_KEYS, "[files]",
+                                 self.lines.table_line("files"))
+        self.allow_outside = self.allow_outside or files.get("allow_outside", False)
         project = Project(path=self.path, title=top.get("title", ""),
                           language=top.get("language", "en"),
-                          physics=PhysicsSettings(**physics_values))
+                          physics=PhysicsSettings(**physics_values),
+                          allow_outside_files=self.allow_outside)
         pages = top.get("pages", [])
         if "pages" in top and not pages:
             self.add(None, "", "the project has no pages", "add a [[pages]] table")
@@ -220,9 +236,17 @@ class _Reader:
 
     def check_picture(self, relative: str, where: str, line: int | None) -> None:
         picture = self.path.parent / relative
-        if not picture.is_file():
+        header = read_header(picture)
+        if header.problem == "not found":
             self.add(line, where, f'picture file "{relative}" not found',
                      f"paths are relative to {self.path.parent}; fix the path or copy the file there")
+        elif header.problem:
+            self.add(line, where, f'picture file "{relative}" {header.problem}', header.hint)
+        elif not self.allow_outside and is_outside(picture, self.path.parent):
+            self.add(line, where, f'picture file "{relative}" is outside the project folder '
+                     f"{self.path.parent}",
+                     "copy it into the folder, or allow it with --allow-outside-files or "
+                     "`[files] allow_outside = true`")
 
     def item(self, table: dict, page_index: int, item_index: int):
         line = self.lines.item_line(page_index, item_index)
@@ -315,11 +339,16 @@ class _Reader:
                 chain.append(nxt)
 
 
+def short_repr(value: Any, limit: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
 def describe(value: Any) -> str:
     if isinstance(value, bool):
         return f"the boolean {str(value).lower()}"
     if isinstance(value, str):
-        return f'the string "{value}"'
+        return f'the string "{value if len(value) <= 60 else value[:59] + "…"}"'
     if isinstance(value, (int, float)):
         return f"the number {value}"
     if isinstance(value, dict):

@@ -21,9 +21,12 @@ from floatpage.model.document import (
 )
 from floatpage.model.atomic_file import atomic_write, write_chunks  # noqa: F401 (re-exported)
 from floatpage.model.errors import FloatpageError
-from floatpage.model.page_sizes import CUSTOM
+from floatpage.model.page_sizes import CUSTOM, canonical_size_name
 
 Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
+UTF8_BOM = b"\xef\xbb\xbf"
+KEEP = object()  # a pair's value meaning "leave whatever the user wrote, if anything"
+ANCHOR_DEFAULTS = {"dx": 0.0, "dy": 0.0, "gamma": 1.0, "hard": False}
 
 
 def mm(value: float) -> float:
@@ -53,8 +56,9 @@ def page_pairs(page: Page) -> Pairs:
         ("id", page.id, None),
         ("size", page.size, "A4"),
         ("orientation", None if custom else page.orientation, "portrait"),
-        ("width_mm", mm(page.width_mm) if custom else None, None),
-        ("height_mm", mm(page.height_mm) if custom else None, None),
+        # A named size ignores width_mm and height_mm; a user's own are kept as written.
+        ("width_mm", mm(page.width_mm) if custom else KEEP, None),
+        ("height_mm", mm(page.height_mm) if custom else KEEP, None),
         ("background", background_value(page.background), None),
     ]
 
@@ -102,18 +106,28 @@ def inline(value: Any) -> Any:
     return value
 
 
+def equivalent(key: str, current: Any, value: Any) -> bool:
+    """Whether what the user wrote already says ``value``: `" a 4 "` says "A4", and a short
+    anchor `{to = "b1"}` says dx = dy = 0.  Such spellings are kept, not rewritten."""
+    if key == "size" and isinstance(current, str):
+        return canonical_size_name(current) == value
+    if key == "anchor" and isinstance(current, dict) and isinstance(value, dict):
+        return same({**ANCHOR_DEFAULTS, **current}, {**ANCHOR_DEFAULTS, **value})
+    return same(current, value)
+
+
 def sync_table(table: Table, pairs: Pairs) -> None:
     """Make `table` hold `pairs`, changing only what differs, so comments and order survive."""
     wanted = {key for key, value, _ in pairs if value is not None}
     for key in [k for k in table if k not in wanted and k != "items"]:
         del table[key]
     for key, value, default in pairs:
-        if value is None:
+        if value is None or value is KEEP:
             continue
         if key in table:
             current = table[key]
             current = current.unwrap() if hasattr(current, "unwrap") else current
-            if not same(current, value):
+            if not equivalent(key, current, value):
                 table[key] = inline(value)
         elif default is None or not same(value, default):
             table[key] = inline(value)
@@ -122,7 +136,7 @@ def sync_table(table: Table, pairs: Pairs) -> None:
 def new_table(pairs: Pairs) -> Table:
     table = tomlkit.table()
     for key, value, _ in pairs:
-        if value is not None:
+        if value is not None and value is not KEEP:
             table[key] = inline(value)
     return table
 
@@ -175,8 +189,13 @@ def to_document(project: Project) -> tomlkit.TOMLDocument:
             doc[key] = value
     if "physics" in doc:
         sync_table(doc["physics"], physics_pairs(project.physics))
+    elif project.source_document is None:
+        doc["physics"] = new_table(physics_pairs(project.physics))  # a new file shows the knobs
     else:
-        doc["physics"] = new_table(physics_pairs(project.physics))
+        # The user's file had no [physics]: add only what differs from the defaults.
+        changed = [pair for pair in physics_pairs(project.physics) if not same(pair[1], pair[2])]
+        if changed:
+            doc["physics"] = new_table(changed)
 
     def fill_page(table: Table, page: Page) -> None:
         sync_array(table, "items", page.items, item_pairs, lambda item: item.id)
@@ -212,6 +231,16 @@ def non_finite_numbers(project: Project) -> list[str]:
     return found
 
 
+def unchanged_on_disk(target: Path, data: bytes) -> bool:
+    """Whether the file already holds exactly ``data``: then a save writes nothing, and the
+    `.bak` keeps the version from before the last real change (two settles in a row used to
+    leave the settled text in both)."""
+    try:
+        return target.is_file() and target.stat().st_size == len(data) and target.read_bytes() == data
+    except OSError:
+        return False
+
+
 def save_project(project: Project, path: str | Path | None = None) -> Path:
     """Save atomically to `path` (default: where it was loaded from) and remember the new path."""
     target = Path(path) if path is not None else project.path
@@ -225,7 +254,11 @@ def save_project(project: Project, path: str | Path | None = None) -> Path:
             + " would be written as inf or NaN (the file on disk is unchanged; "
             "lower [physics] alpha or dt, or report this as a bug)")
     doc = to_document(project)
-    atomic_write(target, tomlkit.dumps(doc).encode("utf-8"))
+    data = tomlkit.dumps(doc).encode("utf-8")
+    if project.utf8_bom:
+        data = UTF8_BOM + data
+    if not unchanged_on_disk(target, data):
+        atomic_write(target, data)
     project.source_document = doc
     project.path = target
     return target

@@ -69,6 +69,15 @@ def positive_up_to(high: float) -> Check:
     return check
 
 
+def at_most_chars(limit: int) -> Check:
+    def check(value: str) -> str | None:
+        if len(value) <= limit:
+            return None
+        return (f"holds {len(value)} characters, more than the {limit} one box can hold; "
+                "split it over several boxes or pages")
+    return check
+
+
 def between(low: float, high: float) -> Check:
     def check(value: float) -> str | None:
         return finite(value) or (None if low <= value <= high else f"must be between {low} and {high}")
@@ -96,8 +105,12 @@ TOP_KEYS = [
     Key("title", "str"),
     Key("language", "str", check=one_of(*CALENDAR_LANGUAGES)),
     Key("physics", "table"),
+    Key("files", "table"),
     Key("pages", "array", required=True),
 ]
+
+FILES_KEYS = [Key("allow_outside", "bool")]
+MAX_TEXT_CHARS = 20_000  # a poster's worth; 1 MB of text drove LuaLaTeX to 2.5 GB
 
 PHYSICS_KEYS = [
     Key("mode", "str", check=one_of("fast", "paper")),
@@ -140,7 +153,7 @@ COMMON_ITEM_KEYS = [
 
 KIND_KEYS = {
     "text": [
-        Key("text", "str"),
+        Key("text", "str", check=at_most_chars(MAX_TEXT_CHARS)),
         Key("font", "str", check=one_of(*FONT_FAMILIES)),
         Key("color", "str", check=colour),
         Key("bold", "bool"),

@@ -63,7 +63,7 @@ class FloatpageApp(App):
 
 
 def make_app(project_path: str | Path, *, seed: int | None = None,
-             autostart: bool = True) -> FloatpageApp:
+             autostart: bool = True, allow_outside_files: bool = False) -> FloatpageApp:
     """Load a project and build the editor for it; raises ProjectFileError on a bad file.
 
     `seed` seeds the physics jitter for this session (it does not change the project's own
@@ -71,6 +71,6 @@ def make_app(project_path: str | Path, *, seed: int | None = None,
     `floatpage settle` lay the same file out the same way.
     `autostart=False` starts with the physics paused, so tests see repeatable frames.
     """
-    project = load_project(project_path)
+    project = load_project(project_path, allow_outside_files=allow_outside_files)
     session_seed = project.physics.seed if seed is None else seed
     return FloatpageApp(EditSession(project, seed=session_seed), autostart=autostart)

@@ -8,7 +8,9 @@ timeout or the log. We call the engine directly, once:
 - `-no-shell-escape`, `openin_any=p`/`openout_any=p` (no absolute, parent or
   hidden paths); pictures are found by bare name through TEXINPUTS;
 - SOURCE_DATE_EPOCH fixed, so the PDF's dates never change;
-- a timeout that kills the whole process group (`\\def\\x{\\x}\\x` runs forever).
+- a timeout that kills the whole process group (`\\def\\x{\\x}\\x` runs forever);
+- the engine dies with its parent (Linux's PR_SET_PDEATHSIG), so a killed `render` leaves no
+  LuaLaTeX running, and runs under a memory limit (MEMORY_LIMIT_BYTES of address space).
 """
 
 from __future__ import annotations
@@ -27,6 +29,27 @@ ENGINE = "lualatex"
 # 2026-01-01T00:00:00Z: any fixed instant works; a changing one breaks reproducibility.
 DEFAULT_SOURCE_DATE_EPOCH = "1767225600"
 MAIN = "main.tex"
+# Address space, not resident memory: LuaTeX maps its font caches, so it reserves more than it
+# touches. A real page takes ~0.4 GB of address space; 1 MB of text in one box took 2.5 GB.
+MEMORY_LIMIT_BYTES = 3 << 30
+PR_SET_PDEATHSIG = 1
+
+
+def limit_engine() -> None:
+    """Run in the child between fork and exec: die with the parent, and cap memory."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):
+        pass  # not Linux: the timeout still stops a runaway engine
+    try:
+        import resource
+
+        resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT_BYTES, MEMORY_LIMIT_BYTES))
+    except (ImportError, ValueError, OSError):
+        pass
 
 
 def engine_path() -> str:
@@ -62,7 +85,8 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
     start = time.perf_counter()
     process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                               env=engine_environment(picture_dir), start_new_session=True)
+                               env=engine_environment(picture_dir), start_new_session=True,
+                               preexec_fn=limit_engine)
     try:
         code = process.wait(timeout=timeout_s)
     except subprocess.TimeoutExpired:
@@ -101,5 +125,17 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
         raise LatexCompileError(log_path, [LogError(None, f"LuaLaTeX was still running after "
                                                     f"{timeout_s:g} s and was stopped")],
                                 "The PDF was not made: typesetting took too long.")
+    if out_of_memory(code, log):
+        raise LatexCompileError(log_path, [LogError(None, f"LuaLaTeX ran out of its "
+                                                    f"{MEMORY_LIMIT_BYTES >> 30} GB memory limit")],
+                                "The PDF was not made: the page needs too much memory to "
+                                "typeset (very long texts, or very many items on one page).")
     errors = errors_with_items(log, tex, labels or [])
     raise LatexCompileError(log_path, errors, "The PDF was not made; LaTeX reported:")
+
+
+def out_of_memory(code: int | None, log: str) -> bool:
+    """LuaTeX says 'not enough memory' when an allocation fails under the limit, or dies."""
+    tail = log[-4000:]
+    return "not enough memory" in tail or "memory exhausted" in tail or \
+        (code is not None and code < 0 and code in (-signal.SIGSEGV, -signal.SIGABRT))

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import hashlib
 import re
-import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -19,7 +18,10 @@ from pylatex.utils import NoEscape
 
 from floatpage.model.document import Project
 from floatpage.model.save import atomic_write
+from floatpage.model.picture_files import decode_warning
+from floatpage.typeset.build_folder import build_folder
 from floatpage.typeset.compile import compile_pdf, engine_path
+from floatpage.typeset.output_paths import check_outputs, project_inputs
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FontNotFoundError
 from floatpage.typeset.pictures import cache_dir, materialize
@@ -81,6 +83,23 @@ def count_pages(build: Path, expected: int) -> int:
     return int(found.group(1)) if found else expected
 
 
+def picture_warnings(project: Project) -> list[str]:
+    """Pictures whose pixels do not decode cleanly (a truncated JPEG prints grey, silently)."""
+    found = []
+    for page in project.pages:
+        for item in page.items:
+            if item.kind == "picture":
+                problem = decode_warning(project.base_dir / item.path)
+                if problem:
+                    found.append(f'item "{item.id}" on page "{page.id}": picture '
+                                 f'"{item.path}": {problem}')
+        if page.background is not None and page.background.picture:
+            problem = decode_warning(project.base_dir / page.background.picture)
+            if problem:
+                found.append(f'page "{page.id}" background "{page.background.picture}": {problem}')
+    return found
+
+
 def write_output(path: Path, data: bytes) -> None:
     """Atomically replace `path` (a new file gets the umask's permissions, as any new file)."""
     atomic_write(path, data, backup=False)
@@ -98,11 +117,15 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     started = time.perf_counter()
     say = progress or (lambda message: None)
     out_pdf = Path(out_pdf)
+    outputs = [out_pdf, Path(tex_out) if tex_out else None,
+               Path(fragment_out) if fragment_out else None]
+    check_outputs(outputs + [log_path_for(out_pdf)], project_inputs(project))
     engine_path()
     if not project.pages:
         raise RenderError("the project has no pages; add a [[pages]] table")
     say("laying out text")
     scene = scene_of(project)
+    scene.warnings.extend(picture_warnings(project))
     say("preparing pictures")
     for plan in scene.pictures:
         try:
@@ -110,19 +133,21 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
         except OSError as error:
             raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
     tex = tex_from_scene(scene)
-    if tex_out is not None:
-        write_output(Path(tex_out), tex.encode("utf-8"))
-    if fragment_out is not None:
-        write_output(Path(fragment_out), tex_from_scene(scene, fragment=True).encode("utf-8"))
+    fragment = tex_from_scene(scene, fragment=True) if fragment_out is not None else ""
     say("typesetting with LuaLaTeX")
     engine_started = time.perf_counter()
-    with tempfile.TemporaryDirectory(prefix="floatpage-") as build:
+    with build_folder() as build:
         pdf = compile_pdf(tex, Path(build), labels=scene.labels, timeout_s=timeout_s,
                           picture_dir=cache_dir(),
                           keep_log=log_path_for(out_pdf))
         data = pdf.read_bytes()
         pages = count_pages(Path(build), len(scene.pages))
     engine_seconds = time.perf_counter() - engine_started
+    # Only now, with the PDF made, is anything replaced: a failed render overwrites nothing.
+    if tex_out is not None:
+        write_output(Path(tex_out), tex.encode("utf-8"))
+    if fragment_out is not None:
+        write_output(Path(fragment_out), fragment.encode("utf-8"))
     write_output(out_pdf, data)
     log_path_for(out_pdf).unlink(missing_ok=True)  # a failed render's log is now stale
     say(f"wrote {out_pdf}")

@@ -1,0 +1,97 @@
+"""What a picture file is, read from its header before anything trusts it.
+
+A 48-byte PNG can claim 100000 x 100000 pixels, and decoding it takes 30 GB; a truncated JPEG
+decodes to grey with no word from the TeX engine.  So `check`, `settle` and `render` all read
+every picture's header here: its format, its pixel size against ``MAX_PIXELS``, and where the
+file really is (a project's pictures stay inside its folder unless the user allows otherwise,
+so a project cannot embed ~/.ssh/id_rsa.pdf and still renders after it moves machines).
+Decoding, to find truncation, is left to `decode_warning`, which `check` and `render` call.
+"""
+
+from __future__ import annotations
+
+import os
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+
+from PIL import Image, UnidentifiedImageError
+
+MAX_PIXELS = 100_000_000  # 100 megapixels: a 40 x 40 cm print at 600 dpi is 15 Mpx
+FORMATS = ("PNG", "JPEG", "WEBP", "GIF", "BMP", "TIFF")
+FORMAT_WORDS = "PNG, JPEG, PDF, WebP, GIF, BMP or TIFF"
+
+
+@dataclass(frozen=True)
+class PictureHeader:
+    """A picture as its header describes it; ``problem`` says why it cannot be used."""
+
+    kind: str = ""  # "PDF" or a Pillow format name
+    size: tuple[int, int] = (0, 0)
+    problem: str = ""
+    hint: str = ""
+
+
+def read_header(path: Path) -> PictureHeader:
+    """Open the header only (no pixels are decoded), and judge what it claims."""
+    if not path.is_file():
+        return PictureHeader(problem="not found", hint="fix the path or copy the file there")
+    try:
+        with open(path, "rb") as handle:
+            if handle.read(5) == b"%PDF-":
+                return PictureHeader(kind="PDF")
+    except OSError as error:
+        return PictureHeader(problem=f"cannot be read: {error.strerror}", hint="check its permissions")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
+            with Image.open(path) as image:
+                kind, size = image.format or "", image.size
+    except Image.DecompressionBombError as error:
+        return too_many_pixels(str(error))
+    except (UnidentifiedImageError, OSError, ValueError, SyntaxError) as error:
+        return PictureHeader(problem=f"is not a picture floatpage can read ({error})",
+                             hint=f"use {FORMAT_WORDS}")
+    if kind not in FORMATS:
+        return PictureHeader(kind=kind, size=size, problem=f"is a {kind} picture",
+                             hint=f"use {FORMAT_WORDS}")
+    if size[0] < 1 or size[1] < 1:
+        return PictureHeader(kind=kind, size=size, problem="has no pixels", hint="re-export it")
+    if size[0] * size[1] > MAX_PIXELS:
+        return too_many_pixels(f"{size[0]} x {size[1]} pixels", kind, size)
+    return PictureHeader(kind=kind, size=size)
+
+
+def too_many_pixels(what: str, kind: str = "", size: tuple[int, int] = (0, 0)) -> PictureHeader:
+    return PictureHeader(kind=kind, size=size,
+                         problem=f"is too large to lay out safely ({what}; the limit is "
+                                 f"{MAX_PIXELS // 1_000_000} megapixels)",
+                         hint="scale it down: print needs about 300 pixels per inch")
+
+
+def decode_warning(path: Path) -> str:
+    """Why the picture's pixels do not decode cleanly (truncated or corrupt), or ''.
+
+    JPEGs decode at 1/8 scale (libjpeg's draft mode reads every byte but keeps few pixels),
+    so even a 100-megapixel photo costs a few MB here; other formats are verified chunk by
+    chunk (PNG's checksums) without decoding.
+    """
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            with Image.open(path) as image:
+                if image.format == "JPEG":
+                    image.draft("RGB", (max(1, image.size[0] // 8), max(1, image.size[1] // 8)))
+                    image.load()
+                else:
+                    image.verify()
+    except (OSError, ValueError, SyntaxError, Image.DecompressionBombError) as error:
+        return f"its pixels do not decode cleanly ({error}); it may print grey or cut off"
+    return ""
+
+
+def is_outside(picture: Path, folder: Path) -> bool:
+    """Whether ``picture`` really lives outside ``folder`` (after every symlink is followed)."""
+    real = os.path.realpath(picture)
+    root = os.path.realpath(folder)
+    return os.path.commonpath([real, root]) != root

@@ -1,0 +1,76 @@
+"""Where `render` may write: new paths and regular files that are none of its inputs.
+
+`render card.toml -o card.toml` once replaced the project with the PDF, `-o /dev/full` (as
+root) turned a device into a regular file, and `--tex` onto a symlink replaced the link.
+Every output is checked here before the engine runs, so a refused render has written nothing.
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+from pathlib import Path
+from typing import Iterable
+
+from floatpage.model.document import Project
+from floatpage.typeset.errors import RenderError
+
+
+def kind_of(mode: int) -> str:
+    if stat.S_ISLNK(mode):
+        return "a symbolic link"
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    if stat.S_ISFIFO(mode):
+        return "a pipe"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "not a regular file"
+
+
+def project_inputs(project: Project) -> list[Path]:
+    """Every file the render reads: the project file and its pictures."""
+    inputs = [project.path] if project.path is not None else []
+    for page in project.pages:
+        if page.background is not None and page.background.picture:
+            inputs.append(project.base_dir / page.background.picture)
+        inputs += [project.base_dir / item.path for item in page.items if item.kind == "picture"]
+    return inputs
+
+
+def same_file(a: Path, b: Path) -> bool:
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return os.path.realpath(a) == os.path.realpath(b)
+
+
+def check_outputs(outputs: Iterable[Path | None], inputs: Iterable[Path]) -> None:
+    """Refuse any output that is not a new path or a regular file, that is an input, or that
+    another output also names; the message says which and what to do."""
+    chosen: list[Path] = []
+    inputs = [Path(p) for p in inputs]
+    for output in outputs:
+        if output is None:
+            continue
+        output = Path(output)
+        try:
+            mode = os.lstat(output).st_mode
+        except FileNotFoundError:
+            mode = None
+        except OSError as error:
+            raise RenderError(f"{output}: cannot be written: {error.strerror}") from None
+        if mode is not None and not stat.S_ISREG(mode):
+            raise RenderError(f"{output}: will not write there, because it is {kind_of(mode)}; "
+                              "name a new file or a regular file")
+        for source in inputs:
+            if mode is not None and same_file(output, source) or \
+                    os.path.realpath(output) == os.path.realpath(source):
+                raise RenderError(f"{output}: will not write there, because it is an input of "
+                                  f"this render ({source}); choose another output name")
+        for earlier in chosen:
+            if os.path.realpath(output) == os.path.realpath(earlier):
+                raise RenderError(f"{output}: named for two outputs; give each its own name")
+        chosen.append(output)
