@@ -254,7 +254,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return args.run(args)
     except FloatpageError as error:
-        print(f"floatpage: {printable(str(error))}", file=sys.stderr)
+        # Line by line: a message may list several problems, each on its own line, and each
+        # line is escaped so that nothing from a project file can start a line of its own.
+        lines = [printable(line) for line in str(error).split("\n")]
+        print("floatpage: " + "\n".join(lines), file=sys.stderr)
         return EXIT_USER_ERROR
     except KeyboardInterrupt:
         print("floatpage: interrupted", file=sys.stderr)

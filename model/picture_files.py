@@ -11,6 +11,7 @@ Decoding, to find truncation, is left to `decode_warning`, which `check` and `re
 from __future__ import annotations
 
 import os
+import re
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
@@ -47,8 +48,10 @@ def read_header(path: Path) -> PictureHeader:
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)
             with Image.open(path) as image:
                 kind, size = image.format or "", image.size
-    except Image.DecompressionBombError as error:
-        return too_many_pixels(str(error))
+    except Image.DecompressionBombError as error:  # Pillow's own, far higher, limit
+        claimed = re.search(r"\((\d+) pixels\)", str(error))
+        return too_many_pixels(f"{int(claimed.group(1)) // 1_000_000:,} megapixels" if claimed
+                               else "more pixels than Pillow will open")
     except (UnidentifiedImageError, OSError, ValueError, SyntaxError) as error:
         return PictureHeader(problem=f"is not a picture floatpage can read ({error})",
                              hint=f"use {FORMAT_WORDS}")
@@ -58,7 +61,8 @@ def read_header(path: Path) -> PictureHeader:
     if size[0] < 1 or size[1] < 1:
         return PictureHeader(kind=kind, size=size, problem="has no pixels", hint="re-export it")
     if size[0] * size[1] > MAX_PIXELS:
-        return too_many_pixels(f"{size[0]} x {size[1]} pixels", kind, size)
+        return too_many_pixels(f"{size[0]} x {size[1]} pixels, "
+                               f"{size[0] * size[1] // 1_000_000:,} megapixels", kind, size)
     return PictureHeader(kind=kind, size=size)
 
 

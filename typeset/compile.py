@@ -93,6 +93,10 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
         os.killpg(process.pid, signal.SIGKILL)
         process.wait()
         code = None
+    except BaseException:  # Ctrl+C or SIGTERM while typesetting: the engine goes too
+        os.killpg(process.pid, signal.SIGKILL)
+        process.wait()
+        raise
     return code, time.perf_counter() - start
 
 

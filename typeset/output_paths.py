@@ -62,6 +62,9 @@ def check_outputs(outputs: Iterable[Path | None], inputs: Iterable[Path]) -> Non
             mode = None
         except OSError as error:
             raise RenderError(f"{output}: cannot be written: {error.strerror}") from None
+        if mode is None and not output.parent.is_dir():
+            raise RenderError(f"{output}: the folder {output.parent} does not exist; "
+                              "create it first, or name another place")
         if mode is not None and not stat.S_ISREG(mode):
             raise RenderError(f"{output}: will not write there, because it is {kind_of(mode)}; "
                               "name a new file or a regular file")

@@ -1,0 +1,371 @@
+"""Issue 12's failures, each on real files through the real command: nothing lost, nothing
+written where it must not be, no internal error.  Devices, symlinks and locks are made in a
+scratch folder, never on the real /dev."""
+
+from __future__ import annotations
+
+import math
+import os
+import stat
+import struct
+import subprocess
+import sys
+import tomllib
+import zlib
+from pathlib import Path
+
+import pytest
+from PIL import Image
+
+from floatpage.model import BlockItem, Page, PictureItem, Project, TextItem, save_project
+from floatpage.model.project_lock import ProjectLock
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def run(*args: str, cwd: Path = ROOT, timeout: float = 300) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "floatpage.cli.main", *args], capture_output=True,
+                          text=True, timeout=timeout, cwd=cwd, stdin=subprocess.DEVNULL)
+
+
+def card(folder: Path, *items, name: str = "card.toml", paper: bool = False) -> Path:
+    """A small A5 card with a block and a text, plus any extra items."""
+    path = folder / name
+    save_project(Project(title="Card", pages=[Page(id="front", size="A5", width_mm=148.0,
+                                                   height_mm=210.0, items=[
+        BlockItem(id="block", x=30.0, y=40.0, w=30.0, h=30.0, color="#3366aa"),
+        TextItem(id="title", x=60.0, y=100.0, w=60.0, h=20.0, text="Hello"),
+        *items])]), path)
+    if paper:
+        path.write_text(path.read_text().replace('mode = "fast"', 'mode = "paper"', 1))
+    return path
+
+
+def all_numbers_finite(path: Path) -> bool:
+    def walk(value) -> bool:
+        if isinstance(value, float):
+            return math.isfinite(value)
+        if isinstance(value, dict):
+            return all(walk(v) for v in value.values())
+        if isinstance(value, list):
+            return all(walk(v) for v in value)
+        return True
+    return walk(tomllib.loads(path.read_text()))
+
+
+# 1. settle never writes NaN -------------------------------------------------------------------
+
+def test_a_huge_item_is_refused_before_the_physics_and_the_file_is_untouched(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("h = 30.0", "h = 1e308", 1))
+    before = path.read_bytes()
+    result = run("settle", str(path))
+    assert result.returncode == 1, result.stderr
+    assert 'item "block"' in result.stderr and "100 times" in result.stderr
+    assert "Traceback" not in result.stderr
+    assert path.read_bytes() == before
+
+
+def test_paper_mode_with_huge_alpha_and_dt_is_refused(tmp_path):
+    path = card(tmp_path, paper=True)
+    text = path.read_text()
+    text = text.replace("alpha = 150.0", "alpha = 1e308").replace("dt = 0.005", "dt = 1e308")
+    path.write_text(text)
+    result = run("settle", str(path))
+    assert result.returncode == 1
+    assert '"alpha" must be at most' in result.stderr and '"dt" must be at most' in result.stderr
+
+
+@pytest.mark.parametrize("alpha,dt", [(1e6, 1.0), (1e6, 0.5), (5e5, 1.0)])
+def test_the_largest_allowed_alpha_and_dt_settle_to_finite_numbers(tmp_path, alpha, dt):
+    path = card(tmp_path, paper=True)
+    path.write_text(path.read_text().replace("alpha = 150.0", f"alpha = {alpha}")
+                    .replace("dt = 0.005", f"dt = {dt}"))
+    result = run("settle", str(path))
+    assert result.returncode == 0, result.stderr
+    assert all_numbers_finite(path)
+
+
+def test_saving_a_non_finite_position_is_refused_and_keeps_the_file(tmp_path):
+    from floatpage.model import FloatpageError, load_project
+
+    path = card(tmp_path)
+    before = path.read_bytes()
+    project = load_project(path)
+    project.pages[0].items[0].x = float("nan")
+    with pytest.raises(FloatpageError, match='item "block" x would be written as inf or NaN'):
+        save_project(project)
+    assert path.read_bytes() == before
+
+
+# 2, 3. render writes only new paths or regular files that are not inputs -----------------------
+
+@pytest.mark.parametrize("option", ["-o", "--tex", "--fragment"])
+def test_render_refuses_to_write_over_the_project(tmp_path, option):
+    path = card(tmp_path)
+    before = path.read_bytes()
+    args = ["render", str(path), option, str(path)]
+    if option != "-o":
+        args += ["-o", str(tmp_path / "out.pdf")]
+    result = run(*args)
+    assert result.returncode == 1
+    assert "is an input of this render" in result.stderr
+    assert path.read_bytes() == before
+    assert not (tmp_path / "out.pdf").exists() and not (tmp_path / "card.toml.bak").exists()
+
+
+def test_render_refuses_to_write_over_a_picture(tmp_path):
+    Image.new("RGB", (40, 30), "red").save(tmp_path / "photo.png")
+    path = card(tmp_path, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=30.0, path="photo.png"))
+    before = (tmp_path / "photo.png").read_bytes()
+    result = run("render", str(path), "-o", str(tmp_path / "photo.png"))
+    assert result.returncode == 1 and "photo.png" in result.stderr
+    assert (tmp_path / "photo.png").read_bytes() == before
+
+
+def test_render_refuses_a_device_a_pipe_a_folder_and_a_symlink(tmp_path):
+    path = card(tmp_path)
+    targets = {"pipe": tmp_path / "pipe", "folder": tmp_path / "folder",
+               "symbolic link": tmp_path / "link.tex"}
+    os.mkfifo(targets["pipe"])
+    targets["folder"].mkdir()
+    (tmp_path / "real.tex").write_text("kept")
+    targets["symbolic link"].symlink_to(tmp_path / "real.tex")
+    if os.geteuid() == 0:  # only root may make a device node, here a copy of /dev/null's
+        targets["device"] = tmp_path / "null"
+        os.mknod(targets["device"], stat.S_IFCHR | 0o666, os.makedev(1, 3))
+    for kind, target in targets.items():
+        option = "--tex" if kind == "symbolic link" else "-o"
+        args = ["render", str(path), option, str(target)]
+        if option == "--tex":
+            args += ["-o", str(tmp_path / "out.pdf")]
+        result = run(*args)
+        assert result.returncode == 1, (kind, result.stderr)
+        assert f"it is a {kind}" in result.stderr, result.stderr
+    assert stat.S_ISFIFO(os.lstat(targets["pipe"]).st_mode)
+    assert targets["symbolic link"].is_symlink() and (tmp_path / "real.tex").read_text() == "kept"
+    if "device" in targets:
+        assert stat.S_ISCHR(os.lstat(targets["device"]).st_mode)
+
+
+def test_a_refused_render_leaves_the_old_outputs_alone(tmp_path):
+    path = card(tmp_path)
+    (tmp_path / "old.tex").write_text("old tex")
+    (tmp_path / "old.pdf").write_bytes(b"%PDF-old")
+    result = run("render", str(path), "-o", str(tmp_path / "old.pdf"), "--tex",
+                 str(tmp_path / "old.tex"), "--fragment", str(tmp_path / "missing" / "x.tex"))
+    assert result.returncode == 1
+    assert "missing" in result.stderr and "does not exist" in result.stderr
+    assert (tmp_path / "old.tex").read_text() == "old tex"
+    assert (tmp_path / "old.pdf").read_bytes() == b"%PDF-old"
+
+
+# 4. symlinks and hard links --------------------------------------------------------------------
+
+def test_settle_saves_through_a_symlink_to_the_real_file(tmp_path):
+    real_folder = tmp_path / "real"
+    real_folder.mkdir()
+    target = card(real_folder)
+    target.write_text(target.read_text().replace("x = 30.0", "x = 60.0"))  # overlap the text
+    link = tmp_path / "link.toml"
+    link.symlink_to(target)
+    before = target.read_text()
+    result = run("settle", str(link))
+    assert result.returncode == 0, result.stderr
+    assert link.is_symlink()
+    assert target.read_text() != before, "the real file holds the settled layout"
+    assert (real_folder / "card.toml.bak").read_text() == before
+
+
+def test_settle_keeps_a_hard_link_whole(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
+    other = tmp_path / "other-name.toml"
+    os.link(path, other)
+    result = run("settle", str(path))
+    assert result.returncode == 0, result.stderr
+    assert os.path.samefile(path, other)
+    assert other.read_text() == path.read_text()
+
+
+# 5. one writer at a time ------------------------------------------------------------------------
+
+def test_settle_refuses_while_the_project_is_being_edited(tmp_path):
+    path = card(tmp_path)
+    before = path.read_bytes()
+    with ProjectLock(path, purpose="floatpage edit"):
+        result = run("settle", str(path))
+    assert result.returncode == 1
+    assert f"is being edited by PID {os.getpid()} (floatpage edit)" in result.stderr
+    assert path.read_bytes() == before
+    assert run("settle", str(path)).returncode == 0
+
+
+def test_two_settles_at_once_keep_the_version_from_before_both(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
+    original = path.read_text()
+    command = [sys.executable, "-m", "floatpage.cli.main", "settle", str(path)]
+    processes = [subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                  text=True, cwd=ROOT) for _ in range(2)]
+    results = [(p.wait(timeout=120), p.stderr.read()) for p in processes]
+    for code, stderr in results:
+        assert code == 0 or "is being edited by PID" in stderr, stderr
+    assert (tmp_path / "card.toml.bak").read_text() == original
+
+
+def test_the_editor_refuses_a_project_another_process_holds(tmp_path):
+    path = card(tmp_path)
+    with ProjectLock(path, purpose="floatpage settle"):
+        result = run("edit", str(path), timeout=60)
+    assert result.returncode == 1
+    assert "is being edited by PID" in result.stderr
+
+
+# 6. leftovers of a killed save --------------------------------------------------------------------
+
+def test_a_save_removes_stale_temporaries_and_keeps_fresh_ones(tmp_path):
+    path = card(tmp_path)
+    stale = tmp_path / ".card.toml.999.deadbeef.floatpage-tmp"
+    stale_backup = tmp_path / ".card.toml.999.deadbeef.floatpage-tmp.bak"
+    fresh = tmp_path / ".card.toml.998.cafecafe.floatpage-tmp"
+    for leftover in (stale, stale_backup, fresh):
+        leftover.write_bytes(b"partial")
+    old = os.stat(path).st_mtime - 3600
+    os.utime(stale, (old, old))
+    os.utime(stale_backup, (old, old))
+    path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
+    assert run("settle", str(path)).returncode == 0
+    assert not stale.exists() and not stale_backup.exists()
+    assert fresh.exists(), "a temporary younger than a minute may belong to a save in progress"
+
+
+# 8, 9. deep nesting and seeds ---------------------------------------------------------------------
+
+@pytest.mark.parametrize("value", ["[" * 5000 + "]" * 5000, "{a=" * 3000 + "1" + "}" * 3000])
+def test_deep_nesting_is_a_clear_error(tmp_path, value):
+    path = tmp_path / "deep.toml"
+    path.write_text(f"format = 1\nx = {value}\n")
+    for command in ("check", "settle", "render"):
+        result = run(command, str(path))
+        assert result.returncode == 1, result.stderr
+        assert "nested too deeply" in result.stderr
+
+
+def test_a_negative_seed_is_a_clear_error(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("seed = 0", "seed = -1"))
+    result = run("settle", str(path))
+    assert result.returncode == 1
+    assert '"seed" must be between 0 and' in result.stderr
+
+
+# 10, 11. pictures ------------------------------------------------------------------------------------
+
+def png_header_claiming(width: int, height: int) -> bytes:
+    """A 45-byte PNG whose header claims a huge size (no pixel data follows)."""
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+            + chunk(b"IEND", b""))
+
+
+def test_a_picture_claiming_too_many_pixels_is_refused_by_every_command(tmp_path):
+    (tmp_path / "bomb.png").write_bytes(png_header_claiming(100_000, 100_000))
+    Image.new("1", (20_000, 20_000)).save(tmp_path / "big.png")
+    for name in ("bomb.png", "big.png"):
+        path = card(tmp_path, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=30.0, path=name))
+        for command in ("check", "settle", "render"):
+            result = run(command, str(path))
+            assert result.returncode == 1, (name, command, result.stderr)
+            assert 'item "photo"' in result.stderr and "too large" in result.stderr, result.stderr
+            assert "internal error" not in result.stderr
+
+
+def test_a_background_bomb_is_refused_too(tmp_path):
+    (tmp_path / "bomb.png").write_bytes(png_header_claiming(100_000, 100_000))
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace('size = "A5"', 'size = "A5"\nbackground = {picture = "bomb.png"}'))
+    result = run("check", str(path))
+    assert result.returncode == 1 and "background" in result.stderr and "too large" in result.stderr
+
+
+def test_a_truncated_jpeg_renders_with_a_warning_naming_the_item(tmp_path):
+    Image.effect_noise((400, 300), 60).convert("RGB").save(tmp_path / "whole.jpg", quality=90)
+    data = (tmp_path / "whole.jpg").read_bytes()
+    (tmp_path / "cut.jpg").write_bytes(data[: len(data) // 2])
+    path = card(tmp_path, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=30.0, path="cut.jpg"))
+    checked = run("check", str(path))
+    assert 'item "photo"' in checked.stdout and "do not decode cleanly" in checked.stdout
+    result = run("render", "--no-settle", str(path), "-o", str(tmp_path / "card.pdf"))
+    assert result.returncode == 0, result.stderr
+    assert 'warning: item "photo" on page "front": picture "cut.jpg"' in result.stderr
+
+
+def test_pictures_outside_the_project_need_permission(tmp_path):
+    outside = tmp_path / "elsewhere"
+    outside.mkdir()
+    Image.new("RGB", (40, 30), "blue").save(outside / "secret.png")
+    project_folder = tmp_path / "project"
+    project_folder.mkdir()
+    (project_folder / "inside-link.png").symlink_to(outside / "secret.png")
+    for reference in ("../elsewhere/secret.png", str(outside / "secret.png"), "inside-link.png"):
+        path = card(project_folder, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=30.0,
+                                                path=reference))
+        for command in ("check", "render"):
+            result = run(command, str(path))
+            assert result.returncode == 1, (reference, result.stderr)
+            assert "outside the project folder" in result.stderr
+            assert "--allow-outside-files" in result.stderr
+        allowed = run("check", "--allow-outside-files", str(path))
+        assert allowed.returncode == 0, allowed.stderr
+        assert 'note: item "photo" uses' in allowed.stdout
+        path.write_text(path.read_text() + "\n[files]\nallow_outside = true\n")
+        assert run("check", str(path)).returncode == 0
+
+
+# Text, messages and exit codes ----------------------------------------------------------------------
+
+def test_a_megabyte_of_text_is_a_clear_error(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace('text = "Hello"', 'text = "' + "word " * 200_000 + '"'))
+    result = run("render", str(path))
+    assert result.returncode == 1
+    assert "1000000 characters, more than the 20000" in result.stderr
+    assert len(result.stderr) < 2000, "the message does not echo the text"
+
+
+def test_control_characters_in_a_file_are_escaped_in_messages(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace('kind = "text"', 'kind = "te\\u001b[2J\\nxt"', 1))
+    result = run("check", str(path))
+    assert result.returncode == 1
+    assert "\x1b" not in result.stderr and "\\x1b[2J\\n" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1, "no fake lines"
+
+
+def test_a_long_list_of_problems_is_cut_at_twenty(tmp_path):
+    items = "".join(f'\n[[pages.items]]\nid = "same"\nkind = "block"\nx = {10 + i % 50}.0\n'
+                    f"y = 10.0\nw = 5.0\nh = 5.0\n" for i in range(780))
+    path = tmp_path / "many.toml"
+    path.write_text(f'format = 1\n\n[[pages]]\nid = "p"\n{items}')
+    result = run("check", str(path))
+    lines = result.stderr.strip().splitlines()
+    assert result.returncode == 1
+    assert len(lines) == 21
+    assert lines[-1] == "… and 759 more like this"
+
+
+def test_an_internal_error_has_its_own_exit_code_and_a_crash_log(tmp_path, monkeypatch, capsys):
+    from floatpage.cli import main as cli
+
+    def broken(args):
+        raise RuntimeError("a bug of ours")
+
+    monkeypatch.setattr(cli, "cmd_check", broken)
+    code = cli.main(["check", str(card(tmp_path))])
+    err = capsys.readouterr().err
+    assert code == cli.EXIT_INTERNAL_ERROR == 70
+    assert "internal error: RuntimeError: a bug of ours" in err and "please report it" in err
+    log = Path(err.split("details are in ")[1].split()[0])
+    assert "RuntimeError" in log.read_text()
