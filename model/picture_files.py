@@ -35,6 +35,11 @@ class PictureHeader:
 
 def read_header(path: Path) -> PictureHeader:
     """Open the header only (no pixels are decoded), and judge what it claims."""
+    if path.is_dir():
+        return PictureHeader(problem="is a folder", hint="name a picture file inside it")
+    if path.exists() and not path.is_file():
+        return PictureHeader(problem="is not a regular file (a device or pipe)",
+                             hint="name a picture file")
     if not path.is_file():
         return PictureHeader(problem="not found", hint="fix the path or copy the file there")
     try:

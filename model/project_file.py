@@ -30,6 +30,13 @@ from floatpage.model.document import FORMAT_VERSION
 
 MAX_FILE_BYTES = 16 * 1024 * 1024
 MAX_PAGES_AWAY = 100  # sizes and places beyond this many page sizes cannot be laid out
+TEX_LONGEST_MM = 5700.0  # TeX's largest length, 16383.99 pt, is 5,758 mm
+
+
+def reach(page_mm: float) -> tuple[float, float]:
+    """The band along one axis that an item must stay in, in mm from the page's corner."""
+    margin = min(MAX_PAGES_AWAY * page_mm, TEX_LONGEST_MM - page_mm)
+    return -margin, page_mm + margin
 
 
 def load_project(path: str | Path, *, allow_outside_files: bool = False) -> Project:
@@ -293,20 +300,32 @@ class _Reader:
                            gamma=float(values.get("gamma", 1.0)), hard=values.get("hard", False))
 
     def check_extent(self, page: Page, page_index: int) -> None:
-        """Sizes and places beyond MAX_PAGES_AWAY pages cannot be laid out: refuse them here,
-        before the physics turns them into inf and NaN (h = 1e308 did)."""
-        reach = MAX_PAGES_AWAY * max(page.width_mm, page.height_mm)
+        """Items, and anchors, that reach beyond what can be laid out are refused here, before
+        the physics turns them into inf and NaN (h = 1e308 did) or TeX stops with "Dimension
+        too large" (its longest length is 5,758 mm): each must stay within a band of
+        MAX_PAGES_AWAY page sizes around the page, and within TEX_LONGEST_MM of its corner."""
         for index, item in enumerate(page.items):
-            numbers = {"w": item.w, "h": item.h, "x": item.x, "y": item.y}
-            if isinstance(item.anchor, PointAnchor):
-                numbers |= {"anchor x": item.anchor.x, "anchor y": item.anchor.y}
-            elif isinstance(item.anchor, ItemAnchor):
-                numbers |= {"anchor dx": item.anchor.dx, "anchor dy": item.anchor.dy}
-            for name, value in numbers.items():
-                if abs(value) > reach:
-                    self.add(self.lines.item_line(page_index, index), f'item "{item.id}"',
-                             f'"{name}" is {value:g} mm, more than {MAX_PAGES_AWAY} times '
-                             f'the page "{page.id}"', "use millimetres, within a few pages' size")
+            where = f'item "{item.id}"'
+            line = self.lines.item_line(page_index, index)
+            for axis, centre, half, size in (("x", item.x, item.w / 2, page.width_mm),
+                                             ("y", item.y, item.h / 2, page.height_mm)):
+                low, high = reach(size)
+                points = {axis: (centre - half, centre + half)}
+                if isinstance(item.anchor, PointAnchor):
+                    anchored = getattr(item.anchor, axis)
+                    points[f"anchor {axis}"] = (anchored - half, anchored + half)
+                elif isinstance(item.anchor, ItemAnchor):
+                    offset = getattr(item.anchor, "d" + axis)
+                    points[f"anchor d{axis}"] = (offset, offset)
+                    low, high = low - high, high - low  # an offset spans the band's width
+                for name, (first, last) in points.items():
+                    if first < low or last > high:
+                        value = getattr(item, name) if name in ("x", "y") else None
+                        self.add(line, where, f'reaches beyond what can be laid out ("{name}"'
+                                 f"{f' = {value:g}' if value is not None else ''}, size "
+                                 f"{2 * half:g} mm: it must stay between {low:g} and {high:g} mm)",
+                                 "use millimetres, and keep items within a few pages of the page")
+                        break
 
     def check_anchors(self, page: Page, page_index: int) -> None:
         """Item anchors must name an item on the same page and must not form a cycle."""
@@ -332,7 +351,9 @@ class _Reader:
                     cycle = chain[chain.index(nxt):] + [nxt]
                     if not reported & set(cycle) and len(cycle) > 2:
                         self.add(self.lines.key_line(item_lines[nxt], "anchor"), f'item "{nxt}"',
-                                 "item anchors form a cycle: " + " -> ".join(cycle),
+                                 "item anchors form a cycle: " + " -> ".join(
+                                     cycle if len(cycle) <= 12 else cycle[:10] + ["…", cycle[-1]])
+                                 + (f" ({len(cycle) - 1} items)" if len(cycle) > 12 else ""),
                                  "remove the anchor from one of these items")
                     reported |= set(cycle)
                     break
@@ -355,4 +376,5 @@ def describe(value: Any) -> str:
         return "a table"
     if isinstance(value, list):
         return "an array"
-    return type(value).__name__
+    names = {"datetime": "a date and time", "date": "a date", "time": "a time of day"}
+    return names.get(type(value).__name__, type(value).__name__)

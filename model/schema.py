@@ -73,8 +73,8 @@ def at_most_chars(limit: int) -> Check:
     def check(value: str) -> str | None:
         if len(value) <= limit:
             return None
-        return (f"holds {len(value)} characters, more than the {limit} one box can hold; "
-                "split it over several boxes or pages")
+        return (f"holds {len(value)} characters, more than the {limit} it can hold; "
+                "shorten it, or split a text over several boxes or pages")
     return check
 
 
@@ -100,9 +100,11 @@ def item_id(value: str) -> str | None:
     return "must be 1-64 letters, digits, '-', '_' or '.', starting with a letter or digit"
 
 
+MAX_TITLE_CHARS = 1_000  # a title is PDF metadata; 200,000 characters overflowed TeX's line buffer
+
 TOP_KEYS = [
     Key("format", "int", required=True),
-    Key("title", "str"),
+    Key("title", "str", check=at_most_chars(MAX_TITLE_CHARS)),
     Key("language", "str", check=one_of(*CALENDAR_LANGUAGES)),
     Key("physics", "table"),
     Key("files", "table"),
