@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 import tomlkit
-from tomlkit.items import AoT, Table
+from tomlkit.items import AoT, Array, InlineTable, Table
 
 from floatpage.model.document import (
     Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
@@ -144,6 +144,8 @@ def new_table(pairs: Pairs) -> Table:
 def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=None) -> None:
     """Sync an array of tables by id: keep existing tables (and their comments), add new ones."""
     existing = parent.get(key)
+    if is_inline_array(existing) and sync_inline_array(existing, records, pairs_of, id_of, fill):
+        return
     by_id: dict[str, Table] = {}
     if isinstance(existing, AoT):
         for table in existing:
@@ -170,6 +172,25 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
     for table in tables:
         array.append(table)
     parent[key] = array
+
+
+def is_inline_array(value: Any) -> bool:
+    return isinstance(value, Array) and all(isinstance(entry, InlineTable) for entry in value)
+
+
+def sync_inline_array(array: Array, records: list, pairs_of, id_of, fill) -> bool:
+    """A user who wrote `pages = [{id = "p", items = [...]}]` keeps that form while the same
+    records, in the same order, are only edited (a settle, a move).  Adding, removing or
+    reordering falls back to [[tables]]: returns False, having changed nothing."""
+    by_id = {str(entry.get("id")): entry for entry in array}
+    if [id_of(record) for record in records] != [str(entry.get("id")) for entry in array] \
+            or len(by_id) != len(array):
+        return False
+    for entry, record in zip(array, records):
+        sync_table(entry, pairs_of(record))
+        if fill is not None:
+            fill(entry, record)
+    return True
 
 
 def to_document(project: Project) -> tomlkit.TOMLDocument:
