@@ -55,7 +55,6 @@ def cmd_new(args: argparse.Namespace) -> int:
 
 def cmd_edit(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
-
     from floatpage.model.project_lock import ProjectLock
 
     # Fail here, with a clear message, before the screen is taken over; hold the project's lock
@@ -63,10 +62,39 @@ def cmd_edit(args: argparse.Namespace) -> int:
     with ProjectLock(args.path, wait_s=0.0, purpose="floatpage edit"):
         load_project(args.path, allow_outside_files=args.allow_outside_files)
         from floatpage.tui.app import make_app
+        from floatpage.tui.recovery import discard_recovery, pending_recovery
 
-        make_app(Path(args.path), seed=args.seed,
-                 allow_outside_files=args.allow_outside_files).run()
+        recovered = ask_about_recovery(Path(args.path), pending_recovery(args.path))
+        make_app(Path(args.path), seed=args.seed, allow_outside_files=args.allow_outside_files,
+                 recovered=recovered).run()
+        if recovered:
+            discard_recovery(args.path)  # saved, or left unsaved at the quit question
     return EXIT_OK
+
+
+def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
+    """Offer the edits a lost terminal left behind; True to open them. Discarding deletes them."""
+    if recovery is None:
+        return False
+    from datetime import datetime
+
+    from floatpage.tui.recovery import discard_recovery
+
+    when = datetime.fromtimestamp(recovery.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
+    print(f"{project} has unsaved edits from an editor that lost its terminal at {when} "
+          f"(kept in {recovery.name}).")
+    while True:
+        try:
+            answer = input("[r]estore them, [d]iscard them, or [q]uit and decide later? ").strip().lower()
+        except EOFError:
+            answer = "q"
+        if answer in ("r", "restore"):
+            return True
+        if answer in ("d", "discard"):
+            discard_recovery(project)
+            return False
+        if answer in ("q", "quit"):
+            raise FloatpageError(f"{project}: not opened; the unsaved edits stay in {recovery}")
 
 
 def cmd_settle(args: argparse.Namespace) -> int:

@@ -8,6 +8,7 @@ default screen; everything else lives in the screen, its widgets and dialogs.
 from __future__ import annotations
 
 import gc
+import sys
 from functools import partial
 from pathlib import Path
 from typing import Iterable
@@ -18,7 +19,9 @@ from textual.screen import Screen
 from floatpage.model.project_file import load_project
 from floatpage.tui.editor_screen import EditorScreen
 from floatpage.tui.keymap import COMMANDS, key_label
+from floatpage.tui.recovery import HangupGuard, load_recovered
 from floatpage.tui.session import EditSession
+from floatpage.tui.terminal_driver import HangupAwareDriver
 
 
 class FloatpageApp(App):
@@ -29,11 +32,14 @@ class FloatpageApp(App):
     cursor_blink = True  # dialogs' text cursors; snapshot tests turn it off for repeatable frames
 
     def __init__(self, session: EditSession, *, autostart: bool = True):
-        super().__init__()
+        super().__init__(driver_class=HangupAwareDriver if sys.platform.startswith("linux")
+                         else None)
         self.session = session
         self.autostart = autostart
 
     def on_mount(self) -> None:
+        if not self.is_headless:  # a real terminal, which can hang up
+            HangupGuard(self.session, self.exit).install()
         # Everything alive now (Textual, numpy, the project) lives as long as the app: move it
         # out of the collector's sight, so a full collection during a frame is short. Without
         # this, frames at 200 items spiked to 40-50 ms once a few seconds (measured).
@@ -63,14 +69,22 @@ class FloatpageApp(App):
 
 
 def make_app(project_path: str | Path, *, seed: int | None = None,
-             autostart: bool = True, allow_outside_files: bool = False) -> FloatpageApp:
+             autostart: bool = True, allow_outside_files: bool = False,
+             recovered: bool = False) -> FloatpageApp:
     """Load a project and build the editor for it; raises ProjectFileError on a bad file.
 
     `seed` seeds the physics jitter for this session (it does not change the project's own
     seed); None, the default, uses the project's `[physics] seed`, so the editor and
     `floatpage settle` lay the same file out the same way.
     `autostart=False` starts with the physics paused, so tests see repeatable frames.
+    `recovered=True` opens the edits a lost terminal left in the recovery file, unsaved.
     """
-    project = load_project(project_path, allow_outside_files=allow_outside_files)
+    if recovered:
+        project = load_recovered(project_path, allow_outside_files=allow_outside_files)
+    else:
+        project = load_project(project_path, allow_outside_files=allow_outside_files)
     session_seed = project.physics.seed if seed is None else seed
-    return FloatpageApp(EditSession(project, seed=session_seed), autostart=autostart)
+    session = EditSession(project, seed=session_seed)
+    if recovered:
+        session.mark_unsaved()
+    return FloatpageApp(session, autostart=autostart)

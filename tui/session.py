@@ -74,6 +74,10 @@ class EditSession:
     def unsaved(self) -> bool:
         return self.version != self.saved_version
 
+    def mark_unsaved(self) -> None:
+        """The project differs from its file although no edit was made here (a recovery)."""
+        self.saved_version = -1
+
     @property
     def selected_item(self):
         if self.selected_id is None:

@@ -1,0 +1,205 @@
+"""The editor over a real pty: a hang-up or SIGTERM saves unsaved edits to the recovery file
+(never over the project) and the editor leaves within a second; the next `edit` offers the
+edits back; while it runs, the project is locked against `settle`."""
+
+from __future__ import annotations
+
+import fcntl
+import os
+import pty
+import select
+import signal
+import struct
+import subprocess
+import sys
+import termios
+import time
+from pathlib import Path
+
+import pytest
+
+from floatpage.model import BlockItem, Page, Project, TextItem, load_project, save_project
+from floatpage.tui.recovery import recovery_path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def project_file(folder: Path) -> Path:
+    path = folder / "card.toml"
+    save_project(Project(title="Card", pages=[Page(id="front", items=[
+        BlockItem(id="block", x=60.0, y=60.0, w=40.0, h=30.0, color="#3366aa"),
+        TextItem(id="title", x=120.0, y=200.0, w=80.0, h=20.0, text="Hello")])]), path)
+    return path
+
+
+class Editor:
+    """`floatpage edit` on the slave side of a fresh pty, 100 x 32, as a terminal runs it."""
+
+    def __init__(self, path: Path):
+        self.pid, self.fd = pty.fork()
+        if self.pid == 0:  # the child: the pty is its controlling terminal
+            os.chdir(ROOT)
+            os.execvpe(sys.executable, [sys.executable, "-m", "floatpage.cli.main", "edit",
+                                        str(path)], {**os.environ, "TERM": "xterm-256color"})
+        fcntl.ioctl(self.fd, termios.TIOCSWINSZ, struct.pack("HHHH", 32, 100, 0, 0))
+        self.screen = b""
+
+    def read_until(self, text: bytes, timeout: float = 30.0) -> None:
+        deadline = time.monotonic() + timeout
+        while text not in self.screen:
+            remaining = deadline - time.monotonic()
+            assert remaining > 0, f"never saw {text!r}; got {self.screen[-400:]!r}"
+            ready, _, _ = select.select([self.fd], [], [], min(remaining, 0.2))
+            if ready:
+                try:
+                    self.screen += os.read(self.fd, 65536)
+                except OSError:
+                    break
+
+    def drain(self, seconds: float) -> None:
+        deadline = time.monotonic() + seconds
+        while time.monotonic() < deadline:
+            try:
+                os.fstat(self.fd)
+            except OSError:  # closed: the terminal is gone
+                time.sleep(seconds)
+                return
+            ready, _, _ = select.select([self.fd], [], [], 0.05)
+            if ready:
+                try:
+                    self.screen += os.read(self.fd, 65536)
+                except OSError:
+                    return
+
+    def send(self, keys: bytes) -> None:
+        os.write(self.fd, keys)
+
+    def wait_exit(self, timeout: float) -> tuple[int | None, float]:
+        """(exit code, seconds taken), or (None, timeout) if it is still running."""
+        start = time.monotonic()
+        while time.monotonic() - start < timeout:
+            pid, status = os.waitpid(self.pid, os.WNOHANG)
+            if pid:
+                return os.waitstatus_to_exitcode(status), time.monotonic() - start
+            self.drain(0.01)  # a live terminal keeps reading what the editor writes
+        return None, timeout
+
+    def kill(self) -> None:
+        try:
+            os.kill(self.pid, signal.SIGKILL)
+            os.waitpid(self.pid, 0)
+        except (ProcessLookupError, ChildProcessError):
+            pass
+
+
+def edit_something(editor: Editor) -> None:
+    editor.read_until(b"items")
+    editor.send(b"\t")  # select the first item
+    editor.drain(0.5)
+    for _ in range(5):
+        editor.send(b"\x1b[C")  # Right: move it
+        editor.drain(0.1)
+    editor.drain(0.8)
+
+
+@pytest.mark.parametrize("how", ["hang-up", "SIGTERM"])
+def test_losing_the_terminal_saves_the_edits_aside_and_leaves_within_a_second(tmp_path, how):
+    path = project_file(tmp_path)
+    before = path.read_bytes()
+    editor = Editor(path)
+    try:
+        edit_something(editor)
+        if how == "hang-up":
+            os.close(editor.fd)  # the terminal goes away: the kernel sends SIGHUP
+        else:
+            os.kill(editor.pid, signal.SIGTERM)
+        code, seconds = editor.wait_exit(5.0)
+    finally:
+        editor.kill()
+        if how != "hang-up":
+            os.close(editor.fd)
+    assert code is not None, "the editor is still running"
+    assert seconds <= 1.0, f"left after {seconds:.2f} s"
+    assert path.read_bytes() == before, "the project itself is never written on the way out"
+    recovered = load_project(recovery_path(path))
+    assert recovered.pages[0].item("block").x != 60.0, "the move is in the recovery file"
+
+
+def test_a_hung_up_editor_does_not_spin(tmp_path):
+    """Even with SIGHUP ignored by whoever started it, end of input ends the editor."""
+    path = project_file(tmp_path)
+    previous = signal.signal(signal.SIGHUP, signal.SIG_IGN)  # inherited through exec
+    try:
+        editor = Editor(path)
+    finally:
+        signal.signal(signal.SIGHUP, previous)
+    try:
+        edit_something(editor)
+        os.close(editor.fd)
+        code, seconds = editor.wait_exit(5.0)
+    finally:
+        editor.kill()
+    assert code is not None and seconds <= 1.0
+
+
+def test_the_next_edit_offers_the_recovered_edits(tmp_path):
+    path = project_file(tmp_path)
+    editor = Editor(path)
+    try:
+        edit_something(editor)
+        os.close(editor.fd)
+        editor.wait_exit(5.0)
+    finally:
+        editor.kill()
+    assert recovery_path(path).exists()
+    moved_x = load_project(recovery_path(path)).pages[0].item("block").x
+
+    again = Editor(path)
+    try:
+        again.read_until(b"[r]estore them, [d]iscard them")
+        again.send(b"r\r")
+        again.read_until(b"2 items")
+        again.drain(0.5)
+        again.send(b"\x13")  # Ctrl+S
+        again.drain(1.0)
+        again.send(b"\x11")  # Ctrl+Q
+        code, _ = again.wait_exit(10.0)
+    finally:
+        again.kill()
+        os.close(again.fd)
+    assert code == 0, again.screen[-500:]
+    assert load_project(path).pages[0].item("block").x == moved_x
+    assert not recovery_path(path).exists()
+
+
+def test_discarding_the_recovered_edits_deletes_them(tmp_path):
+    path = project_file(tmp_path)
+    recovery_path(path).write_bytes(path.read_bytes())
+    editor = Editor(path)
+    try:
+        editor.read_until(b"[d]iscard them")
+        editor.send(b"d\r")
+        editor.read_until(b"items")
+        assert not recovery_path(path).exists()
+        editor.send(b"\x11")
+        code, _ = editor.wait_exit(10.0)
+    finally:
+        editor.kill()
+        os.close(editor.fd)
+    assert code == 0
+
+
+def test_settle_refuses_while_the_editor_has_the_project(tmp_path):
+    path = project_file(tmp_path)
+    editor = Editor(path)
+    try:
+        editor.read_until(b"items")
+        result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "settle", str(path)],
+                                capture_output=True, text=True, cwd=ROOT, timeout=60)
+        assert result.returncode == 1
+        assert f"is being edited by PID {editor.pid} (floatpage edit)" in result.stderr
+        editor.send(b"\x11")
+        editor.wait_exit(10.0)
+    finally:
+        editor.kill()
+        os.close(editor.fd)
