@@ -31,7 +31,8 @@ DEFAULT_SOURCE_DATE_EPOCH = "1767225600"
 MAIN = "main.tex"
 # Address space, not resident memory: LuaTeX maps its font caches, so it reserves more than it
 # touches. A real page takes ~0.4 GB of address space; 1 MB of text in one box took 2.5 GB.
-MEMORY_LIMIT_BYTES = 3 << 30
+# FLOATPAGE_ENGINE_MEMORY_MB changes it, for a machine with less (or a page that needs more).
+MEMORY_LIMIT_BYTES = int(os.environ.get("FLOATPAGE_ENGINE_MEMORY_MB", "3072")) << 20
 PR_SET_PDEATHSIG = 1
 
 
@@ -129,13 +130,19 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
         raise LatexCompileError(log_path, [LogError(None, f"LuaLaTeX was still running after "
                                                     f"{timeout_s:g} s and was stopped")],
                                 "The PDF was not made: typesetting took too long.")
-    if out_of_memory(code, log):
-        raise LatexCompileError(log_path, [LogError(None, f"LuaLaTeX ran out of its "
-                                                    f"{MEMORY_LIMIT_BYTES >> 30} GB memory limit")],
-                                "The PDF was not made: the page needs too much memory to "
-                                "typeset (very long texts, or very many items on one page).")
     errors = errors_with_items(log, tex, labels or [])
+    if out_of_memory(code, log) or not errors:
+        # Under RLIMIT_AS an allocation that fails ends LuaTeX at once, mid-line in its log.
+        raise LatexCompileError(log_path, [LogError(None, memory_message())],
+                                "The PDF was not made: LuaLaTeX stopped without an error in "
+                                "its log, which is how it fails when it runs out of memory.")
     raise LatexCompileError(log_path, errors, "The PDF was not made; LaTeX reported:")
+
+
+def memory_message() -> str:
+    return (f"it most likely reached its memory limit of {MEMORY_LIMIT_BYTES >> 20} MB (very "
+            "long texts or very many items on one page need more); set "
+            "FLOATPAGE_ENGINE_MEMORY_MB to raise it")
 
 
 def out_of_memory(code: int | None, log: str) -> bool:
