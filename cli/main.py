@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Callable, Sequence
 
 from floatpage.model.errors import FloatpageError, printable
+from floatpage.model.schema import CALENDAR_LANGUAGES
 
 EXIT_OK, EXIT_USER_ERROR, EXIT_MISUSE = 0, 1, 2
 EXIT_INTERNAL_ERROR = 70  # sysexits' EX_SOFTWARE: a bug of ours, never the user's mistake
@@ -226,7 +227,8 @@ def build_parser() -> argparse.ArgumentParser:
     new.add_argument("--year", type=int, help="calendar year (default: next year)")
     new.add_argument("--photos", metavar="DIR", help="use the pictures in DIR")
     new.add_argument("--first-weekday", choices=WEEKDAY_NAMES, default="monday")
-    new.add_argument("--lang", default="en", help="language of month and day names (en, de, fr, es, it, pt, nl)")
+    new.add_argument("--lang", default="en", choices=CALENDAR_LANGUAGES,
+                     help="language of month and day names")
     new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait")
     new.set_defaults(run=cmd_new)
 
