@@ -142,7 +142,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
     report = render_pdf(project, out, tex_out=Path(args.tex) if args.tex else None,
                         fragment_out=Path(args.fragment) if args.fragment else None,
-                        progress=show)
+                        progress=show, print_bleed_mm=args.bleed if args.print else None)
     finish_progress(show)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
@@ -191,6 +191,16 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"{issues} layout problem(s); run `floatpage settle {args.path}` to fix overlaps")
         return EXIT_USER_ERROR
     return EXIT_OK
+
+
+def bleed_length(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of millimetres") from None
+    if not 0.0 <= value <= 20.0:
+        raise argparse.ArgumentTypeError("give a bleed between 0 and 20 mm (print shops ask 3)")
+    return value
 
 
 def allow_outside_option(command: argparse.ArgumentParser) -> None:
@@ -255,6 +265,10 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--tex", metavar="OUT.tex", help="also keep the standalone .tex")
     render.add_argument("--fragment", metavar="OUT.tex", help="also write a TikZ-only fragment for \\input")
     render.add_argument("--no-settle", action="store_true", help="render the positions as saved")
+    render.add_argument("--print", action="store_true",
+                        help="for a print shop: bleed, crop marks, TrimBox and BleedBox")
+    render.add_argument("--bleed", type=bleed_length, default=3.0, metavar="MM",
+                        help="bleed for --print, in mm (default 3)")
     render.add_argument("-q", "--quiet", action="store_true", help="no progress output")
     allow_outside_option(render)
     render.set_defaults(run=cmd_render)

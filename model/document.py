@@ -87,6 +87,7 @@ class PictureItem(ItemBase):
 
     path: str = ""
     lock_aspect: bool = True
+    bleed: bool = False  # print: extend past the trim wherever the picture meets the page edge
 
     kind = "picture"
 
@@ -97,6 +98,7 @@ class BlockItem(ItemBase):
 
     color: str = "#cccccc"
     opacity: float = 1.0
+    bleed: bool = False  # print: extend past the trim wherever the block meets the page edge
 
     kind = "block"
 

@@ -25,6 +25,7 @@ from floatpage.model.page_sizes import CUSTOM, canonical_size_name
 
 Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 UTF8_BOM = b"\xef\xbb\xbf"
+WRITTEN_ONLY_WHEN_TRUE = {"bleed"}  # rare flags: a file names them only where they are set
 KEEP = object()  # a pair's value meaning "leave whatever the user wrote, if anything"
 ANCHOR_DEFAULTS = {"dx": 0.0, "dy": 0.0, "gamma": 1.0, "hard": False}
 
@@ -92,7 +93,9 @@ def item_pairs(item) -> Pairs:
     base_names = {"id", "x", "y", "w", "h", "z", "decorative", "anchor", "source_document"}
     defaults = type(item)(id="", x=0.0, y=0.0, w=1.0, h=1.0)
     for f in fields(item):
-        if f.name not in base_names:
+        if f.name in WRITTEN_ONLY_WHEN_TRUE:
+            pairs.append((f.name, True if getattr(item, f.name) else None, None))
+        elif f.name not in base_names:
             pairs.append((f.name, getattr(item, f.name), getattr(defaults, f.name)))
     pairs.append(("anchor", anchor_value(item.anchor), None))
     return pairs

@@ -161,8 +161,9 @@ KIND_KEYS = {
         Key("bold", "bool"),
         Key("italic", "bool"),
     ],
-    "picture": [Key("path", "str", required=True), Key("lock_aspect", "bool")],
-    "block": [Key("color", "str", check=colour), Key("opacity", "number", check=between(0.0, 1.0))],
+    "picture": [Key("path", "str", required=True), Key("lock_aspect", "bool"), Key("bleed", "bool")],
+    "block": [Key("color", "str", check=colour), Key("opacity", "number", check=between(0.0, 1.0)),
+              Key("bleed", "bool")],
     "calendar": [
         Key("year", "int", check=between(1, 9999)),
         Key("month", "int", check=between(1, 12)),

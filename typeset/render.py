@@ -22,6 +22,7 @@ from floatpage.model.picture_files import decode_warning
 from floatpage.typeset.build_folder import build_folder
 from floatpage.typeset.compile import compile_pdf, engine_path
 from floatpage.typeset.output_paths import check_outputs, project_inputs
+from floatpage.typeset.print_marks import for_print
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FontNotFoundError
 from floatpage.typeset.pictures import cache_dir, materialize
@@ -112,8 +113,12 @@ def log_path_for(out_pdf: Path) -> Path:
 
 def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
                fragment_out: Path | None = None, timeout_s: float = 120.0,
-               progress: Callable[[str], None] | None = None) -> RenderReport:
-    """Typeset the project into `out_pdf` with one LuaLaTeX run; keep the .tex if asked."""
+               progress: Callable[[str], None] | None = None,
+               print_bleed_mm: float | None = None) -> RenderReport:
+    """Typeset the project into `out_pdf` with one LuaLaTeX run; keep the .tex if asked.
+
+    ``print_bleed_mm`` makes the PDF a print shop's (`render --print`): bleed, crop marks,
+    TrimBox and BleedBox (see typeset.print_marks); the fragment stays the bare page."""
     started = time.perf_counter()
     say = progress or (lambda message: None)
     out_pdf = Path(out_pdf)
@@ -132,8 +137,10 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
             materialize(plan)
         except OSError as error:
             raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
-    tex = tex_from_scene(scene)
     fragment = tex_from_scene(scene, fragment=True) if fragment_out is not None else ""
+    if print_bleed_mm is not None:
+        scene = for_print(scene, project, print_bleed_mm)
+    tex = tex_from_scene(scene)
     say("typesetting with LuaLaTeX")
     engine_started = time.perf_counter()
     with build_folder() as build:

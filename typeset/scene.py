@@ -79,6 +79,7 @@ class PageScene:
     h_mm: float
     background: list = field(default_factory=list)  # BlockScene / PictureScene
     items: list = field(default_factory=list)
+    print_setup: object = None  # print_marks.PrintSetup for `render --print`
 
 
 @dataclass

@@ -1,0 +1,112 @@
+"""`render --print`: what a print shop asks of a PDF: bleed, crop marks, TrimBox and BleedBox.
+
+A press prints on larger paper and trims it, and a cut is never exact to the millimetre. So
+whatever reaches the edge of the finished page (a background, an item marked `bleed = true`)
+is extended `bleed_mm` past it, crop marks outside the bleed show where to cut, and the PDF
+says so itself: TrimBox is the finished page, BleedBox the page with its bleed, MediaBox the
+sheet with room for the marks.  Items that do not bleed are untouched, so the layout the
+physics settled is printed exactly.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from floatpage.model.document import Project
+from floatpage.typeset.calendar_panel import Rect
+from floatpage.typeset.scene import BlockScene, DocumentScene, PageScene, PictureScene
+
+DEFAULT_BLEED_MM = 3.0  # the usual ask of print shops in Europe and North America
+MARK_GAP_MM = 1.0  # crop marks start this far outside the bleed, so a cut never shows them
+MARK_LENGTH_MM = 5.0
+MM_TO_BP = 72.0 / 25.4
+TOUCHING_MM = 0.05  # an edge this close to the page's edge meets it
+
+
+@dataclass(frozen=True)
+class PrintSetup:
+    """Where the finished page sits on the sheet, and the marks around it (all in mm)."""
+
+    bleed_mm: float
+    slug_mm: float  # from the sheet's edge to the trim: bleed, gap and marks
+    media_w_mm: float
+    media_h_mm: float
+    trim_box: tuple[float, float, float, float]  # PDF points, from the sheet's bottom left
+    bleed_box: tuple[float, float, float, float]
+    marks: tuple[tuple[float, float, float, float], ...]  # lines, in page mm (may be negative)
+
+
+def print_setup(w_mm: float, h_mm: float, bleed_mm: float) -> PrintSetup:
+    slug = bleed_mm + MARK_GAP_MM + MARK_LENGTH_MM + 1.0
+    media_w, media_h = w_mm + 2 * slug, h_mm + 2 * slug
+
+    def box(inset: float) -> tuple[float, float, float, float]:
+        # PDF boxes count from the sheet's bottom-left corner, in points.
+        return ((slug - inset) * MM_TO_BP, (slug - inset) * MM_TO_BP,
+                (slug + w_mm + inset) * MM_TO_BP, (slug + h_mm + inset) * MM_TO_BP)
+
+    start, end = bleed_mm + MARK_GAP_MM, bleed_mm + MARK_GAP_MM + MARK_LENGTH_MM
+    marks = []
+    for cx, sx in ((0.0, -1.0), (w_mm, 1.0)):
+        for cy, sy in ((0.0, -1.0), (h_mm, 1.0)):
+            marks.append((cx + sx * start, cy, cx + sx * end, cy))  # along the trim's top/bottom
+            marks.append((cx, cy + sy * start, cx, cy + sy * end))  # along its left/right side
+    return PrintSetup(bleed_mm, slug, media_w, media_h, box(0.0), box(bleed_mm), tuple(marks))
+
+
+def extended(rect: Rect, w_mm: float, h_mm: float, bleed_mm: float, *, always: bool) -> Rect:
+    """``rect`` pushed ``bleed_mm`` past every page edge it meets (every edge if ``always``)."""
+    return Rect(rect.left_mm - bleed_mm if always or rect.left_mm <= TOUCHING_MM else rect.left_mm,
+                rect.top_mm - bleed_mm if always or rect.top_mm <= TOUCHING_MM else rect.top_mm,
+                rect.right_mm + bleed_mm if always or rect.right_mm >= w_mm - TOUCHING_MM
+                else rect.right_mm,
+                rect.bottom_mm + bleed_mm if always or rect.bottom_mm >= h_mm - TOUCHING_MM
+                else rect.bottom_mm)
+
+
+def covering(scene: PictureScene, target: Rect) -> PictureScene:
+    """The picture scaled, proportions kept, to cover ``target``, and clipped to it."""
+    w, h = target.right_mm - target.left_mm, target.bottom_mm - target.top_mm
+    if scene.plan.pixel_size == (0, 0):  # a PDF: stretched, as on the page itself
+        new_w, new_h = w, h
+    else:
+        scale = max(w / scene.w_mm, h / scene.h_mm)
+        new_w, new_h = scene.w_mm * scale, scene.h_mm * scale
+    centre_x, centre_y = (target.left_mm + target.right_mm) / 2, (target.top_mm + target.bottom_mm) / 2
+    return replace(scene, left_mm=centre_x - new_w / 2, top_mm=centre_y - new_h / 2, w_mm=new_w,
+                   h_mm=new_h, clip=target)
+
+
+def page_for_print(page: PageScene, bleeding: set[str], bleed_mm: float) -> PageScene:
+    w, h = page.w_mm, page.h_mm
+    whole = Rect(-bleed_mm, -bleed_mm, w + bleed_mm, h + bleed_mm)
+    background = []
+    for scene in page.background:
+        if isinstance(scene, BlockScene):
+            background.append(replace(scene, rect=whole))
+        elif isinstance(scene, PictureScene):
+            background.append(covering(scene, whole))
+        else:
+            background.append(scene)
+    items = []
+    for scene in page.items:
+        if scene.item_id in bleeding and isinstance(scene, BlockScene):
+            scene = replace(scene, rect=extended(scene.rect, w, h, bleed_mm, always=False))
+        elif scene.item_id in bleeding and isinstance(scene, PictureScene):
+            own = scene.clip or Rect(scene.left_mm, scene.top_mm, scene.left_mm + scene.w_mm,
+                                     scene.top_mm + scene.h_mm)
+            target = extended(own, w, h, bleed_mm, always=False)
+            if target != own:
+                scene = covering(scene, target)
+        items.append(scene)
+    return replace(page, background=background, items=items,
+                   print_setup=print_setup(w, h, bleed_mm))
+
+
+def for_print(scene: DocumentScene, project: Project, bleed_mm: float) -> DocumentScene:
+    """The document as the print shop wants it (see the module's docstring)."""
+    pages = []
+    for page_scene, page in zip(scene.pages, project.pages):
+        bleeding = {item.id for item in page.items if getattr(item, "bleed", False)}
+        pages.append(page_for_print(page_scene, bleeding, bleed_mm))
+    return replace(scene, pages=pages)
