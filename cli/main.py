@@ -155,6 +155,7 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     from floatpage.model.layout import engine_for_page
+    from floatpage.physics.alignment import measure_alignment
     from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
 
     print(f"{args.path}: valid project, {len(project.pages)} page(s)")
@@ -164,6 +165,8 @@ def cmd_check(args: argparse.Namespace) -> int:
         engine = engine_for_page(page, project.physics)
         quality = engine.quality()
         print(f"page {page.id}: {quality.summary()}")
+        bodies = engine.bodies
+        print(f"  {measure_alignment(bodies.centres, bodies.sizes, bodies.decorative).summary()}")
         issues += len(quality.overlapping_pairs) + len(quality.off_page)
         if quality.overlapping_pairs or quality.min_gap_mm >= gutter - GAP_TOLERANCE_MM:
             continue

@@ -373,9 +373,9 @@ def test_an_internal_error_has_its_own_exit_code_and_a_crash_log(tmp_path, monke
 
 def test_the_engine_runs_under_a_memory_limit_and_says_so_when_it_is_hit(tmp_path):
     path = card(tmp_path)
-    env = {**os.environ, "FLOATPAGE_ENGINE_MEMORY_MB": "150"}  # far below what LuaTeX needs
+    env = {**os.environ, "FLOATPAGE_ENGINE_MEMORY_MB": "40"}  # far below what LuaTeX needs
     result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "render", str(path)],
                             capture_output=True, text=True, timeout=300, cwd=ROOT, env=env)
     assert result.returncode == 1
-    assert "memory limit of 150 MB" in result.stderr and "FLOATPAGE_ENGINE_MEMORY_MB" in result.stderr
+    assert "memory limit of 40 MB" in result.stderr and "FLOATPAGE_ENGINE_MEMORY_MB" in result.stderr
     assert not (tmp_path / "card.pdf").exists()
