@@ -1,7 +1,10 @@
 """The document model: pages and the items that float on them.
 
-Plain dataclasses, free of TOML, physics and UI, so every other stage (the
-physics bridge, the typesetter, the editor) reads the same objects.
+Plain dataclasses, free of TOML and UI, so every other stage (the physics bridge, the
+typesetter, the editor) reads the same objects.  Each field also says what a project file may
+write for it (`model.key_specs.spec`): this is the one description of the model, from which
+`model.schema` takes the keys the loader checks.  The [physics] settings take their defaults
+and ranges from the engine's own `physics.params`.
 
 Units are millimetres. The page origin is its top-left corner, x grows to the
 right and y grows down; an item's (x, y) is the centre of its rectangle, as in
@@ -14,31 +17,42 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal, Union
 
+from floatpage.model.key_specs import (
+    CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, WEEKDAYS, at_most_chars, between, colour,
+    finite, item_id, one_of, positive, spec,
+)
+from floatpage.physics.params import DISTANCES, MODES, Params, out_of_range
+
 FORMAT_VERSION = 1
 
 Orientation = Literal["portrait", "landscape"]
 FontFamily = Literal["serif", "sans", "display"]
-WEEKDAYS = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
 ITEM_KINDS = ("text", "picture", "block", "calendar")
+
+
+def setting(name: str, kind: str = "number") -> Any:
+    """A [physics] field: the engine's default, and the engine's own range (physics.params)."""
+    return field(default=getattr(Params, name),
+                 metadata=spec(kind, lambda value: out_of_range(name, value)))
 
 
 @dataclass
 class PointAnchor:
     """Glue an item to a page point (section 4.5): a spring of rigidity gamma, or hard."""
 
-    x: float
-    y: float
-    gamma: float = 1.0
-    hard: bool = False
+    x: float = field(metadata=spec("number", finite, required=True))
+    y: float = field(metadata=spec("number", finite, required=True))
+    gamma: float = field(default=1.0, metadata=spec("number", between(0.0, 1.0)))
+    hard: bool = field(default=False, metadata=spec("bool"))
 
 
 @dataclass
 class ItemAnchor:
     """Glue an item to another item: the follower keeps offset (dx, dy) from the target's centre."""
 
-    to: str
-    dx: float = 0.0
-    dy: float = 0.0
+    to: str = field(metadata=spec("str", required=True))
+    dx: float = field(default=0.0, metadata=spec("number", finite))
+    dy: float = field(default=0.0, metadata=spec("number", finite))
 
 
 Anchor = Union[PointAnchor, ItemAnchor]
@@ -48,14 +62,14 @@ Anchor = Union[PointAnchor, ItemAnchor]
 class ItemBase:
     """What every item has: a stable id, a rectangle, a z-order and how the physics treats it."""
 
-    id: str
-    x: float
-    y: float
-    w: float
-    h: float
-    z: int = 0
-    decorative: bool = False
-    anchor: Anchor | None = None
+    id: str = field(metadata=spec("str", item_id, required=True))
+    x: float = field(metadata=spec("number", finite, required=True))
+    y: float = field(metadata=spec("number", finite, required=True))
+    w: float = field(metadata=spec("number", positive, required=True))
+    h: float = field(metadata=spec("number", positive, required=True))
+    z: int = field(default=0, metadata=spec("int"))
+    decorative: bool = field(default=False, metadata=spec("bool"))
+    anchor: Anchor | None = field(default=None, metadata=spec("table"))
 
     kind = "base"
 
@@ -72,11 +86,11 @@ class ItemBase:
 class TextItem(ItemBase):
     """A text box whose font size the typesetter fits to the rectangle."""
 
-    text: str = ""
-    font: FontFamily = "serif"
-    color: str = "#000000"
-    bold: bool = False
-    italic: bool = False
+    text: str = field(default="", metadata=spec("str", at_most_chars(MAX_TEXT_CHARS)))
+    font: FontFamily = field(default="serif", metadata=spec("str", one_of(*FONT_FAMILIES)))
+    color: str = field(default="#000000", metadata=spec("str", colour))
+    bold: bool = field(default=False, metadata=spec("bool"))
+    italic: bool = field(default=False, metadata=spec("bool"))
 
     kind = "text"
 
@@ -85,9 +99,10 @@ class TextItem(ItemBase):
 class PictureItem(ItemBase):
     """A picture scaled to its rectangle; `path` is relative to the project file."""
 
-    path: str = ""
-    lock_aspect: bool = True
-    bleed: bool = False  # print: extend past the trim wherever the picture meets the page edge
+    path: str = field(default="", metadata=spec("str", required=True))
+    lock_aspect: bool = field(default=True, metadata=spec("bool"))
+    # print: extend past the trim wherever the picture meets the page edge
+    bleed: bool = field(default=False, metadata=spec("bool"))
 
     kind = "picture"
 
@@ -96,9 +111,10 @@ class PictureItem(ItemBase):
 class BlockItem(ItemBase):
     """A rectangle of colour, for decoration or as a placeholder."""
 
-    color: str = "#cccccc"
-    opacity: float = 1.0
-    bleed: bool = False  # print: extend past the trim wherever the block meets the page edge
+    color: str = field(default="#cccccc", metadata=spec("str", colour))
+    opacity: float = field(default=1.0, metadata=spec("number", between(0.0, 1.0)))
+    # print: extend past the trim wherever the block meets the page edge
+    bleed: bool = field(default=False, metadata=spec("bool"))
 
     kind = "block"
 
@@ -107,12 +123,12 @@ class BlockItem(ItemBase):
 class CalendarItem(ItemBase):
     """A month panel: a grid of the month's days with localised names."""
 
-    year: int = 2027
-    month: int = 1
-    first_weekday: str = "monday"
-    language: str = "en"
-    font: FontFamily = "sans"
-    color: str = "#000000"
+    year: int = field(default=2027, metadata=spec("int", between(1, 9999)))
+    month: int = field(default=1, metadata=spec("int", between(1, 12)))
+    first_weekday: str = field(default="monday", metadata=spec("str", one_of(*WEEKDAYS)))
+    language: str = field(default="en", metadata=spec("str", one_of(*CALENDAR_LANGUAGES)))
+    font: FontFamily = field(default="sans", metadata=spec("str", one_of(*FONT_FAMILIES)))
+    color: str = field(default="#000000", metadata=spec("str", colour))
 
     kind = "calendar"
 
@@ -130,21 +146,22 @@ ITEM_CLASSES: dict[str, type] = {
 class Background:
     """A page background: a colour, or a picture covering the page (bleeding to its edge)."""
 
-    color: str | None = None
-    picture: str | None = None
+    color: str | None = field(default=None, metadata=spec("str", colour))
+    picture: str | None = field(default=None, metadata=spec("str"))
 
 
 @dataclass
 class Page:
     """One independent page; items never flow between pages (paper, section 4)."""
 
-    id: str
-    size: str = "A4"
-    orientation: Orientation = "portrait"
-    width_mm: float = 210.0
-    height_mm: float = 297.0
-    background: Background | None = None
-    items: list[Item] = field(default_factory=list)
+    id: str = field(metadata=spec("str", item_id, required=True))
+    size: str = field(default="A4", metadata=spec("str"))
+    orientation: Orientation = field(default="portrait",
+                                     metadata=spec("str", one_of("portrait", "landscape")))
+    width_mm: float = field(default=210.0, metadata=spec("number", between(10.0, 5000.0)))
+    height_mm: float = field(default=297.0, metadata=spec("number", between(10.0, 5000.0)))
+    background: Background | None = field(default=None, metadata=spec("table"))
+    items: list[Item] = field(default_factory=list, metadata=spec("array"))
 
     def item(self, item_id: str) -> Item:
         for item in self.items:
@@ -166,16 +183,16 @@ class PhysicsSettings:
     per-step decay of alpha and beta.
     """
 
-    mode: str = "fast"
-    alpha: float = 150.0
-    beta: float = 1.0
-    delta: float = 0.01
-    dt: float = 0.005
-    steps_per_frame: int = 500
-    distance: str = "axis"
-    heat_decay: float = 0.01
-    gutter_mm: float = 3.0
-    seed: int = 0
+    mode: str = field(default=Params.mode, metadata=spec("str", one_of(*MODES)))
+    alpha: float = setting("alpha")
+    beta: float = setting("beta")
+    delta: float = setting("delta")
+    dt: float = setting("dt")
+    steps_per_frame: int = setting("steps_per_frame", "int")
+    distance: str = field(default=Params.distance, metadata=spec("str", one_of(*DISTANCES)))
+    heat_decay: float = setting("heat_decay")
+    gutter_mm: float = setting("gutter_mm")
+    seed: int = setting("seed", "int")
 
 
 @dataclass

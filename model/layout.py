@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import copy
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 
 
 from floatpage.physics import Engine, Params, Quality, SettleReport
@@ -24,19 +24,9 @@ STUCK_ROUNDS = 3  # probes without gain that prove a too-full page stuck
 
 
 def params_from_settings(settings: PhysicsSettings) -> Params:
-    """The engine's Params from a project's [physics] table (same field names)."""
-    return Params(
-        mode=settings.mode,
-        alpha=settings.alpha,
-        beta=settings.beta,
-        delta=settings.delta,
-        dt=settings.dt,
-        steps_per_frame=settings.steps_per_frame,
-        distance=settings.distance,
-        heat_decay=settings.heat_decay,
-        gutter_mm=settings.gutter_mm,
-        seed=settings.seed,
-    )
+    """The engine's Params from a project's [physics] table: the same names, field for field
+    (PhysicsSettings takes its fields' defaults and ranges from Params itself)."""
+    return Params(**{f.name: getattr(settings, f.name) for f in fields(PhysicsSettings)})
 
 
 def engine_for_page(page: Page, settings: PhysicsSettings) -> Engine:

@@ -29,6 +29,34 @@ A4_H_MM = 297.0
 MODES = ("fast", "paper")
 DISTANCES = ("euclidean", "axis")
 
+# The one place the settings' ranges are written: Params checks them, and the project loader
+# (floatpage.model) reads them to judge a file.  (low, high, whether low itself is allowed.)
+# The upper bounds keep the Euler update (4, 5) finite: alpha = dt = 1e308 overflowed to NaN.
+LIMITS: dict[str, tuple[float, float, bool]] = {
+    "alpha": (0.0, 1e6, False),
+    "beta": (0.0, 1e6, True),
+    "delta": (0.0, 1.0, True),
+    "dt": (0.0, 1.0, False),
+    "steps_per_frame": (1, 100_000, True),
+    "heat_decay": (0.0, 0.5, True),
+    "gutter_mm": (0.0, 100.0, True),
+    "seed": (0, 2**63 - 1, True),
+    "heat_min": (0.0, 1.0, True),
+    "fast_steps_per_frame": (1, 100_000, True),
+}
+
+
+def out_of_range(name: str, value: float) -> str | None:
+    """Why ``value`` is no good for the setting ``name``, in words for a user; None if it is."""
+    low, high, low_allowed = LIMITS[name]
+    if not math.isfinite(value):
+        return "must be a finite number"
+    if value < low or value == low and not low_allowed:
+        return f"must be {'at least' if low_allowed else 'greater than'} {low:g}"
+    if value > high:
+        return f"must be at most {high:g}"
+    return None
+
 
 def page_scale(page_w_mm: float, page_h_mm: float) -> float:
     """Linear size of a page relative to A4 (1.0 for A4, about 0.64 for a 5x8 inch card)."""
@@ -64,19 +92,10 @@ class Params:
             raise ValueError(f"mode must be one of {MODES}, not {self.mode!r}")
         if self.distance not in DISTANCES:
             raise ValueError(f"distance must be one of {DISTANCES}, not {self.distance!r}")
-        finite = ("alpha", "beta", "delta", "dt", "heat_decay", "gutter_mm", "heat_min")
-        for name in finite:
-            value = getattr(self, name)
-            if not math.isfinite(value) or value < 0:
-                raise ValueError(f"{name} must be a finite number >= 0, not {value!r}")
-        if not self.delta <= 1:
-            raise ValueError(f"delta must lie in [0, 1], not {self.delta!r}")
-        if not self.heat_decay < 1:
-            raise ValueError(f"heat_decay must lie in [0, 1), not {self.heat_decay!r}")
-        if self.dt <= 0:
-            raise ValueError("dt must be > 0")
-        if self.steps_per_frame < 1 or self.fast_steps_per_frame < 1:
-            raise ValueError("steps per frame must be >= 1")
+        for name in LIMITS:
+            complaint = out_of_range(name, getattr(self, name))
+            if complaint:
+                raise ValueError(f"{name} {complaint}, not {getattr(self, name)!r}")
 
     @property
     def frame_steps(self) -> int:

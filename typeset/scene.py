@@ -8,13 +8,13 @@ picture files (to hash them) but writes nothing.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from floatpage.model.document import (
     BlockItem, CalendarItem, Page, PictureItem, Project, TextItem,
 )
+from floatpage.model.key_specs import HEX_COLOUR
 from floatpage.typeset.calendar_panel import Rect, layout_calendar
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.pictures import PicturePlan, plan_picture
@@ -96,9 +96,6 @@ class DocumentScene:
 
 def item_label(item, page: Page) -> str:
     return f'item "{item.id}" on page "{page.id}"'
-
-
-HEX_COLOUR = re.compile(r"^#[0-9a-fA-F]{6}$")
 
 
 def check_item(item, label: str) -> None:

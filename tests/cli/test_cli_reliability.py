@@ -257,7 +257,7 @@ def test_a_negative_seed_is_a_clear_error(tmp_path):
     path.write_text(path.read_text().replace("seed = 0", "seed = -1"))
     result = run("settle", str(path))
     assert result.returncode == 1
-    assert '"seed" must be between 0 and' in result.stderr
+    assert '"seed" must be at least 0' in result.stderr
 
 
 # 10, 11. pictures ------------------------------------------------------------------------------------
