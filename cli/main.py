@@ -9,10 +9,11 @@ stderr only when stderr is a terminal, so pipes and CI logs stay quiet.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 import time
 from pathlib import Path
-from typing import Callable, Sequence
+from typing import Callable, Iterator, Sequence
 
 from floatpage.model.errors import FloatpageError, printable
 from floatpage.model.schema import CALENDAR_LANGUAGES
@@ -23,19 +24,20 @@ STARTER_KINDS = ("blank", "calendar", "card", "album", "flyer")
 WEEKDAY_NAMES = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
 
 
-def progress_printer(quiet: bool) -> Callable[[str], None]:
-    """Report progress on a terminal, stay silent in a pipe."""
+@contextlib.contextmanager
+def progress_line(quiet: bool) -> Iterator[Callable[[str], None]]:
+    """``with progress_line(quiet) as show: show("settling…")``: rich's spinner and a line of
+    text on a terminal, gone when the block ends (also by an error); silent in a pipe."""
     if quiet or not sys.stderr.isatty():
-        return lambda message: None
+        yield lambda message: None
+        return
+    from rich.console import Console
+    from rich.progress import Progress, SpinnerColumn, TextColumn
 
-    def show(message: str) -> None:
-        print(f"\r\033[K{message}", end="", file=sys.stderr, flush=True)
-    return show
-
-
-def finish_progress(show: Callable[[str], None]) -> None:
-    if sys.stderr.isatty():
-        print("\r\033[K", end="", file=sys.stderr, flush=True)
+    with Progress(SpinnerColumn(), TextColumn("{task.description}"), transient=True,
+                  console=Console(stderr=True)) as progress:
+        task = progress.add_task("", total=None)
+        yield lambda message: progress.update(task, description=message)
 
 
 def cmd_new(args: argparse.Namespace) -> int:
@@ -115,12 +117,11 @@ def cmd_settle(args: argparse.Namespace) -> int:
 def settle_and_report(project, args: argparse.Namespace) -> int:
     from floatpage.model.layout import settle_project
 
-    show = progress_printer(args.quiet)
-    show(f"settling {len(project.pages)} page(s)…")
-    started = time.perf_counter()
-    reports = settle_project(project)
-    elapsed = time.perf_counter() - started
-    finish_progress(show)
+    with progress_line(args.quiet) as show:
+        show(f"settling {len(project.pages)} page(s)…")
+        started = time.perf_counter()
+        reports = settle_project(project)
+        elapsed = time.perf_counter() - started
     for page, report in zip(project.pages, reports):
         state = "settled" if report.settled else "NOT settled (stopped at the step limit)"
         print(f"page {page.id}: {state} after {report.steps} steps, final energy {report.energy:.3g}")
@@ -135,15 +136,14 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.typeset import render_pdf
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
-    show = progress_printer(args.quiet)
-    if not args.no_settle:
-        show("settling the layout…")
-        settle_project(project)
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
-    report = render_pdf(project, out, tex_out=Path(args.tex) if args.tex else None,
-                        fragment_out=Path(args.fragment) if args.fragment else None,
-                        progress=show, print_bleed_mm=args.bleed if args.print else None)
-    finish_progress(show)
+    with progress_line(args.quiet) as show:
+        if not args.no_settle:
+            show("settling the layout…")
+            settle_project(project)
+        report = render_pdf(project, out, tex_out=Path(args.tex) if args.tex else None,
+                            fragment_out=Path(args.fragment) if args.fragment else None,
+                            progress=show, print_bleed_mm=args.bleed if args.print else None)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
     print(f"wrote {report.pdf} ({report.pages} page(s), {report.seconds:.2f} s)")
