@@ -6,7 +6,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pypdf
+import pdfplumber
 import pytest
 
 from floatpage.model import BlockItem, Page, Project, TextItem, load_project, save_project
@@ -66,11 +66,11 @@ def test_render_writes_pdf_and_tex(crowded_project, tmp_path):
     pdf, tex = tmp_path / "out.pdf", tmp_path / "out.tex"
     result = run("render", str(crowded_project), "-o", str(pdf), "--tex", str(tex))
     assert result.returncode == 0, result.stderr
-    reader = pypdf.PdfReader(pdf)
-    assert len(reader.pages) == 1
-    width, height = float(reader.pages[0].mediabox.width), float(reader.pages[0].mediabox.height)
-    assert abs(width - 210 / 25.4 * 72) < 0.5 and abs(height - 297 / 25.4 * 72) < 0.5
-    assert "Spring sale!" in reader.pages[0].extract_text()
+    with pdfplumber.open(pdf) as reader:
+        assert len(reader.pages) == 1
+        width, height = float(reader.pages[0].width), float(reader.pages[0].height)
+        assert abs(width - 210 / 25.4 * 72) < 0.5 and abs(height - 297 / 25.4 * 72) < 0.5
+        assert "Spring sale!" in reader.pages[0].extract_text()
     assert "\\documentclass" in tex.read_text()
 
 

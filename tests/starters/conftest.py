@@ -11,16 +11,14 @@ from pathlib import Path
 
 import pdfplumber
 import pytest
-from pypdf import PdfReader
 
 
 @dataclass
 class Rendered:
-    """A project and the PDF made from it, opened both ways."""
+    """A project and the PDF made from it, opened with pdfplumber."""
 
     project: object
     pdf: Path
-    reader: PdfReader
     plumber: object
 
 
@@ -31,7 +29,7 @@ def render(project, out_pdf: Path) -> Rendered:
     settle_project(project)
     report = render_pdf(project, out_pdf)
     pdf = Path(getattr(report, "pdf", out_pdf))
-    return Rendered(project, pdf, PdfReader(pdf), pdfplumber.open(pdf))
+    return Rendered(project, pdf, pdfplumber.open(pdf))
 
 
 @pytest.fixture(scope="session")

@@ -27,14 +27,14 @@ class DayMark:
     y: float
 
 
-def page_sizes_pt(reader) -> list[tuple[float, float]]:
-    """(width, height) of each page of a pypdf reader, in pt."""
-    return [(float(page.mediabox.width), float(page.mediabox.height)) for page in reader.pages]
+def page_sizes_pt(pdf) -> list[tuple[float, float]]:
+    """(width, height) of each page of a pdfplumber PDF, in pt."""
+    return [(float(page.width), float(page.height)) for page in pdf.pages]
 
 
-def assert_page_sizes(reader, pages) -> None:
+def assert_page_sizes(pdf, pages) -> None:
     """Every PDF page has its model page's size, within half a point."""
-    sizes = page_sizes_pt(reader)
+    sizes = page_sizes_pt(pdf)
     assert len(sizes) == len(pages), f"{len(sizes)} PDF pages for {len(pages)} project pages"
     for (w_pt, h_pt), page in zip(sizes, pages):
         assert abs(w_pt - page.width_mm * PT_PER_MM) <= SIZE_TOLERANCE_PT, page.id

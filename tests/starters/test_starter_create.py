@@ -141,7 +141,7 @@ def test_each_starter_renders_its_pages(created):
     pages, size = EXPECTED[kind]
     assert len(rendered.project.pages) == pages
     assert {p.size for p in rendered.project.pages} == {size}
-    assert_page_sizes(rendered.reader, rendered.project.pages)
+    assert_page_sizes(rendered.plumber, rendered.project.pages)
     if kind == "calendar":
         assert {p.orientation for p in rendered.project.pages} == {"landscape"}
         for page, plumber_page in zip(rendered.project.pages, rendered.plumber.pages):

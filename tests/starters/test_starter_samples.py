@@ -49,7 +49,7 @@ def test_sample_pdf_has_its_pages_at_their_size(sample):
     name, rendered = sample
     assert len(rendered.project.pages) == EXPECTED_PAGES[name]
     assert {page.size for page in rendered.project.pages} == {EXPECTED_SIZE[name]}
-    assert_page_sizes(rendered.reader, rendered.project.pages)
+    assert_page_sizes(rendered.plumber, rendered.project.pages)
 
 
 def test_sample_is_spread_out_clear_of_the_edges(sample):

@@ -7,7 +7,7 @@ from pathlib import Path
 import pdfplumber
 import pytest
 from PIL import Image
-from pypdf import PdfReader
+from pdfminer.pdftypes import resolve1  # pdfplumber's own parser
 
 from floatpage.model.document import Background, BlockItem, Page, PictureItem, Project
 from floatpage.typeset import render_pdf
@@ -99,9 +99,10 @@ def test_every_block_lands_on_its_rectangle_in_z_order(rendered):
 
 def test_block_opacity_reaches_the_pdf(rendered):
     _, out, _ = rendered
-    states = PdfReader(out).pages[1]["/Resources"]["/ExtGState"]
-    assert any(abs(float(state.get_object().get("/ca", 1)) - 0.5) < 1e-6
-               for state in states.values())
+    with pdfplumber.open(out) as pdf:
+        states = resolve1(resolve1(pdf.pages[1].page_obj.resources)["ExtGState"])
+        assert any(abs(float(resolve1(state).get("ca", 1)) - 0.5) < 1e-6
+                   for state in states.values())
 
 
 def test_background_picture_covers_the_whole_page(rendered):

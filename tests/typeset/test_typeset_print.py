@@ -1,6 +1,6 @@
 """`render --print`: the real PDF has TrimBox and BleedBox where the page is, the background
 and `bleed = true` items reach into the bleed, other items do not, and crop marks stand
-outside the bleed.  Read back with pypdf and with pixels from pdftoppm."""
+outside the bleed.  Read back with pdfplumber and with pixels from pdftoppm."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pypdf
+import pdfplumber
 import pytest
 from PIL import Image
 
@@ -51,10 +51,10 @@ def pixel(image: Image.Image, x_mm: float, y_mm: float) -> tuple[int, int, int]:
 
 def test_the_pdf_says_where_to_trim_and_how_far_the_bleed_goes(printed):
     out, _ = printed
-    page = pypdf.PdfReader(out).pages[0]
-    media = [float(v) for v in page.mediabox]
-    trim = [float(v) for v in page.trimbox]
-    bleed = [float(v) for v in page.bleedbox]
+    with pdfplumber.open(out) as pdf:
+        boxes = pdf.pages[0].page_obj.attrs  # as written: from the sheet's bottom-left corner
+        media, trim, bleed = ([float(v) for v in boxes[name]]
+                              for name in ("MediaBox", "TrimBox", "BleedBox"))
     assert media == pytest.approx([0, 0, (W + 2 * SLUG) * MM_TO_BP, (H + 2 * SLUG) * MM_TO_BP], abs=0.05)
     assert trim == pytest.approx([SLUG * MM_TO_BP, SLUG * MM_TO_BP, (SLUG + W) * MM_TO_BP,
                                   (SLUG + H) * MM_TO_BP], abs=0.01)
@@ -92,6 +92,7 @@ def test_without_print_the_pdf_is_the_page_alone(tmp_path):
     result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "render", str(path), "-o", str(out)],
                             capture_output=True, text=True, cwd=ROOT, timeout=300)
     assert result.returncode == 0, result.stderr
-    page = pypdf.PdfReader(out).pages[0]
-    assert [float(v) for v in page.mediabox] == pytest.approx([0, 0, W * MM_TO_BP, H * MM_TO_BP], abs=0.05)
-    assert "/TrimBox" not in page
+    with pdfplumber.open(out) as pdf:
+        boxes = pdf.pages[0].page_obj.attrs
+    assert [float(v) for v in boxes["MediaBox"]] == pytest.approx([0, 0, W * MM_TO_BP, H * MM_TO_BP], abs=0.05)
+    assert "TrimBox" not in boxes
