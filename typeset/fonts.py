@@ -19,7 +19,6 @@ from pathlib import Path
 
 import uharfbuzz as hb
 
-STYLES = ("regular", "bold", "italic", "bolditalic")
 # Contextual alternates off, in HarfBuzz here and in fontspec (RawFeature=-calt): Fira
 # Sans's calt turns "#&" into a lone swash ampersand, losing the "#" the user typed.
 SHAPING_FEATURES = {"calt": False}
