@@ -15,6 +15,7 @@ import itertools
 import os
 from pathlib import Path
 
+from floatpage.model.atomic_file import atomic_write
 from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, Project,
     TextItem,
@@ -44,6 +45,21 @@ def picture_aspect(path: Path) -> float | None:
         return height / width if width else None
     except Exception:  # unreadable: the item keeps the default shape
         return None
+
+
+def copy_into(picture: Path, folder: Path) -> Path:
+    """Copy ``picture`` into ``folder`` under its own name (numbered if another file holds it);
+    the same bytes already there are reused."""
+    folder.mkdir(parents=True, exist_ok=True)
+    data = picture.read_bytes()
+    candidate, number = folder / picture.name, 1
+    while candidate.exists():
+        if candidate.is_file() and candidate.read_bytes() == data:
+            return candidate
+        number += 1
+        candidate = folder / f"{picture.stem}-{number}{picture.suffix}"
+    atomic_write(candidate, data, backup=False)
+    return candidate
 
 
 class EditSession:
@@ -185,13 +201,18 @@ class EditSession:
         return item
 
     def relative_picture_path(self, path: str | Path) -> str:
-        """Relative to the project's folder when the picture is inside it, else absolute."""
+        """The path to write for a picture the user picked: relative when it is inside the
+        project's folder; otherwise a copy in the folder's `pictures/` (a project reads only
+        its own folder, issue 12), unless the project allows outside files."""
         path = Path(path).expanduser().resolve()
         base = self.project.base_dir.resolve()
         try:
             return str(path.relative_to(base))
         except ValueError:
+            pass
+        if self.project.allow_outside_files:
             return os.fspath(path)
+        return str(copy_into(path, base / "pictures").relative_to(base))
 
     def delete_selected(self) -> str:
         item = self._require_selected()
