@@ -1,5 +1,6 @@
-"""Physics benchmark: the fast mode against the paper's model (and a d3-force-style layout),
-in one run, on the seeded scenes of issue 3.
+"""Physics benchmark: the fast mode against the paper's model and the real d3-force, in one run,
+on the seeded scenes of issue 3.  d3-force is npm's, pinned by benchmarks/d3/package-lock.json
+and run by node (installed with `npm ci` on first use); the test suite never needs node.
 
     .venv/bin/python benchmarks/physics.py                 # everything (about 15 minutes)
     .venv/bin/python benchmarks/physics.py --paper-cap 10  # shorter runs of the slow references
@@ -24,6 +25,8 @@ in a worse layout.  The "start" row is the scattered page every run begins from.
 from __future__ import annotations
 
 import argparse
+import json
+import subprocess
 import statistics
 import sys
 import time
@@ -130,45 +133,32 @@ def time_fast_steps(scene: Scene, steps: int, repeats: int = 5) -> float:
     return best
 
 
-def run_d3_style(scene: Scene, ticks: int = 300) -> Run:
-    """d3-force's defaults on rectangles: forceManyBody(-30), forceX/forceY(0.1) to the page
-    centre, and a rectangle collide force (push overlapping pairs apart along the axis of least
-    overlap, weighted by area, strength 1), alpha 1 -> 0.001 over 300 ticks, velocityDecay
-    0.4.  No walls: d3-force has no notion of a page."""
-    centres, sizes = scene.centres.copy(), scene.sizes
-    halves, areas = sizes / 2, sizes.prod(axis=1)
-    velocities = np.zeros_like(centres)
-    middle = np.array([scene.page_w_mm / 2, scene.page_h_mm / 2])
-    alpha, decay = 1.0, 1 - 0.001 ** (1 / 300)
-    rng = np.random.default_rng(0)
-    start = time.perf_counter()
-    for _ in range(ticks):
-        d = centres[:, None, :] - centres[None, :, :]
-        same = (np.abs(d) < 1e-9).all(axis=-1)
-        np.fill_diagonal(same, False)
-        if same.any():  # d3's jiggle
-            d = d + np.where(same[..., None], rng.uniform(-1e-6, 1e-6, d.shape), 0)
-        l2 = np.maximum((d**2).sum(axis=-1), 1.0)
-        np.fill_diagonal(l2, np.inf)
-        velocities += (d * (30 * alpha / l2)[..., None]).sum(axis=1)  # many-body, repulsive
-        velocities += (middle - centres) * 0.1 * alpha  # forceX / forceY
-        overlap = halves[:, None, :] + halves[None, :, :] - np.abs(d)
-        hit = (overlap > 0).all(axis=-1)
-        np.fill_diagonal(hit, False)
-        along_x = overlap[..., 0] < overlap[..., 1]
-        share = areas[None, :] / (areas[:, None] + areas[None, :])
-        push = np.zeros_like(d)
-        push[..., 0] = np.where(hit & along_x, np.sign(d[..., 0]) * overlap[..., 0], 0)
-        push[..., 1] = np.where(hit & ~along_x, np.sign(d[..., 1]) * overlap[..., 1], 0)
-        velocities += (push * share[..., None]).sum(axis=1) / 2  # each pair seen twice
-        velocities *= 1 - 0.4
-        centres += velocities
-        alpha += (0 - alpha) * decay
-    seconds = time.perf_counter() - start
-    quality = measure_quality(scene.page_w_mm, scene.page_h_mm, centres, sizes, 3.0)
+D3_FOLDER = Path(__file__).resolve().parent / "d3"
+
+
+def d3_ready() -> None:
+    """Install the pinned d3-force from the lockfile (npm ci) the first time it is needed."""
+    if not (D3_FOLDER / "node_modules" / "d3-force").is_dir():
+        subprocess.run(["npm", "ci", "--no-audit", "--no-fund"], cwd=D3_FOLDER, check=True,
+                       stdout=subprocess.DEVNULL)
+
+
+def run_d3(scene: Scene, ticks: int = 300, gutter_mm: float = 3.0) -> Run:
+    """The real d3-force (npm d3-force 3.0.0, run by node; see benchmarks/d3/layout.mjs):
+    forceManyBody, forceX/forceY to the page centre, a rectangle collide force keeping the
+    gutter, positions clamped to the page, 300 ticks.  The time is d3's own, measured in node
+    (node's start-up is left out)."""
+    d3_ready()
+    request = {"page_w": scene.page_w_mm, "page_h": scene.page_h_mm, "gutter": gutter_mm,
+               "ticks": ticks, "items": np.column_stack([scene.centres, scene.sizes]).tolist()}
+    done = subprocess.run(["node", "layout.mjs"], cwd=D3_FOLDER, input=json.dumps(request),
+                          capture_output=True, text=True, check=True)
+    answer = json.loads(done.stdout)
+    centres, sizes = np.array(answer["positions"], float), scene.sizes
+    quality = measure_quality(scene.page_w_mm, scene.page_h_mm, centres, sizes, gutter_mm)
     lost = int((~((centres >= 0) & (centres <= [scene.page_w_mm, scene.page_h_mm]))
                 .all(axis=1)).sum())
-    return Run(seconds, ticks, True, quality.overlap_fraction, len(quality.off_page),
+    return Run(answer["seconds"], ticks, True, quality.overlap_fraction, len(quality.off_page),
                quality.min_gap_mm, quality.gap_evenness, lost)
 
 
@@ -229,6 +219,7 @@ def main() -> None:
     parser.add_argument("--only", metavar="TEXT", default="",
                         help="run only the scenes whose name contains TEXT, e.g. '50 items'")
     parser.add_argument("--no-live", action="store_true", help="skip the live editor figures")
+    parser.add_argument("--no-d3", action="store_true", help="skip the d3-force peer (needs node)")
     args = parser.parse_args()
 
     print("| scene | mode | s | steps | settled | overlap | off page | lost | min gap mm | even |")
@@ -243,7 +234,8 @@ def main() -> None:
         if not args.skip_paper:
             for name, decay in PAPER_COOLING:
                 runs.append((f"paper, cooling {name}", run_paper(scene, args.paper_cap, decay)))
-        runs.append(("d3-style, 300 ticks", run_d3_style(scene)))
+        if not args.no_d3:
+            runs.append(("d3-force 3.0.0 (node), 300 ticks", run_d3(scene)))
         for label, run in runs:
             ratio = "" if run is fast else f" ({times(run.seconds / fast.seconds)} to settle"
             if label.startswith("paper"):

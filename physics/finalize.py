@@ -81,6 +81,22 @@ def separation_moves(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: 
     return direction * moves
 
 
+def moves_from_gaps(d: np.ndarray, gaps: np.ndarray, clearance: float,
+                    blocked: np.ndarray | None) -> np.ndarray:
+    """``separation_moves`` from the pairs' offsets ``d`` and gaps (|d| less both halves),
+    computed once per iteration by the projection."""
+    need = clearance - gaps
+    violating = (need[:, 0] > 0) & (need[:, 1] > 0)
+    along_x = need[:, 0] <= need[:, 1]
+    if blocked is not None:
+        along_x = (along_x & ~blocked[:, 0]) | blocked[:, 1]
+    direction = np.where(d >= 0, 1.0, -1.0)
+    moves = np.zeros_like(d)
+    moves[:, 0] = np.where(violating & along_x, need[:, 0] + SLACK_MM, 0.0)
+    moves[:, 1] = np.where(violating & ~along_x, need[:, 1] + SLACK_MM, 0.0)
+    return direction * moves
+
+
 class _Projection:
     """What one page's projection needs, computed once."""
 
@@ -139,17 +155,24 @@ class _Projection:
         i, j, blocked = self.pairs(clearance + skin)
         built_at = bodies.centres.copy()
         best, best_score = bodies.centres.copy(), np.inf
+        hsum = self.halves[i] + self.halves[j]
         for _ in range(iterations):
             if np.abs(bodies.centres - built_at).max() > skin / 2:
                 i, j, blocked = self.pairs(clearance + skin)
                 built_at = bodies.centres.copy()
-            self.note_clearance(i, j, clearance)
-            moves = separation_moves(bodies.centres, self.halves, i, j, aim, blocked)
-            violating = (moves != 0).any(axis=1)
-            if not violating.any() or not separation_moves(
-                    bodies.centres, self.halves, i, j, clearance, blocked).any():
+                hsum = self.halves[i] + self.halves[j]
+            # One pass over the pairs' geometry serves every test of this iteration.
+            d = bodies.centres[j] - bodies.centres[i]
+            gaps = np.abs(d) - hsum  # edge-to-edge gap along x and y; negative inside
+            reached = gaps.max(axis=1) if len(i) else np.empty(0)
+            self.note_reached(clearance if len(i) == 0 else min(float(reached.min()), clearance))
+            if not (reached < clearance).any():
                 return True
-            score = (overlap_area(bodies.centres, self.halves, i, j) + np.abs(moves).sum())
+            moves = moves_from_gaps(d, gaps, aim, blocked)
+            violating = (moves != 0).any(axis=1)
+            depth = np.minimum(np.clip(-gaps, 0.0, None),
+                               2 * np.minimum(self.halves[i], self.halves[j]))
+            score = float((depth[:, 0] * depth[:, 1]).sum()) + np.abs(moves).sum()
             if score < best_score:
                 best, best_score = bodies.centres.copy(), score
             vi, vj, moves = i[violating], j[violating], moves[violating]
