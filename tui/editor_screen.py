@@ -10,6 +10,8 @@ editor sends nothing over the wire.
 
 from __future__ import annotations
 
+import datetime
+
 import time
 from pathlib import Path
 
@@ -21,11 +23,11 @@ from textual.screen import Screen
 from textual.widgets import Footer, Label
 
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
-from floatpage.model.errors import FloatpageError
+from floatpage.model.errors import FloatpageError, printable
 from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.frame_meter import FrameMeter
-from floatpage.tui.keymap import ITEM_ACTIONS, bindings, footer_rank, in_footer
+from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank, in_footer
 from floatpage.tui.page_painter import Scene
 from floatpage.tui.page_preview import PagePreview
 from floatpage.tui.session import EditError, EditSession
@@ -47,6 +49,20 @@ def describe_item(item) -> str:
     elif isinstance(item.anchor, ItemAnchor):
         words.append(f"follows {item.anchor.to}")
     return ", ".join(words)
+
+
+EXPORT_WARNINGS_SHOWN = 5
+
+
+def next_month(project) -> tuple[int, int]:
+    """(year, month) a new calendar panel starts at: the month after the project's latest
+    panel, or else next month, as a printed calendar is made ahead of time (it was always
+    January 2027)."""
+    panels = [(item.year, item.month) for page in project.pages for item in page.items
+              if item.kind == "calendar"]
+    year, month = max(panels) if panels else (datetime.date.today().year,
+                                              datetime.date.today().month)
+    return (year + 1, 1) if month == 12 else (year, month + 1)
 
 
 class EditorScreen(Screen):
@@ -171,7 +187,11 @@ class EditorScreen(Screen):
                 f"{len(page.items)} items{chosen}{unsaved}")
 
     def notify(self, message: str, *, markup: bool = False, **kwargs) -> None:
-        """Notifications quote file names, ids and errors: plain text, never Rich markup."""
+        """Notifications quote file names, ids and errors: plain text, never Rich markup.
+
+        Each replaces the one before: they used to pile up over the preview and the status
+        line for seconds (defect 3), and the newest is the one that answers the last key."""
+        self.app.clear_notifications()
         super().notify(message, markup=markup, **kwargs)
 
     def after_edit(self) -> None:
@@ -204,6 +224,14 @@ class EditorScreen(Screen):
         if action in ITEM_ACTIONS and self.selected_id is None:
             return None  # shown greyed out in the footer
         return True
+
+    def on_key(self, event) -> None:
+        """A key whose command needs a selected item, pressed with none, says what to do
+        (its binding is disabled then, and used to do nothing at all)."""
+        command = ITEM_KEYS.get(event.key)
+        if command is not None and self.selected_id is None:
+            self.notify(f"{command.label}: select an item first (Tab, or click it)", timeout=2)
+            event.stop()
 
     # -- selecting ---------------------------------------------------------------------------
 
@@ -276,7 +304,7 @@ class EditorScreen(Screen):
         elif kind == "calendar":
             self.app.push_screen(
                 FormDialog("Insert a calendar month",
-                           item_forms.new_calendar_fields(2027, 1, session.project.language),
+                           item_forms.new_calendar_fields(*next_month(session.project), session.project.language),
                            item_forms.parse_calendar, dialog_id="calendar-dialog"),
                 callback=lambda values: values and self.insert("calendar", values))
         elif kind == "background":
@@ -364,6 +392,9 @@ class EditorScreen(Screen):
 
     def action_reheat(self) -> None:
         """Heat the page up again; a paused page stays paused until resumed."""
+        if not self.session.engine.settled:
+            self.notify("the page is already settling", timeout=2)
+            return
         self.session.engine.reheat()
         self.wake()
         self.redraw()
@@ -499,9 +530,16 @@ class EditorScreen(Screen):
         if error is not None:
             self.notify(error, title="Export failed", severity="error", timeout=15)
         else:
-            warnings = f", {len(report.warnings)} warning(s)" if report.warnings else ""
-            self.notify(f"wrote {report.pdf} ({report.pages} page(s), {report.seconds:.1f} s"
-                        f"{warnings})", title="PDF exported", timeout=8)
+            wrote = f"wrote {report.pdf} ({report.pages} page(s), {report.seconds:.1f} s)"
+            if not report.warnings:
+                self.notify(wrote, title="PDF exported", timeout=8)
+            else:  # counted and never shown used to hide a missing 日本 (defect 11)
+                shown = report.warnings[:EXPORT_WARNINGS_SHOWN]
+                more = len(report.warnings) - len(shown)
+                self.notify(wrote + "\n" + "\n".join(f"• {printable(warning)}" for warning in shown)
+                            + (f"\n… and {more} more (`floatpage check` lists them all)"
+                               if more > 0 else ""),
+                            title="PDF exported, with warnings", severity="warning", timeout=20)
         self.redraw()
 
     # -- help and quitting ---------------------------------------------------------------------

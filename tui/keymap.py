@@ -136,6 +136,9 @@ COMMANDS: tuple[Command, ...] = (
 )
 
 ITEM_ACTIONS = frozenset(command.action_name for command in COMMANDS if command.needs_item)
+# Keys of the commands that need a selected item: pressed with none, they say so (defect 13).
+ITEM_KEYS = {key: command for command in COMMANDS if command.needs_item
+             for key in command.keys.split(",")}
 
 KEY_NAMES = {
     "plus": "+", "equals_sign": "=", "minus": "-", "greater_than_sign": ">",

@@ -21,7 +21,7 @@ from floatpage.model.document import (
     TextItem,
 )
 from floatpage.model.errors import FloatpageError
-from floatpage.model.layout import engine_for_page, write_back
+from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
 from floatpage.model.page_sizes import page_dimensions
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
@@ -45,6 +45,20 @@ def picture_aspect(path: Path) -> float | None:
         return height / width if width else None
     except Exception:  # unreadable: the item keeps the default shape
         return None
+
+
+def needs_settling(page: Page, settings, engine: Engine) -> bool:
+    """Whether a page has overlaps or items off it that `floatpage settle` would change.
+
+    A settled file opens still (it is a fixed point of settle, issue 10); a page with 156
+    overlaps used to open still too, and stayed so until an item was nudged.  A page too full
+    for any layout without overlap, which settle keeps as it is, stays still as well."""
+    quality = engine.quality()
+    if not (quality.overlapping_pairs or quality.off_page):
+        return False
+    trial = copy_of(page)
+    settle_page(trial, settings)
+    return any((a.x, a.y) != (b.x, b.y) for a, b in zip(page.items, trial.items))
 
 
 def copy_into(picture: Path, folder: Path) -> Path:
@@ -104,8 +118,13 @@ class EditSession:
             return None
 
     def _build_engine(self) -> Engine:
+        """The page's engine, at rest as saved; a page that is not sound as saved starts
+        settling at once rather than waiting for a nudge (see ``needs_settling``)."""
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
-        return engine_for_page(self.page, settings)
+        engine = engine_for_page(self.page, settings)
+        if needs_settling(self.page, settings, engine):
+            engine.reheat()
+        return engine
 
     def sync_positions(self) -> None:
         """Copy the engine's live positions into the model's items."""
@@ -143,18 +162,20 @@ class EditSession:
         self.engine = self._build_engine()
 
     def undo(self) -> str:
-        snapshot = self.history.undo(self._snapshot("redo"))
-        if snapshot is None:
+        """Return to the state before the last edit; the name of the edit undone."""
+        if not self.history.undo_stack:
             raise EditError("nothing to undo")
-        self._restore(snapshot)
-        return snapshot.label
+        label = self.history.undo_stack[-1].label  # the edit that left this state
+        self._restore(self.history.undo(self._snapshot(label)))
+        return label
 
     def redo(self) -> str:
-        snapshot = self.history.redo(self._snapshot("undo"))
-        if snapshot is None:
+        """Do the last undone edit again; its name (each snapshot keeps the edit's name, so
+        undo and redo of one edit both speak of it)."""
+        if not self.history.redo_stack:
             raise EditError("nothing to redo")
-        label = self.history.undo_stack[-1].label if self.history.undo_stack else ""
-        self._restore(snapshot)
+        label = self.history.redo_stack[-1].label
+        self._restore(self.history.redo(self._snapshot(label)))
         return label
 
     # -- ids and placement -------------------------------------------------------------------
@@ -382,7 +403,7 @@ class EditSession:
         return removed.id
 
     def set_page_size(self, size: str, orientation: str, width_mm: float | None = None,
-                      height_mm: float | None = None) -> None:
+                      height_mm: float | None = None, *, label: str = "page size") -> None:
         """Change size and orientation; items keep their relative place on the page.
 
         A named size takes the orientation; a custom one takes width and height (default: the
@@ -396,7 +417,7 @@ class EditSession:
         if (size, orientation, width, height) == (page.size, page.orientation, page.width_mm,
                                                  page.height_mm):
             return
-        self.checkpoint("page size")
+        self.checkpoint(label)
         sx, sy = width / page.width_mm, height / page.height_mm
         for item in page.items:
             item.x, item.y = item.x * sx, item.y * sy
@@ -412,10 +433,11 @@ class EditSession:
     def toggle_orientation(self) -> str:
         page = self.page
         if page.size == "custom":
-            self.set_page_size("custom", page.orientation, page.height_mm, page.width_mm)
+            self.set_page_size("custom", page.orientation, page.height_mm, page.width_mm,
+                               label="orientation")
         else:
             self.set_page_size(page.size, "landscape" if page.orientation == "portrait"
-                               else "portrait")
+                               else "portrait", label="orientation")
         return self.page.orientation
 
     # -- files -------------------------------------------------------------------------------
@@ -434,6 +456,9 @@ class EditSession:
         page on screen is the page in the PDF.
         """
         self.end_move()
+        self.sync_positions()
+        before = [(item.x, item.y) for page in self.project.pages for item in page.items]
+        version, undo_depth = self.version, len(self.history.undo_stack)
         self.checkpoint("finalise for export")
         self.engine.finalize()
         self.sync_positions()
@@ -443,4 +468,8 @@ class EditSession:
                 engine = engine_for_page(page, settings)
                 engine.finalize()
                 write_back(page, engine)
+        after = [(item.x, item.y) for page in self.project.pages for item in page.items]
+        if after == before:  # nothing moved: no edit, and a saved project stays saved
+            del self.history.undo_stack[undo_depth:]
+            self.version = version
         return copy.deepcopy(self.project)

@@ -1,0 +1,132 @@
+"""Issue 11's numbered defects, each driven through the real app with Pilot."""
+
+from __future__ import annotations
+
+import datetime
+
+from floatpage.model import BlockItem, CalendarItem, Page, Project, load_project, save_project
+
+from editor_helpers import editor, screen_of
+
+
+def messages(app) -> list[str]:
+    return [notification.message for notification in app._notifications]
+
+
+async def test_1_export_after_save_leaves_the_project_saved(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("right")  # nothing selected: an edit needs one
+        await pilot.press("tab", "right")
+        await pilot.press("ctrl+s")
+        assert not app.session.unsaved
+        await pilot.press("ctrl+e")
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        assert not app.session.unsaved, "an export that moved nothing is no edit"
+        await pilot.press("q")
+        assert app._exit, "q quits at once: nothing is unsaved"
+
+
+async def test_1_an_export_that_moves_items_is_an_edit_that_undoes(tmp_path):
+    path = tmp_path / "crowded.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        BlockItem(id="a", x=100.0, y=100.0, w=40.0, h=40.0),
+        BlockItem(id="b", x=110.0, y=110.0, w=40.0, h=40.0)])]), path)
+    async with editor(path) as (app, pilot):
+        await pilot.press("ctrl+e")
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        assert app.session.engine.quality().overlapping_pairs == ()
+        await pilot.press("ctrl+z")
+        assert "undid finalise for export" in messages(app)
+
+
+async def test_2_undo_and_redo_name_the_edit_they_undo_and_redo(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "right")  # move the first item
+        await pilot.press("o")  # orientation
+        await pilot.press("ctrl+z")
+        assert messages(app)[-1] == "undid orientation"
+        await pilot.press("ctrl+z")
+        first_undo = messages(app)[-1]
+        assert first_undo.startswith("undid move"), first_undo
+        await pilot.press("ctrl+y")
+        assert messages(app)[-1] == first_undo.replace("undid", "redid")
+        await pilot.press("ctrl+y")
+        assert messages(app)[-1] == "redid orientation"
+
+
+async def test_8_a_page_that_opens_with_overlaps_starts_settling(tmp_path):
+    path = tmp_path / "pile.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        BlockItem(id=f"b{k}", x=100.0 + k, y=140.0 + k, w=30.0, h=30.0) for k in range(8)])]), path)
+    async with editor(path, autostart=True) as (app, pilot):
+        assert not app.session.engine.settled
+        for _ in range(200):
+            await pilot.pause(0.05)
+            if app.session.engine.settled:
+                break
+        assert app.session.engine.quality().overlapping_pairs == ()
+
+
+async def test_8_a_settled_page_opens_still(project_path):
+    async with editor(project_path, autostart=True) as (app, pilot):
+        assert app.session.engine.settled
+
+
+async def test_14_a_new_calendar_panel_follows_the_latest_one(tmp_path):
+    path = tmp_path / "cal.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        CalendarItem(id="m", x=100.0, y=100.0, w=100.0, h=60.0, year=2031, month=12)])]), path)
+    async with editor(path) as (app, pilot):
+        await pilot.press("c")
+        await pilot.pause()
+        dialog = app.screen
+        values = {widget.id: getattr(widget, "value", None) for widget in dialog.query("Input")}
+        assert "2032" in values.values(), values
+
+
+def test_14_without_a_panel_the_default_is_next_month():
+    from floatpage.tui.editor_screen import next_month
+
+    today = datetime.date.today()
+    expected = (today.year + 1, 1) if today.month == 12 else (today.year, today.month + 1)
+    assert next_month(Project(pages=[Page(id="p")])) == expected
+
+
+async def test_13_keys_that_need_an_item_say_so_when_none_is_selected(project_path):
+    async with editor(project_path) as (app, pilot):
+        for key in ("right", "plus", "x", "a"):
+            app.clear_notifications()
+            await pilot.press(key)
+            assert messages(app) and messages(app)[-1].endswith(
+                "select an item first (Tab, or click it)"), key
+
+
+async def test_13_a_second_reheat_says_the_page_is_already_settling(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("r")
+        await pilot.press("r")
+        assert messages(app)[-1] == "the page is already settling"
+
+
+async def test_11_export_shows_each_warning_with_its_item_and_character(tmp_path):
+    from floatpage.model import TextItem
+
+    path = tmp_path / "card.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="note", x=100.0, y=100.0, w=80.0, h=30.0, text="Hello \U0010fffd")])]), path)
+    async with editor(path) as (app, pilot):
+        await pilot.press("ctrl+e")
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        shown = [n for n in app._notifications if n.title == "PDF exported, with warnings"]
+        assert shown, messages(app)
+        assert 'item "note"' in shown[-1].message and "U+10FFFD" in shown[-1].message
+
+
+async def test_3_a_new_notice_replaces_the_last_one(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("right", "plus", "x", "r", "r")
+        await pilot.pause()
+        assert len(app._notifications) == 1
