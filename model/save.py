@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 import tomlkit
-from tomlkit.items import AoT, Array, InlineTable, Table
+from tomlkit.items import AoT, Array, InlineTable, Table, Whitespace
 
 from floatpage.model.document import (
     Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
@@ -167,6 +167,8 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
         a is b for a, b in zip(existing, tables))
     if unchanged:
         return
+    if isinstance(existing, AoT) and tables and edit_in_place(existing, tables):
+        return
     if not tables:
         if key in parent:
             del parent[key]
@@ -175,6 +177,35 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
     for table in tables:
         array.append(table)
     parent[key] = array
+
+
+def edit_in_place(array: AoT, tables: list) -> bool:
+    """Turn ``array`` into ``tables`` by deleting and appending only, when that is enough (an
+    item deleted, an item added at the end): rebuilding the array made tomlkit write an extra
+    blank line between every two tables of the page (editor defect 12).  False, with nothing
+    changed, when the kept tables were reordered."""
+    wanted = {id(table) for table in tables}
+    kept = [table for table in array if id(table) in wanted]
+    if [id(t) for t in kept] != [id(t) for t in tables[:len(kept)]]:
+        return False
+    for index in reversed(range(len(array))):
+        if id(array[index]) not in wanted:
+            del array[index]
+    for table in tables[len(kept):]:
+        # A table's trailing blank line is what separates it from the next: give an added
+        # table the same as the one it follows.
+        spacing = trailing_space(array[-1]) if len(array) else ""
+        array.append(table)
+        if spacing:
+            table.add(tomlkit.ws(spacing))
+    return True
+
+
+def trailing_space(table: Table) -> str:
+    body = table.value.body
+    if body and body[-1][0] is None and isinstance(body[-1][1], Whitespace):
+        return body[-1][1].s
+    return ""
 
 
 def is_inline_array(value: Any) -> bool:

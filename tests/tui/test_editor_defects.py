@@ -130,3 +130,22 @@ async def test_3_a_new_notice_replaces_the_last_one(project_path):
         await pilot.press("right", "plus", "x", "r", "r")
         await pilot.pause()
         assert len(app._notifications) == 1
+
+
+async def test_12_saving_after_an_insert_or_delete_keeps_the_spacing(tmp_path):
+    from floatpage.starters import create
+
+    path = tmp_path / "card.toml"
+    create("card", path)
+    original = path.read_text()
+    async with editor(path) as (app, pilot):
+        session = app.session
+        session.insert_item(session.make_item("block"))
+        screen_of(app).after_edit()
+        await pilot.press("ctrl+s")
+        text = path.read_text()
+        assert "\n\n\n" not in text
+        assert text.count("\n\n") == original.count("\n\n") + 1  # the new item's own
+        await pilot.press("x")  # the new item is selected: delete it
+        await pilot.press("ctrl+s")
+        assert path.read_text() == original
