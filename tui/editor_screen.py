@@ -115,10 +115,22 @@ class EditorScreen(Screen):
         steps = engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
         if engine.settled:
             self.frame_timer.pause()
+            self.finish_settling()
         self.redraw()
         now = time.perf_counter()
         self.meter.record(now, steps, now - start)
         self.frames_ticked += 1
+
+    def finish_settling(self) -> None:
+        """What `floatpage settle` does at the end, the editor does too: the no-overlap pass,
+        when the physics came to rest with items overlapping or off the page (an inserted
+        picture stayed on top, "settled · 2 overlaps", defect 7; so did a turned page, 9)."""
+        engine = self.session.engine
+        if self.session.held_id is not None:
+            return
+        quality = engine.quality()
+        if quality.overlapping_pairs or quality.off_page:
+            engine.finalize()
 
     def wake(self) -> None:
         """Start the frame timer if the physics has something to do."""
@@ -202,12 +214,16 @@ class EditorScreen(Screen):
 
     def attempt(self, edit, *args) -> bool:
         """Run a session edit; a refusal (EditError, or the engine's ValueError) is a notice."""
+        self.session.last_fit_scale = 1.0
         try:
             edit(*args)
         except (FloatpageError, ValueError) as error:
             self.notify(str(error), severity="warning")
             return False
         self.after_edit()
+        if self.session.last_fit_scale < 1.0:
+            self.notify(f"made {1 - self.session.last_fit_scale:.0%} smaller so that everything "
+                        "fits the page without overlap (Ctrl+Z undoes it)", timeout=4)
         return True
 
     @property

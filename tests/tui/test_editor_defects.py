@@ -149,3 +149,51 @@ async def test_12_saving_after_an_insert_or_delete_keeps_the_spacing(tmp_path):
         await pilot.press("x")  # the new item is selected: delete it
         await pilot.press("ctrl+s")
         assert path.read_text() == original
+
+
+async def settle_live(app, pilot, seconds: float = 30.0) -> None:
+    for _ in range(int(seconds / 0.05)):
+        await pilot.pause(0.05)
+        if app.session.engine.settled:
+            return
+
+
+async def test_7_an_inserted_picture_ends_with_no_overlap(tmp_path):
+    from floatpage.starters import create
+
+    path = tmp_path / "card.toml"
+    create("card", path)
+    picture = next((tmp_path / "pictures").iterdir())
+    async with editor(path, autostart=True) as (app, pilot):
+        session = app.session
+        session.insert_item(session.make_item("picture", path=str(picture.relative_to(tmp_path))))
+        screen_of(app).after_edit()
+        await settle_live(app, pilot)
+        assert session.engine.settled
+        assert session.engine.quality().overlapping_pairs == ()
+
+
+async def test_9_turning_the_page_ends_with_no_overlap_and_nothing_off_it(tmp_path):
+    from floatpage.starters import create
+
+    path = tmp_path / "card.toml"
+    create("card", path)
+    async with editor(path, autostart=True) as (app, pilot):
+        await pilot.press("o")
+        await settle_live(app, pilot)
+        quality = app.session.engine.quality()
+        assert app.session.engine.settled
+        assert quality.overlapping_pairs == () and quality.off_page == ()
+
+
+async def test_an_insert_that_had_to_shrink_says_so(tmp_path):
+    from floatpage.starters import create
+
+    path = tmp_path / "card.toml"
+    create("card", path)
+    picture = next((tmp_path / "pictures").iterdir())
+    async with editor(path) as (app, pilot):
+        session = app.session
+        screen_of(app).attempt(lambda: session.insert_item(
+            session.make_item("picture", path=str(picture.relative_to(tmp_path)))))
+        assert messages(app)[-1].startswith("made ") and "smaller" in messages(app)[-1]
