@@ -196,4 +196,5 @@ async def test_an_insert_that_had_to_shrink_says_so(tmp_path):
         session = app.session
         screen_of(app).attempt(lambda: session.insert_item(
             session.make_item("picture", path=str(picture.relative_to(tmp_path)))))
+        await pilot.pause()
         assert messages(app)[-1].startswith("made ") and "smaller" in messages(app)[-1]
