@@ -47,6 +47,13 @@ def picture_aspect(path: Path) -> float | None:
         return None
 
 
+def inside(centre: float, size: float, page: float) -> float:
+    """A centre that keeps an item of ``size`` on a page of ``page`` (centred if it cannot)."""
+    if size >= page:
+        return page / 2
+    return min(max(centre, size / 2), page - size / 2)
+
+
 MAKE_ROOM_ATTEMPTS = 8
 MAKE_ROOM_STEP = 0.9  # each attempt shrinks by this; 8 attempts reach 43 %
 
@@ -284,7 +291,12 @@ class EditSession:
         self.engine.hold(item_id)
 
     def move_to(self, item_id: str, x_mm: float, y_mm: float) -> None:
+        """Hold the item at (x, y), kept inside the page: a held key (or a drag) past the edge
+        used to carry the item, and then its anchor, off the page (defect 10)."""
         self.begin_move(item_id)
+        item = self.page.item(item_id)
+        x_mm = inside(x_mm, item.w, self.page.width_mm)
+        y_mm = inside(y_mm, item.h, self.page.height_mm)
         self.engine.move(item_id, x_mm, y_mm)
         self.engine.reheat()
 

@@ -198,3 +198,20 @@ async def test_an_insert_that_had_to_shrink_says_so(tmp_path):
             session.make_item("picture", path=str(picture.relative_to(tmp_path)))))
         await pilot.pause()
         assert messages(app)[-1].startswith("made ") and "smaller" in messages(app)[-1]
+
+
+async def test_10_holding_an_arrow_keeps_an_anchored_item_and_its_anchor_on_the_page(tmp_path):
+    from floatpage.model import PointAnchor, TextItem
+
+    path = tmp_path / "flyer.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="price", x=40.0, y=60.0, w=50.0, h=20.0, text="9.99",
+                 anchor=PointAnchor(x=40.0, y=60.0, gamma=0.8))])]), path)
+    async with editor(path) as (app, pilot):
+        await pilot.press("tab")
+        for _ in range(40):
+            await pilot.press("shift+left")
+        screen_of(app).release_held()
+        item = app.session.page.item("price")
+        assert item.anchor.x >= item.w / 2 - 0.01
+        assert item.x >= item.w / 2 - 0.01
