@@ -11,11 +11,13 @@ editor sends nothing over the wire.
 from __future__ import annotations
 
 import datetime
+import math
 
 import time
 from pathlib import Path
 
 from rich.markup import escape
+from rich.text import Text
 from textual import work
 from textual.app import ComposeResult
 from textual.reactive import reactive
@@ -31,6 +33,7 @@ from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank,
 from floatpage.tui.page_painter import Scene
 from floatpage.tui.page_preview import PagePreview
 from floatpage.tui.session import EditError, EditSession
+from floatpage.physics.quality import GAP_TOLERANCE_MM
 from floatpage.tui.status_line import Status, StatusLine
 
 FRAME_S = 1 / 30
@@ -52,6 +55,21 @@ def describe_item(item) -> str:
 
 
 EXPORT_WARNINGS_SHOWN = 5
+ALWAYS_IN_FOOTER = frozenset({"help", "save", "export_pdf", "quit"})
+PALETTE_CELLS = 13  # the footer's "^p palette" at its right end
+
+
+def quality_in_words(quality) -> str:
+    """"2 overlaps · 1 off the page", or "no overlaps · gaps kept" when all is well."""
+    words = []
+    overlaps, off = len(quality.overlapping_pairs), len(quality.off_page)
+    words.append(f"{overlaps} overlap{'s' if overlaps != 1 else ''}" if overlaps else "no overlaps")
+    if off:
+        words.append(f"{off} off the page")
+    if not overlaps and not math.isinf(quality.min_gap_mm):
+        kept = quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM
+        words.append("gaps kept" if kept else "some gaps narrow")
+    return " · ".join(words) + " · v details"
 
 
 def next_month(project) -> tuple[int, int]:
@@ -82,7 +100,9 @@ class EditorScreen(Screen):
         self._release_timer = None
         self._composed = False
         self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
-        self._quality = ""
+        self._quality = ("", "")
+        self.details = False  # `v`: the status line shows its numbers
+        self.labels = False  # `n`: every item's id on the preview, not only the selected one's
         self._quality_at = float("-inf")
 
     def compose(self) -> ComposeResult:
@@ -157,7 +177,8 @@ class EditorScreen(Screen):
     def scene(self) -> Scene:
         session = self.session
         return Scene(page=session.page, positions=session.engine.positions(),
-                     selected_id=session.selected_id, base_dir=session.project.base_dir)
+                     selected_id=session.selected_id, base_dir=session.project.base_dir,
+                     labels=self.labels)
 
     def state_word(self) -> str:
         if self.export_state:
@@ -171,32 +192,58 @@ class EditorScreen(Screen):
             return
         self.preview.show(self.scene())
         engine = self.session.engine
+        summary, words = self.quality_summary()
         self.query_one(StatusLine).show(Status(
             state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
-            steps_per_s=self.meter.steps_per_s, quality=self.quality_summary(),
-            frame_ms=1000 * self.meter.last_frame_s))
+            steps_per_s=self.meter.steps_per_s, quality=summary,
+            frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
+            details=self.details))
         self.query_one("#page-bar", Label).update(self.page_bar_text())
 
-    def quality_summary(self) -> str:
-        """The layout's quality; exact when idle, refreshed a few times a second while moving."""
+    def quality_summary(self) -> tuple[str, str]:
+        """The layout's quality, as numbers and in words; exact when idle, refreshed a few
+        times a second while moving."""
         now = time.perf_counter()
         moving = self.running and not self.session.engine.settled
         if not moving or now - self._quality_at >= QUALITY_EVERY_S:
-            self._quality = self.session.engine.quality().summary()
+            quality = self.session.engine.quality()
+            self._quality = (quality.summary(), quality_in_words(quality))
             self._quality_at = now
         return self._quality
 
+    def action_toggle_labels(self) -> None:
+        self.labels = not self.labels
+        self.redraw()
+
+    def action_toggle_details(self) -> None:
+        self.details = not self.details
+        self.redraw()
+
     def page_bar_text(self) -> str:
+        """The top bar, built to fit its width by priority: the unsaved mark first and always,
+        then the selected item and its anchor, the page, the title, then size and count (at 80
+        columns the unsaved mark and the anchor state used to be cut off, defect 5)."""
         session = self.session
         page = session.page
-        title = escape(session.project.title
-                       or (session.project.path.stem if session.project.path else ""))
         selected = session.selected_item
-        chosen = f" · [b]{selected.id}[/b] ({describe_item(selected)})" if selected else ""
-        unsaved = " · [b]● unsaved[/b]" if session.unsaved else ""
-        return (f"[b]{title}[/b] · page {session.page_index + 1}/{len(session.project.pages)} "
-                f"[b]{page.id}[/b] · {page.size} {page.orientation} · "
-                f"{len(page.items)} items{chosen}{unsaved}")
+        parts = []  # (priority: lower is kept longer, position, text)
+        if session.unsaved:
+            parts.append((0, 0, "[b]● unsaved[/b]"))
+        title = session.project.title or (session.project.path.stem if session.project.path else "")
+        if title:
+            parts.append((3, 1, f"[b]{escape(title)}[/b]"))
+        parts.append((2, 2, f"page {session.page_index + 1}/{len(session.project.pages)} "
+                            f"[b]{escape(page.id)}[/b]"))
+        parts.append((5, 3, f"{page.size} {page.orientation}"))
+        parts.append((4, 4, f"{len(page.items)} items"))
+        if selected:
+            parts.append((1, 5, f"[b]{escape(selected.id)}[/b] ({describe_item(selected)})"))
+        width = max(self.size.width - 2, 20) if self.is_mounted else 200
+        kept = sorted(parts)
+        while len(kept) > 1 and Text.from_markup(" · ".join(
+                text for _, _, text in sorted(kept, key=lambda p: p[1]))).cell_len > width:
+            kept.pop()
+        return " · ".join(text for _, _, text in sorted(kept, key=lambda part: part[1]))
 
     def notify(self, message: str, *, markup: bool = False, **kwargs) -> None:
         """Notifications quote file names, ids and errors: plain text, never Rich markup.
@@ -228,18 +275,46 @@ class EditorScreen(Screen):
 
     @property
     def active_bindings(self):
-        """The footer's order: first what makes sense now (item commands when one is selected,
-        page commands when not), then the rest, greyed where they cannot run. Display only."""
+        """The footer's bindings, fitted to the width by priority (display only; every key still
+        works): Help, Save, Export and Quit always, then what makes sense now (item commands
+        when one is selected, page commands when not), then the rest, while they fit. The
+        footer used to cut off at 80 and 100 columns, Save, Export and Quit first (defect 4)."""
         selected = self.selected_id is not None
-        shown = list(super().active_bindings.items())
-        shown.sort(key=lambda entry: (not in_footer(entry[1].binding.action, selected),
-                                      footer_rank(entry[1].binding.action)))
-        return dict(shown)
+        shown = sorted(super().active_bindings.items(), key=lambda entry: (
+            entry[1].binding.action not in ALWAYS_IN_FOOTER,
+            not in_footer(entry[1].binding.action, selected),
+            footer_rank(entry[1].binding.action)))
+        budget = (self.size.width if self.is_mounted else 200) - PALETTE_CELLS
+        # The footer shows an action once, by its first key, and a group as one unit, all of
+        # it or none.
+        units: dict[object, list] = {}
+        for key, entry in shown:
+            group = entry.binding.group
+            units.setdefault(group.description if group else entry.binding.action,
+                             []).append((key, entry))
+        kept, used = [], 0
+        for name, members in units.items():
+            first_keys = {}
+            for _, entry in members:
+                first_keys.setdefault(entry.binding.action, self.app.get_key_display(entry.binding))
+            keys = sum(len(display) for display in first_keys.values())
+            group = members[0][1].binding.group
+            cost = keys + (len(group.description) + 1 if group else
+                           len(members[0][1].binding.description) + 3)
+            essential = any(entry.binding.action in ALWAYS_IN_FOOTER for _, entry in members)
+            if not essential and used + cost > budget:
+                break  # in order of priority: nothing after the first that does not fit
+            kept += members
+            used += cost
+        return dict(kept)
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         if action in ITEM_ACTIONS and self.selected_id is None:
             return None  # shown greyed out in the footer
         return True
+
+    def on_resize(self, event) -> None:
+        self.redraw()  # the top bar and the footer fit themselves to the width
 
     def on_key(self, event) -> None:
         """A key whose command needs a selected item, pressed with none, says what to do

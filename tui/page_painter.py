@@ -41,6 +41,7 @@ class Scene:
     positions: dict[str, tuple[float, float]] = field(default_factory=dict)
     selected_id: str | None = None
     base_dir: Path = Path(".")
+    labels: bool = False  # every item's id; else only the selected one's (ids hid the content)
 
 
 def hex_to_rgb(value: str | None, default: RGB = BLACK) -> RGB:
@@ -150,7 +151,8 @@ class PagePainter:
                 self._body(canvas, box, [f"missing {item.path}"], BLACK, MISSING_PICTURE)
             else:
                 canvas.blit(x0, y0, image)
-            self._label(canvas, item, box, WHITE, BLACK)
+            if scene.labels:
+                self._label(canvas, item, box, WHITE, BLACK)
             return
         under = tuple(int(v) for v in canvas.pixels[
             min(max((y0 + y1) // 2, 0), canvas.pixels.shape[0] - 1),
@@ -158,18 +160,23 @@ class PagePainter:
         if isinstance(item, BlockItem):
             fill = mix(under, hex_to_rgb(item.color, MISSING_PICTURE), item.opacity)
             canvas.fill(*box, fill)
-            self._label(canvas, item, box, readable_on(fill), fill)
+            if scene.labels:
+                self._label(canvas, item, box, readable_on(fill), fill)
             return
         # Text is printed straight on the page, so its box is only a faint tint of what lies
         # under it, and the text keeps the contrast it will have on paper.
         ink = hex_to_rgb(getattr(item, "color", None))
         fill = mix(under, ink, TEXT_TINT)
         canvas.fill(*box, fill)
-        self._label(canvas, item, box, mix(readable_on(fill), fill, 0.45), fill)
+        labelled = scene.labels or item.id == scene.selected_id
+        if scene.labels:
+            self._label(canvas, item, box, mix(readable_on(fill), fill, 0.45), fill)
         if isinstance(item, TextItem):
-            self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold)
+            self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold,
+                       below_label=labelled)
         elif isinstance(item, CalendarItem):
-            self._body(canvas, box, calendar_lines(item), ink, fill, wrap=False)
+            self._body(canvas, box, calendar_lines(item), ink, fill, wrap=False,
+                       below_label=labelled)
 
     def _label(self, canvas: CellCanvas, item, box, fg: RGB, bg: RGB) -> None:
         """The item's id on its first full row (or the row holding its top, if it is thin)."""
@@ -180,10 +187,10 @@ class PagePainter:
         canvas.write(col0, row, text[:width], fg, bg, bold=True, end_col=col0 + width)
 
     def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
-              *, bold: bool = False, wrap: bool = True) -> None:
-        """As much of the text as fits the item's full cells, under the label row."""
+              *, bold: bool = False, wrap: bool = True, below_label: bool = True) -> None:
+        """As much of the text as fits the item's full cells (under the label row, if any)."""
         col0, row0, col1, row1 = self._cells(box)
-        width, first = col1 - col0, row0 + 1
+        width, first = col1 - col0, row0 + (1 if below_label else 0)
         if width < 1 or first >= row1:
             return
         lines: list[str] = []

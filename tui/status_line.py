@@ -15,18 +15,27 @@ class Status:
     energy: float
     fps: float
     steps_per_s: float
-    quality: str
+    quality: str  # the measures, for the details view
     frame_ms: float = 0.0
+    quality_words: str = ""  # the same, said in words
+    details: bool = False  # `v` shows the numbers
+
+
+STATE_WORDS = {"settling": "settling…", "settled": "still", "paused": "paused · Space resumes"}
 
 
 def status_text(status: Status) -> str:
+    """Words by default ("settling…", "still", "2 overlaps"); the numbers in the details view
+    (`v`): an energy of 1.45e-24 told a user nothing (issue 11)."""
+    words = STATE_WORDS.get(status.state, status.state)
+    if not status.details:
+        return f"{words}\n{status.quality_words or status.quality}"
     if status.state in ("settled", "paused"):
         rate = "idle: no frames drawn"
     else:
         rate = (f"{status.fps:4.1f} fps · {status.steps_per_s:,.0f} steps/s · "
                 f"frame {status.frame_ms:4.1f} ms")
-    physics = f"{status.state} · energy {status.energy:.2e} · {rate}"
-    return f"{physics}\n{status.quality}"
+    return f"{words} · energy {status.energy:.2e} · {rate}\n{status.quality}"
 
 
 class StatusLine(Static):

@@ -166,20 +166,39 @@ def footer_actions(app) -> list[str]:
     return [key.action for key in footer.query("FooterKey")]
 
 
-async def test_the_footer_shows_every_command_what_matters_now_first(project_path):
-    async with editor(project_path, size=(100, 40)) as (app, pilot):
-        page_footer = footer_actions(app)
-        for command in COMMANDS:
-            assert command.action in page_footer, command.label
-        assert page_footer.index("insert") < page_footer.index("nudge(-2.0,0.0)")
-        delete = next(key for key in app.editor.query("FooterKey") if key.action == "delete")
-        assert delete.has_class("-disabled")  # greyed: nothing is selected
-        await pilot.press("tab")
+async def test_the_footer_fits_its_width_keeps_the_essentials_and_what_matters_now(project_path):
+    for size in ((80, 24), (100, 32), (160, 40)):
+        async with editor(project_path, size=size) as (app, pilot):
+            page_footer = footer_actions(app)
+            for essential in ("help", "save", "export_pdf", "quit"):
+                assert essential in page_footer, (size, essential)
+            keys = list(app.editor.query("FooterKey"))
+            assert all(key.region.right <= size[0] for key in keys), size  # nothing cut off
+            await pilot.press("tab")
+            await pilot.pause()
+            item_footer = footer_actions(app)
+            for essential in ("help", "save", "export_pdf", "quit"):
+                assert essential in item_footer, (size, essential)
+            assert "nudge(-2.0,0.0)" in item_footer, size  # what matters now
+            if size[0] >= 100:
+                assert "edit" in item_footer
+            if size[0] >= 160:
+                assert "delete" in item_footer and "insert" not in item_footer[:8]
+
+
+async def test_the_top_bar_keeps_the_unsaved_mark_and_the_anchor_state_at_80_columns(project_path):
+    async with editor(project_path, size=(80, 24)) as (app, pilot):
+        await pilot.press("tab", "tab", "tab", "tab", "tab")  # through the items to an anchored one
+        for _ in range(8):
+            if app.session.selected_item and app.session.selected_item.anchor:
+                break
+            await pilot.press("tab")
+        await pilot.press("right")
         await pilot.pause()
-        item_footer = footer_actions(app)
-        assert item_footer.index("nudge(-2.0,0.0)") < item_footer.index("insert")
-        assert not next(key for key in app.editor.query("FooterKey")
-                        if key.action == "delete").has_class("-disabled")
+        bar = str(screen_of(app).query_one("#page-bar").render())
+        assert "● unsaved" in bar
+        assert "anchored" in bar or "follows" in bar or "hard anchor" in bar, bar
+        assert len(bar) <= 80
 
 
 async def test_brackets_in_titles_and_errors_are_shown_as_typed(project_path):

@@ -298,7 +298,7 @@ async def test_the_physics_runs_live_then_stops_drawing_once_settled(project_pat
         drawn = screen.preview.frames_drawn
         await pilot.pause(0.3)
         assert screen.preview.frames_drawn == drawn  # idle: no frames once settled
-        assert "settled" in str(screen.query_one("#status").render())
+        assert "still" in str(screen.query_one("#status").render())
 
 
 async def test_undo_and_redo_restore_items_and_positions(project_path):
@@ -325,7 +325,7 @@ async def test_pages_add_switch_resize_reorient_and_remove(project_path):
     async with editor(project_path) as (app, pilot):
         session = app.session
         await pilot.press("right_square_bracket")
-        assert session.page.id == "back" and "greeting" in preview_text(app)
+        assert session.page.id == "back" and "With love" in preview_text(app)
         await pilot.press("left_square_bracket")
         assert session.page.id == "front"
         await pilot.press("N")

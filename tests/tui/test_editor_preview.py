@@ -26,13 +26,21 @@ async def test_page_fits_with_its_aspect_ratio_and_refits_on_resize(project_path
         assert q.width / q.height == pytest.approx(148 / 210, rel=0.05)
 
 
-async def test_items_show_their_ids_and_texts_fit_the_cells(project_path):
+async def test_items_show_their_content_and_ids_only_when_asked(project_path):
     async with editor(project_path) as (app, pilot):
+        text = preview_text(app)
+        assert "Happy Birthday Anna" in text
+        assert "March 2027" in text and "Mo Tu We Th Fr Sa Su" in text
+        for item_id in ("photo", "block", "~band"):  # ids no longer print over the content
+            assert item_id not in text
+        await pilot.press("tab")  # the selected item shows its id
+        await pilot.pause()
+        assert app.session.selected_id in preview_text(app)
+        await pilot.press("escape", "n")  # names for every item
+        await pilot.pause()
         text = preview_text(app)
         for item_id in ("title", "photo", "caption", "block", "month", "~band"):
             assert item_id in text
-        assert "Happy Birthday Anna" in text
-        assert "March 2027" in text and "Mo Tu We Th Fr Sa Su" in text
 
 
 async def test_items_are_drawn_in_their_colour(project_path):
@@ -91,7 +99,7 @@ async def test_the_preview_fits_an_80_by_24_terminal(project_path):
         preview = screen_of(app).preview
         assert preview.size.height >= 15
         assert preview.projection.height >= 2 * (preview.size.height - 2)
-        assert "title" in preview_text(app)
+        assert "Happy Birthday Anna" in preview_text(app)
 
 
 def test_projection_round_trips_cells_and_millimetres():

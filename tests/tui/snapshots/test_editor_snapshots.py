@@ -17,12 +17,13 @@ def frozen_app(project_path):
 
 def test_main_screen(project_path, snap_compare):
     """The front page of the test card, A5 portrait, centred on a dark surround: a faintly
-    pink 'title' box with 'Happy Birthday Anna' in dark red, the 'photo' thumbnail (red over
-    blue) with a dotted blue link and 'o' ends down to its grey 'caption', a green 'block'
-    framed in yellow (selected; the page bar says 'block (block, 30×30 mm)'), and the decorative yellow '~band'
-    behind the 'month' calendar (March 2027 grid) whose anchor shows as a magenta cell on the
-    weekday row. Two status lines ('paused', the quality summary); the footer starts with
-    '? Help', 'tab Next', then the item commands: arrows 'Move', '+-><^_ Size', Edit, Delete."""
+    pink box with 'Happy Birthday Anna' in dark red, the photo thumbnail (red over blue) with a
+    dotted blue link and 'o' ends down to its grey caption 'Summer', a green block framed in
+    yellow and labelled 'block' (selected: only the selected item shows its id), and the
+    decorative yellow band behind the March 2027 grid, whose anchor shows as a magenta cell.
+    The top bar names the selected block and its size; the status lines speak words ('paused ·
+    Space resumes', 'no overlaps · gaps kept · v details'); the footer fits 100 columns: Help,
+    Save, Export and Quit first, then the item commands while they fit."""
     async def run_before(pilot) -> None:
         pilot.app.editor.selected_id = "block"
         await pilot.pause()
