@@ -102,6 +102,7 @@ class EditorScreen(Screen):
         self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
         self._quality = ("", "")
         self.details = False  # `v`: the status line shows its numbers
+        self._page_bar = None
         self.labels = False  # `n`: every item's id on the preview, not only the selected one's
         self._quality_at = float("-inf")
 
@@ -198,7 +199,10 @@ class EditorScreen(Screen):
             steps_per_s=self.meter.steps_per_s, quality=summary,
             frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
             details=self.details))
-        self.query_one("#page-bar", Label).update(self.page_bar_text())
+        bar = self.page_bar_text()
+        if bar != self._page_bar:  # an unchanged bar costs no bytes
+            self._page_bar = bar
+            self.query_one("#page-bar", Label).update(bar)
 
     def quality_summary(self) -> tuple[str, str]:
         """The layout's quality, as numbers and in words; exact when idle, refreshed a few

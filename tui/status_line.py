@@ -42,6 +42,9 @@ class StatusLine(Static):
     """Shows a Status; the `-settled` / `-paused` classes colour it (see app.tcss)."""
 
     def show(self, status: Status) -> None:
-        self.update(status_text(status))
+        text = status_text(status)
+        if text != getattr(self, "_shown", None):  # an unchanged line costs no bytes
+            self._shown = text
+            self.update(text)
         self.set_class(status.state == "settled", "-settled")
         self.set_class(status.state == "paused", "-paused")
