@@ -379,3 +379,20 @@ def test_the_engine_runs_under_a_memory_limit_and_says_so_when_it_is_hit(tmp_pat
     assert result.returncode == 1
     assert "memory limit of 40 MB" in result.stderr and "FLOATPAGE_ENGINE_MEMORY_MB" in result.stderr
     assert not (tmp_path / "card.pdf").exists()
+
+
+def test_check_of_a_10000_item_file_stays_under_a_gigabyte(tmp_path):
+    import random
+
+    rng = random.Random(1)
+    path = tmp_path / "big.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        BlockItem(id=f"b{k}", x=rng.uniform(5, 205), y=rng.uniform(5, 292),
+                  w=rng.uniform(1, 4), h=rng.uniform(1, 4)) for k in range(10_000)])]), path)
+    process = subprocess.Popen([sys.executable, "-m", "floatpage.cli.main", "check", str(path)],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT)
+    _, status, usage = os.wait4(process.pid, 0)
+    out = process.stdout.read().decode()
+    assert os.waitstatus_to_exitcode(status) == 0, process.stderr.read().decode()
+    assert "valid project" in out
+    assert usage.ru_maxrss < 1024 * 1024, f"{usage.ru_maxrss / 1024:.0f} MB"  # ru_maxrss is in KB
