@@ -19,9 +19,6 @@ class FrameMeter:
         while self.frames and now - self.frames[0][0] > self.window_s:
             self.frames.popleft()
 
-    def reset(self) -> None:
-        self.frames.clear()
-
     @property
     def fps(self) -> float:
         if len(self.frames) < 2:

@@ -55,10 +55,3 @@ class History:
         self.undo_stack.append(current)
         return self.redo_stack.pop()
 
-    @property
-    def can_undo(self) -> bool:
-        return bool(self.undo_stack)
-
-    @property
-    def can_redo(self) -> bool:
-        return bool(self.redo_stack)

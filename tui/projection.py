@@ -40,10 +40,6 @@ class Projection:
         top = (2 * rows - height) // 2
         return cls(cols, rows, page_w_mm, page_h_mm, scale, left, top, width, height)
 
-    @property
-    def pixel_rows(self) -> int:
-        return 2 * self.rows
-
     def to_pixels(self, x_mm: float, y_mm: float) -> tuple[float, float]:
         return self.left + x_mm * self.scale, self.top + y_mm * self.scale
 

@@ -275,8 +275,7 @@ class EditSession:
         for follower in followers:
             follower.anchor = None
         self.page.items.remove(item)
-        self.engine.delete(item.id)
-        self.engine.reheat()
+        self.engine.delete(item.id)  # the engine's edits reheat it themselves
         order = reading_order(self.page.items)
         self.selected_id = order[0] if order else None
         return item.id
@@ -298,7 +297,6 @@ class EditSession:
         x_mm = inside(x_mm, item.w, self.page.width_mm)
         y_mm = inside(y_mm, item.h, self.page.height_mm)
         self.engine.move(item_id, x_mm, y_mm)
-        self.engine.reheat()
 
     def nudge(self, dx_mm: float, dy_mm: float) -> None:
         item = self._require_selected()
@@ -321,7 +319,6 @@ class EditSession:
             target = self.page.item(item.anchor.to)
             item.anchor.dx, item.anchor.dy = item.x - target.x, item.y - target.y
             self.engine.anchor_to(item.id, target.id, item.anchor.dx, item.anchor.dy)
-        self.engine.reheat()
 
     def resize_selected(self, fx: float, fy: float) -> tuple[float, float]:
         """Scale the selected item's width by fx and height by fy; a locked picture scales both."""
@@ -336,7 +333,6 @@ class EditSession:
         self.checkpoint(f"resize {item.id}")
         item.w, item.h = w, h
         self.engine.resize(item.id, w, h)
-        self.engine.reheat()
         return w, h
 
     def update_item(self, item_id: str, changes: dict) -> None:
@@ -397,7 +393,6 @@ class EditSession:
         self.checkpoint(f"unanchor {item.id}")
         item.anchor = None
         self.engine.unanchor(item.id)
-        self.engine.reheat()
 
     def set_background(self, background: Background | None) -> None:
         self.checkpoint("background")

@@ -215,3 +215,22 @@ async def test_10_holding_an_arrow_keeps_an_anchored_item_and_its_anchor_on_the_
         item = app.session.page.item("price")
         assert item.anchor.x >= item.w / 2 - 0.01
         assert item.x >= item.w / 2 - 0.01
+
+
+async def test_help_explains_every_mark_the_preview_draws(project_path):
+    from floatpage.tui.dialogs.help import MARKS
+
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("question_mark")
+        await pilot.pause()
+        assert app.screen.id == "help"
+        from rich.console import Console
+
+        console = Console(width=120, record=True, file=open("/dev/null", "w"))
+        from floatpage.tui.dialogs.help import help_table
+
+        console.print(help_table())
+        text = console.export_text()
+        assert "Marks" in text and "on the page, in the preview" in text
+        for mark, meaning in MARKS:
+            assert meaning[:30] in text.replace("\n", " ") or mark in text

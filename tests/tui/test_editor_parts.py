@@ -46,7 +46,7 @@ def test_history_undo_redo_and_a_new_edit_clears_redo():
     assert history.redo(snap("d")).label == "now"
     history.undo(snap("now"))
     history.record(snap("e"))
-    assert not history.can_redo
+    assert not history.redo_stack
 
 
 def test_frame_meter_counts_frames_and_steps_over_the_window():

@@ -15,6 +15,14 @@ from floatpage.tui.keymap import COMMANDS, key_label
 
 MOUSE = (("click", "Select an item (or nothing, on empty paper)"),
          ("drag", "Move the item; the others make way"))
+# Every mark the preview draws, and what it means (issue 11: they were explained nowhere).
+MARKS = (("~name", "a decoration's id (shown with n): it sits behind and is never pushed"),
+         ("+", "where an item is anchored to the page by a spring (magenta)"),
+         ("#", "where an item is anchored to the page hard: it does not move"),
+         ("· · ·", "the line from an item to its anchor, magenta; or to the item it follows, blue"),
+         ("o", "the two ends of a follow link (blue): the follower and the item it follows"),
+         ("frame", "the selected item, framed in yellow, with its id"),
+         ("▀ ▄", "half-block pixels: each cell shows two rows of the page"))
 
 
 def help_table() -> Table:
@@ -31,13 +39,10 @@ def help_table() -> Table:
     table.add_row(Text("Mouse", style="bold underline"), "")
     for gesture, meaning in MOUSE:
         table.add_row(gesture, meaning)
+    table.add_row(Text("Marks", style="bold underline"), "on the page, in the preview")
+    for mark, meaning in MARKS:
+        table.add_row(mark, meaning)
     return table
-
-
-def help_plain_text() -> str:
-    """The same content as plain lines (for tests and the command-line docs)."""
-    lines = [f"{key_label(command.keys)}  {command.help}" for command in COMMANDS]
-    return "\n".join(lines + [f"{gesture}  {meaning}" for gesture, meaning in MOUSE])
 
 
 class HelpScreen(ModalScreen[None]):
