@@ -93,9 +93,9 @@ def wall_forces(centres: np.ndarray, sizes: np.ndarray, page_w_mm: float, page_h
     near = centres  # distance to the left and top walls
     far = centres - np.array([page_w_mm, page_h_mm])  # to the right and bottom walls (negative)
     push = np.zeros_like(centres)
-    for delta in (near, far):
-        sigma = np.maximum(np.abs(delta), SIGMA_MIN_MM)
-        push += delta / (sigma * sigma * sigma)
+    for offset in (near, far):
+        sigma = np.maximum(np.abs(offset), SIGMA_MIN_MM)
+        push += offset / (sigma * sigma * sigma)
     return alpha * charges[:, None] * push
 
 
