@@ -16,6 +16,8 @@ from rich.segment import Segment
 from rich.style import Style
 from textual.strip import Strip
 
+from floatpage.tui.cell_text import graphemes, width
+
 RGB = tuple[int, int, int]
 UPPER_HALF = "\u2580"
 
@@ -110,9 +112,16 @@ class CellCanvas:
             return
         end = self.cols if end_col is None else min(end_col, self.cols)
         layer, glyphs = self.layer, self._glyphs
-        for offset, char in enumerate(text[:max(end - col, 0)]):
-            if col + offset >= 0:
-                glyphs[(row, col + offset)] = (Glyph(char, fg, bg, bold), layer)
+        at = col
+        for grapheme in graphemes(text):
+            wide = width(grapheme)
+            if at + wide > end:
+                break
+            if at >= 0:
+                glyphs[(row, at)] = (Glyph(grapheme, fg, bg, bold), layer)
+                if wide == 2:  # the cell the wide character spills into shows nothing itself
+                    glyphs[(row, at + 1)] = (Glyph("", fg, bg, bold), layer)
+            at += wide
 
 
 class StripCache:
@@ -159,9 +168,14 @@ class StripCache:
         run_style: Style | None = None
         for col, (top, bottom) in enumerate(zip(tops, bottoms)):
             glyph = glyphs.get(col)
-            if glyph is not None:
+            if glyph is not None and glyph.char == "" and col > 0 and glyphs.get(col - 1) is not None:
+                continue  # the second cell of a wide character, drawn by the first
+            if glyph is not None and glyph.char:
                 bg = pack(glyph.bg) if glyph.bg is not None else top
                 style, char = self.style(pack(glyph.fg), bg, glyph.bold), glyph.char
+                following = glyphs.get(col + 1)
+                if width(char) == 2 and (following is None or following.char != ""):
+                    char = " "  # its second cell was drawn over: keep the row's width
             elif top == bottom:
                 style, char = self.style(top, bottom), " "
             else:

@@ -7,17 +7,16 @@ hidden, and the selected item's frame and label come last so it always stands ou
 
 from __future__ import annotations
 
-import textwrap
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
-from rich.cells import cell_len
 
 from floatpage.model.calendar_month import month_name, month_weeks, weekday_names
 from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
+from floatpage.tui.cell_text import graphemes, visual, wrap_cells
 from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
 from floatpage.tui.projection import Projection
 from floatpage.tui.thumbnails import thumbnail
@@ -64,14 +63,15 @@ def readable_on(bg: RGB) -> RGB:
 
 @lru_cache(maxsize=4096)
 def printable(text: str) -> str:
-    """One cell per character: anything wider (or a control character) becomes '?'."""
-    return "".join(char if char.isprintable() and cell_len(char) == 1 else "?" for char in text)
+    """Graphemes at their width, control characters as '?' (see tui.cell_text)."""
+    return "".join(graphemes(text))
 
 
 @lru_cache(maxsize=1024)
 def wrapped(text: str, width: int) -> tuple[str, ...]:
-    """Greedy line breaks of a paragraph at a cell width (cached: texts rarely change)."""
-    return tuple(textwrap.wrap(printable(text), width) or [""])
+    """Greedy line breaks of a paragraph by cells, in visual order (cached: texts rarely
+    change)."""
+    return tuple(wrap_cells(text, width))
 
 
 def calendar_lines(item: CalendarItem) -> list[str]:
@@ -198,7 +198,7 @@ class PagePainter:
             if wrap:
                 lines += wrapped(paragraph, width)
             else:
-                lines.append(printable(paragraph)[:width])
+                lines.append(visual(printable(paragraph)))
         for row, line in zip(range(first, row1), lines):
             canvas.write(col0, row, line, fg, bg, bold=bold, end_col=col1)
 
