@@ -1,0 +1,79 @@
+"""Scaling figures of issue 10: 10,000 items, 2,000 photos, a 2,000-anchor chain.
+
+Each scene settles (`Engine.settle()`, the no-overlap pass included) in its own process, which
+reports its own peak memory (ru_maxrss), so each figure is that scene's alone.
+
+    .venv/bin/python benchmarks/scaling.py            # every scene, each capped at 600 s
+"""
+
+from __future__ import annotations
+
+import json
+import resource
+import subprocess
+import sys
+import time
+
+SCENES = ("10,000 items, 30 %", "2,000 photos, 50 %", "2,000-anchor chain")
+GOALS = {"10,000 items, 30 %": "60 s, 1 GB", "2,000 photos, 50 %": "30 s",
+         "2,000-anchor chain": "2 s"}
+
+
+def run_scene(name: str) -> dict:
+    import numpy as np
+
+    from floatpage.physics import Engine, Params
+    from floatpage.physics.scenes import load, mixed_scene
+
+    if name.startswith("10,000"):
+        scene = mixed_scene(10_000, 0.3, seed=1)
+    elif name.startswith("2,000 photos"):
+        scene = mixed_scene(2_000, 0.5, seed=1)
+    else:
+        scene = None
+    if scene is not None:
+        engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
+        load(engine, scene)
+    else:  # a chain: each small item follows the one before it
+        engine = Engine(210.0, 297.0, Params())
+        rng = np.random.default_rng(1)
+        for k in range(2_000):
+            engine.insert(f"n{k}", float(rng.uniform(10, 200)), float(rng.uniform(10, 287)),
+                          2.0, 2.0)
+        for k in range(1, 2_000):
+            engine.anchor_to(f"n{k}", f"n{k - 1}", 0.05, 0.05)
+        engine.reheat()
+    start = time.perf_counter()
+    report = engine.settle()
+    seconds = time.perf_counter() - start
+    quality = engine.quality()
+    return {"seconds": seconds, "steps": report.steps, "settled": report.settled,
+            "overlaps": len(quality.overlapping_pairs), "off_page": len(quality.off_page),
+            "peak_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}
+
+
+def main() -> None:
+    if len(sys.argv) > 2 and sys.argv[1] == "--one":
+        print(json.dumps(run_scene(sys.argv[2])))
+        return
+    print("| scene | goal | s | steps | settled | overlapping pairs | off page | peak memory |")
+    print("|---|---|---|---|---|---|---|---|")
+    for name in SCENES:
+        started = time.perf_counter()
+        try:
+            done = subprocess.run([sys.executable, __file__, "--one", name], capture_output=True,
+                                  text=True, timeout=600)
+            figures = json.loads(done.stdout) if done.returncode == 0 else None
+        except subprocess.TimeoutExpired:
+            figures = None
+        if figures is None:
+            print(f"| {name} | {GOALS[name]} | > {time.perf_counter() - started:.0f} (stopped) "
+                  f"| | | | | |", flush=True)
+            continue
+        print(f"| {name} | {GOALS[name]} | {figures['seconds']:.1f} | {figures['steps']} "
+              f"| {'yes' if figures['settled'] else 'no'} | {figures['overlaps']} "
+              f"| {figures['off_page']} | {figures['peak_mb']:.0f} MB |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
