@@ -7,8 +7,6 @@ autostart=False (physics paused) and run steps explicitly when they need motion.
 
 from __future__ import annotations
 
-import asyncio
-import inspect
 from pathlib import Path
 
 import pytest
@@ -53,13 +51,3 @@ def build_project(folder: Path) -> Path:
 @pytest.fixture
 def project_path(tmp_path: Path) -> Path:
     return build_project(tmp_path / "card")
-
-
-@pytest.hookimpl(tryfirst=True)
-def pytest_pyfunc_call(pyfuncitem):
-    """Run `async def` tests in a fresh event loop (Pilot needs one; no asyncio plugin is installed)."""
-    if inspect.iscoroutinefunction(pyfuncitem.obj):
-        arguments = {name: pyfuncitem.funcargs[name] for name in pyfuncitem._fixtureinfo.argnames}
-        asyncio.run(pyfuncitem.obj(**arguments))
-        return True
-    return None
