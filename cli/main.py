@@ -283,6 +283,10 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--strict", action="store_true", help="exit 1 when the layout has problems")
     allow_outside_option(check)
     check.set_defaults(run=cmd_check)
+
+    from floatpage.cli.merge_command import add_merge_parser
+
+    add_merge_parser(commands, allow_outside_option)
     return parser
 
 

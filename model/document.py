@@ -69,6 +69,9 @@ class ItemBase:
     h: float = field(metadata=spec("number", positive, required=True))
     z: int = field(default=0, metadata=spec("int"))
     decorative: bool = field(default=False, metadata=spec("bool"))
+    # `floatpage merge`: a record whose value for any of this item's placeholders is empty
+    # leaves the item out, instead of printing an empty box
+    drop_if_empty: bool = field(default=False, metadata=spec("bool"))
     anchor: Anchor | None = field(default=None, metadata=spec("table"))
 
     kind = "base"

@@ -23,6 +23,9 @@ FORMATS = ("PNG", "JPEG", "WEBP", "GIF", "BMP", "TIFF")
 FORMAT_WORDS = "PNG, JPEG, PDF, WebP, GIF, BMP or TIFF"
 
 
+MERGE_FIELD = re.compile(r"\{[^{}]+\}")
+
+
 @dataclass(frozen=True)
 class PictureHeader:
     """A picture as its header describes it; ``problem`` says why it cannot be used."""
@@ -97,6 +100,11 @@ def decode_warning(path: Path) -> str:
     except (OSError, ValueError, SyntaxError, Image.DecompressionBombError) as error:
         return f"its pixels do not decode cleanly ({error}); it may print grey or cut off"
     return ""
+
+
+def is_merge_placeholder(relative: str) -> bool:
+    """A template's picture path that a data column fills (`pictures/{photo}`)."""
+    return MERGE_FIELD.search(relative) is not None
 
 
 def is_outside(picture: Path, folder: Path) -> bool:

@@ -20,7 +20,7 @@ from floatpage.model.document import (
 )
 from floatpage.model.errors import Problem, ProjectFileError
 from floatpage.model.locate import LineFinder
-from floatpage.model.picture_files import is_outside, read_header
+from floatpage.model.picture_files import is_merge_placeholder, is_outside, read_header
 from floatpage.model.page_sizes import CUSTOM, PAGE_SIZES_MM, canonical_size_name, page_dimensions
 from floatpage.model.schema import (
     BACKGROUND_KEYS, COMMON_ITEM_KEYS, FILES_KEYS, ITEM_ANCHOR_KEYS, KIND_KEYS, PAGE_KEYS, PHYSICS_KEYS,
@@ -43,7 +43,9 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False) -> Proj
     """Parse and validate a project file; raise ProjectFileError naming every problem.
 
     Pictures must lie inside the project's folder unless ``allow_outside_files`` (the CLI's
-    --allow-outside-files) or the file's own ``[files] allow_outside = true`` says otherwise."""
+    --allow-outside-files) or the file's own ``[files] allow_outside = true`` says otherwise.
+    A merge template may name a picture by a placeholder (``pictures/{photo}``): that path
+    is checked per record, once filled, by `floatpage merge`."""
     path = Path(path)
     text = read_text(path)
     try:
@@ -242,6 +244,8 @@ class _Reader:
         return Background(color=values.get("color"), picture=values.get("picture"))
 
     def check_picture(self, relative: str, where: str, line: int | None) -> None:
+        if is_merge_placeholder(relative):
+            return
         picture = self.path.parent / relative
         header = read_header(picture)
         if header.problem == "not found":

@@ -90,13 +90,15 @@ def item_pairs(item) -> Pairs:
     pairs: Pairs = [("id", item.id, None), ("kind", item.kind, None)]
     pairs += [(name, mm(getattr(item, name)), None) for name in ("x", "y", "w", "h")]
     pairs += [("z", item.z, 0), ("decorative", item.decorative, False)]
-    base_names = {"id", "x", "y", "w", "h", "z", "decorative", "anchor", "source_document"}
+    base_names = {"id", "x", "y", "w", "h", "z", "decorative", "anchor", "source_document",
+                  "drop_if_empty"}
     defaults = type(item)(id="", x=0.0, y=0.0, w=1.0, h=1.0)
     for f in fields(item):
         if f.name in WRITTEN_ONLY_WHEN_TRUE:
             pairs.append((f.name, True if getattr(item, f.name) else None, None))
         elif f.name not in base_names:
             pairs.append((f.name, getattr(item, f.name), getattr(defaults, f.name)))
+    pairs.append(("drop_if_empty", True if item.drop_if_empty else None, None))
     pairs.append(("anchor", anchor_value(item.anchor), None))
     return pairs
 

@@ -18,7 +18,7 @@ from pylatex.utils import NoEscape
 
 from floatpage.model.document import Project
 from floatpage.model.save import atomic_write
-from floatpage.model.picture_files import decode_warning
+from floatpage.model.picture_files import decode_warning, is_merge_placeholder
 from floatpage.typeset.build_folder import build_folder
 from floatpage.typeset.compile import compile_pdf, engine_path
 from floatpage.typeset.output_paths import check_outputs, project_inputs
@@ -89,12 +89,13 @@ def picture_warnings(project: Project) -> list[str]:
     found = []
     for page in project.pages:
         for item in page.items:
-            if item.kind == "picture":
+            if item.kind == "picture" and not is_merge_placeholder(item.path):
                 problem = decode_warning(project.base_dir / item.path)
                 if problem:
                     found.append(f'item "{item.id}" on page "{page.id}": picture '
                                  f'"{item.path}": {problem}')
-        if page.background is not None and page.background.picture:
+        if page.background is not None and page.background.picture and \
+                not is_merge_placeholder(page.background.picture):
             problem = decode_warning(project.base_dir / page.background.picture)
             if problem:
                 found.append(f'page "{page.id}" background "{page.background.picture}": {problem}')

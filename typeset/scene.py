@@ -16,6 +16,7 @@ from floatpage.model.document import (
 )
 from floatpage.model.key_specs import HEX_COLOUR
 from floatpage.typeset.calendar_panel import Rect, layout_calendar
+from floatpage.model.picture_files import is_merge_placeholder
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.pictures import PicturePlan, plan_picture
 from floatpage.typeset.templates import SAFE_PATH
@@ -170,6 +171,10 @@ def build_scene(project: Project) -> DocumentScene:
             if isinstance(item, TextItem):
                 made = text_scene(item, label, warnings)
             elif isinstance(item, PictureItem):
+                if is_merge_placeholder(item.path):
+                    raise RenderError(f'{label}: picture "{item.path}" is filled from a data '
+                                      "column; this is a merge template: make its documents "
+                                      "with `floatpage merge TEMPLATE DATA -o OUTDIR`")
                 left, top = item.x - item.w / 2, item.y - item.h / 2
                 plan = plan_picture(project.base_dir / item.path, item.w, item.h, label)
                 made = PictureScene(item.id, f'{label} (picture file "{item.path}")', left, top,

@@ -140,16 +140,20 @@ def fit_in_box(text: str, face: FaceKey, w_mm: float, h_mm: float
     return fit_text(printable, Box(w_mm * PT_PER_MM, h_mm * PT_PER_MM), metrics), missing, chained
 
 
+# Ends every warning of a text that does not fit its box (`floatpage merge` fails the record).
+DOES_NOT_FIT_HINT = "(enlarge the box or shorten the text)"
+
+
 def fit_warnings(label: str, face: FaceKey, fit: TextFit, missing: list[str]) -> list[str]:
     warnings = []
     if missing:
         warnings.append(missing_glyph_warning(label, face, missing))
     if fit.below_minimum and not fit.lines:
         warnings.append(f"{label}: the box is too small to hold this text at any size "
-                        f"(enlarge the box or shorten the text)")
+                        f"{DOES_NOT_FIT_HINT}")
     elif fit.below_minimum:
         warnings.append(f"{label}: the text only fits at {fit.font_pt:.1f} pt, below the "
-                        f"{MIN_PT:g} pt minimum (enlarge the box or shorten the text)")
+                        f"{MIN_PT:g} pt minimum {DOES_NOT_FIT_HINT}")
     if fit.broken_words:
         words = ", ".join(f'"{w[:30]}"' for w in fit.broken_words[:3])
         warnings.append(f"{label}: {words} did not fit the box's width and "

@@ -14,7 +14,7 @@ import zipfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-PARTS = ("physics", "model", "typeset", "tui", "cli", "starters", "latex_templates")
+PARTS = ("physics", "model", "typeset", "tui", "cli", "starters", "latex_templates", "merge")
 BARE_IMPORT = re.compile(rf"^\s*(?:from|import)\s+(?:{'|'.join(PARTS)})(?:[.\s]|$)", re.M)
 BARE_NAME_STRING = re.compile(rf"""(?:"-m",\s*|files\()["'](?:{'|'.join(PARTS)})\b""")
 

@@ -1,0 +1,128 @@
+"""`floatpage merge TEMPLATE DATA -o OUTDIR`: the command line of merge (the work: merge/)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+from typing import Callable
+
+from floatpage.model.errors import printable
+
+EXIT_SOME_RECORDS_FAILED = 3
+
+
+def positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError("must be 1 or more")
+    return value
+
+
+def add_merge_parser(commands, allow_outside_option) -> None:
+    merge = commands.add_parser(
+        "merge", help="one personalised PDF per record of a CSV or JSON Lines file",
+        description="Fill the template's {column} placeholders from each record of DATA, lay "
+                    "the page out again for that record, and typeset one PDF per record. "
+                    f"Exit status: 0 all made, {EXIT_SOME_RECORDS_FAILED} when some records "
+                    "failed (see OUTDIR/report.csv), 1 when nothing could start.")
+    merge.add_argument("template", help="the template project (.toml) with {column} placeholders")
+    merge.add_argument("data", help="the records: .csv with a header line, or .jsonl")
+    merge.add_argument("-o", "--output", required=True, metavar="OUTDIR",
+                       help="folder for the PDFs and report.csv (created if missing)")
+    merge.add_argument("--name", metavar="PATTERN",
+                       help='file names from columns, e.g. "{id}-{surname}" (default: record-00001)')
+    merge.add_argument("--combined", action="store_true",
+                       help="also write OUTDIR/combined.pdf, every record in order, for printing")
+    merge.add_argument("--toml", action="store_true",
+                       help="also write each record's settled project, to open in the editor")
+    merge.add_argument("--force", action="store_true",
+                       help="redo every record, even those whose inputs have not changed")
+    merge.add_argument("--chunk-size", type=positive, default=16, metavar="N",
+                       help="records per LuaLaTeX run (default 16)")
+    merge.add_argument("--workers", type=positive, default=None, metavar="N",
+                       help="worker processes (default: one per core)")
+    merge.add_argument("--dask", metavar="ADDRESS",
+                       help='run on a Dask scheduler (tcp://host:8786), or "local" for a '
+                            "LocalCluster on this machine")
+    merge.add_argument("--pictures", choices=("shared", "ship"), default="shared",
+                       help="workers read pictures from the same path (shared) or receive them "
+                            "with each task (ship); default shared")
+    merge.add_argument("-q", "--quiet", action="store_true", help="no progress output")
+    allow_outside_option(merge)
+    merge.set_defaults(run=cmd_merge)
+
+
+def cmd_merge(args: argparse.Namespace) -> int:
+    from floatpage.merge.run import Merge, MergeOptions
+
+    merge = Merge(MergeOptions(
+        template=Path(args.template), data=Path(args.data), outdir=Path(args.output),
+        name=args.name, combined=args.combined, write_toml=args.toml, force=args.force,
+        chunk_size=args.chunk_size, workers=args.workers or 0, dask=args.dask,
+        ship_pictures=args.pictures == "ship", allow_outside_files=args.allow_outside_files))
+    for note in merge.notes:
+        print(f"note: {printable(note)}", file=sys.stderr)
+    with merge_progress(args.quiet) as show:
+        summary = merge.run(show)
+    print(f"{summary.made} made, {summary.unchanged} unchanged, {summary.failed} failed of "
+          f"{summary.records} record(s) in {summary.seconds:.1f} s; report: {summary.report}")
+    if summary.combined:
+        print(f"combined PDF: {summary.combined}")
+    if summary.failed:
+        print(f"floatpage: {summary.failed} record(s) failed; their reasons are in "
+              f"{summary.report}", file=sys.stderr)
+        return EXIT_SOME_RECORDS_FAILED
+    return 0
+
+
+class merge_progress:
+    """A bar with records per second and ETA on a terminal; a plain line every few seconds
+    (and at the end) in a pipe or a CI log; nothing with --quiet."""
+
+    PLAIN_EVERY_S = 5.0
+
+    def __init__(self, quiet: bool):
+        self.quiet = quiet
+        self.bar = None
+        self.started = time.monotonic()
+        self.last_line = 0.0
+
+    def __enter__(self) -> Callable[[int, int, int], None]:
+        if not self.quiet and sys.stderr.isatty():
+            from rich.console import Console
+            from rich.progress import (BarColumn, MofNCompleteColumn, Progress, TextColumn,
+                                       TimeRemainingColumn)
+
+            self.bar = Progress(TextColumn("merging"), BarColumn(), MofNCompleteColumn(),
+                                TextColumn("{task.fields[rate]} records/s"),
+                                TextColumn("{task.fields[failed]} failed"),
+                                TextColumn("ETA"), TimeRemainingColumn(),
+                                console=Console(stderr=True), transient=True)
+            self.bar.start()
+            self.task = self.bar.add_task("", total=None, rate="–", failed=0)
+        return self.show
+
+    def show(self, done: int, total: int, failed: int) -> None:
+        if self.quiet:
+            return
+        elapsed = max(time.monotonic() - self.started, 1e-6)
+        rate = done / elapsed
+        if self.bar is not None:
+            self.bar.update(self.task, completed=done, total=total, rate=f"{rate:.1f}",
+                            failed=failed)
+            return
+        now = time.monotonic()
+        if now - self.last_line >= self.PLAIN_EVERY_S or done == total:
+            self.last_line = now
+            left = (total - done) / rate if rate > 0 else 0
+            print(f"merge: {done}/{total} records, {failed} failed, {rate:.1f} records/s, "
+                  f"ETA {left:.0f} s", file=sys.stderr, flush=True)
+
+    def __exit__(self, *exc) -> None:
+        if self.bar is not None:
+            self.bar.stop()

@@ -1,0 +1,155 @@
+"""The work a worker process does for one chunk of records, and what it sends back.
+
+A chunk travels as plain data (ChunkTask), so the same function runs in a local process
+pool and on a Dask worker on another machine. Pictures come from a shared path, or travel
+inside the task (`shipped`) and are unpacked into a private folder on the worker.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import os
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from floatpage.merge.record_layout import RecordFailure, lay_out_record
+from floatpage.merge.records import Record
+from floatpage.merge.template import MergeTemplate
+from floatpage.model.errors import FloatpageError
+from floatpage.model.save import dump_project
+from floatpage.typeset.batch import typeset_batch
+from floatpage.typeset.scene import build_scene
+from floatpage.typeset.text_layout import DOES_NOT_FIT_HINT
+
+
+@dataclass(frozen=True)
+class TemplateSource:
+    """The template as text plus where its pictures are; hashable, so workers cache it."""
+
+    path: str        # where it was read (names in messages; its folder, for shared pictures)
+    text: str
+    allow_outside: bool = False
+    shipped: tuple[tuple[str, bytes], ...] = ()  # (relative path, bytes): the template's pictures
+
+
+@dataclass
+class ChunkTask:
+    template: TemplateSource
+    records: list[Record]
+    names: list[str]
+    toml_picture_prefix: str | None = None  # write each record's .toml; paths get this prefix
+    shipped: dict[str, bytes] = field(default_factory=dict)  # the records' pictures, if sent
+
+
+@dataclass
+class RecordResult:
+    number: int
+    line: int
+    name: str
+    reason: str = ""
+    warnings: list[str] = field(default_factory=list)
+    pdf: bytes | None = None
+    toml: str | None = None
+    pages: int = 0
+
+    @property
+    def ok(self) -> bool:
+        return not self.reason
+
+
+@functools.lru_cache(maxsize=4)
+def template_on_worker(source: TemplateSource) -> tuple[MergeTemplate, Path]:
+    """Load (once per process) the template; with shipped pictures, in a private folder."""
+    if not source.shipped and Path(source.path).is_file():
+        template = MergeTemplate(Path(source.path), allow_outside_files=source.allow_outside)
+        return template, template.project.base_dir
+    folder = Path(tempfile.mkdtemp(prefix="floatpage-merge-"))
+    unpack(folder, dict(source.shipped))
+    copy = folder / Path(source.path).name
+    copy.write_text(source.text, encoding="utf-8")
+    return MergeTemplate(copy, allow_outside_files=source.allow_outside), folder
+
+
+def unpack(folder: Path, files: dict[str, bytes]) -> None:
+    for relative, data in files.items():
+        target = (folder / relative).resolve()
+        if not str(target).startswith(str(folder.resolve()) + os.sep):
+            continue  # only paths inside the folder were shipped; never write outside it
+        target.parent.mkdir(parents=True, exist_ok=True)
+        if not target.exists():
+            target.write_bytes(data)
+
+
+def run_chunk(task: ChunkTask) -> list[RecordResult]:
+    """Lay out every record of the chunk, typeset the good ones in one engine run."""
+    template, root = template_on_worker(task.template)
+    if task.shipped:
+        unpack(root, task.shipped)
+    results, scenes, made = [], [], []
+    for record, name in zip(task.records, task.names):
+        result = RecordResult(record.number, record.line, name)
+        results.append(result)
+        if record.problem:
+            result.reason = record.problem
+            continue
+        try:
+            project = lay_out_record(template, record.values, root)
+            scene = build_scene(project)
+        except RecordFailure as failure:
+            result.reason = str(failure)
+            continue
+        except FloatpageError as error:
+            result.reason = str(error)
+            continue
+        too_long = [w for w in scene.warnings if w.endswith(DOES_NOT_FIT_HINT)]
+        if too_long:
+            result.reason = too_long[0]
+            continue
+        result.warnings = list(scene.warnings)
+        result.pages = len(scene.pages)
+        if task.toml_picture_prefix is not None:
+            result.toml = record_toml(project, task.toml_picture_prefix)
+        scenes.append(scene)
+        made.append(result)
+    typeset_chunk(scenes, made)
+    return results
+
+
+def typeset_chunk(scenes: list, results: list[RecordResult]) -> None:
+    """One engine run for all; if it fails, one run per record, so only the bad one fails."""
+    if not scenes:
+        return
+    try:
+        pdfs = typeset_batch(scenes)
+    except FloatpageError as error:
+        if len(scenes) == 1:
+            results[0].reason = f"LuaLaTeX could not typeset it: {error}"
+        else:
+            for scene, result in zip(scenes, results):
+                typeset_chunk([scene], [result])
+        return
+    for result, pdf in zip(results, pdfs):
+        result.pdf = pdf
+
+
+def record_toml(project, prefix: str) -> str:
+    """The settled record as a project file that opens from the output folder."""
+    for page in project.pages:
+        for item in page.items:
+            if item.kind == "picture":
+                item.path = os.path.normpath(os.path.join(prefix, item.path))
+        if page.background is not None and page.background.picture:
+            page.background.picture = os.path.normpath(os.path.join(prefix,
+                                                                    page.background.picture))
+    text = dump_project(project)
+    return text + "\n[files]\nallow_outside = true  # the pictures stay beside the template\n"
+
+
+def input_digest(*parts: bytes) -> str:
+    digest = hashlib.sha256()
+    for part in parts:
+        digest.update(len(part).to_bytes(8, "big"))
+        digest.update(part)
+    return digest.hexdigest()

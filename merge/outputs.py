@@ -1,0 +1,148 @@
+"""Where a merge writes: one folder, names made safe and unique, nothing half-written.
+
+Every file is written whole to a temporary name and renamed (model.save.atomic_write), so
+Ctrl+C or a kill never leaves a partial PDF at an output path. A record's input digest is
+kept in `.floatpage-merge/NAME.key`, written after its PDF: a second run skips a record
+whose digest and outputs are unchanged.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import re
+import unicodedata
+from pathlib import Path
+
+from floatpage.merge.placeholders import PlaceholderError, fields_in, fill
+from floatpage.model.errors import FloatpageError
+from floatpage.model.save import atomic_write
+
+STATE_DIR = ".floatpage-merge"
+REPORT = "report.csv"
+COMBINED = "combined.pdf"
+UNSAFE = re.compile(r"[^\w.\-+=@,()\[\] ]+", re.UNICODE)
+MAX_NAME_CHARS = 120
+REPORT_COLUMNS = ("record", "line", "name", "status", "reason")
+
+
+def name_fields(pattern: str | None) -> list[str]:
+    if pattern is None:
+        return []
+    try:
+        return fields_in(pattern)
+    except PlaceholderError as error:
+        raise FloatpageError(f"--name {pattern!r}: {error}") from None
+
+
+def safe_name(text: str, number: int) -> str:
+    """A file name any file system takes: no separators, controls or leading dots."""
+    text = unicodedata.normalize("NFC", text)
+    text = UNSAFE.sub("-", text).strip(" .-")
+    text = re.sub(r"\s+", " ", text)[:MAX_NAME_CHARS].strip(" .-")
+    return text or f"record-{number:05d}"
+
+
+class Names:
+    """Record names in record order: from --name's pattern, made safe, then unique (a later
+    record that would clash gets -2, -3…; case is ignored, for case-blind file systems)."""
+
+    RESERVED = {"report", "combined"}
+
+    def __init__(self, pattern: str | None):
+        self.pattern = pattern
+        self.taken: set[str] = set()
+
+    def name_for(self, number: int, values: dict[str, str]) -> str:
+        if self.pattern is None:
+            base = f"record-{number:05d}"
+        else:
+            base = safe_name(fill(self.pattern, values), number)
+        name, count = base, 1
+        while name.casefold() in self.taken or name.casefold() in self.RESERVED:
+            count += 1
+            name = f"{base}-{count}"
+        self.taken.add(name.casefold())
+        return name
+
+
+class OutputFolder:
+    def __init__(self, folder: Path, inputs: list[Path]):
+        self.folder = Path(folder)
+        if self.folder.is_symlink() or (self.folder.exists() and not self.folder.is_dir()):
+            raise FloatpageError(f"{self.folder}: the output folder must be a folder (not a file "
+                                 "or a link); name a new or existing folder with -o")
+        try:
+            (self.folder / STATE_DIR).mkdir(parents=True, exist_ok=True)
+        except OSError as error:
+            raise FloatpageError(f"{self.folder}: cannot create the output folder "
+                                 f"({error.strerror})") from None
+        self.inputs = {self.key(path) for path in inputs}
+
+    @staticmethod
+    def key(path: Path) -> str:
+        return os.path.realpath(path)
+
+    def pdf(self, name: str) -> Path:
+        return self.folder / f"{name}.pdf"
+
+    def toml(self, name: str) -> Path:
+        return self.folder / f"{name}.toml"
+
+    def digest_file(self, name: str) -> Path:
+        return self.folder / STATE_DIR / f"{name}.key"
+
+    def unchanged(self, name: str, digest: str, with_toml: bool) -> bool:
+        try:
+            if self.digest_file(name).read_text(encoding="ascii") != digest:
+                return False
+        except (OSError, UnicodeDecodeError):
+            return False
+        return self.pdf(name).is_file() and (not with_toml or self.toml(name).is_file())
+
+    def refuse(self, path: Path) -> str:
+        """Why `path` may not be written ("" if it may): never an input, link or device."""
+        if self.key(path) in self.inputs:
+            return f"{path} is one of the merge's inputs; choose another --name or -o"
+        if path.is_symlink():
+            return f"{path} is a symbolic link; floatpage writes only regular files"
+        if path.exists() and not path.is_file():
+            return f"{path} is not a regular file; floatpage writes only regular files"
+        return ""
+
+    def write_record(self, name: str, pdf: bytes, toml: str | None, digest: str) -> str:
+        """Write the record's files ("" if written, else the reason they were not)."""
+        targets = [(self.pdf(name), pdf)]
+        if toml is not None:
+            targets.append((self.toml(name), toml.encode("utf-8")))
+        for path, _ in targets:
+            problem = self.refuse(path)
+            if problem:
+                return problem
+        self.digest_file(name).unlink(missing_ok=True)  # stale until all its files are new
+        for path, data in targets:
+            atomic_write(path, data, backup=False)
+        atomic_write(self.digest_file(name), digest.encode("ascii"), backup=False)
+        return ""
+
+
+class Report:
+    """report.csv, one row per record in record order. Rows stream to a file in the state
+    folder, which replaces report.csv when the run ends (also when it is interrupted)."""
+
+    def __init__(self, folder: Path):
+        self.path = folder / REPORT
+        self.partial = folder / STATE_DIR / "report.partial"
+        self.handle = self.partial.open("w", encoding="utf-8", newline="")
+        self.writer = csv.writer(self.handle, lineterminator="\n")
+        self.writer.writerow(REPORT_COLUMNS)
+        self.failed = 0
+
+    def row(self, number: int, line: int, name: str, status: str, reason: str = "") -> None:
+        if status == "failed":
+            self.failed += 1
+        self.writer.writerow((number, line, name, status, " ".join(reason.split())))
+
+    def save(self) -> None:
+        self.handle.close()
+        os.replace(self.partial, self.path)

@@ -1,0 +1,123 @@
+"""One record's document: placeholders filled, pictures at their own proportions, the page
+settled again from the template's positions, then the quality gate.
+
+Anything wrong with one record raises RecordFailure with a reason a person can act on;
+the caller writes it to report.csv and goes on with the other records.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Mapping
+
+from floatpage.merge.placeholders import fill
+from floatpage.merge.template import FieldUse, MergeTemplate
+from floatpage.model import Project
+from floatpage.model.document import ItemAnchor, MAX_TEXT_CHARS
+from floatpage.model.errors import FloatpageError
+from floatpage.model.layout import engine_for_page, settle_project
+from floatpage.model.picture_files import is_outside, read_header
+from floatpage.typeset.errors import RenderError
+from floatpage.typeset.pictures import plan_picture
+
+
+class RecordFailure(Exception):
+    """This record cannot be made; the message says why and what to change."""
+
+
+def fill_record(template: MergeTemplate, values: Mapping[str, str],
+                picture_root: Path | None = None) -> Project:
+    """The template with this record's values in place; items with empty fields dropped."""
+    project = template.copy_project()
+    root = picture_root or template.project.base_dir
+    by_place = {(use.page_id, use.item_id): use for use in template.uses}
+    for page in project.pages:
+        kept, dropped = [], set()
+        for item in page.items:
+            use = by_place.get((page.id, item.id))
+            if use is None:
+                kept.append(item)
+                continue
+            if item.drop_if_empty and any(not values[name].strip() for name in use.names):
+                dropped.add(item.id)
+                continue
+            if item.kind == "text":
+                item.text = fill(item.text, values)
+                if len(item.text) > MAX_TEXT_CHARS:
+                    raise RecordFailure(f"{use.where}: the text is {len(item.text):,} characters "
+                                        f"long, more than the {MAX_TEXT_CHARS:,} a text may hold")
+            else:
+                item.path = fill(item.path, values)
+                check_picture(root, item.path, template.allow_outside, use)
+                reshape_to_picture(item, root / item.path, page, use)
+            kept.append(item)
+        for item in kept:  # a follower of a dropped item stays where the template put it
+            if isinstance(item.anchor, ItemAnchor) and item.anchor.target in dropped:
+                item.anchor = None
+        page.items = kept
+        use = by_place.get((page.id, None))
+        if use is not None:
+            page.background.picture = fill(page.background.picture, values)
+            if not page.background.picture.strip():
+                page.background.picture = None
+            else:
+                check_picture(root, page.background.picture, template.allow_outside, use)
+    return project
+
+
+def check_picture(root: Path, relative: str, allow_outside: bool, use: FieldUse) -> None:
+    if not relative.strip():
+        raise RecordFailure(f"{use.where}: the picture's column is empty (mark the item "
+                            "`drop_if_empty = true` to leave it out instead)")
+    path = root / relative
+    header = read_header(path)
+    if header.problem:
+        raise RecordFailure(f'{use.where}: picture "{relative}" {header.problem} '
+                            f"(paths are relative to {root})")
+    if not allow_outside and is_outside(path, root):
+        raise RecordFailure(f'{use.where}: picture "{relative}" is outside {root}; copy it '
+                            "there, or allow it with --allow-outside-files")
+
+
+def reshape_to_picture(item, path: Path, page, use: FieldUse) -> None:
+    """Give the box the picture's proportions: the same area as the template's box, the longer
+    side no longer than the template box's longer side, and never larger than the page."""
+    try:
+        aspect = plan_picture(path, item.w, item.h, use.where).aspect
+    except RenderError as error:
+        raise RecordFailure(str(error)) from None
+    if not aspect or not math.isfinite(aspect) or aspect <= 0:
+        return  # a PDF picture: its box stays as the template drew it
+    area, longest = item.w * item.h, max(item.w, item.h)
+    w, h = math.sqrt(area * aspect), math.sqrt(area / aspect)
+    shrink = min(1.0, longest / max(w, h), page.width_mm / w, page.height_mm / h)
+    item.w, item.h = w * shrink, h * shrink
+
+
+def settle_and_gate(project: Project) -> None:
+    """Settle every page from the template's positions (anchors kept), then demand no
+    overlap and nothing off the page."""
+    settle_project(project)
+    for page in project.pages:
+        quality = engine_for_page(page, project.physics).quality()
+        if quality.overlapping_pairs:
+            a, b = quality.overlapping_pairs[0]
+            ids = page.item_ids()
+            raise RecordFailure(f'page "{page.id}": items "{ids[a]}" and "{ids[b]}" still overlap '
+                                f"after settling ({len(quality.overlapping_pairs)} pair(s)); "
+                                "the page is too full for this record's content")
+        if quality.off_page:
+            ids = page.item_ids()
+            raise RecordFailure(f'page "{page.id}": item "{ids[quality.off_page[0]]}" lies off '
+                                "the page after settling")
+
+
+def lay_out_record(template: MergeTemplate, values: Mapping[str, str],
+                   picture_root: Path | None = None) -> Project:
+    try:
+        project = fill_record(template, values, picture_root)
+        settle_and_gate(project)
+    except FloatpageError as error:
+        raise RecordFailure(str(error)) from None
+    return project

@@ -1,0 +1,122 @@
+"""Records read one at a time from CSV or JSON Lines, so 100,000 rows never sit in memory.
+
+Every record keeps the line it starts on, which is what report.csv and error messages name.
+A malformed record (a CSV row with too many fields, a JSON line that is not an object) is
+yielded with its problem, so that record fails alone and the others go on.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterator
+
+from floatpage.model.errors import FloatpageError
+
+csv.field_size_limit(1 << 20)  # one cell may hold a long text; a whole file may not
+
+
+@dataclass
+class Record:
+    number: int  # 1-based record number, in file order
+    line: int    # the line of the data file it starts on
+    values: dict[str, str] = field(default_factory=dict)
+    problem: str = ""
+
+
+class DataFile:
+    """A data file's columns (read at once) and its records (read as they are asked for)."""
+
+    def __init__(self, path: Path):
+        self.path = Path(path)
+        if not self.path.is_file():
+            raise FloatpageError(f"{self.path}: no such data file (give a .csv or .jsonl file)")
+        self.kind = "jsonl" if self.path.suffix.lower() in (".jsonl", ".ndjson") else "csv"
+        self.columns = self.read_columns()
+
+    def read_columns(self) -> list[str]:
+        if self.kind == "csv":
+            with self.open() as handle:
+                header = next(csv.reader(handle), None)
+            if not header:
+                raise FloatpageError(f"{self.path}: the file is empty; its first line must name "
+                                     "the columns")
+            columns = [name.strip() for name in header]
+        else:
+            first = next(self.records(), None)
+            if first is None or first.problem:
+                raise FloatpageError(f"{self.path}, line {first.line if first else 1}: the first "
+                                     "line must be a JSON object whose keys name the columns"
+                                     + (f" ({first.problem})" if first else ""))
+            columns = list(first.values)
+        blank = [index + 1 for index, name in enumerate(columns) if not name]
+        if blank:
+            raise FloatpageError(f"{self.path}, line 1: column {blank[0]} has no name; name "
+                                 "every column in the first line")
+        repeated = sorted({name for name in columns if columns.count(name) > 1})
+        if repeated:
+            raise FloatpageError(f"{self.path}, line 1: column {repeated[0]!r} is named twice")
+        return columns
+
+    def open(self):
+        try:
+            return self.path.open(encoding="utf-8-sig", newline="")
+        except OSError as error:
+            raise FloatpageError(f"{self.path}: cannot be read ({error.strerror})") from None
+
+    def records(self) -> Iterator[Record]:
+        try:
+            yield from (self.csv_records() if self.kind == "csv" else self.json_records())
+        except UnicodeDecodeError as error:
+            raise FloatpageError(f"{self.path}: not UTF-8 text ({error.reason} at byte "
+                                 f"{error.start}); save it as UTF-8") from None
+        except csv.Error as error:
+            raise FloatpageError(f"{self.path}: not a readable CSV file ({error})") from None
+
+    def csv_records(self) -> Iterator[Record]:
+        with self.open() as handle:
+            reader = csv.reader(handle)
+            header = [name.strip() for name in next(reader, [])]
+            number = 0
+            line = reader.line_num + 1
+            for row in reader:
+                if not any(cell.strip() for cell in row):
+                    line = reader.line_num + 1
+                    continue  # blank lines separate nothing
+                number += 1
+                record = Record(number, line)
+                if len(row) > len(header):
+                    record.problem = (f"the row has {len(row)} fields but the header names "
+                                      f"{len(header)} columns (a comma in a value needs quotes)")
+                record.values = {name: (row[index] if index < len(row) else "")
+                                 for index, name in enumerate(header)}
+                yield record
+                line = reader.line_num + 1
+
+    def json_records(self) -> Iterator[Record]:
+        with self.open() as handle:
+            number = 0
+            for line_number, line in enumerate(handle, start=1):
+                if not line.strip():
+                    continue
+                number += 1
+                record = Record(number, line_number)
+                try:
+                    data = json.loads(line)
+                except (json.JSONDecodeError, RecursionError) as error:
+                    record.problem = f"not valid JSON ({getattr(error, 'msg', 'too deep')})"
+                    yield record
+                    continue
+                if not isinstance(data, dict):
+                    record.problem = "the line is not a JSON object ({...})"
+                    yield record
+                    continue
+                for key, value in data.items():
+                    if isinstance(value, (dict, list)):
+                        record.problem = f"the value of {key!r} is a JSON {type(value).__name__}; " \
+                                         "give a string or a number"
+                    record.values[str(key)] = "" if value is None else (
+                        ("true" if value else "false") if isinstance(value, bool) else str(value))
+                yield record

@@ -1,0 +1,232 @@
+"""`floatpage merge`, from data file to folder: check, plan, dispatch, write, report.
+
+The template is checked against the data's columns before anything runs. Records then
+stream from the data file into chunks; a record whose inputs (its values, the template,
+every picture it uses) hash to the digest kept from an earlier run is skipped. Results
+come back in any order and are written as they come; report.csv lists records in order.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Iterator
+
+from floatpage.merge.chunk_job import ChunkTask, RecordResult, TemplateSource, input_digest
+from floatpage.merge.outputs import COMBINED, Names, OutputFolder, Report, name_fields
+from floatpage.merge.placeholders import fill
+from floatpage.merge.pools import cores, dask_results, local_results
+from floatpage.merge.records import DataFile, Record
+from floatpage.merge.template import MergeTemplate
+from floatpage.typeset.compile import engine_path
+from floatpage.typeset.pdf_split import concatenate
+
+FORMAT = b"floatpage-merge-1"  # part of every digest: bump when output bytes change
+
+
+@dataclass
+class MergeOptions:
+    template: Path
+    data: Path
+    outdir: Path
+    name: str | None = None
+    combined: bool = False
+    write_toml: bool = False
+    chunk_size: int = 16
+    workers: int = 0           # 0: one per core
+    dask: str | None = None    # None: local pool; "local": a LocalCluster; else an address
+    ship_pictures: bool = False
+    force: bool = False
+    allow_outside_files: bool = False
+
+
+@dataclass
+class MergeSummary:
+    records: int = 0
+    made: int = 0
+    unchanged: int = 0
+    failed: int = 0
+    seconds: float = 0.0
+    notes: tuple[str, ...] = ()
+    combined: Path | None = None
+    report: Path | None = None
+
+
+class Progress:
+    """What the caller shows: called with (done, total, failed) after every chunk."""
+
+    def __init__(self, show: Callable[[int, int, int], None] | None):
+        self.show = show or (lambda done, total, failed: None)
+
+
+def file_digest(path: Path) -> bytes:
+    try:
+        return hashlib.sha256(path.read_bytes()).digest()
+    except OSError:
+        return b"missing"
+
+
+class Merge:
+    def __init__(self, options: MergeOptions):
+        self.options = options
+        engine_path()  # no TeX: say so once, not once per record
+        self.template = MergeTemplate(options.template,
+                                      allow_outside_files=options.allow_outside_files)
+        self.data = DataFile(options.data)
+        self.notes = self.template.check_columns(self.data.columns, self.data.path,
+                                                 name_fields(options.name))
+        self.root = self.template.project.base_dir
+        self.picture_uses = [use for use in self.template.uses if use.attribute != "text"]
+        self.fixed_pictures = self.template_pictures()
+        text = options.template.read_text(encoding="utf-8-sig")
+        self.source = TemplateSource(str(options.template.resolve()), text,
+                                     self.template.allow_outside,
+                                     tuple(self.fixed_pictures.items()) if options.ship_pictures
+                                     else ())
+        self.template_digest = input_digest(
+            FORMAT, text.encode("utf-8"), b"toml" if options.write_toml else b"",
+            *(name.encode() + file_digest(self.root / name) for name in sorted(self.fixed_pictures)))
+        inputs = [options.template, options.data] + [self.root / p for p in self.fixed_pictures]
+        self.out = OutputFolder(options.outdir, inputs)
+        self.toml_prefix = (os.path.relpath(self.root.resolve(), options.outdir.resolve())
+                            if options.write_toml else None)
+
+    def template_pictures(self) -> dict[str, bytes | None]:
+        """The template's own pictures (no placeholder in their paths), by relative path."""
+        found: dict[str, bytes | None] = {}
+        for page in self.template.project.pages:
+            paths = [item.path for item in page.items if item.kind == "picture"]
+            if page.background is not None and page.background.picture:
+                paths.append(page.background.picture)
+            for path in paths:
+                if "{" not in path:
+                    found[path] = ((self.root / path).read_bytes() if self.options.ship_pictures
+                                   else None)
+        return found
+
+    def record_pictures(self, record: Record) -> list[str]:
+        paths = []
+        for use in self.picture_uses:
+            page = self.template.project.page(use.page_id)
+            raw = page.background.picture if use.item_id is None else page.item(use.item_id).path
+            try:
+                paths.append(fill(raw, record.values))
+            except KeyError:
+                pass
+        return [path for path in paths if path.strip()]
+
+    def digest(self, record: Record, name: str) -> str:
+        values = json.dumps(record.values, sort_keys=True, ensure_ascii=False).encode("utf-8")
+        pictures = [path.encode() + file_digest(self.root / path)
+                    for path in self.record_pictures(record)]
+        return input_digest(self.template_digest.encode(), values, name.encode(), *pictures)
+
+    def run(self, progress: Callable[[int, int, int], None] | None = None) -> MergeSummary:
+        started = time.perf_counter()
+        options = self.options
+        total = sum(1 for _ in self.data.records())
+        report = Report(self.out.folder)
+        summary = MergeSummary(records=total, notes=tuple(self.notes), report=report.path)
+        ordered = InOrder(report)
+        done_names: list[str] = []
+        show = progress or (lambda done, total, failed: None)
+        workers = options.workers or cores()
+
+        def tasks() -> Iterator[ChunkTask]:
+            chunk: list[tuple[Record, str, str]] = []
+            names = Names(options.name)
+            for record in self.data.records():
+                name = names.name_for(record.number, record.values)
+                if record.problem:
+                    ordered.add(record.number, (record.line, name, "failed", record.problem))
+                    continue
+                digest = self.digest(record, name)
+                if not options.force and self.out.unchanged(name, digest, options.write_toml):
+                    ordered.add(record.number, (record.line, name, "unchanged", ""))
+                    summary.unchanged += 1
+                    continue
+                chunk.append((record, name, digest))
+                if len(chunk) >= options.chunk_size:
+                    yield self.task(chunk)
+                    chunk = []
+            if chunk:
+                yield self.task(chunk)
+
+        self.digests: dict[int, str] = {}
+        results = (dask_results(tasks(), options.dask, workers) if options.dask
+                   else local_results(tasks(), workers))
+        try:
+            for chunk_results in results:
+                for result in chunk_results:
+                    self.write(result, ordered, summary)
+                show(ordered.count, total, report.failed)
+        finally:
+            ordered.flush_all()
+            report.save()
+            summary.failed = report.failed
+            summary.seconds = time.perf_counter() - started
+        show(total, total, report.failed)
+        if options.combined:
+            parts = [self.out.pdf(name) for name in ordered.made_names]
+            if parts:
+                summary.combined = self.out.folder / COMBINED
+                concatenate(parts, summary.combined)
+        return summary
+
+    def task(self, chunk: list[tuple[Record, str, str]]) -> ChunkTask:
+        shipped: dict[str, bytes] = {}
+        for record, _, digest in chunk:
+            self.digests[record.number] = digest
+            if self.options.ship_pictures:
+                for path in self.record_pictures(record):
+                    try:
+                        shipped[path] = (self.root / path).read_bytes()
+                    except OSError:
+                        pass  # the worker reports it missing, with the record
+        return ChunkTask(self.source, [record for record, _, _ in chunk],
+                         [name for _, name, _ in chunk], self.toml_prefix, shipped)
+
+    def write(self, result: RecordResult, ordered: "InOrder", summary: MergeSummary) -> None:
+        digest = self.digests.pop(result.number)
+        if result.ok and result.pdf is not None:
+            problem = self.out.write_record(result.name, result.pdf, result.toml, digest)
+            if problem:
+                result.reason = problem
+        if result.ok:
+            summary.made += 1
+            note = "; ".join(result.warnings)
+            ordered.add(result.number, (result.line, result.name, "made", note))
+        else:
+            ordered.add(result.number, (result.line, result.name, "failed", result.reason))
+
+
+class InOrder:
+    """Report rows in record order, whatever order chunks finish in."""
+
+    def __init__(self, report: Report):
+        self.report = report
+        self.waiting: dict[int, tuple] = {}
+        self.next = 1
+        self.count = 0
+        self.made_names: list[str] = []
+
+    def add(self, number: int, row: tuple) -> None:
+        self.waiting[number] = row
+        self.count += 1
+        while self.next in self.waiting:
+            self.emit(self.next, self.waiting.pop(self.next))
+            self.next += 1
+
+    def emit(self, number: int, row: tuple) -> None:
+        line, name, status, reason = row
+        if status in ("made", "unchanged"):
+            self.made_names.append(name)
+        self.report.row(number, line, name, status, reason)
+
+    def flush_all(self) -> None:
+        for number in sorted(self.waiting):
+            self.emit(number, self.waiting.pop(number))
