@@ -42,8 +42,9 @@ def add_merge_parser(commands, allow_outside_option) -> None:
                        help="also write each record's settled project, to open in the editor")
     merge.add_argument("--force", action="store_true",
                        help="redo every record, even those whose inputs have not changed")
-    merge.add_argument("--chunk-size", type=positive, default=16, metavar="N",
-                       help="records per LuaLaTeX run (default 16)")
+    merge.add_argument("--chunk-size", type=positive, default=None, metavar="N",
+                       help="records per LuaLaTeX run (default: up to 32, fewer for short data "
+                            "so every worker has work); the PDFs do not depend on it")
     merge.add_argument("--workers", type=positive, default=None, metavar="N",
                        help="worker processes (default: one per core)")
     merge.add_argument("--dask", metavar="ADDRESS",
@@ -63,7 +64,7 @@ def cmd_merge(args: argparse.Namespace) -> int:
     merge = Merge(MergeOptions(
         template=Path(args.template), data=Path(args.data), outdir=Path(args.output),
         name=args.name, combined=args.combined, write_toml=args.toml, force=args.force,
-        chunk_size=args.chunk_size, workers=args.workers or 0, dask=args.dask,
+        chunk_size=args.chunk_size or 0, workers=args.workers or 0, dask=args.dask,
         ship_pictures=args.pictures == "ship", allow_outside_files=args.allow_outside_files))
     for note in merge.notes:
         print(f"note: {printable(note)}", file=sys.stderr)

@@ -74,8 +74,9 @@ def dask_results(tasks: Iterator[ChunkTask], address: str, workers: int, retries
     try:
         width = max(1, sum(client.nthreads().values())) * IN_FLIGHT_PER_WORKER
         queue = iter(tasks)
+        # range first: zip stops on it without pulling (and losing) one more task from queue
         first = [client.submit(run_chunk, task, retries=retries, pure=False)
-                 for task, _ in zip(queue, range(width))]
+                 for _, task in zip(range(width), queue)]
         flow = as_completed(first)
         for future in flow:
             yield future.result()

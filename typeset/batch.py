@@ -12,7 +12,7 @@ things could make a record's PDF depend on its neighbours in the run, and both a
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from pylatex.utils import NoEscape
@@ -24,20 +24,18 @@ from floatpage.typeset.fonts import FaceKey, fallback_candidates
 from floatpage.typeset.pdf_split import split_records
 from floatpage.typeset.pictures import cache_dir, materialize
 from floatpage.typeset.scene import DocumentScene
-from floatpage.typeset.templates import make_environment
+from floatpage.typeset.templates import make_environment, tex_path
 
 
 @dataclass(frozen=True)
 class SlotFace:
-    """A face as one record of a batch loads it: its files through the record's slot folder."""
+    """A face as one record of a batch loads it: a luaotfload request of its own (`fpslot`),
+    so that record gets font instances, and subsets, of its own."""
 
     face: FaceKey
+    file: Path
     slot: int
-    links: tuple[tuple[str, str], ...]  # (real path, link path)
-
-    @property
-    def rich(self) -> bool:
-        return self.face.rich
+    size_bp: float = 10.0
 
     @property
     def fallbacks(self) -> tuple[int, ...]:
@@ -52,14 +50,37 @@ class SlotFace:
         return f"{self.face.chain_name}slot{self.slot}"
 
     @property
-    def slot_feature(self) -> NoEscape:
-        """A feature no font has: it only makes luaotfload load a fresh instance per record
-        (from its in-memory copy of the file), which the patch_font callback then renames."""
-        return NoEscape(f";fpslot={self.slot}")
-
-    @property
     def fallback_specs(self) -> list[str]:
         return [spec + f"fpslot={self.slot};" for spec in self.face.fallback_specs]
+
+    @property
+    def request(self) -> NoEscape:
+        """What fontspec's \\newfontface would ask luaotfload for, plus the slot."""
+        mode = "harf" if self.face.rich else "node"
+        chain = f"fallback={self.chain_name};" if self.fallbacks else ""
+        request = (f"[{tex_path(self.file)}]:mode={mode};script=latn;language=dflt;-calt;"
+                   f"{chain}fpslot={self.slot};")
+        return NoEscape(request)
+
+
+# Every text of a batch is set at this size and scaled to its own: a font instance per
+# (face, size) costs luaotfload 25 ms, and fitted sizes differ from record to record.
+BATCH_FONT_BP = 10.0
+
+
+def at_one_size(scene: DocumentScene) -> DocumentScene:
+    """The scene with every text group drawn at BATCH_FONT_BP and scaled to its fitted size:
+    the same glyphs at the same places, from one font instance per face."""
+    def rescaled(item):
+        groups = getattr(item, "groups", None)
+        if not groups:
+            return item
+        return replace(item, groups=tuple(
+            replace(group, size_pt=BATCH_FONT_BP, scale=group.size_pt / BATCH_FONT_BP)
+            for group in groups))
+
+    pages = [replace(page, items=[rescaled(item) for item in page.items]) for page in scene.pages]
+    return replace(scene, pages=pages)
 
 
 def font_files(scene: DocumentScene) -> list[Path]:
@@ -72,33 +93,35 @@ def font_files(scene: DocumentScene) -> list[Path]:
     return list(files)
 
 
-def link_fonts(files: list[Path], slot_dir: Path) -> dict[str, str]:
+def link_fonts(files: list[Path], slot_dir: Path) -> None:
+    """The slot folder: a link to every font file the record loads, under its own name."""
     slot_dir.mkdir(parents=True)
-    links: dict[str, str] = {}
     for file in files:
         link = slot_dir / file.name
         if link.is_symlink():
             raise RenderError(f"two font files are both named {file.name} ({file} and "
                               f"{link.readlink()}); floatpage merge needs distinct names")
         link.symlink_to(file)
-        links[str(file)] = str(link)
-    return links
 
 
 def record_context(number: int, scene: DocumentScene, slot_root: Path) -> dict:
     slot_dir = slot_root / str(number)
-    links = link_fonts(font_files(scene), slot_dir)
-    pairs = tuple(links.items())
-    faces = [(SlotFace(face, number, pairs), Path(file)) for face, file in scene.faces]
-    return {"number": number, "slot_dir": slot_dir, "faces": faces, "colors": scene.colors,
-            "picture_dir": scene.picture_dir, "pages": scene.pages}
+    link_fonts(font_files(scene), slot_dir)
+    faces = [SlotFace(face, Path(file), number, BATCH_FONT_BP) for face, file in scene.faces]
+    return {"number": number, "slot_dir": slot_dir, "faces": faces, "pages": scene.pages}
 
 
 def batch_tex(scenes: list[DocumentScene], slot_root: Path) -> str:
+    scenes = [at_one_size(scene) for scene in scenes]
     records = [record_context(number, scene, slot_root) for number, scene in enumerate(scenes)]
+    colors = list(dict.fromkeys(color for scene in scenes for color in scene.colors))
+    folders = {scene.picture_dir for scene in scenes if scene.pictures}
     template = make_environment().get_template("merge.tex.j2")
     try:
-        return template.render(records=records)
+        return template.render(records=records, colors=colors,
+                               picture_dir=folders.pop() if len(folders) == 1 else None,
+                               any_rich=any(face.rich for scene in scenes
+                                            for face, _ in scene.faces))
     except ValueError as error:
         raise RenderError(f"could not write the LaTeX: {error}") from None
 

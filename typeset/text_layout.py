@@ -45,6 +45,8 @@ class RunGroup:
     size_pt: float
     color: str  # "#rrggbb"
     runs: tuple[Run, ...]
+    # merge (typeset.batch): the face is a font loaded at size_pt, scaled by this to its size
+    scale: float | None = None
 
 
 def face_for(family: str, bold: bool, italic: bool) -> FaceKey:

@@ -1,0 +1,99 @@
+"""How fast `floatpage merge` makes personalised flyers, against a naive loop.
+
+    .venv/bin/python benchmarks/merge.py                 # 1,000 records, local pool
+    .venv/bin/python benchmarks/merge.py --dask          # also through a Dask LocalCluster
+    .venv/bin/python benchmarks/merge.py --records 200 --naive 20
+
+The naive loop is what a user would script without merge: for each record, a filled
+project file and one `floatpage render` (which settles it again), one process each.
+Both run in the same session on the same machine, so their ratio is what to compare.
+Data: benchmarks/merge_data.py, names, products, prices, notes and picture proportions
+from 1:3 to 3:1, with the sample template sample_projects/merge-offers/offer.toml.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from merge_data import draw_pictures, write_customers  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+FLOATPAGE = str(Path(sys.executable).with_name("floatpage"))
+TEMPLATE = ROOT / "sample_projects" / "merge-offers" / "offer.toml"
+
+
+def naive_renders(folder: Path, data: Path, count: int) -> float:
+    """Seconds for `count` renders, one process per record, as a shell loop would."""
+    from floatpage.merge.records import DataFile
+    from floatpage.merge.record_layout import fill_record
+    from floatpage.merge.template import MergeTemplate
+    from floatpage.model.save import dump_project
+
+    template = MergeTemplate(folder / TEMPLATE.name)
+    files = []
+    for record, _ in zip(DataFile(data).records(), range(count)):
+        project = fill_record(template, record.values)
+        path = folder / f"naive-{record.number:05d}.toml"
+        path.write_text(dump_project(project), encoding="utf-8")
+        files.append(path)
+    started = time.perf_counter()
+    for path in files:
+        subprocess.run([FLOATPAGE, "render", str(path), "-q"], check=True,
+                       stdout=subprocess.DEVNULL)
+    return time.perf_counter() - started
+
+
+def merge_run(folder: Path, data: Path, out: str, *extra: str) -> float:
+    started = time.perf_counter()
+    done = subprocess.run([FLOATPAGE, "merge", str(folder / TEMPLATE.name), str(data), "-o",
+                           str(folder / out), "-q", "--name", "{id}", *extra],
+                          capture_output=True, text=True)
+    seconds = time.perf_counter() - started
+    if done.returncode != 0:
+        sys.exit(f"merge failed ({done.returncode}): {done.stderr}")
+    return seconds
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--records", type=int, default=1000)
+    parser.add_argument("--naive", type=int, default=50, help="naive renders to time")
+    parser.add_argument("--dask", action="store_true", help="also time --dask local")
+    args = parser.parse_args()
+    folder = Path(tempfile.mkdtemp(prefix="floatpage-merge-bench-"))
+    try:
+        shutil.copy(TEMPLATE, folder / TEMPLATE.name)
+        pictures = draw_pictures(folder / "pictures", 24)
+        data = folder / "customers.csv"
+        write_customers(data, args.records, pictures)
+        merge_run(folder, data, "warm-up", "--force")  # fonts and picture caches, as in use
+        shutil.rmtree(folder / "warm-up")
+        naive = naive_renders(folder, data, args.naive)
+        naive_rate = args.naive / naive
+        print(f"naive loop: {args.naive} renders in {naive:.1f} s = {naive_rate:.2f} records/s")
+        local = merge_run(folder, data, "local")
+        local_rate = args.records / local
+        print(f"merge, local pool: {args.records} records in {local:.1f} s = {local_rate:.2f} "
+              f"records/s, {local_rate / naive_rate:.1f}x the naive loop")
+        again = merge_run(folder, data, "local")
+        print(f"merge again, nothing changed: {again:.1f} s (every record skipped)")
+        if args.dask:
+            dask = merge_run(folder, data, "dask", "--dask", "local")
+            print(f"merge, --dask local: {args.records} records in {dask:.1f} s = "
+                  f"{args.records / dask:.2f} records/s, {dask / local:.2f}x the local pool's time")
+            same = all((folder / "dask" / p.name).read_bytes() == p.read_bytes()
+                       for p in (folder / "local").glob("*.pdf"))
+            print(f"dask PDFs byte-identical to the local pool's: {same}")
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
