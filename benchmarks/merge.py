@@ -3,6 +3,7 @@
     .venv/bin/python benchmarks/merge.py                 # 1,000 records, local pool
     .venv/bin/python benchmarks/merge.py --dask          # also through a Dask LocalCluster
     .venv/bin/python benchmarks/merge.py --records 200 --naive 20
+    .venv/bin/python benchmarks/merge.py --memory 1000 10000 100000   # the client's peak memory
 
 The naive loop is what a user would script without merge: for each record, a filled
 project file and one `floatpage render` (which settles it again), one process each.
@@ -61,15 +62,47 @@ def merge_run(folder: Path, data: Path, out: str, *extra: str) -> float:
     return seconds
 
 
+def peak_memory(folder: Path, records: int) -> tuple[float, float]:
+    """Peak resident memory (MB) of the `floatpage merge` process itself, and seconds, for a
+    data file of `records` rows that each fail at once (a missing picture): what grows with
+    the data file is the client's part, reading, planning, reporting, not the typesetting."""
+    data = folder / f"memory-{records}.csv"
+    with data.open("w", encoding="utf-8") as handle:
+        handle.write("id,first_name,surname,product,price,photo,note,valid_until\n")
+        for number in range(records):
+            handle.write(f"{number},Ana,Silva,Pears,€1,missing-{number}.png,,1 May\n")
+    started = time.perf_counter()
+    process = subprocess.Popen([FLOATPAGE, "merge", str(folder / TEMPLATE.name), str(data), "-o",
+                                str(folder / f"memory-{records}"), "-q", "--name", "{id}"],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    peak = 0
+    while process.poll() is None:
+        try:
+            status = Path(f"/proc/{process.pid}/status").read_text()
+            peak = max(peak, int(status.split("VmHWM:")[1].split()[0]))
+        except (OSError, IndexError):
+            pass
+        time.sleep(0.05)
+    return peak / 1024, time.perf_counter() - started
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--records", type=int, default=1000)
     parser.add_argument("--naive", type=int, default=50, help="naive renders to time")
     parser.add_argument("--dask", action="store_true", help="also time --dask local")
+    parser.add_argument("--memory", type=int, nargs="+", metavar="RECORDS",
+                        help="only measure the client's peak memory for these data sizes")
     args = parser.parse_args()
     folder = Path(tempfile.mkdtemp(prefix="floatpage-merge-bench-"))
     try:
         shutil.copy(TEMPLATE, folder / TEMPLATE.name)
+        if args.memory:
+            for records in args.memory:
+                peak, seconds = peak_memory(folder, records)
+                print(f"{records:>7} records: peak {peak:.0f} MB in the merge process "
+                      f"({seconds:.0f} s, every record failing at once)")
+            return
         pictures = draw_pictures(folder / "pictures", 24)
         data = folder / "customers.csv"
         write_customers(data, args.records, pictures)

@@ -78,6 +78,10 @@ class OutputFolder:
             raise FloatpageError(f"{self.folder}: cannot create the output folder "
                                  f"({error.strerror})") from None
         self.inputs = {self.key(path) for path in inputs}
+        for fixed in (self.folder / REPORT, self.folder / COMBINED):
+            problem = self.refuse(fixed)
+            if problem:
+                raise FloatpageError(f"{problem} (floatpage merge writes {fixed.name} there)")
 
     @staticmethod
     def key(path: Path) -> str:
@@ -146,3 +150,11 @@ class Report:
     def save(self) -> None:
         self.handle.close()
         os.replace(self.partial, self.path)
+
+    def made_names(self):
+        """The names of the records that have a PDF, in record order, read back from the
+        saved report (a list of them all would grow with the data file)."""
+        with self.path.open(encoding="utf-8", newline="") as handle:
+            for row in csv.DictReader(handle):
+                if row["status"] in ("made", "unchanged"):
+                    yield row["name"]

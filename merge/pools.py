@@ -43,9 +43,13 @@ def local_results(tasks: Iterator[ChunkTask], workers: int) -> Iterator[list[Rec
             for future in done:
                 yield future.result()
     finally:
+        # Interrupted (Ctrl+C): stop the workers now, rather than finishing their chunks;
+        # their LuaLaTeX dies with them (PR_SET_PDEATHSIG). The pool has no public handle on
+        # its processes, hence the private one, read before shutdown() clears it.
+        workers_now = list((getattr(executor, "_processes", None) or {}).values())
         executor.shutdown(wait=not pending, cancel_futures=True)
-        if pending:  # interrupted: stop the workers (their LuaLaTeX dies with them)
-            for process in list(getattr(executor, "_processes", {}).values()):
+        if pending:
+            for process in workers_now:
                 process.kill()
 
 

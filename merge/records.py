@@ -7,6 +7,7 @@ yielded with its problem, so that record fails alone and the others go on.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import json
 from dataclasses import dataclass, field
@@ -38,7 +39,7 @@ class DataFile:
 
     def read_columns(self) -> list[str]:
         if self.kind == "csv":
-            with self.open() as handle:
+            with self.open() as handle, self.readable():
                 header = next(csv.reader(handle), None)
             if not header:
                 raise FloatpageError(f"{self.path}: the file is empty; its first line must name "
@@ -67,10 +68,16 @@ class DataFile:
             raise FloatpageError(f"{self.path}: cannot be read ({error.strerror})") from None
 
     def records(self) -> Iterator[Record]:
-        try:
+        with self.readable():
             yield from (self.csv_records() if self.kind == "csv" else self.json_records())
+
+    @contextlib.contextmanager
+    def readable(self) -> Iterator[None]:
+        """Turn a file that is not UTF-8, or not CSV, into a message naming the file."""
+        try:
+            yield
         except UnicodeDecodeError as error:
-            raise FloatpageError(f"{self.path}: not UTF-8 text ({error.reason} at byte "
+            raise FloatpageError(f"{self.path}: not UTF-8 text ({error.reason} near byte "
                                  f"{error.start}); save it as UTF-8") from None
         except csv.Error as error:
             raise FloatpageError(f"{self.path}: not a readable CSV file ({error})") from None

@@ -168,16 +168,16 @@ class Merge:
                     self.write(result, ordered, summary)
                 show(ordered.count, total, report.failed)
         finally:
+            results.close()  # now, not when the traceback lets go: stops the pool's workers
             ordered.flush_all()
             report.save()
             summary.failed = report.failed
             summary.seconds = time.perf_counter() - started
         show(total, total, report.failed)
         if options.combined:
-            parts = [self.out.pdf(name) for name in ordered.made_names]
-            if parts:
-                summary.combined = self.out.folder / COMBINED
-                concatenate(parts, summary.combined)
+            combined = self.out.folder / COMBINED
+            if concatenate((self.out.pdf(name) for name in report.made_names()), combined):
+                summary.combined = combined
         return summary
 
     def task(self, chunk: list[tuple[Record, str, str]]) -> ChunkTask:
@@ -215,7 +215,6 @@ class InOrder:
         self.waiting: dict[int, tuple] = {}
         self.next = 1
         self.count = 0
-        self.made_names: list[str] = []
 
     def add(self, number: int, row: tuple) -> None:
         self.waiting[number] = row
@@ -226,8 +225,6 @@ class InOrder:
 
     def emit(self, number: int, row: tuple) -> None:
         line, name, status, reason = row
-        if status in ("made", "unchanged"):
-            self.made_names.append(name)
         self.report.row(number, line, name, status, reason)
 
     def flush_all(self) -> None:

@@ -98,13 +98,14 @@ def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
         temporary = None
         sync_folder(target.parent)
     except OSError as error:
+        raise FloatpageError(f"{path}: could not save: {error.strerror or error}"
+                             " (check that the folder exists and is writable)") from None
+    finally:  # also on Ctrl+C: no half-written temporary stays behind
         if temporary is not None:
             try:
                 temporary.unlink()
             except OSError:
                 pass
-        raise FloatpageError(f"{path}: could not save: {error.strerror or error}"
-                             " (check that the folder exists and is writable)") from None
 
 
 def keep_backup(target: Path) -> None:

@@ -72,6 +72,45 @@ def render_png(project_path: Path, page: int, out_png: Path) -> None:
         shutil.copyfile(stem.with_suffix(".png"), out_png)
 
 
+def merge_png(out_png: Path) -> None:
+    """Three records of the merge sample side by side, with pictures of three shapes."""
+    import csv
+
+    from PIL import Image
+
+    sample = ROOT / "sample_projects" / "merge-offers"
+    with (sample / "customers.csv").open(encoding="utf-8") as handle:
+        records = list(csv.DictReader(handle))
+    picked, photos = [], set()
+    for record in records:  # long names first: what a fixed frame cannot take
+        if record["photo"] not in photos and len(picked) < 3 and (
+                len(record["product"]) > 20 or len(picked) > 0):
+            picked.append(record)
+            photos.add(record["photo"])
+    with tempfile.TemporaryDirectory() as scratch:
+        data = Path(scratch) / "three.csv"
+        with data.open("w", encoding="utf-8", newline="") as handle:
+            writer = csv.DictWriter(handle, fieldnames=list(records[0]))
+            writer.writeheader()
+            writer.writerows(picked)
+        subprocess.run([sys.executable, "-m", "floatpage.cli.main", "merge",
+                        str(sample / "offer.toml"), str(data), "-o", str(Path(scratch) / "out"),
+                        "--combined", "-q"], check=True, stdout=subprocess.DEVNULL)
+        stem = Path(scratch) / "page"
+        subprocess.run(["pdftoppm", "-png", "-r", "50", str(Path(scratch) / "out" /
+                                                             "combined.pdf"), str(stem)],
+                       check=True)
+        pages = [Image.open(path) for path in sorted(Path(scratch).glob("page-*.png"))]
+        gap = 12
+        sheet = Image.new("RGB", (sum(p.width for p in pages) + gap * (len(pages) + 1),
+                                  max(p.height for p in pages) + 2 * gap), "#d9d9d9")
+        x = gap
+        for page in pages:
+            sheet.paste(page, (x, gap))
+            x += page.width + gap
+        sheet.save(out_png, optimize=True)
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--pngs", action="store_true", help="also render docs/images/sample-*.png")
@@ -89,6 +128,10 @@ def main(argv: list[str]) -> int:
             png = IMAGES_DIR / f"sample-{kind}.png"
             render_png(path, page, png)
             print(f"wrote {png.relative_to(ROOT)} ({png.stat().st_size // 1024} KB)")
+    if args.pngs and not args.names:
+        png = IMAGES_DIR / "sample-merge.png"
+        merge_png(png)
+        print(f"wrote {png.relative_to(ROOT)} ({png.stat().st_size // 1024} KB)")
     return 0
 
 

@@ -137,8 +137,40 @@ def split_records(pdf_path: Path, page_counts: list[int], *, skip_first: int = 0
     return out
 
 
+OPEN_AT_ONCE = 256  # qpdf reads a copied page's streams from its source only when saving
+
+
 def concatenate(parts: Iterable[Path], out: Path) -> int:
-    """The print shop's one PDF: the records' PDFs in order; returns the pages written."""
+    """The print shop's one PDF: the records' PDFs in order; returns the pages written (and
+    writes nothing for none). Groups of OPEN_AT_ONCE are combined first, so a run of 100,000
+    records never holds 100,000 files open."""
+    import tempfile
+
+    from floatpage.model.save import atomic_write
+
+    with tempfile.TemporaryDirectory(prefix="floatpage-combine-") as scratch:
+        groups, batch = [], []
+        for part in parts:
+            batch.append(Path(part))
+            if len(batch) == OPEN_AT_ONCE:
+                groups.append(combine_group(batch, Path(scratch) / f"{len(groups)}.pdf"))
+                batch = []
+        if batch:
+            groups.append(combine_group(batch, Path(scratch) / f"{len(groups)}.pdf"))
+        if not groups:
+            return 0
+        data, pages = combined_bytes(groups)
+    atomic_write(out, data, backup=False)
+    return pages
+
+
+def combine_group(parts: list[Path], out: Path) -> Path:
+    data, _ = combined_bytes(parts)
+    out.write_bytes(data)
+    return out
+
+
+def combined_bytes(parts: list[Path]) -> tuple[bytes, int]:
     combined = pikepdf.new()
     opened = []
     try:
@@ -146,11 +178,7 @@ def concatenate(parts: Iterable[Path], out: Path) -> int:
             source = pikepdf.open(part)
             opened.append(source)
             combined.pages.extend(source.pages)
-        data = save_reproducibly(combined)
+        return save_reproducibly(combined), len(combined.pages)
     finally:
         for source in opened:
             source.close()
-    from floatpage.model.save import atomic_write
-
-    atomic_write(out, data, backup=False)
-    return len(combined.pages)

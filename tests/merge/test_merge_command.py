@@ -1,0 +1,225 @@
+"""`floatpage merge` end to end: real LuaLaTeX, real PDFs read back, a real process pool."""
+
+from __future__ import annotations
+
+import csv
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pdfplumber
+import pikepdf
+
+from floatpage.model import load_project
+from merge_helpers import COLUMNS, rows, write_csv
+
+FLOATPAGE = str(Path(sys.executable).with_name("floatpage"))
+
+
+def merge(folder: Path, data: Path, out: str = "out", *extra: str) -> subprocess.CompletedProcess:
+    return subprocess.run([FLOATPAGE, "merge", str(folder / "offer.toml"), str(data), "-o",
+                           str(folder / out), "--name", "{id}-{surname}", *extra],
+                          capture_output=True, text=True, timeout=600)
+
+
+def report(folder: Path, out: str = "out") -> list[dict]:
+    with (folder / out / "report.csv").open(encoding="utf-8") as handle:
+        return list(csv.DictReader(handle))
+
+
+def text_of(pdf: Path) -> str:
+    with pdfplumber.open(pdf) as document:
+        return "\n".join(page.extract_text() or "" for page in document.pages)
+
+
+def test_each_record_gets_its_own_pdf_and_a_failing_record_is_isolated(merge_folder):
+    good = rows(3)
+    missing = ["2001", "Joe", "Doe", "Candle", "$5", "no-such-picture.png", "", "3 June"]
+    too_long = ["2002", "Max", "Long", "word " * 3000, "$1", "pears.png", "", "3 June"]
+    data = write_csv(merge_folder / "customers.csv", good + [missing, too_long])
+    done = merge(merge_folder, data)
+    assert done.returncode == 3, done.stderr
+    assert "2 record(s) failed" in done.stderr
+    rows_found = report(merge_folder)
+    assert [row["status"] for row in rows_found] == ["made"] * 3 + ["failed"] * 2
+    assert [row["line"] for row in rows_found] == ["2", "3", "4", "5", "6"]
+    assert "no-such-picture.png" in rows_found[3]["reason"] and "not found" in rows_found[3]["reason"]
+    assert "item \"product\"" in rows_found[4]["reason"]
+    assert "shorten the text" in rows_found[4]["reason"]
+    made = sorted(p.name for p in (merge_folder / "out").glob("*.pdf"))
+    assert made == ["1001-Silva.pdf", "1002-Müller.pdf", "1003-Okonkwo-Fitzgerald.pdf"]
+    text = text_of(merge_folder / "out" / "1002-Müller.pdf")
+    assert "Product number 1" in text and "Person1" in text and "€1.50" in text
+
+
+def test_the_pdfs_do_not_depend_on_chunk_size_or_workers(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(5))
+    assert merge(merge_folder, data, "one", "--chunk-size", "1", "--workers", "1").returncode == 0
+    assert merge(merge_folder, data, "many", "--chunk-size", "3", "--workers", "2").returncode == 0
+    one = {p.name: p.read_bytes() for p in (merge_folder / "one").glob("*.pdf")}
+    many = {p.name: p.read_bytes() for p in (merge_folder / "many").glob("*.pdf")}
+    assert len(one) == 5 and one == many
+
+
+def test_a_second_run_skips_what_has_not_changed(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(4))
+    assert merge(merge_folder, data).returncode == 0
+    again = merge(merge_folder, data)
+    assert "0 made, 4 unchanged" in again.stdout
+    assert [row["status"] for row in report(merge_folder)] == ["unchanged"] * 4
+    changed = rows(4)
+    changed[1][3] = "Another product"
+    write_csv(data, changed)
+    (merge_folder / "pictures" / "bread.png").write_bytes(
+        (merge_folder / "pictures" / "pears.png").read_bytes())  # record 4 uses bread.png
+    third = merge(merge_folder, data)
+    assert [row["status"] for row in report(merge_folder)] == ["unchanged", "made", "unchanged",
+                                                               "made"]
+    assert "Another product" in text_of(merge_folder / "out" / "1002-Müller.pdf")
+    assert "4 made" in merge(merge_folder, data, "out", "--force").stdout, third.stdout
+
+
+def test_columns_the_template_needs_are_checked_before_any_work(merge_folder):
+    columns = [c for c in COLUMNS if c != "price"] + ["unused"]
+    data = write_csv(merge_folder / "customers.csv", [["1"] * len(columns)], columns)
+    done = merge(merge_folder, data)
+    assert done.returncode == 1
+    assert 'item "price" on page "offer" asks for "{price}"' in done.stderr
+    assert "has no column 'price'" in done.stderr and "Traceback" not in done.stderr
+    assert not (merge_folder / "out").exists()
+
+
+def test_user_text_is_set_as_text_never_run_as_latex(merge_folder):
+    hostile = ["7", r"\input{/etc/passwd}", "x", r"\directlua{os.exit(1)} $x$ 100% #1 ~ ^ _ &",
+               "{price}", "pears.png", r"}\end{document}", "1 June"]
+    data = write_csv(merge_folder / "customers.csv", [hostile])
+    done = merge(merge_folder, data, "out", "--name", "{first_name}")
+    assert done.returncode == 0, done.stderr
+    (pdf,) = (merge_folder / "out").glob("*.pdf")
+    text = " ".join(text_of(pdf).split())
+    for value in (hostile[1], hostile[3], hostile[4], hostile[6]):
+        assert value in text
+    assert "/" not in pdf.name and pdf.name.endswith(".pdf")
+
+
+def test_names_are_made_safe_and_unique(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(2))
+    done = merge(merge_folder, data, "out", "--name", "../{valid_until}/x")
+    assert done.returncode == 0, done.stderr
+    assert sorted(p.name for p in (merge_folder / "out").glob("*.pdf")) == [
+        "31 May-x-2.pdf", "31 May-x.pdf"]
+
+
+def test_combined_pdf_and_record_projects_that_open(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(3))
+    done = merge(merge_folder, data, "out", "--combined", "--toml")
+    assert done.returncode == 0, done.stderr
+    with pikepdf.open(merge_folder / "out" / "combined.pdf") as combined:
+        assert len(combined.pages) == 3
+    project = load_project(merge_folder / "out" / "1002-Müller.toml")
+    assert project.pages[0].item("product").text == "Product number 1"
+    assert [item.id for item in project.pages[0].items if item.id == "note"] == ["note"]
+    empty_note = load_project(merge_folder / "out" / "1001-Silva.toml")
+    assert "note" not in empty_note.pages[0].item_ids()  # drop_if_empty
+    check = subprocess.run([FLOATPAGE, "check", "--strict",
+                            str(merge_folder / "out" / "1001-Silva.toml")],
+                           capture_output=True, text=True)
+    assert check.returncode == 0, check.stdout
+
+
+def test_pictures_keep_their_proportions(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(3))
+    assert merge(merge_folder, data, "out", "--toml").returncode == 0
+    for name, aspect in (("1001-Silva", 600 / 400), ("1002-Müller", 400 / 600),
+                         ("1003-Okonkwo-Fitzgerald", 1.0)):
+        photo = load_project(merge_folder / "out" / f"{name}.toml").pages[0].item("photo")
+        assert abs(photo.w / photo.h - aspect) < 0.01
+        assert photo.w * photo.h <= 90 * 60 * 1.01
+
+
+def test_an_output_never_replaces_an_input(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(1))
+    done = subprocess.run([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
+                           "-o", str(merge_folder), "--name", "offer", "--toml"],
+                          capture_output=True, text=True)
+    assert done.returncode == 3
+    assert "is one of the merge's inputs" in report(merge_folder, ".")[0]["reason"]
+    assert "{first_name}" in (merge_folder / "offer.toml").read_text(encoding="utf-8")
+
+
+def test_json_lines_work_like_csv(merge_folder):
+    import json
+
+    lines = [dict(zip(COLUMNS, row)) for row in rows(2)]
+    data = merge_folder / "customers.jsonl"
+    data.write_text("".join(json.dumps(line) + "\n" for line in lines), encoding="utf-8")
+    assert merge(merge_folder, data).returncode == 0
+    assert len(list((merge_folder / "out").glob("*.pdf"))) == 2
+
+
+def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(24))
+    out = merge_folder / "out"
+    process = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
+                                "-o", str(out), "--chunk-size", "2", "--workers", "2"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and len(list(out.glob("*.pdf"))) < 2:
+        time.sleep(0.05)
+    process.send_signal(signal.SIGINT)
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 130, stderr
+    pdfs = list(out.glob("*.pdf"))
+    assert 2 <= len(pdfs) < 24
+    for pdf in pdfs:
+        with pikepdf.open(pdf) as document:
+            assert len(document.pages) == 1
+    leftovers = [p.name for p in out.iterdir() if p.name.startswith(".") and
+                 p.name != ".floatpage-merge"]
+    assert leftovers == []
+    assert (out / "report.csv").is_file()
+    time.sleep(1.0)
+    assert engines_in_build_folders() == []
+
+
+def engines_in_build_folders() -> list[int]:
+    """Processes (LuaLaTeX) still working in a floatpage build folder."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                if "floatpage-build" in os.readlink(entry / "cwd"):
+                    found.append(int(entry.name))
+            except OSError:
+                pass
+    return found
+
+
+def test_a_terminal_gets_a_progress_bar_with_rate_and_eta(merge_folder):
+    import pty
+
+    data = write_csv(merge_folder / "customers.csv", rows(3))
+    controller, terminal = pty.openpty()
+    process = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
+                                "-o", str(merge_folder / "out")],
+                               stdin=terminal, stdout=terminal, stderr=terminal,
+                               env={**os.environ, "COLUMNS": "120", "TERM": "xterm"})
+    os.close(terminal)
+    seen = b""
+    while True:
+        try:
+            chunk = os.read(controller, 4096)
+        except OSError:  # the process closed its side
+            break
+        if not chunk:
+            break
+        seen += chunk
+    process.wait(timeout=300)
+    os.close(controller)
+    text = seen.decode("utf-8", "replace")
+    assert process.returncode == 0, text
+    assert "records/s" in text and "ETA" in text and "merging" in text
+    assert "merge: " not in text  # the plain lines are for pipes
