@@ -27,7 +27,7 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import blocked_axes, candidate_pairs
-from floatpage.physics.fast_mode import clamp_to_page, group_extents, page_bounds
+from floatpage.physics.geometry import clamp_to_page, group_extents, page_bounds
 
 MAX_ITERATIONS = 1000
 SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends

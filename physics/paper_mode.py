@@ -12,40 +12,70 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.euler import damping_for_count, euler_step
-from floatpage.physics.fast_mode import separate_coincident
+from floatpage.physics.geometry import separate_coincident
 from floatpage.physics.paper_forces import anchor_springs, contact_reach, repulsion, wall_forces
 from floatpage.physics.params import Params, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
 
 
+class Repulsion:
+    """Equations (2)+(3): every pair pushes apart, inversely to its distance (7) or (8)."""
+
+    def __init__(self, sizes: np.ndarray, alpha: float, distance: str):
+        self.sizes, self.alpha, self.distance = sizes, alpha, distance
+        self.reach = contact_reach(sizes)
+
+    def add_to(self, force: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        force += repulsion(centres, self.sizes, self.alpha * heat, self.distance, reach=self.reach)
+
+
+class Walls:
+    """Section 4.4: the page's edges push items back in."""
+
+    def __init__(self, sizes: np.ndarray, page: tuple[float, float], alpha: float):
+        self.sizes, self.page, self.alpha = sizes, page, alpha
+
+    def add_to(self, force: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        force += wall_forces(centres, self.sizes, *self.page, self.alpha * heat)
+
+
+class Springs:
+    """Equation (6): each anchored item is pulled to its anchor (NaN anchors pull nothing)."""
+
+    def __init__(self, anchors: np.ndarray, gammas: np.ndarray, beta: float):
+        self.anchors, self.gammas, self.beta = anchors, gammas, beta
+
+    def add_to(self, force: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        force += anchor_springs(centres, self.anchors, self.gammas, self.beta * heat)
+
+
 class PaperForces:
-    """The resultant force on every row for one page whose items keep their sizes and flags.
+    """The resultant force on every row for one page whose items keep their sizes and flags:
+    the sum of its terms (a new term is one more entry in ``terms``).
 
     Decorations neither push nor are pushed; every other row gets repulsion (2)+(3), the walls
     (4.4) and, where anchored, its spring (6).
     """
 
     def __init__(self, bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params):
-        self.page = (page_w_mm, page_h_mm)
-        self.params = params
-        self.alpha = params.alpha * page_scale(page_w_mm, page_h_mm)
+        alpha = params.alpha * page_scale(page_w_mm, page_h_mm)
         active = bodies.active
         self.everyone = bool(active.all())
         self.rows = slice(None) if self.everyone else np.flatnonzero(active)
-        self.sizes = bodies.sizes[self.rows]
-        self.reach = contact_reach(self.sizes)
-        self.anchored = bool(np.isfinite(bodies.anchors[self.rows]).any())
-        self.anchors, self.gammas = bodies.anchors[self.rows], bodies.gammas[self.rows]
+        sizes = bodies.sizes[self.rows]
+        self.terms = [Repulsion(sizes, alpha, params.distance),
+                      Walls(sizes, (page_w_mm, page_h_mm), alpha)]
+        anchors = bodies.anchors[self.rows]
+        if np.isfinite(anchors).any():
+            self.terms.append(Springs(anchors, bodies.gammas[self.rows], params.beta))
         self.count = bodies.count
 
     def __call__(self, centres: np.ndarray, heat: float) -> np.ndarray:
         """Forces (n, 2) for ``centres`` (n, 2) at the given heat (4.7)."""
-        alpha = self.alpha * heat
         mine = centres[self.rows]
-        force = (repulsion(mine, self.sizes, alpha, self.params.distance, reach=self.reach)
-                 + wall_forces(mine, self.sizes, *self.page, alpha))
-        if self.anchored:
-            force += anchor_springs(mine, self.anchors, self.gammas, self.params.beta * heat)
+        force = np.zeros_like(mine)
+        for term in self.terms:
+            term.add_to(force, mine, heat)
         if self.everyone:
             return force
         forces = np.zeros((self.count, 2))

@@ -1,0 +1,96 @@
+"""The fast mode's forces, one object each, summed by the integrator in fast_mode.run_fast.
+
+A force is anything with ``add_to(acc, centres, heat)`` that adds its acceleration, (n, 2), for
+the current centres. The step loop knows none of them by name: a new force (the alignment
+guides of the layout-quality issue, say) is one more object in the list `fast_forces` builds.
+The paper mode composes its own list the same way (paper_mode.paper_force_terms).
+"""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+import numpy as np
+
+from floatpage.physics.bodies import Bodies
+from floatpage.physics.fast_forces import (
+    RADIAL_SHARE, blocked_axes, candidate_pairs, contact_pushes, wall_pushes_in,
+)
+from floatpage.physics.geometry import separate_coincident
+
+K_CONTACT = 0.2  # fraction of a penetration turned into acceleration per step
+K_WALL = 0.2
+K_ANCHOR = 0.2  # anchor spring per step^2 at the default beta: as stiff as a contact
+BETA_DEFAULT = 1.0  # Params.beta at which a fast anchor is as stiff as a contact
+RADIAL_FADE_HEAT = 0.25  # below this heat the sliding (radial) push fades out
+
+
+class Force(Protocol):
+    def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        """Add this force's acceleration for ``centres`` at ``heat`` into ``acc``, in place."""
+
+
+class ContactPushes:
+    """Items closer than the gap push apart along their contact (fast_forces.contact_pushes),
+    shared by inverse mass; pairs come from a Verlet list rebuilt when anything has moved
+    half its skin."""
+
+    def __init__(self, bodies: Bodies, rows_active: np.ndarray, roots: np.ndarray,
+                 inverse_mass: np.ndarray, movable: np.ndarray, gap: float, skin: float,
+                 page: tuple[float, float], gutter_mm: float, scale: float,
+                 rng: np.random.Generator):
+        self.bodies, self.rows_active, self.roots = bodies, rows_active, roots
+        self.inverse_mass, self.movable = inverse_mass, movable
+        self.gap, self.skin, self.page, self.gutter_mm = gap, skin, page, gutter_mm
+        self.scale, self.rng = scale, rng
+        self.halves = bodies.sizes / 2
+        self.build()
+
+    def build(self) -> None:
+        bodies, reach = self.bodies, self.gap + self.skin
+        i, j = candidate_pairs(bodies.centres, self.halves, self.rows_active, self.roots, reach)
+        if separate_coincident(bodies, i, j, self.movable, self.rng, self.scale):
+            i, j = candidate_pairs(bodies.centres, self.halves, self.rows_active, self.roots,
+                                   reach)
+        total = self.inverse_mass[i] + self.inverse_mass[j]
+        total = np.where(total > 0, total, 1.0)
+        self.i, self.j = i, j
+        self.share_i, self.share_j = self.inverse_mass[i] / total, self.inverse_mass[j] / total
+        self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm)
+        self.built_at = bodies.centres.copy()
+
+    def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        if np.abs(centres - self.built_at).max(initial=0.0) > self.skin / 2:
+            self.build()
+        pushes = K_CONTACT * contact_pushes(centres, self.halves, self.i, self.j, self.gap,
+                                            self.blocked,
+                                            RADIAL_SHARE * min(1.0, heat / RADIAL_FADE_HEAT))
+        count = len(acc)
+        for axis in (0, 1):
+            acc[:, axis] += (np.bincount(self.j, pushes[:, axis] * self.share_j, minlength=count)
+                             - np.bincount(self.i, pushes[:, axis] * self.share_i,
+                                           minlength=count))
+
+
+class WallPushes:
+    """Items closer to the page edge than half the gap are pushed back in (the soft wall;
+    the hard one is geometry.clamp_to_page)."""
+
+    def __init__(self, rest_low: np.ndarray, rest_high: np.ndarray):
+        self.rest_low, self.rest_high = rest_low, rest_high
+
+    def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        acc += K_WALL * wall_pushes_in(centres, self.rest_low, self.rest_high)
+
+
+class AnchorPulls:
+    """A spring towards each soft anchor (equation 6's form, as stiff as a contact at the
+    default beta; hard anchors are positions, not forces)."""
+
+    def __init__(self, bodies: Bodies, anchored: np.ndarray, beta: float):
+        self.anchored = anchored
+        self.anchors = bodies.anchors[anchored]
+        self.k = (K_ANCHOR * beta / BETA_DEFAULT * bodies.gammas)[anchored, None]
+
+    def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        acc[self.anchored] += self.k * (self.anchors - centres[self.anchored])

@@ -1,0 +1,68 @@
+"""Geometry both modes and the no-overlap pass share: rigid groups' extents, the range of
+centres that keeps a group on the page, hard walls, and the nudge that parts items sharing a
+centre. No forces here: those are in fast_forces.py, paper_forces.py and the Force lists."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from floatpage.physics.bodies import Bodies
+
+JITTER_MM = 0.5  # size of the seeded nudge that separates items on one point (A4)
+COINCIDENT_MM = 1e-6
+
+
+def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray
+                  ) -> tuple[np.ndarray, np.ndarray]:
+    """Bounding box of each rigid group relative to its root's centre, rows indexed by root."""
+    halves = bodies.sizes / 2
+    low = -halves.copy()
+    high = halves.copy()
+    members = bodies.followers
+    if members.any():
+        np.minimum.at(low, roots[members], root_offsets[members] - halves[members])
+        np.maximum.at(high, roots[members], root_offsets[members] + halves[members])
+    return low, high
+
+
+def page_bounds(rows: np.ndarray, low: np.ndarray, high: np.ndarray, page_w_mm: float,
+                page_h_mm: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest centre, (len(rows), 2) each, that keeps each group inside the page.
+
+    A group too large for the page on an axis gets one allowed value there: centred.
+    """
+    extent = np.array([page_w_mm, page_h_mm])
+    lowest = -low[rows]
+    highest = extent - high[rows]
+    too_big = lowest > highest
+    middle = extent / 2 - (low[rows] + high[rows]) / 2
+    return np.where(too_big, middle, lowest), np.where(too_big, middle, highest)
+
+
+def clamp_to_page(centres: np.ndarray, velocities: np.ndarray, rows: np.ndarray,
+                  lowest: np.ndarray, highest: np.ndarray) -> None:
+    """Hard walls, in place: keep each group's box inside the page (bounds from page_bounds).
+    The velocity into a wall is dropped."""
+    current = centres[rows]
+    clamped = np.minimum(np.maximum(current, lowest), highest)
+    hit = clamped != current
+    if hit.any():
+        centres[rows] = clamped
+        velocities[rows] = np.where(hit, 0.0, velocities[rows])
+
+
+def separate_coincident(bodies: Bodies, i: np.ndarray, j: np.ndarray, movable: np.ndarray,
+                        rng: np.random.Generator, scale: float) -> bool:
+    """Nudge one item of every pair sharing a centre by a seeded random offset (d3's jiggle).
+
+    Returns whether anything moved.  Deterministic for a given generator state.
+    """
+    same = (np.abs(bodies.centres[j] - bodies.centres[i]) < COINCIDENT_MM).all(axis=1)
+    if not same.any():
+        return False
+    rows = np.where(movable[j[same]], j[same], i[same])
+    rows = np.unique(rows[movable[rows]])
+    if len(rows) == 0:
+        return False
+    bodies.centres[rows] += rng.uniform(-JITTER_MM, JITTER_MM, size=(len(rows), 2)) * scale
+    return True
