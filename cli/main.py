@@ -167,7 +167,14 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"page {page.id}: {quality.summary()}")
         bodies = engine.bodies
         print(f"  {measure_alignment(bodies.centres, bodies.sizes, bodies.decorative).summary()}")
-        issues += len(quality.overlapping_pairs) + len(quality.off_page)
+        issues += len(quality.overlapping_pairs) + len(quality.off_page) + len(quality.in_margin)
+        if quality.in_margin:
+            ids = [page.items[k].id for k in quality.in_margin]
+            shown = ", ".join(ids[:5]) + (f" and {len(ids) - 5} more" if len(ids) > 5 else "")
+            print(f"  {len(ids)} item(s) inside the {quality.margin_mm:.1f} mm print-safe margin: "
+                  f"{shown}; where a page is too full the gutter gives way first, then the "
+                  "margin: run `floatpage settle`, make items smaller, mark items that may "
+                  "touch the edge `bleed = true`, or lower margin_mm in [physics]")
         if quality.overlapping_pairs or quality.min_gap_mm >= gutter - GAP_TOLERANCE_MM:
             continue
         need = gutter_need(page.width_mm, page.height_mm, engine.bodies.sizes, gutter,

@@ -195,6 +195,7 @@ class PhysicsSettings:
     distance: str = field(default=Params.distance, metadata=spec("str", one_of(*DISTANCES)))
     heat_decay: float = setting("heat_decay")
     gutter_mm: float = setting("gutter_mm")
+    margin_mm: float = setting("margin_mm")
     seed: int = setting("seed", "int")
 
 

@@ -38,7 +38,8 @@ def engine_for_page(page: Page, settings: PhysicsSettings) -> Engine:
     """
     engine = Engine(page.width_mm, page.height_mm, params_from_settings(settings))
     for item in page.items:
-        engine.insert(item.id, item.x, item.y, item.w, item.h, decorative=item.decorative)
+        engine.insert(item.id, item.x, item.y, item.w, item.h, decorative=item.decorative,
+                      bleed=bool(getattr(item, "bleed", False)))
     for item in page.items:
         anchor = item.anchor
         if isinstance(anchor, PointAnchor):
@@ -162,7 +163,7 @@ class Probe:
     report: SettleReport
     trial: Page  # the page the probe leaves, positions rounded as a save would write them
     at_rest: bool
-    score: tuple[int, int, float, float]  # lower is better (see layout_score)
+    score: tuple[int, int, int, float, float]  # lower is better (see layout_score)
 
 
 def probe_rest(page: Page, settings: PhysicsSettings, max_steps: int) -> Probe:
@@ -178,12 +179,12 @@ def probe_rest(page: Page, settings: PhysicsSettings, max_steps: int) -> Probe:
     return Probe(report, trial, at_rest, layout_score(before, moved))
 
 
-def layout_score(quality: Quality, probe_moved_mm: float) -> tuple[int, int, float, float]:
+def layout_score(quality: Quality, probe_moved_mm: float) -> tuple[int, int, int, float, float]:
     """How sound and how still a layout is, lower is better: overlaps, then items off the
-    page, then the smallest gap (up to the gutter), then how far its probe moved an item (both
+    page, then items in the print-safe margin, then the smallest gap (up to the gutter), then how far its probe moved an item (both
     to 0.01 mm, so that noise is no gain)."""
     gap = min(quality.min_gap_mm, quality.gutter_mm)
-    return (len(quality.overlapping_pairs), len(quality.off_page),
+    return (len(quality.overlapping_pairs), len(quality.off_page), len(quality.in_margin),
             0.0 if math.isinf(gap) else -round(gap, POSITION_DECIMALS),
             round(probe_moved_mm, POSITION_DECIMALS))
 
@@ -201,6 +202,8 @@ def keeps_guarantees(layout: Quality, settled: Quality) -> bool:
     if len(layout.overlapping_pairs) > len(settled.overlapping_pairs):
         return False
     if len(layout.off_page) > len(settled.off_page):
+        return False
+    if len(layout.in_margin) > len(settled.in_margin):
         return False
     wanted = min(settled.min_gap_mm, settled.gutter_mm)
     return math.isinf(wanted) or layout.min_gap_mm >= wanted - ROUNDING_MM

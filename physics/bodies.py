@@ -43,6 +43,7 @@ class Bodies:
     hard: np.ndarray = field(default_factory=lambda: _empty((0,), bool, False))
     targets: np.ndarray = field(default_factory=lambda: _empty((0,), np.int64, NO_TARGET))
     offsets: np.ndarray = field(default_factory=lambda: _empty((0, 2)))
+    bleed: np.ndarray = field(default_factory=lambda: _empty((0,), bool, False))
 
     @property
     def count(self) -> int:
@@ -67,7 +68,11 @@ class Bodies:
         """Items the integrator moves by their own forces, shape (n,)."""
         return ~(self.decorative | self.held | self.hard | self.followers)
 
-    def append(self, centre, size, *, decorative: bool) -> None:
+    def margins(self, margin_mm: float) -> np.ndarray:
+        """Each row's print-safe margin, (n,): none for bleed items, ``margin_mm`` otherwise."""
+        return np.where(self.bleed, 0.0, margin_mm)
+
+    def append(self, centre, size, *, decorative: bool, bleed: bool = False) -> None:
         """Add one unanchored item at rest."""
         self.centres = np.vstack([self.centres, np.asarray(centre, float)[None]])
         self.sizes = np.vstack([self.sizes, np.asarray(size, float)[None]])
@@ -79,6 +84,7 @@ class Bodies:
         self.hard = np.append(self.hard, False)
         self.targets = np.append(self.targets, NO_TARGET).astype(np.int64)
         self.offsets = np.vstack([self.offsets, np.zeros((1, 2))])
+        self.bleed = np.append(self.bleed, bleed)
 
     def remove(self, row: int) -> None:
         """Drop one row; followers of it become free, later target rows shift down by one."""
@@ -88,7 +94,7 @@ class Bodies:
         targets[targets > row] -= 1
         self.targets = targets
         for name in ("centres", "sizes", "velocities", "decorative", "held", "anchors",
-                     "gammas", "hard", "targets", "offsets"):
+                     "gammas", "hard", "targets", "offsets", "bleed"):
             setattr(self, name, getattr(self, name)[keep])
 
     def group_roots(self) -> tuple[np.ndarray, np.ndarray]:

@@ -19,7 +19,7 @@ from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
 from floatpage.physics.finalize import remove_overlaps
 from floatpage.physics.paper_mode import run_paper
-from floatpage.physics.params import Params
+from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
 
 BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the clock
@@ -98,7 +98,13 @@ class Engine:
         return measure_quality(self.page_w_mm, self.page_h_mm, self._bodies.centres,
                                self._bodies.sizes, self.params.gutter_mm,
                                decorative=self._bodies.decorative,
-                               groups=self._bodies.group_roots()[0])
+                               groups=self._bodies.group_roots()[0],
+                               margins=self._bodies.margins(self.margin_mm))
+
+    @property
+    def margin_mm(self) -> float:
+        """The print-safe margin on this page (params.page_margin)."""
+        return page_margin(self.params.margin_mm, self.page_w_mm, self.page_h_mm)
 
     # ----- editing -------------------------------------------------------------------------
     def _row(self, item_id: str) -> int:
@@ -121,12 +127,12 @@ class Engine:
         self._settled = True
 
     def insert(self, item_id: str, x_mm: float, y_mm: float, w_mm: float, h_mm: float, *,
-               decorative: bool = False) -> None:
+               decorative: bool = False, bleed: bool = False) -> None:
         if item_id in self._rows:
             raise ValueError(f"item {item_id!r} is already on this page")
         _finite("position", x_mm, y_mm)
         _positive("size", w_mm, h_mm)
-        self._bodies.append((x_mm, y_mm), (w_mm, h_mm), decorative=decorative)
+        self._bodies.append((x_mm, y_mm), (w_mm, h_mm), decorative=decorative, bleed=bleed)
         self._rows[item_id] = len(self._ids)
         self._ids.append(item_id)
         self.reheat()
@@ -253,7 +259,7 @@ class Engine:
     def finalize(self) -> bool:
         """The no-overlap pass; returns whether every pair now keeps the gutter."""
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
-                               self.params.gutter_mm)
+                               self.params.gutter_mm, margin_mm=self.margin_mm)
         self._bodies.velocities[:] = 0.0
         return fits
 

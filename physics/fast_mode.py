@@ -17,7 +17,7 @@ from floatpage.physics.constraints import enforce_positions, hand_forces_to_root
 from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
 from floatpage.physics.geometry import clamp_to_page, group_extents, page_bounds
-from floatpage.physics.params import Params, page_scale
+from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
 
 FRICTION = 0.4  # share of the velocity lost every step (d3-force's velocityDecay)
@@ -42,10 +42,13 @@ def cooling_rate(heat_decay: float, count: int) -> float:
 
 def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
                 rng: np.random.Generator, roots: np.ndarray, movable: np.ndarray,
-                inverse_mass: np.ndarray, gap: float, skin: float) -> list[Force]:
+                inverse_mass: np.ndarray, gap: float, skin: float,
+                margins: np.ndarray | float = 0.0) -> list[Force]:
     """The forces the fast mode sums every step; a new force is one more entry here."""
     halves = bodies.sizes / 2
-    rest_low, rest_high = wall_rest_box(halves, page_w_mm, page_h_mm, gap / 2)
+    inset = np.asarray(margins, float)
+    inset = inset[:, None] if inset.ndim == 1 else inset
+    rest_low, rest_high = wall_rest_box(halves, page_w_mm, page_h_mm, gap / 2 + inset)
     forces: list[Force] = [
         ContactPushes(bodies, np.flatnonzero(bodies.active), roots, inverse_mass, movable, gap,
                       skin, (page_w_mm, page_h_mm), params.gutter_mm,
@@ -78,8 +81,9 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     group_mass = np.bincount(roots, weights=charges, minlength=bodies.count)
     movable = free[roots] & ~bodies.held & active
     inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[roots], 1e-12), 0.0)
+    margins = bodies.margins(page_margin(params.margin_mm, page_w_mm, page_h_mm))
     low, high = group_extents(bodies, roots, root_offsets)
-    lowest, highest = page_bounds(free_rows, low, high, page_w_mm, page_h_mm)
+    lowest, highest = page_bounds(free_rows, low, high, page_w_mm, page_h_mm, margins[free_rows])
     constrained = bool((bodies.held | bodies.hard | followers).any())
 
     gap = target_gap(bodies.sizes[active], page_w_mm, page_h_mm, params.gutter_mm)
@@ -90,7 +94,7 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     keep = 1.0 - cooling_rate(params.heat_decay, int(active.sum()))
     count = bodies.count
     forces = fast_forces(bodies, page_w_mm, page_h_mm, params, rng, roots, movable,
-                         inverse_mass, gap, skin)
+                         inverse_mass, gap, skin, margins)
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))
         for force in forces:

@@ -100,7 +100,8 @@ def moves_from_gaps(d: np.ndarray, gaps: np.ndarray, clearance: float,
 class _Projection:
     """What one page's projection needs, computed once."""
 
-    def __init__(self, bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float):
+    def __init__(self, bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
+                 margin_mm: float = 0.0):
         self.bodies, self.page, self.gutter_mm = bodies, (page_w_mm, page_h_mm), gutter_mm
         active = bodies.active
         self.rows_active = np.flatnonzero(active)
@@ -114,7 +115,8 @@ class _Projection:
         self.inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[self.roots], 1e-12),
                                      0.0)
         low, high = group_extents(bodies, self.roots, self.root_offsets)
-        self.bounds = page_bounds(self.free_rows, low, high, page_w_mm, page_h_mm)
+        self.bounds = page_bounds(self.free_rows, low, high, page_w_mm, page_h_mm,
+                                  bodies.margins(margin_mm)[self.free_rows])
         # The arrangement with the widest clearance seen by any run so far, and that clearance
         # (a lower bound, exact below the clearance the run aimed at).
         self.widest, self.widest_state = -np.inf, bodies.centres.copy()
@@ -207,14 +209,34 @@ class _Projection:
 
 
 def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
-                    max_iterations: int = MAX_ITERATIONS) -> bool:
-    """Project positions in place until no two active items are closer than ``gutter_mm``.
+                    max_iterations: int = MAX_ITERATIONS, margin_mm: float = 0.0) -> bool:
+    """Project positions in place until no two active items are closer than ``gutter_mm`` and
+    every item keeps ``margin_mm`` from the page's edges (bleed items keep none).
 
     Held items, hard anchors and their followers stay put; decorations are ignored.  Returns
     True when the result keeps the gutter everywhere (and so has no overlap).  If the gutter
     cannot be reached, the pass keeps the widest clearance it can reach (see the module doc).
+    On a page too full for even that within the margins, the margin gives way next, halved and
+    then dropped, and overlap last: the gutter, then the margin, then overlap.
     """
+    fits = project_within(bodies, page_w_mm, page_h_mm, gutter_mm, max_iterations, margin_mm)
+    if fits or margin_mm <= 0 or not has_overlap(bodies, page_w_mm, page_h_mm, gutter_mm):
+        return fits
+    for margin in (margin_mm / 2, 0.0):
+        project_within(bodies, page_w_mm, page_h_mm, 0.0, max(max_iterations // 3, 1), margin)
+        if not has_overlap(bodies, page_w_mm, page_h_mm, gutter_mm):
+            break
+    return False
+
+
+def has_overlap(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float) -> bool:
     projection = _Projection(bodies, page_w_mm, page_h_mm, gutter_mm)
+    return projection.violations(0.0) > 0
+
+
+def project_within(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
+                   max_iterations: int, margin_mm: float) -> bool:
+    projection = _Projection(bodies, page_w_mm, page_h_mm, gutter_mm, margin_mm)
     projection.clamp()
     if len(projection.rows_active) < 2 or len(projection.free_rows) == 0:
         return projection.violations(gutter_mm + ROUNDING_MM) == 0

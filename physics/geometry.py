@@ -26,14 +26,19 @@ def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray
 
 
 def page_bounds(rows: np.ndarray, low: np.ndarray, high: np.ndarray, page_w_mm: float,
-                page_h_mm: float) -> tuple[np.ndarray, np.ndarray]:
-    """Lowest and highest centre, (len(rows), 2) each, that keeps each group inside the page.
+                page_h_mm: float, margins: np.ndarray | float = 0.0
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest centre, (len(rows), 2) each, that keeps each group inside the page,
+    ``margins`` (a number, or one per row) from its edges.
 
-    A group too large for the page on an axis gets one allowed value there: centred.
+    A group too large for the page (within its margins) on an axis gets one allowed value
+    there: centred.
     """
     extent = np.array([page_w_mm, page_h_mm])
-    lowest = -low[rows]
-    highest = extent - high[rows]
+    inset = np.asarray(margins, float)
+    inset = inset[:, None] if inset.ndim == 1 else inset
+    lowest = -low[rows] + inset
+    highest = extent - high[rows] - inset
     too_big = lowest > highest
     middle = extent / 2 - (low[rows] + high[rows]) / 2
     return np.where(too_big, middle, lowest), np.where(too_big, middle, highest)

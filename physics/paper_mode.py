@@ -14,7 +14,7 @@ from floatpage.physics.constraints import enforce_positions, hand_forces_to_root
 from floatpage.physics.euler import damping_for_count, euler_step
 from floatpage.physics.geometry import separate_coincident
 from floatpage.physics.paper_forces import anchor_springs, contact_reach, repulsion, wall_forces
-from floatpage.physics.params import Params, page_scale
+from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
 
 
@@ -30,13 +30,14 @@ class Repulsion:
 
 
 class Walls:
-    """Section 4.4: the page's edges push items back in."""
+    """Section 4.4: the page's edges (moved in by the print-safe margins) push items back in."""
 
-    def __init__(self, sizes: np.ndarray, page: tuple[float, float], alpha: float):
-        self.sizes, self.page, self.alpha = sizes, page, alpha
+    def __init__(self, sizes: np.ndarray, page: tuple[float, float], alpha: float,
+                 margins: np.ndarray):
+        self.sizes, self.page, self.alpha, self.margins = sizes, page, alpha, margins
 
     def add_to(self, force: np.ndarray, centres: np.ndarray, heat: float) -> None:
-        force += wall_forces(centres, self.sizes, *self.page, self.alpha * heat)
+        force += wall_forces(centres, self.sizes, *self.page, self.alpha * heat, self.margins)
 
 
 class Springs:
@@ -63,8 +64,9 @@ class PaperForces:
         self.everyone = bool(active.all())
         self.rows = slice(None) if self.everyone else np.flatnonzero(active)
         sizes = bodies.sizes[self.rows]
+        margins = bodies.margins(page_margin(params.margin_mm, page_w_mm, page_h_mm))
         self.terms = [Repulsion(sizes, alpha, params.distance),
-                      Walls(sizes, (page_w_mm, page_h_mm), alpha)]
+                      Walls(sizes, (page_w_mm, page_h_mm), alpha, margins[self.rows])]
         anchors = bodies.anchors[self.rows]
         if np.isfinite(anchors).any():
             self.terms.append(Springs(anchors, bodies.gammas[self.rows], params.beta))

@@ -40,6 +40,7 @@ LIMITS: dict[str, tuple[float, float, bool]] = {
     "steps_per_frame": (1, 100_000, True),
     "heat_decay": (0.0, 0.5, True),
     "gutter_mm": (0.0, 100.0, True),
+    "margin_mm": (0.0, 100.0, True),
     "seed": (0, 2**63 - 1, True),
     "heat_min": (0.0, 1.0, True),
     "fast_steps_per_frame": (1, 100_000, True),
@@ -56,6 +57,15 @@ def out_of_range(name: str, value: float) -> str | None:
     if value > high:
         return f"must be at most {high:g}"
     return None
+
+
+def page_margin(margin_mm: float, page_w_mm: float, page_h_mm: float) -> float:
+    """The margin items keep on this page: ``margin_mm`` on A4 and larger, scaled down with the
+    page's linear size below it (5 mm on A4, 3.5 mm on A5, 3.2 mm on a 5x8 inch card, as
+    printers' safe zones shrink for small cards), and never more than a tenth of the page's
+    shorter side."""
+    scaled = margin_mm * min(1.0, page_scale(page_w_mm, page_h_mm))
+    return min(scaled, 0.1 * min(page_w_mm, page_h_mm))
 
 
 def page_scale(page_w_mm: float, page_h_mm: float) -> float:
@@ -83,6 +93,9 @@ class Params:
     distance: str = "axis"  # "euclidean" (7) | "axis" (8)
     heat_decay: float = 0.01  # 4.7: alpha and beta shrink by this factor every step
     gutter_mm: float = 3.0  # minimum gap that the final pass guarantees when items fit
+    # print-safe margin between items and the page edge, on A4; smaller pages scale it down
+    # with their linear size (page_margin). Bleed items and decorations are exempt.
+    margin_mm: float = 5.0
     seed: int = 0  # seeds the jitter that separates items sitting on one point
     heat_min: float = 0.001  # below this heat the page counts as settled
     fast_steps_per_frame: int = 10  # fast mode's steps per drawn frame (each moves far more)

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 GAP_TOLERANCE_MM = 1e-6
+MARGIN_TOLERANCE_MM = 0.01  # a save rounds to 0.01 mm (towards the page's inside)
 
 
 @dataclass(frozen=True)
@@ -24,11 +25,14 @@ class Quality:
     gap_evenness: float  # 0..1, 1 = every item's nearest neighbour equally far
     balance: float  # 0..1, 1 = centre of mass of item area at the page centre
     gutter_mm: float = 0.0  # the gap the layout should keep, for ``ok`` and the summary
+    # items (not decorations or bleed items) closer to the page edge than the print-safe margin
+    in_margin: tuple[int, ...] = ()
+    margin_mm: float = 0.0
 
     @property
     def ok(self) -> bool:
         """No overlap, nothing off the page, and every gap at least the gutter."""
-        return (not self.overlapping_pairs and not self.off_page
+        return (not self.overlapping_pairs and not self.off_page and not self.in_margin
                 and self.min_gap_mm >= self.gutter_mm - GAP_TOLERANCE_MM)
 
     def summary(self) -> str:
@@ -36,8 +40,9 @@ class Quality:
         gap = "—" if math.isinf(self.min_gap_mm) else f"{self.min_gap_mm:.1f} mm"
         if not math.isinf(self.min_gap_mm) and self.min_gap_mm < self.gutter_mm - GAP_TOLERANCE_MM:
             gap += f" < {self.gutter_mm:g}"
+        margin = f"{len(self.in_margin)} in margin · " if self.in_margin else ""
         return (f"{len(self.overlapping_pairs)} overlaps · {len(self.off_page)} off page · "
-                f"gap {gap} · even {self.gap_evenness:.2f} · balance {self.balance:.2f}")
+                f"{margin}gap {gap} · even {self.gap_evenness:.2f} · balance {self.balance:.2f}")
 
 
 PAIR_BLOCK = 256  # rows compared with all others at once: memory stays O(PAIR_BLOCK * n)
@@ -79,14 +84,15 @@ def pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
 
 
 def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_mm: float = 0.0,
-                    *, decorative=None, groups=None) -> Quality:
+                    *, decorative=None, groups=None, margins=None) -> Quality:
     """All measures for one page.  ``centres`` and ``sizes`` are (n, 2) arrays in mm.
 
     ``decorative`` (n,) bool marks items that sit behind the others by design: they count
     for the off-page measure only, not for overlap, gaps or balance.  Indices in the result
     refer to the rows given.  ``groups`` (n,) int gives each item's anchor group (the root of
     its follow chain): a follower sits where its user put it beside its target, so pairs within
-    one group count for neither overlap nor gaps.
+    one group count for neither overlap nor gaps. ``margins`` (n,) is each item's print-safe
+    margin (0 for bleed items); items closer to the edge than theirs are ``in_margin``.
     """
     centres = np.asarray(centres, float).reshape(-1, 2)
     sizes = np.asarray(sizes, float).reshape(-1, 2)
@@ -104,6 +110,15 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
     off_page = tuple(int(k) for k in np.flatnonzero(
         ((centres - halves) < -margin).any(axis=1)
         | ((centres + halves) > np.array([page_w_mm, page_h_mm]) + margin).any(axis=1)))
+
+    in_margin: tuple[int, ...] = ()
+    margin_mm = 0.0
+    if margins is not None:
+        wanted = np.asarray(margins, float).reshape(count)
+        margin_mm = float(wanted.max(initial=0.0))
+        edge = np.minimum(centres - halves, np.array([page_w_mm, page_h_mm]) - centres - halves)
+        short = (edge.min(axis=1) < wanted - MARGIN_TOLERANCE_MM) & ~layered & (wanted > 0)
+        in_margin = tuple(int(k) for k in np.flatnonzero(short) if k not in off_page)
 
     rows = np.flatnonzero(~layered)
     overlap_total, pairs, min_gap, evenness = 0.0, (), math.inf, 1.0
@@ -135,6 +150,8 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
         gap_evenness=float(evenness),
         balance=balance,
         gutter_mm=float(gutter_mm),
+        in_margin=in_margin,
+        margin_mm=margin_mm,
     )
 
 

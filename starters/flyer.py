@@ -19,7 +19,7 @@ from floatpage.starters.words import phrase, price, product_name
 PAGE_SIZE = "A4"
 MARGIN_MM = 14.0
 HEADER_H_MM = 58.0
-FOOTER_H_MM = 16.0
+FOOTER_H_MM = 18.0  # its text keeps the 5 mm print-safe margin below it
 TAG_H_MM = 14.0
 TAG_GAP_MM = 1.5
 MAX_PRODUCTS = 9
@@ -46,9 +46,9 @@ def header(page, lang: str) -> list:
     title_y, subtitle_y = HEADER_H_MM * 0.42, HEADER_H_MM * 0.8
     return [
         BlockItem(id="header-band", x=W / 2, y=HEADER_H_MM / 2, w=W, h=HEADER_H_MM, color=GREEN,
-                  decorative=True, z=-1),
+                  decorative=True, z=-1, bleed=True),
         BlockItem(id="header-stripe", x=W / 2, y=HEADER_H_MM + 2.0, w=W, h=4.0, color="#f2b84b",
-                  decorative=True, z=-1),
+                  decorative=True, z=-1, bleed=True),
         hug(TextItem(id="shop-title", x=W / 2, y=title_y, w=W - 40.0, h=26.0,
                      text=phrase("flyer_title", lang), font="display", bold=True, color=CREAM,
                      anchor=PointAnchor(x=W / 2, y=title_y, hard=True)), W - 40.0),
@@ -62,7 +62,8 @@ def footer(page, lang: str) -> list:
     W, H = page.width_mm, page.height_mm
     y = H - FOOTER_H_MM / 2
     return [
-        BlockItem(id="footer-band", x=W / 2, y=y, w=W, h=FOOTER_H_MM, color=GREEN, decorative=True, z=-1),
+        BlockItem(id="footer-band", x=W / 2, y=y, w=W, h=FOOTER_H_MM, color=GREEN, decorative=True, z=-1,
+                  bleed=True),
         hug(TextItem(id="shop-footer", x=W / 2, y=y, w=W - 30.0, h=7.0, text=phrase("flyer_footer", lang),
                      font="sans", color=CREAM, anchor=PointAnchor(x=W / 2, y=y, hard=True)), W - 30.0),
     ]

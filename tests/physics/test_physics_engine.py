@@ -231,7 +231,9 @@ def test_resize_page_brings_items_back_inside():
     engine.settle()
     engine.resize_page(150, 200)
     engine.settle()
-    assert engine.quality().ok
+    quality = engine.quality()
+    # 62 % of the smaller page inside its 3.5 mm margins: the gutter gives way first
+    assert not quality.off_page and not quality.overlapping_pairs and not quality.in_margin
 
 
 def test_a5_and_a4_give_the_same_quality():

@@ -39,7 +39,7 @@ def test_items_are_brought_inside_the_page():
     engine = Engine(*A4)
     engine.insert("out", -30, 400, 40, 40)
     assert engine.finalize()
-    assert engine.positions()["out"] == (20.0, 277.0)
+    assert engine.positions()["out"] == (25.0, 272.0)  # inside the 5 mm print-safe margin
 
 
 def test_touching_items_with_no_gutter_are_nudged_clear_of_rounding():
@@ -81,7 +81,7 @@ def test_when_the_gutter_cannot_fit_the_widest_reachable_gap_is_kept():
     # A 6 x 6 grid of 30 mm squares on a 200 mm page leaves room for 4 mm between them, not 6.
     # The old pass fell back to half the gutter (3 mm); this one keeps nearly all of the 4.
     rng = np.random.default_rng(0)
-    engine = Engine(200, 200, Params(gutter_mm=6.0))
+    engine = Engine(200, 200, Params(gutter_mm=6.0, margin_mm=0.0))
     for a in range(6):
         for b in range(6):
             x, y = 23.5 + 30.6 * a + rng.uniform(-3, 3), 23.5 + 30.6 * b + rng.uniform(-3, 3)
@@ -94,10 +94,32 @@ def test_when_the_gutter_cannot_fit_the_widest_reachable_gap_is_kept():
 
 def test_a_row_too_tight_for_the_gutter_spreads_as_far_as_it_can():
     # Four 20 mm squares in a 100 mm row: 6.67 mm between them at most, the gutter asks 8.
-    engine = Engine(100, 30, Params(gutter_mm=8.0))
+    engine = Engine(100, 30, Params(gutter_mm=8.0, margin_mm=0.0))
     for k, x in enumerate((40, 45, 50, 55)):
         engine.insert(f"s{k}", x, 15 + k % 2, 20, 20)
     assert not engine.finalize()
     quality = rounded_quality(engine)
     assert not quality.off_page
     assert 6.5 < quality.min_gap_mm <= 20 / 3
+
+
+def test_items_keep_the_print_safe_margin_and_bleed_items_may_reach_the_edge():
+    engine = Engine(*A4)
+    engine.insert("corner", 10, 10, 40, 40)
+    engine.insert("photo", 190, 280, 40, 30, bleed=True)
+    assert engine.finalize()
+    assert engine.positions()["corner"] == (25.0, 25.0)
+    assert engine.positions()["photo"] == (190.0, 280.0)
+    assert engine.quality().in_margin == ()
+
+
+def test_a_page_too_full_for_the_margin_gives_up_the_gutter_then_the_margin_never_overlap():
+    # Three 69 mm squares across a 210 mm page (its margin: 2.9 mm): 207 mm of items leave
+    # room neither for the gutter nor for both margins, but room without overlap.
+    engine = Engine(210.0, 100.0)
+    for k, x in enumerate((40, 100, 160)):
+        engine.insert(f"s{k}", x, 50, 69, 69)
+    assert not engine.finalize()
+    quality = engine.quality()
+    assert not quality.overlapping_pairs and not quality.off_page
+    assert quality.in_margin, "the margin gave way, and check can say which items"
