@@ -167,7 +167,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"page {page.id}: {quality.summary()}")
         bodies = engine.bodies
         print(f"  {measure_alignment(bodies.centres, bodies.sizes, bodies.decorative).summary()}")
-        issues += len(quality.overlapping_pairs) + len(quality.off_page) + len(quality.in_margin)
+        issues += quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
         if quality.in_margin:
             ids = [page.items[k].id for k in quality.in_margin]
             shown = ", ".join(ids[:5]) + (f" and {len(ids) - 5} more" if len(ids) > 5 else "")
@@ -175,7 +175,7 @@ def cmd_check(args: argparse.Namespace) -> int:
                   f"{shown}; where a page is too full the gutter gives way first, then the "
                   "margin: run `floatpage settle`, make items smaller, mark items that may "
                   "touch the edge `bleed = true`, or lower margin_mm in [physics]")
-        if quality.overlapping_pairs or quality.min_gap_mm >= gutter - GAP_TOLERANCE_MM:
+        if quality.overlap_count or quality.min_gap_mm >= gutter - GAP_TOLERANCE_MM:
             continue
         need = gutter_need(page.width_mm, page.height_mm, engine.bodies.sizes, gutter,
                            decorative=engine.bodies.decorative)
@@ -298,8 +298,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def stop_on_terminate(signum, frame) -> None:
-    """SIGTERM (kill, a Makefile's Ctrl+C, CI's timeout) unwinds like Ctrl+C, so temporary
-    files and build folders are removed on the way out."""
+    """SIGTERM (kill, a Makefile's Ctrl+C, CI's timeout) and SIGHUP (a closed terminal or SSH
+    link) unwind like Ctrl+C, so temporary files and build folders are removed on the way out.
+    The editor installs its own handlers, which keep unsaved edits."""
     raise KeyboardInterrupt
 
 
@@ -307,8 +308,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     import signal
 
-    if signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
-        signal.signal(signal.SIGTERM, stop_on_terminate)
+    for stop in (signal.SIGTERM, signal.SIGHUP):
+        if signal.getsignal(stop) is signal.SIG_DFL:
+            signal.signal(stop, stop_on_terminate)
     try:
         return args.run(args)
     except FloatpageError as error:

@@ -184,7 +184,7 @@ def layout_score(quality: Quality, probe_moved_mm: float) -> tuple[int, int, int
     page, then items in the print-safe margin, then the smallest gap (up to the gutter), then how far its probe moved an item (both
     to 0.01 mm, so that noise is no gain)."""
     gap = min(quality.min_gap_mm, quality.gutter_mm)
-    return (len(quality.overlapping_pairs), len(quality.off_page), len(quality.in_margin),
+    return (quality.overlap_count, len(quality.off_page), len(quality.in_margin),
             0.0 if math.isinf(gap) else -round(gap, POSITION_DECIMALS),
             round(probe_moved_mm, POSITION_DECIMALS))
 
@@ -199,7 +199,7 @@ def keeps_guarantees(layout: Quality, settled: Quality) -> bool:
     """Whether ``layout`` is as sound as what settling reaches: no overlap or item off the page
     that the settled layout avoids, and a minimum gap at least the settled one's (or the gutter),
     less the rounding slack."""
-    if len(layout.overlapping_pairs) > len(settled.overlapping_pairs):
+    if layout.overlap_count > settled.overlap_count:
         return False
     if len(layout.off_page) > len(settled.off_page):
         return False

@@ -30,6 +30,9 @@ from floatpage.model.document import FORMAT_VERSION
 
 MAX_FILE_BYTES = 16 * 1024 * 1024
 MAX_PAGES_AWAY = 100  # sizes and places beyond this many page sizes cannot be laid out
+# One page's items: the physics and check were measured to 10,000 (benchmarks/scaling.py);
+# 100,000 blocks in one 8 MB file drove check past 20 GB.
+MAX_ITEMS_PER_PAGE = 10_000
 TEX_LONGEST_MM = 5700.0  # TeX's largest length, 16383.99 pt, is 5,758 mm
 
 
@@ -221,7 +224,13 @@ class _Reader:
         if "background" in values:
             page.background = self.background(values["background"], label,
                                               self.lines.key_line(page_line, "background"))
-        for item_index, item_table in enumerate(values.get("items", [])):
+        items = values.get("items", [])
+        if len(items) > MAX_ITEMS_PER_PAGE:
+            self.add(page_line, label, f"holds {len(items):,} items, more than the "
+                     f"{MAX_ITEMS_PER_PAGE:,} one page can lay out",
+                     "spread them over several pages")
+            return page
+        for item_index, item_table in enumerate(items):
             item = self.item(item_table, page_index, item_index)
             if item is None:
                 continue
