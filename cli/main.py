@@ -48,8 +48,8 @@ def cmd_new(args: argparse.Namespace) -> int:
         first_weekday=args.first_weekday, lang=args.lang, orientation=args.orientation,
     )
     items = sum(len(page.items) for page in project.pages)
-    print(f"created {project.path}: {len(project.pages)} page(s), {items} item(s)")
-    print(f"next: floatpage edit {project.path}")
+    print(f"created {printable(str(project.path))}: {len(project.pages)} page(s), {items} item(s)")
+    print(f"next: floatpage edit {printable(str(project.path))}")
     if args.kind == "album" and not args.photos:
         print("it holds the bundled sample photos; for your own, start again with "
               f"`floatpage new album {args.path} --photos DIR`")
@@ -84,8 +84,8 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
     from floatpage.tui.recovery import discard_recovery
 
     when = datetime.fromtimestamp(recovery.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
-    print(f"{project} has unsaved edits from an editor that lost its terminal at {when} "
-          f"(kept in {recovery.name}).")
+    print(f"{printable(str(project))} has unsaved edits from an editor that lost its terminal at {when} "
+          f"(kept in {printable(recovery.name)}).")
     while True:
         try:
             answer = input("[r]estore them, [d]iscard them, or [q]uit and decide later? ").strip().lower()
@@ -110,7 +110,7 @@ def cmd_settle(args: argparse.Namespace) -> int:
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         settle_and_report(project, args)
         save_project(project)
-    print(f"wrote positions to {project.path}")
+    print(f"wrote positions to {printable(str(project.path))}")
     return EXIT_OK
 
 
@@ -146,7 +146,7 @@ def cmd_render(args: argparse.Namespace) -> int:
                             progress=show, print_bleed_mm=args.bleed if args.print else None)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
-    print(f"wrote {report.pdf} ({report.pages} page(s), {report.seconds:.2f} s)")
+    print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
 
 
@@ -158,7 +158,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.physics.alignment import measure_alignment
     from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
 
-    print(f"{args.path}: valid project, {len(project.pages)} page(s)")
+    print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
     gutter = project.physics.gutter_mm
     for page in project.pages:
@@ -196,9 +196,9 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"warning: {printable(warning)}")
         issues += 1
     for where, picture in pictures_outside(project):
-        print(f"note: {where} uses {picture}, outside the project folder (allowed)")
+        print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
-        print(f"{issues} layout problem(s); run `floatpage settle {args.path}` to fix overlaps")
+        print(f"{issues} layout problem(s); run `floatpage settle {printable(args.path)}` to fix overlaps")
         return EXIT_USER_ERROR
     return EXIT_OK
 
