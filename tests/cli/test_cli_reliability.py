@@ -377,6 +377,26 @@ def test_a_truncated_jpeg_renders_with_a_warning_naming_the_item(tmp_path):
     assert 'warning: item "photo" on page "front": picture "cut.jpg"' in result.stderr
 
 
+def test_a_pdf_picture_is_opened_by_check_not_only_sniffed(tmp_path):
+    """A PDF header followed by garbage passed check and stopped LuaLaTeX at render; a good
+    PDF got a bogus "pixels do not decode" warning."""
+    (tmp_path / "garbage.pdf").write_bytes(b"%PDF-1.4\n" + bytes(range(256)) * 4)
+    Image.new("RGB", (100, 50), "green").save(tmp_path / "good.pdf")
+    bad = card(tmp_path, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=20.0,
+                                     path="garbage.pdf"), name="bad.toml")
+    for command in ("check", "settle", "render"):
+        result = run(command, str(bad))
+        assert result.returncode == 1, (command, result.stderr)
+        assert 'item "photo": picture file "garbage.pdf" is not a PDF floatpage can read' \
+            in result.stderr and "LaTeX" not in result.stderr
+    good = card(tmp_path, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=20.0,
+                                      path="good.pdf"), name="good.toml")
+    checked = run("check", str(good))
+    assert checked.returncode == 0 and "warning" not in checked.stdout, checked.stdout
+    rendered = run("render", "--no-settle", str(good), "-o", str(tmp_path / "good-out.pdf"))
+    assert rendered.returncode == 0 and "warning" not in rendered.stderr, rendered.stderr
+
+
 def test_pictures_outside_the_project_need_permission(tmp_path):
     outside = tmp_path / "elsewhere"
     outside.mkdir()
