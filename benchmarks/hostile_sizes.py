@@ -41,7 +41,7 @@ CASES = [
     ("10,000 blocks spread over A4", lambda: spread(10_000), ("check",)),
     ("10,000 blocks on one spot", lambda: piled(10_000), ("check", "settle")),
     ("2,000 blocks on one spot", lambda: piled(2_000), ("settle",)),
-    ("640 blocks on one spot", lambda: piled(640), ("settle",)),
+    ("630 blocks on one spot", lambda: piled(630), ("settle",)),
 ]
 
 
