@@ -317,7 +317,8 @@ def test_a_backup_name_taken_by_a_folder_is_named_and_nothing_changes(tmp_path):
 
 # 8, 9. deep nesting and seeds ---------------------------------------------------------------------
 
-@pytest.mark.parametrize("value", ["[" * 5000 + "]" * 5000, "{a=" * 3000 + "1" + "}" * 3000])
+@pytest.mark.parametrize("value", ["[" * 10_000 + "]" * 10_000, "{a=" * 10_000 + "1" + "}" * 10_000,
+                                   "[{a=" * 5000 + "1" + "}]" * 5000])
 def test_deep_nesting_is_a_clear_error(tmp_path, value):
     path = tmp_path / "deep.toml"
     path.write_text(f"format = 1\nx = {value}\n")
