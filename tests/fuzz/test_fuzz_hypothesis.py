@@ -134,25 +134,31 @@ def run(argv: list[str]) -> tuple[int, str]:
     return code, err.getvalue()
 
 
-def write_project(document: dict, folder: Path) -> Path | None:
-    """The document as fuzz.toml beside the pictures it may name (an empty p.png and a good
-    one); None when tomlkit cannot write it (nothing to test)."""
-    path = folder / "fuzz.toml"
-    try:
-        path.write_text(tomlkit.dumps(document), encoding="utf-8")
-    except (ValueError, TypeError):
-        return None
-    (folder / "p.png").write_bytes(b"")
-    Image.new("RGB", (30, 20), "teal").save(folder / "good.png")
-    return path
+@contextlib.contextmanager
+def scratch_project(document: dict):
+    """The document as fuzz.toml in a scratch folder beside the pictures it may name (an
+    empty p.png and a good one); None when tomlkit cannot write it (nothing to test)."""
+    with tempfile.TemporaryDirectory() as scratch:
+        folder = Path(scratch)
+        path = folder / "fuzz.toml"
+        try:
+            path.write_text(tomlkit.dumps(document), encoding="utf-8")
+        except (ValueError, TypeError):
+            yield None
+            return
+        (folder / "p.png").write_bytes(b"")
+        Image.new("RGB", (30, 20), "teal").save(folder / "good.png")
+        yield path
 
 
-@settings(max_examples=150, deadline=None, derandomize=True, database=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+FUZZ = dict(deadline=None, derandomize=True, database=None,
+            suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+
+
+@settings(max_examples=150, **FUZZ)
 @given(documents())
 def test_random_files_get_a_clean_answer_and_never_a_non_finite_save(document):
-    with tempfile.TemporaryDirectory() as folder:
-        path = write_project(document, Path(folder))
+    with scratch_project(document) as path:
         if path is None:
             return
         was_finite = finite(path)
@@ -176,12 +182,10 @@ def on_alarm(signum, frame):
     raise Hang
 
 
-@settings(max_examples=30, deadline=None, derandomize=True, database=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@settings(max_examples=30, **FUZZ)
 @given(documents())
 def test_random_files_through_check_settle_and_render_in_time(document):
-    with tempfile.TemporaryDirectory() as folder:
-        path = write_project(document, Path(folder))
+    with scratch_project(document) as path:
         if path is None:
             return
         previous = signal.signal(signal.SIGALRM, on_alarm)
