@@ -9,6 +9,8 @@ page sizes, missing pictures, anchors to unknown ids and anchor cycles.
 from __future__ import annotations
 
 import difflib
+import os
+import stat
 import tomllib
 from pathlib import Path
 from typing import Any
@@ -91,11 +93,20 @@ def read_text(path: Path) -> str:
     if path.is_dir():
         raise fail("is a folder, not a project file", "name the .toml file inside it")
     try:
-        raw = path.read_bytes()
+        # O_NONBLOCK and a bounded read: a pipe hung `check`, and /dev/zero filled memory.
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
+        with os.fdopen(fd, "rb") as handle:
+            if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):
+                raise fail("is not a regular file (a device, pipe or socket)",
+                           "name a project's .toml file")
+            raw = handle.read(MAX_FILE_BYTES + 1)
     except OSError as error:
         raise fail(f"cannot be read: {error.strerror}", "check its permissions") from None
     if len(raw) > MAX_FILE_BYTES:
         raise fail("is larger than 16 MiB", "a project file holds text only; is this the right file?")
+    if not raw.lstrip(b"\xef\xbb\xbf").strip():
+        raise fail("is empty", "start a project with `floatpage new blank PATH`, or restore "
+                   "the .bak beside it")
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:

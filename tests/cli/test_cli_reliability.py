@@ -328,6 +328,23 @@ def test_deep_nesting_is_a_clear_error(tmp_path, value):
         assert "nested too deeply" in result.stderr
 
 
+def test_a_project_that_is_a_pipe_a_device_a_folder_or_empty_is_named_as_such(tmp_path):
+    """A pipe named as the project hung every command; a device that never ends (a copy of
+    /dev/zero, made in the scratch folder as root) filled memory into an internal error."""
+    cases = {"pipe.toml": (os.mkfifo, "is not a regular file"),
+             "folder.toml": (os.mkdir, "is a folder, not a project file"),
+             "empty.toml": (lambda p: p.write_bytes(b"\xef\xbb\xbf \n"), "is empty")}
+    if os.geteuid() == 0:
+        cases["zero.toml"] = (lambda p: os.mknod(p, stat.S_IFCHR | 0o666, os.makedev(1, 5)),
+                              "is not a regular file")
+    for name, (make, words) in cases.items():
+        make(tmp_path / name)
+        for command in ("check", "settle", "render", "edit"):
+            result = run(command, str(tmp_path / name), timeout=60)
+            assert result.returncode == 1, (name, command, result.stderr)
+            assert result.stderr.startswith(f"floatpage: {tmp_path / name}: {words}"), result.stderr
+
+
 def test_a_negative_seed_is_a_clear_error(tmp_path):
     path = card(tmp_path)
     path.write_text(path.read_text().replace("seed = 0", "seed = -1"))
