@@ -242,9 +242,6 @@ def files() -> dict[str, bytes]:
     piled = "".join(f'\n[[pages.items]]\nid = "q{i}"\nkind = "block"\nx = 74.0\ny = 105.0\n'
                     f"w = 2.0\nh = 2.0\n" for i in range(2000))
     out["items-2000-piled"] = HEAD.format(**DEFAULTS) + piled  # 2 million pairs: 270 s, refused
-    crowd = "".join(f'\n[[pages.items]]\nid = "r{i}"\nkind = "block"\nx = {5 + i % 140}.0\n'
-                    f"y = {5 + (i * 7) % 200}.0\nw = 1.0\nh = 1.0\n" for i in range(10_001))
-    out["items-10001-one-page"] = HEAD.format(**DEFAULTS) + crowd
     out["background-bomb"] = picture_project("pictures/bomb-header.png", background=True)
     out["background-truncated"] = picture_project("pictures/truncated.jpg", background=True)
     return {name: (text.encode("utf-8") if isinstance(text, str) else text) for name, text in out.items()}
