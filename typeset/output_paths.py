@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Iterable
 
 from floatpage.model.document import Project
+from floatpage.model.project_lock import lock_path_for
 from floatpage.typeset.errors import RenderError
 
 
@@ -40,6 +41,19 @@ def project_inputs(project: Project) -> list[Path]:
     return inputs
 
 
+def project_companions(project: Project) -> list[tuple[Path, str]]:
+    """The files floatpage keeps beside the real project file, each with what it holds: a
+    PDF written over one (`-o card.toml.bak`) lost the only copy of the text before a settle,
+    or an editor's unsaved edits."""
+    if project.path is None:
+        return []
+    real = Path(os.path.realpath(project.path))
+    return [(real.with_name(real.name + ".bak"), "the project's backup"),
+            (lock_path_for(real), "the project's lock"),
+            (real.with_name(f".{real.name}.recover"),  # tui/recovery.py's recovery_path
+             "the editor's unsaved edits")]
+
+
 def same_file(a: Path, b: Path) -> bool:
     try:
         return os.path.samefile(a, b)
@@ -47,10 +61,13 @@ def same_file(a: Path, b: Path) -> bool:
         return os.path.realpath(a) == os.path.realpath(b)
 
 
-def check_outputs(outputs: Iterable[Path | None], inputs: Iterable[Path]) -> None:
-    """Refuse any output that is not a new path or a regular file, that is an input, or that
+def check_outputs(outputs: Iterable[Path | None], inputs: Iterable[Path],
+                  kept: Iterable[tuple[Path, str]] = ()) -> None:
+    """Refuse any output that is not a new path or a regular file, that is an input, that is
+    a file floatpage keeps beside the project (``kept``: path and what it holds), or that
     another output also names; the message says which and what to do."""
     chosen: list[Path] = []
+    kept = list(kept)
     inputs = [Path(p) for p in inputs]
     for output in outputs:
         if output is None:
@@ -73,6 +90,10 @@ def check_outputs(outputs: Iterable[Path | None], inputs: Iterable[Path]) -> Non
                     os.path.realpath(output) == os.path.realpath(source):
                 raise RenderError(f"{output}: will not write there, because it is an input of "
                                   f"this render ({source}); choose another output name")
+        for companion, holds in kept:
+            if os.path.realpath(output) == os.path.realpath(companion):
+                raise RenderError(f"{output}: will not write there, because it holds {holds}; "
+                                  "choose another output name")
         for earlier in chosen:
             if os.path.realpath(output) == os.path.realpath(earlier):
                 raise RenderError(f"{output}: named for two outputs; give each its own name")

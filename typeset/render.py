@@ -21,7 +21,7 @@ from floatpage.model.save import atomic_write
 from floatpage.model.picture_files import decode_warning, is_merge_placeholder
 from floatpage.typeset.build_folder import build_folder
 from floatpage.typeset.compile import compile_pdf, engine_path
-from floatpage.typeset.output_paths import check_outputs, project_inputs
+from floatpage.typeset.output_paths import check_outputs, project_companions, project_inputs
 from floatpage.typeset.print_marks import for_print
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FontNotFoundError
@@ -125,7 +125,8 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     out_pdf = Path(out_pdf)
     outputs = [out_pdf, Path(tex_out) if tex_out else None,
                Path(fragment_out) if fragment_out else None]
-    check_outputs(outputs + [log_path_for(out_pdf)], project_inputs(project))
+    check_outputs(outputs + [log_path_for(out_pdf)], project_inputs(project),
+                  project_companions(project))
     engine_path()
     if not project.pages:
         raise RenderError("the project has no pages; add a [[pages]] table")

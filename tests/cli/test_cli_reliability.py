@@ -114,6 +114,22 @@ def test_render_refuses_to_write_over_the_project(tmp_path, option):
     assert not (tmp_path / "out.pdf").exists() and not (tmp_path / "card.toml.bak").exists()
 
 
+@pytest.mark.parametrize("name,holds", [("card.toml.bak", "the project's backup"),
+                                        (".card.toml.recover", "the editor's unsaved edits"),
+                                        (".card.toml.lock", "the project's lock")])
+def test_render_refuses_to_write_over_what_floatpage_keeps_beside_the_project(tmp_path, name,
+                                                                             holds):
+    """`-o card.toml.bak` replaced the only copy of the text from before the last settle."""
+    path = card(tmp_path)
+    (tmp_path / name).write_text("kept")
+    for option in ("-o", "--tex"):
+        args = ["render", str(path), option, str(tmp_path / name)]
+        result = run(*args, *(["-o", str(tmp_path / "out.pdf")] if option == "--tex" else []))
+        assert result.returncode == 1, result.stderr
+        assert f"because it holds {holds}" in result.stderr
+        assert (tmp_path / name).read_text() == "kept"
+
+
 def test_render_refuses_to_write_over_a_picture(tmp_path):
     Image.new("RGB", (40, 30), "red").save(tmp_path / "photo.png")
     path = card(tmp_path, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=30.0, path="photo.png"))
