@@ -10,7 +10,9 @@ import calendar
 import re
 from typing import Any
 
-from floatpage.model.document import WEEKDAYS, BlockItem, CalendarItem, PictureItem, PointAnchor, TextItem
+from floatpage.model.document import (
+    WEEKDAYS, Background, BlockItem, CalendarItem, PictureItem, PointAnchor, TextItem,
+)
 from floatpage.model.page_sizes import PAGE_SIZES_MM
 from floatpage.model.schema import CALENDAR_LANGUAGES, FONT_FAMILIES
 from floatpage.tui.dialogs.form import Field
@@ -22,6 +24,8 @@ WEEKDAY_CHOICES = tuple((day.capitalize(), day) for day in WEEKDAYS)
 LANGUAGES = tuple((code, code) for code in CALENDAR_LANGUAGES)
 INSERT_CHOICES = [("Text box", "text"), ("Picture…", "picture"), ("Colour block", "block"),
                   ("Calendar month", "calendar"), ("Background…", "background")]
+BACKGROUND_CHOICES = [("A colour…", "color"), ("A picture…", "picture"),
+                      ("None (plain paper)", "none")]
 
 
 def colour(text: str, what: str = "colour") -> str:
@@ -86,8 +90,8 @@ def background_colour_fields(current: str | None) -> list[Field]:
     return [Field("color", "Background colour (#rrggbb)", "line", current or "#fdf6e3")]
 
 
-def parse_background_colour(values: dict[str, Any]) -> dict[str, Any]:
-    return {"color": colour(values["color"])}
+def parse_background_colour(values: dict[str, Any]) -> Background:
+    return Background(color=colour(values["color"]))
 
 
 PAGE_SIZE_CHOICES = [(f"{name}  ({w:g} × {h:g} mm)", name)
