@@ -32,7 +32,7 @@ from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.frame_meter import FrameMeter
 from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank, in_footer
-from floatpage.tui.page_painter import Scene
+from floatpage.tui.page_painter import PageView
 from floatpage.tui.page_preview import PagePreview
 from floatpage.tui.session import EditError, EditSession
 from floatpage.physics.quality import GAP_TOLERANCE_MM
@@ -190,9 +190,9 @@ class EditorScreen(Screen):
 
     # -- drawing ------------------------------------------------------------------------------
 
-    def scene(self) -> Scene:
+    def page_view(self) -> PageView:
         session = self.session
-        return Scene(page=session.page, positions=session.engine.positions(),
+        return PageView(page=session.page, positions=session.engine.positions(),
                      selected_id=session.selected_id, base_dir=session.project.base_dir,
                      labels=self.labels)
 
@@ -204,7 +204,7 @@ class EditorScreen(Screen):
         return "settled" if self.session.engine.settled else "settling"
 
     def redraw(self) -> None:
-        self.preview.show(self.scene())
+        self.preview.show(self.page_view())
         engine = self.session.engine
         summary, words = self.quality_summary()
         self.query_one(StatusLine).show(Status(

@@ -23,7 +23,7 @@ from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FaceKey, fallback_candidates
 from floatpage.typeset.pdf_split import split_records
 from floatpage.typeset.pictures import cache_dir, materialize
-from floatpage.typeset.scene import DocumentScene
+from floatpage.typeset.placed import PlacedDocument
 from floatpage.typeset.templates import make_environment, tex_path
 
 
@@ -68,8 +68,8 @@ class SlotFace:
 BATCH_FONT_BP = 10.0
 
 
-def at_one_size(scene: DocumentScene) -> DocumentScene:
-    """The scene with every text group drawn at BATCH_FONT_BP and scaled to its fitted size:
+def at_one_size(document: PlacedDocument) -> PlacedDocument:
+    """The document with every text group drawn at BATCH_FONT_BP and scaled to its fitted size:
     the same glyphs at the same places, from one font instance per face."""
     def rescaled(item):
         groups = getattr(item, "groups", None)
@@ -79,14 +79,15 @@ def at_one_size(scene: DocumentScene) -> DocumentScene:
             replace(group, size_pt=BATCH_FONT_BP, scale=group.size_pt / BATCH_FONT_BP)
             for group in groups))
 
-    pages = [replace(page, items=[rescaled(item) for item in page.items]) for page in scene.pages]
-    return replace(scene, pages=pages)
+    pages = [replace(page, items=[rescaled(item) for item in page.items])
+             for page in document.pages]
+    return replace(document, pages=pages)
 
 
-def font_files(scene: DocumentScene) -> list[Path]:
-    """Every font file the scene's faces load: the faces' own and their fallbacks."""
+def font_files(document: PlacedDocument) -> list[Path]:
+    """Every font file the document's faces load: the faces' own and their fallbacks."""
     files: dict[Path, None] = {}
-    for face, file in scene.faces:
+    for face, file in document.faces:
         files[Path(file)] = None
         for index in face.fallbacks:
             files[fallback_candidates(face.chain_key)[index].path] = None
@@ -104,40 +105,41 @@ def link_fonts(files: list[Path], slot_dir: Path) -> None:
         link.symlink_to(file)
 
 
-def record_context(number: int, scene: DocumentScene, slot_root: Path) -> dict:
+def record_context(number: int, document: PlacedDocument, slot_root: Path) -> dict:
     slot_dir = slot_root / str(number)
-    link_fonts(font_files(scene), slot_dir)
-    faces = [SlotFace(face, Path(file), number, BATCH_FONT_BP) for face, file in scene.faces]
-    return {"number": number, "slot_dir": slot_dir, "faces": faces, "pages": scene.pages}
+    link_fonts(font_files(document), slot_dir)
+    faces = [SlotFace(face, Path(file), number, BATCH_FONT_BP) for face, file in document.faces]
+    return {"number": number, "slot_dir": slot_dir, "faces": faces, "pages": document.pages}
 
 
-def batch_tex(scenes: list[DocumentScene], slot_root: Path) -> str:
-    scenes = [at_one_size(scene) for scene in scenes]
-    records = [record_context(number, scene, slot_root) for number, scene in enumerate(scenes)]
-    colors = list(dict.fromkeys(color for scene in scenes for color in scene.colors))
-    folders = {scene.picture_dir for scene in scenes if scene.pictures}
+def batch_tex(documents: list[PlacedDocument], slot_root: Path) -> str:
+    documents = [at_one_size(document) for document in documents]
+    records = [record_context(number, document, slot_root)
+               for number, document in enumerate(documents)]
+    colors = list(dict.fromkeys(color for document in documents for color in document.colors))
+    folders = {document.picture_dir for document in documents if document.pictures}
     template = make_environment().get_template("merge.tex.j2")
     try:
         return template.render(records=records, colors=colors,
                                picture_dir=folders.pop() if len(folders) == 1 else None,
-                               any_rich=any(face.rich for scene in scenes
-                                            for face, _ in scene.faces))
+                               any_rich=any(face.rich for document in documents
+                                            for face, _ in document.faces))
     except ValueError as error:
         raise RenderError(f"could not write the LaTeX: {error}") from None
 
 
-def typeset_batch(scenes: list[DocumentScene], *, timeout_s: float = 600.0) -> list[bytes]:
-    """One PDF per scene, from one engine run; each independent of the others in the batch."""
+def typeset_batch(documents: list[PlacedDocument], *, timeout_s: float = 600.0) -> list[bytes]:
+    """One PDF per document, from one engine run; each independent of the others in the batch."""
     engine_path()
-    for scene in scenes:
-        for plan in scene.pictures:
+    for document in documents:
+        for plan in document.pictures:
             try:
                 materialize(plan)
             except OSError as error:
                 raise RenderError(f'picture "{plan.source}" could not be converted: '
                                   f"{error}") from None
     with build_folder() as build:
-        tex = batch_tex(scenes, Path(build) / "fonts")
+        tex = batch_tex(documents, Path(build) / "fonts")
         pdf = compile_pdf(tex, Path(build), labels=None, timeout_s=timeout_s,
                           picture_dir=cache_dir())
-        return split_records(pdf, [len(scene.pages) for scene in scenes], skip_first=1)
+        return split_records(pdf, [len(document.pages) for document in documents], skip_first=1)
