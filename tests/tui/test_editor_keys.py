@@ -297,6 +297,15 @@ async def test_the_next_command_lets_go_of_a_nudged_item_first(project_path, nex
             assert (month.x, month.anchor.x) == pytest.approx((moved_x, moved_x))
 
 
+async def test_a_keymap_gives_a_command_other_keys_by_its_binding_id(project_path):
+    async with editor(project_path) as (app, pilot):
+        app.set_keymap({"grow": "f5"})
+        await pilot.press("tab", "tab", "tab")  # block
+        width = item(app, "block").w
+        await pilot.press("f5")
+        assert item(app, "block").w > width
+
+
 async def test_a_cancelled_dialog_changes_nothing(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("tab")

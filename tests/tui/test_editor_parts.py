@@ -9,7 +9,7 @@ import pytest
 from floatpage.tui.cell_canvas import UPPER_HALF, CellCanvas, Glyph, StripCache
 from floatpage.tui.frame_meter import FrameMeter
 from floatpage.tui.history import History, Snapshot
-from floatpage.tui.keymap import COMMANDS, key_label
+from floatpage.tui.keymap import COMMANDS, bindings, key_label
 from floatpage.tui.reading_order import reading_order, step_through
 
 
@@ -59,8 +59,14 @@ def test_frame_meter_counts_frames_and_steps_over_the_window():
 
 def test_key_labels_read_as_typed():
     assert key_label("plus,equals_sign") == "+ ="
-    assert key_label("shift+left,H") == "Shift+Left H"
+    assert key_label("shift+left,H") == "Shift+\u2190 H"
+    assert key_label("right_square_bracket,pagedown") == "] pgdn"
     assert all("ctrl+shift" not in command.keys for command in COMMANDS)
+
+
+def test_every_binding_has_its_own_id():
+    ids = [binding.id for binding in bindings()]
+    assert None not in ids and len(set(ids)) == len(COMMANDS)
 
 
 def test_canvas_rows_become_half_block_strips_and_later_fills_hide_glyphs():
