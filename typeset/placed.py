@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import ClassVar
 
 from floatpage.model.document import (
     BlockItem, CalendarItem, Page, PictureItem, Project, TextItem,
@@ -29,50 +30,50 @@ from floatpage.typeset.text_layout import (
 
 
 @dataclass(frozen=True)
-class PlacedText:
+class PlacedItem:
+    """What every placed item has: its id, a label that names it in messages, and its marker
+    (its number in the .tex, which maps a TeX error back to the item). `kind` names the
+    template that prints it, latex_templates/items/KIND.tex.j2."""
+
     item_id: str
     label: str
-    groups: tuple[RunGroup, ...]
-    kind: str = "text"
-    marker: int = 0
+    marker: int = field(default=0, kw_only=True)
+    kind: ClassVar[str]
 
 
 @dataclass(frozen=True)
-class PlacedPicture:
-    item_id: str
-    label: str
+class PlacedText(PlacedItem):
+    kind: ClassVar[str] = "text"
+    groups: tuple[RunGroup, ...]
+
+
+@dataclass(frozen=True)
+class PlacedPicture(PlacedItem):
+    kind: ClassVar[str] = "picture"
     left_mm: float
     top_mm: float
     w_mm: float
     h_mm: float
     plan: PicturePlan
     clip: Rect | None = None  # for a background picture that covers (and overflows) the page
-    kind: str = "picture"
-    marker: int = 0
 
 
 @dataclass(frozen=True)
-class PlacedBlock:
-    item_id: str
-    label: str
+class PlacedBlock(PlacedItem):
+    kind: ClassVar[str] = "block"
     rect: Rect
     color: str
     opacity: float
-    kind: str = "block"
-    marker: int = 0
 
 
 @dataclass(frozen=True)
-class PlacedCalendar:
-    item_id: str
-    label: str
+class PlacedCalendar(PlacedItem):
+    kind: ClassVar[str] = "calendar"
     rect: Rect
     color: str
     groups: tuple[RunGroup, ...]
     rules: tuple[tuple[float, float, float, float], ...]
     weekend: tuple[Rect, ...]
-    kind: str = "calendar"
-    marker: int = 0
 
 
 @dataclass
@@ -80,8 +81,8 @@ class PlacedPage:
     page_id: str
     w_mm: float
     h_mm: float
-    background: list = field(default_factory=list)  # PlacedBlock / PlacedPicture
-    items: list = field(default_factory=list)
+    background: list[PlacedItem] = field(default_factory=list)  # a block or a picture
+    items: list[PlacedItem] = field(default_factory=list)
     print_setup: object = None  # print_marks.PrintSetup for `render --print`
 
 
