@@ -7,17 +7,15 @@ sentence for the user (the form shows it and stays open).
 from __future__ import annotations
 
 import calendar
-import re
 from typing import Any
 
 from floatpage.model.document import (
     WEEKDAYS, Background, BlockItem, CalendarItem, PictureItem, PointAnchor, TextItem,
 )
 from floatpage.model.page_sizes import PAGE_SIZES_MM
-from floatpage.model.schema import CALENDAR_LANGUAGES, FONT_FAMILIES
+from floatpage.model.key_specs import CALENDAR_LANGUAGES, FONT_FAMILIES, HEX_COLOUR
 from floatpage.tui.dialogs.form import Field
 
-HEX_COLOUR = re.compile(r"^#?[0-9a-fA-F]{6}$")
 MONTHS = tuple((calendar.month_name[number], number) for number in range(1, 13))
 FONTS = tuple((name, name) for name in FONT_FAMILIES)
 WEEKDAY_CHOICES = tuple((day.capitalize(), day) for day in WEEKDAYS)
@@ -29,10 +27,12 @@ BACKGROUND_CHOICES = [("A colour…", "color"), ("A picture…", "picture"),
 
 
 def colour(text: str, what: str = "colour") -> str:
+    """A colour as the model writes it, "#rrggbb"; the "#" may be left out when typing."""
     text = text.strip()
-    if not HEX_COLOUR.match(text):
+    written = text if text.startswith("#") else "#" + text
+    if not HEX_COLOUR.match(written):
         raise ValueError(f'{what} must be written as #rrggbb, e.g. #1f77b4 (not "{text}")')
-    return "#" + text.lstrip("#").lower()
+    return written.lower()
 
 
 def number(text: str, what: str, low: float, high: float) -> float:

@@ -138,6 +138,24 @@ async def test_insert_a_picture_from_the_file_picker(project_path):
         assert new.h / new.w == pytest.approx(2.0)  # the file is 20 x 40 pixels
 
 
+async def test_the_picture_dialog_takes_what_the_typesetter_reads(project_path):
+    """One list of picture suffixes (the model's): a PDF is a picture, a text file is not."""
+    folder = project_path.parent
+    (folder / "notes.txt").write_text("not a picture")
+    (folder / "logo.pdf").write_bytes(b"%PDF-1.4\n%%EOF\n")
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("p", "tab")
+        await type_text(pilot, "notes.txt")
+        await pilot.press("enter")
+        error = str(app.screen.query_one("#picture-error").render())
+        assert app.screen.id == "picture-dialog" and ".pdf" in error and ".jpg" in error
+        await pilot.press("ctrl+a", "ctrl+k")
+        await type_text(pilot, "logo.pdf")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert item(app, "picture-1").path == "logo.pdf"
+
+
 async def test_insert_a_picture_by_walking_the_tree(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("p")

@@ -9,6 +9,7 @@ import pytest
 from floatpage.tui.cell_canvas import UPPER_HALF, CellCanvas, Glyph, StripCache
 from floatpage.tui.frame_meter import FrameMeter
 from floatpage.tui.history import History, Snapshot
+from floatpage.tui import item_forms
 from floatpage.tui.keymap import COMMANDS, bindings, key_label
 from floatpage.tui.reading_order import reading_order, step_through
 
@@ -62,6 +63,13 @@ def test_key_labels_read_as_typed():
     assert key_label("shift+left,H") == "Shift+\u2190 H"
     assert key_label("right_square_bracket,pagedown") == "] pgdn"
     assert all("ctrl+shift" not in command.keys for command in COMMANDS)
+
+
+def test_a_typed_colour_is_written_as_the_model_writes_it():
+    assert item_forms.colour("1F77B4") == item_forms.colour(" #1f77b4 ") == "#1f77b4"
+    for wrong in ("#12345", "##1f77b4", "red"):
+        with pytest.raises(ValueError, match="#rrggbb"):
+            item_forms.colour(wrong)
 
 
 def test_every_binding_has_its_own_id():
