@@ -9,7 +9,6 @@ hash them) but writes nothing.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import ClassVar
@@ -17,7 +16,7 @@ from typing import ClassVar
 from floatpage.model.document import (
     BlockItem, CalendarItem, Page, PictureItem, Project, TextItem,
 )
-from floatpage.model.key_specs import HEX_COLOUR
+from floatpage.model.schema import complaints
 from floatpage.typeset.calendar_panel import Rect, layout_calendar
 from floatpage.model.picture_files import is_merge_placeholder
 from floatpage.typeset.errors import RenderError
@@ -103,16 +102,13 @@ def item_label(item, page: Page) -> str:
 
 
 def check_item(item, label: str) -> None:
-    """Refuse what the loader would have refused, for projects built in code (the editor)."""
-    numbers = (item.x, item.y, item.w, item.h)
-    if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in numbers):
-        raise RenderError(f"{label}: its position or size is not a finite number {numbers} "
-                          "(move or resize it, or run the layout again)")
-    if item.w <= 0 or item.h <= 0:
-        raise RenderError(f"{label}: its width and height must be greater than 0")
-    colour = getattr(item, "color", "#000000")
-    if not isinstance(colour, str) or not HEX_COLOUR.match(colour):
-        raise RenderError(f'{label}: colour {colour!r} is not written as "#rrggbb"')
+    """Refuse what the loader would have refused, for projects built in code (the editor, merge),
+    with the model's own checks and words."""
+    problems = complaints(item)
+    if problems:
+        name, complaint = problems[0]
+        raise RenderError(f'{label}: "{name}" {complaint} (change it in the editor or the project '
+                          "file, or undo the edit that made it)")
 
 
 def rect_of(item) -> Rect:
@@ -155,8 +151,7 @@ def place_background(project: Project, page: Page) -> list:
         return [PlacedPicture("background", label, (page.width_mm - w) / 2,
                               (page.height_mm - h) / 2, w, h, plan, clip=whole)]
     if background.color:
-        if not HEX_COLOUR.match(str(background.color)):
-            raise RenderError(f'{label}: colour {background.color!r} is not written as "#rrggbb"')
+        check_item(background, label)
         return [PlacedBlock("background", label, whole, background.color, 1.0)]
     return []
 

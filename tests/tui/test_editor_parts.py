@@ -72,6 +72,19 @@ def test_a_typed_colour_is_written_as_the_model_writes_it():
             item_forms.colour(wrong)
 
 
+def test_the_forms_refuse_what_the_loader_refuses_in_its_words():
+    """The editor's forms check values with the model's own field checks, not copies."""
+    with pytest.raises(ValueError, match=r"^the opacity must be between 0.0 and 1.0$"):
+        item_forms.parse_edit({"opacity": "1.5"})
+    with pytest.raises(ValueError, match="the year must be between 1 and 9999"):
+        item_forms.parse_calendar({"year": "0", "month": 1})
+    with pytest.raises(ValueError, match="the width must be between 10.0 and 5000.0"):
+        item_forms.parse_custom_size({"width_mm": "5", "height_mm": "100"})
+    with pytest.raises(ValueError, match="the text holds 20001 characters"):
+        item_forms.parse_new_text({"text": "x" * 20_001})
+    assert item_forms.parse_edit({"opacity": "0.5", "gamma": "1"}) == {"opacity": 0.5, "gamma": 1.0}
+
+
 def test_every_binding_has_its_own_id():
     ids = [binding.id for binding in bindings()]
     assert None not in ids and len(set(ids)) == len(COMMANDS)
