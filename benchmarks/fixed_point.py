@@ -72,7 +72,7 @@ def strict_check(path: Path) -> str:
     problems, gaps = 0, []
     for page in project.pages:
         quality = engine_for_page(page, project.physics).quality()
-        problems += len(quality.overlapping_pairs) + len(quality.off_page)
+        problems += quality.overlap_count + len(quality.off_page)
         gaps.append(quality.min_gap_mm)
     return f"{problems} problems, min gap {min(gaps):.2f} mm"
 

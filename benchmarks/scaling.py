@@ -48,7 +48,7 @@ def run_scene(name: str) -> dict:
     seconds = time.perf_counter() - start
     quality = engine.quality()
     return {"seconds": seconds, "steps": report.steps, "settled": report.settled,
-            "overlaps": len(quality.overlapping_pairs), "off_page": len(quality.off_page),
+            "overlaps": quality.overlap_count, "off_page": len(quality.off_page),
             "peak_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}
 
 

@@ -47,8 +47,8 @@ def cmd_new(args: argparse.Namespace) -> int:
         first_weekday=args.first_weekday, lang=args.lang, orientation=args.orientation,
     )
     items = sum(len(page.items) for page in project.pages)
-    print(f"created {project.path}: {len(project.pages)} page(s), {items} item(s)")
-    print(f"next: floatpage edit {project.path}")
+    print(f"created {printable(str(project.path))}: {len(project.pages)} page(s), {items} item(s)")
+    print(f"next: floatpage edit {printable(str(project.path))}")
     if args.kind == "album" and not args.photos:
         print("it holds the bundled sample photos; for your own, start again with "
               f"`floatpage new album {args.path} --photos DIR`")
@@ -83,8 +83,8 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
     from floatpage.tui.recovery import discard_recovery
 
     when = datetime.fromtimestamp(recovery.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
-    print(f"{project} has unsaved edits from an editor that lost its terminal at {when} "
-          f"(kept in {recovery.name}).")
+    print(f"{printable(str(project))} has unsaved edits from an editor that lost its terminal at {when} "
+          f"(kept in {printable(recovery.name)}).")
     while True:
         try:
             answer = input("[r]estore them, [d]iscard them, or [q]uit and decide later? ").strip().lower()
@@ -109,7 +109,7 @@ def cmd_settle(args: argparse.Namespace) -> int:
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         settle_and_report(project, args)
         save_project(project)
-    print(f"wrote positions to {project.path}")
+    print(f"wrote positions to {printable(str(project.path))}")
     return EXIT_OK
 
 
@@ -145,7 +145,7 @@ def cmd_render(args: argparse.Namespace) -> int:
                             progress=show, print_bleed_mm=args.bleed if args.print else None)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
-    print(f"wrote {report.pdf} ({report.pages} page(s), {report.seconds:.2f} s)")
+    print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
 
 
@@ -157,7 +157,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.physics.alignment import measure_alignment
     from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
 
-    print(f"{args.path}: valid project, {len(project.pages)} page(s)")
+    print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
     gutter = project.physics.gutter_mm
     for page in project.pages:
@@ -166,7 +166,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"page {page.id}: {quality.summary()}")
         bodies = engine.bodies
         print(f"  {measure_alignment(bodies.centres, bodies.sizes, bodies.decorative).summary()}")
-        issues += len(quality.overlapping_pairs) + len(quality.off_page) + len(quality.in_margin)
+        issues += quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
         if quality.in_margin:
             ids = [page.items[k].id for k in quality.in_margin]
             shown = ", ".join(ids[:5]) + (f" and {len(ids) - 5} more" if len(ids) > 5 else "")
@@ -174,7 +174,7 @@ def cmd_check(args: argparse.Namespace) -> int:
                   f"{shown}; where a page is too full the gutter gives way first, then the "
                   "margin: run `floatpage settle`, make items smaller, mark items that may "
                   "touch the edge `bleed = true`, or lower margin_mm in [physics]")
-        if quality.overlapping_pairs or quality.min_gap_mm >= gutter - GAP_TOLERANCE_MM:
+        if quality.overlap_count or quality.min_gap_mm >= gutter - GAP_TOLERANCE_MM:
             continue
         need = gutter_need(page.width_mm, page.height_mm, engine.bodies.sizes, gutter,
                            decorative=engine.bodies.decorative)
@@ -195,9 +195,9 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"warning: {printable(warning)}")
         issues += 1
     for where, picture in pictures_outside(project):
-        print(f"note: {where} uses {picture}, outside the project folder (allowed)")
+        print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
-        print(f"{issues} layout problem(s); run `floatpage settle {args.path}` to fix overlaps")
+        print(f"{issues} layout problem(s); run `floatpage settle {printable(args.path)}` to fix overlaps")
         return EXIT_USER_ERROR
     return EXIT_OK
 
@@ -297,8 +297,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def stop_on_terminate(signum, frame) -> None:
-    """SIGTERM (kill, a Makefile's Ctrl+C, CI's timeout) unwinds like Ctrl+C, so temporary
-    files and build folders are removed on the way out."""
+    """SIGTERM (kill, a Makefile's Ctrl+C, CI's timeout) and SIGHUP (a closed terminal or SSH
+    link) unwind like Ctrl+C, so temporary files and build folders are removed on the way out.
+    The editor installs its own handlers, which keep unsaved edits."""
     raise KeyboardInterrupt
 
 
@@ -306,8 +307,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     import signal
 
-    if signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
-        signal.signal(signal.SIGTERM, stop_on_terminate)
+    for stop in (signal.SIGTERM, signal.SIGHUP):
+        if signal.getsignal(stop) is signal.SIG_DFL:
+            signal.signal(stop, stop_on_terminate)
     try:
         return args.run(args)
     except FloatpageError as error:

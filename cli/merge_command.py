@@ -71,12 +71,12 @@ def cmd_merge(args: argparse.Namespace) -> int:
     with merge_progress(args.quiet) as show:
         summary = merge.run(show)
     print(f"{summary.made} made, {summary.unchanged} unchanged, {summary.failed} failed of "
-          f"{summary.records} record(s) in {summary.seconds:.1f} s; report: {summary.report}")
+          f"{summary.records} record(s) in {summary.seconds:.1f} s; report: {printable(str(summary.report))}")
     if summary.combined:
-        print(f"combined PDF: {summary.combined}")
+        print(f"combined PDF: {printable(str(summary.combined))}")
     if summary.failed:
         print(f"floatpage: {summary.failed} record(s) failed; their reasons are in "
-              f"{summary.report}", file=sys.stderr)
+              f"{printable(str(summary.report))}", file=sys.stderr)
         return EXIT_SOME_RECORDS_FAILED
     return 0
 

@@ -105,7 +105,7 @@ def settle_and_gate(project: Project) -> None:
             a, b = quality.overlapping_pairs[0]
             ids = page.item_ids()
             raise RecordFailure(f'page "{page.id}": items "{ids[a]}" and "{ids[b]}" still overlap '
-                                f"after settling ({len(quality.overlapping_pairs)} pair(s)); "
+                                f"after settling ({quality.overlap_count} pair(s)); "
                                 "the page is too full for this record's content")
         if quality.off_page:
             ids = page.item_ids()

@@ -8,7 +8,8 @@ renamed over the original: rename is atomic on POSIX.  Three cases need more tha
 - a hard-linked project (``st_nlink > 1``) is rewritten in place after the backup is safe,
   since a rename would split the links and leave the other names on the old text;
 - a save killed half-way leaves its temporary file behind; the next save of the same file
-  removes such leftovers once they are older than ``STALE_AFTER_S``.
+  removes such leftovers at once when the process named in them is gone, else once they are
+  older than ``STALE_AFTER_S``.
 """
 
 from __future__ import annotations
@@ -46,8 +47,27 @@ def temporary_name(target: Path, extra: str = "") -> Path:
         f".{target.name}.{os.getpid()}.{secrets.token_hex(4)}{TEMPORARY_SUFFIX}{extra}")
 
 
+def process_alive(pid: int) -> bool:
+    """Whether a process with this id runs (someone else's counts)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError, ValueError):
+        return True  # alive but not ours, or no such number: never remove on a guess
+    return True
+
+
+def writer_pid(leftover: Path, target: Path) -> int | None:
+    """The PID a temporary's name carries (`.NAME.PID.HEX.floatpage-tmp`), if it has one."""
+    rest = leftover.name[len(target.name) + 2:]
+    pid = rest.split(".", 1)[0]
+    return int(pid) if pid.isdigit() else None
+
+
 def remove_stale_temporaries(target: Path, *, now: float | None = None) -> list[Path]:
-    """Remove this file's temporaries left by a save that was killed (older than STALE_AFTER_S)."""
+    """Remove this file's temporaries left by a save that was killed: those whose writer no
+    longer runs, at once, and any older than STALE_AFTER_S (a PID may have been reused)."""
     now = time.time() if now is None else now
     removed = []
     try:
@@ -60,7 +80,9 @@ def remove_stale_temporaries(target: Path, *, now: float | None = None) -> list[
             continue
         try:
             info = leftover.lstat()
-            if stat.S_ISREG(info.st_mode) and now - info.st_mtime > STALE_AFTER_S:
+            pid = writer_pid(leftover, target)
+            dead = pid is not None and pid != os.getpid() and not process_alive(pid)
+            if stat.S_ISREG(info.st_mode) and (dead or now - info.st_mtime > STALE_AFTER_S):
                 leftover.unlink()
                 removed.append(leftover)
         except OSError:
@@ -111,6 +133,14 @@ def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
 def keep_backup(target: Path) -> None:
     """Copy the current version to NAME.bak, itself atomically (a killed copy leaves no half .bak)."""
     backup_path = target.with_name(target.name + ".bak")  # a rename replaces a link, not its target
+    try:
+        mode = backup_path.lstat().st_mode
+    except OSError:
+        mode = None
+    if mode is not None and not (stat.S_ISREG(mode) or stat.S_ISLNK(mode)):
+        raise FloatpageError(f"{backup_path}: not saved, because the old version is kept "
+                             "there and it is a folder, device or pipe (move it away and save "
+                             "again)")
     copy = temporary_name(target, ".bak")
     try:
         shutil.copy2(target, copy)

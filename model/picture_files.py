@@ -48,7 +48,7 @@ def read_header(path: Path) -> PictureHeader:
     try:
         with open(path, "rb") as handle:
             if handle.read(5) == b"%PDF-":
-                return PictureHeader(kind="PDF")
+                return pdf_header(path)
     except OSError as error:
         return PictureHeader(problem=f"cannot be read: {error.strerror}", hint="check its permissions")
     try:
@@ -74,6 +74,24 @@ def read_header(path: Path) -> PictureHeader:
     return PictureHeader(kind=kind, size=size)
 
 
+def pdf_header(path: Path) -> PictureHeader:
+    """A PDF is usable when it opens and its first page has a size: a header followed by
+    garbage passed `check` and stopped LuaLaTeX with "reading image failed"."""
+    import pikepdf
+
+    try:
+        with pikepdf.open(path) as pdf:
+            box = [float(v) for v in pdf.pages[0].mediabox]
+    except Exception as error:  # pikepdf raises its own errors, and IndexError for no pages
+        reason = str(error).splitlines()[0][:120] if str(error) else type(error).__name__
+        return PictureHeader(kind="PDF", problem=f"is not a PDF floatpage can read ({reason})",
+                             hint="export it again, or use PNG or JPEG")
+    if not (len(box) == 4 and box[2] - box[0] > 0 and box[3] - box[1] > 0):
+        return PictureHeader(kind="PDF", problem="has a first page without a size",
+                             hint="export it again, or use PNG or JPEG")
+    return PictureHeader(kind="PDF")
+
+
 def too_many_pixels(what: str, kind: str = "", size: tuple[int, int] = (0, 0)) -> PictureHeader:
     return PictureHeader(kind=kind, size=size,
                          problem=f"is too large to lay out safely ({what}; the limit is "
@@ -89,6 +107,9 @@ def decode_warning(path: Path) -> str:
     chunk (PNG's checksums) without decoding.
     """
     try:
+        with open(path, "rb") as handle:
+            if handle.read(5) == b"%PDF-":  # no pixels: read_header opened it as a PDF
+                return ""
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             with Image.open(path) as image:

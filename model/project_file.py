@@ -9,6 +9,8 @@ page sizes, missing pictures, anchors to unknown ids and anchor cycles.
 from __future__ import annotations
 
 import difflib
+import os
+import stat
 import tomllib
 from pathlib import Path
 from typing import Any
@@ -30,6 +32,9 @@ from floatpage.model.document import FORMAT_VERSION
 
 MAX_FILE_BYTES = 16 * 1024 * 1024
 MAX_PAGES_AWAY = 100  # sizes and places beyond this many page sizes cannot be laid out
+# One page's items: the physics and check were measured to 10,000 (benchmarks/scaling.py);
+# 100,000 blocks in one 8 MB file drove check past 20 GB.
+MAX_ITEMS_PER_PAGE = 10_000
 TEX_LONGEST_MM = 5700.0  # TeX's largest length, 16383.99 pt, is 5,758 mm
 
 
@@ -88,11 +93,20 @@ def read_text(path: Path) -> str:
     if path.is_dir():
         raise fail("is a folder, not a project file", "name the .toml file inside it")
     try:
-        raw = path.read_bytes()
+        # O_NONBLOCK and a bounded read: a pipe hung `check`, and /dev/zero filled memory.
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
+        with os.fdopen(fd, "rb") as handle:
+            if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):
+                raise fail("is not a regular file (a device, pipe or socket)",
+                           "name a project's .toml file")
+            raw = handle.read(MAX_FILE_BYTES + 1)
     except OSError as error:
         raise fail(f"cannot be read: {error.strerror}", "check its permissions") from None
     if len(raw) > MAX_FILE_BYTES:
         raise fail("is larger than 16 MiB", "a project file holds text only; is this the right file?")
+    if not raw.lstrip(b"\xef\xbb\xbf").strip():
+        raise fail("is empty", "start a project with `floatpage new blank PATH`, or restore "
+                   "the .bak beside it")
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:
@@ -221,7 +235,13 @@ class _Reader:
         if "background" in values:
             page.background = self.background(values["background"], label,
                                               self.lines.key_line(page_line, "background"))
-        for item_index, item_table in enumerate(values.get("items", [])):
+        items = values.get("items", [])
+        if len(items) > MAX_ITEMS_PER_PAGE:
+            self.add(page_line, label, f"holds {len(items):,} items, more than the "
+                     f"{MAX_ITEMS_PER_PAGE:,} one page can lay out",
+                     "spread them over several pages")
+            return page
+        for item_index, item_table in enumerate(items):
             item = self.item(item_table, page_index, item_index)
             if item is None:
                 continue

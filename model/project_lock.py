@@ -15,6 +15,7 @@ from __future__ import annotations
 import errno
 import fcntl
 import os
+import stat
 import time
 from pathlib import Path
 
@@ -49,11 +50,21 @@ class ProjectLock:
 
     def acquire(self) -> "ProjectLock":
         try:
-            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC | os.O_NOFOLLOW, 0o666)
+            # O_NONBLOCK: a pipe put where the lock file belongs must not hang the open.
+            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC | os.O_NOFOLLOW
+                         | os.O_NONBLOCK, 0o666)
         except OSError as error:
             if error.errno in (errno.EACCES, errno.EROFS, errno.EPERM, errno.ENOENT):
                 return self
-            raise FloatpageError(f"{self.path}: cannot lock the project: {error.strerror}") from None
+            reason = "it is a symbolic link" if error.errno == errno.ELOOP else error.strerror
+            raise FloatpageError(f"{self.path}: cannot lock the project: {reason} "
+                                 "(it should be a small file floatpage makes; remove it and "
+                                 "try again)") from None
+        kind = file_kind(os.fstat(fd).st_mode)
+        if kind:  # never write a PID into a device or a pipe
+            os.close(fd)
+            raise FloatpageError(f"{self.path}: cannot lock the project: it is a {kind}, not "
+                                 "a lock file (remove it and try again)")
         deadline = time.monotonic() + self.wait_s
         while True:
             try:
@@ -87,6 +98,14 @@ class ProjectLock:
 
     def __exit__(self, *exc) -> None:
         self.release()
+
+
+def file_kind(mode: int) -> str:
+    """'' for a regular file, else what it is, in words."""
+    if stat.S_ISREG(mode):
+        return ""
+    return ("device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else
+            "pipe" if stat.S_ISFIFO(mode) else "socket" if stat.S_ISSOCK(mode) else "special file")
 
 
 def read_holder(fd: int) -> str:

@@ -18,7 +18,7 @@ MARGIN_TOLERANCE_MM = 0.01  # a save rounds to 0.01 mm (towards the page's insid
 class Quality:
     overlap_area_mm2: float
     overlap_fraction: float  # overlap area / total item area
-    overlapping_pairs: tuple[tuple[int, int], ...]
+    overlapping_pairs: tuple[tuple[int, int], ...]  # the first PAIRS_LISTED of them
     off_page_area_mm2: float
     off_page: tuple[int, ...]  # indices of items not wholly inside the page
     min_gap_mm: float  # smallest edge-to-edge gap; negative if overlapping; inf if < 2 items
@@ -28,11 +28,12 @@ class Quality:
     # items (not decorations or bleed items) closer to the page edge than the print-safe margin
     in_margin: tuple[int, ...] = ()
     margin_mm: float = 0.0
+    overlap_count: int = 0  # every overlapping pair, listed or not
 
     @property
     def ok(self) -> bool:
         """No overlap, nothing off the page, and every gap at least the gutter."""
-        return (not self.overlapping_pairs and not self.off_page and not self.in_margin
+        return (not self.overlap_count and not self.off_page and not self.in_margin
                 and self.min_gap_mm >= self.gutter_mm - GAP_TOLERANCE_MM)
 
     def summary(self) -> str:
@@ -41,21 +42,25 @@ class Quality:
         if not math.isinf(self.min_gap_mm) and self.min_gap_mm < self.gutter_mm - GAP_TOLERANCE_MM:
             gap += f" < {self.gutter_mm:g}"
         margin = f"{len(self.in_margin)} in margin · " if self.in_margin else ""
-        return (f"{len(self.overlapping_pairs)} overlaps · {len(self.off_page)} off page · "
+        return (f"{self.overlap_count} overlaps · {len(self.off_page)} off page · "
                 f"{margin}gap {gap} · even {self.gap_evenness:.2f} · balance {self.balance:.2f}")
 
 
 PAIR_BLOCK = 256  # rows compared with all others at once: memory stays O(PAIR_BLOCK * n)
+# Pairs kept by index: 10,000 boxes on one spot overlap in 50 million pairs, which as a list
+# took gigabytes; the count is kept whole.
+PAIRS_LISTED = 1_000
 
 
 def pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
-             ) -> tuple[float, list[tuple[int, int]], np.ndarray]:
-    """Total overlap area, the overlapping pairs (i < j) and each item's nearest edge gap,
+             ) -> tuple[float, list[tuple[int, int]], int, np.ndarray]:
+    """Total overlap area, the first PAIRS_LISTED overlapping pairs (i < j), how many there
+    are, and each item's nearest edge gap,
     ``PAIR_BLOCK`` rows at a time: the whole (n, n) matrices took 6.7 GB at 10,000 items, and
     `floatpage check` must stay under 1 GB for any file that loads.  Pairs within one anchor
     group count for neither."""
     n = len(centres)
-    total, hits = 0.0, []
+    total, hits, count = 0.0, [], 0
     nearest = np.full(n, np.inf)
     columns = np.arange(n)[None, :]
     for start in range(0, n, PAIR_BLOCK):
@@ -74,13 +79,17 @@ def pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
             upper &= ~same
             excluded |= same
         total += float(overlap[upper].sum())
-        hits += [(int(start + a), int(b)) for a, b in np.argwhere(upper & (overlap > 0))]
+        overlapping = upper & (overlap > 0)
+        count += int(np.count_nonzero(overlapping))
+        if len(hits) < PAIRS_LISTED:
+            hits += [(int(start + a), int(b))
+                     for a, b in np.argwhere(overlapping)[:PAIRS_LISTED - len(hits)]]
         both = (clear > 0).all(axis=-1)
         corner = np.sqrt((np.clip(clear, 0.0, None) ** 2).sum(axis=-1))
         gaps = np.where(both, corner, clear.max(axis=-1))
         gaps[excluded] = np.inf
         nearest[start:stop] = gaps.min(axis=1)
-    return total, hits, nearest
+    return total, hits, count, nearest
 
 
 def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_mm: float = 0.0,
@@ -121,10 +130,10 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
         in_margin = tuple(int(k) for k in np.flatnonzero(short) if k not in off_page)
 
     rows = np.flatnonzero(~layered)
-    overlap_total, pairs, min_gap, evenness = 0.0, (), math.inf, 1.0
+    overlap_total, pairs, overlap_count, min_gap, evenness = 0.0, (), 0, math.inf, 1.0
     if len(rows) >= 2:
         group = None if groups is None else np.asarray(groups).reshape(count)[rows]
-        overlap_total, hits, nearest = pairwise(centres[rows], halves[rows], group)
+        overlap_total, hits, overlap_count, nearest = pairwise(centres[rows], halves[rows], group)
         pairs = tuple((int(rows[a]), int(rows[b])) for a, b in hits)
         min_gap = float(nearest.min())
         nearest = np.clip(nearest, 0.0, None)
@@ -152,6 +161,7 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
         gutter_mm=float(gutter_mm),
         in_margin=in_margin,
         margin_mm=margin_mm,
+        overlap_count=overlap_count,
     )
 
 

@@ -12,6 +12,8 @@ DEBIAN_PACKAGES=(
   lmodern fonts-texgyre poppler-utils
   # fallback fonts for the scripts and emoji the three faces lack (typeset/fonts.py)
   fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji
+  # GNU FriBidi, the tests' independent reference for right-to-left order (typeset/bidi.py)
+  libfribidi0
 )
 
 missing=()

@@ -64,7 +64,7 @@ PALETTE_CELLS = 13  # the footer's "^p palette" at its right end
 def quality_in_words(quality) -> str:
     """"2 overlaps · 1 off the page", or "no overlaps · gaps kept" when all is well."""
     words = []
-    overlaps, off = len(quality.overlapping_pairs), len(quality.off_page)
+    overlaps, off = quality.overlap_count, len(quality.off_page)
     words.append(f"{overlaps} overlap{'s' if overlaps != 1 else ''}" if overlaps else "no overlaps")
     if off:
         words.append(f"{off} off the page")

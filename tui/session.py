@@ -68,7 +68,10 @@ def needs_settling(page: Page, settings, engine: Engine) -> bool:
     if not (quality.overlapping_pairs or quality.off_page):
         return False
     trial = copy_of(page)
-    settle_page(trial, settings)
+    try:
+        settle_page(trial, settings)
+    except FloatpageError:  # items piled past what settle takes on: open it still, as it is
+        return False
     return any((a.x, a.y) != (b.x, b.y) for a, b in zip(page.items, trial.items))
 
 

@@ -52,13 +52,14 @@ def directional_runs(line: str, base: str) -> list[tuple[str, str]]:
     other = "R" if base == "L" else "L"
     kinds: dict[int, str] = {}
     previous = base
+    numeric = number_flags(line)
     for i, char in enumerate(line):
         kind = strong(char)
         if kind:
             kinds[i] = previous = kind
         elif previous == "L" and unicodedata.bidirectional(char) == "EN":
             kinds[i] = "L"  # a number after a left-to-right letter joins it ("Happy 30th, 2027")
-        elif previous == "R" and unicodedata.bidirectional(char) in NUMBER:
+        elif previous == "R" and numeric[i]:
             kinds[i] = "R"  # after a right-to-left letter, it is read within that run
     positions = sorted(kinds)
     runs: list[tuple[str, str]] = []
@@ -86,31 +87,40 @@ def directional_runs(line: str, base: str) -> list[tuple[str, str]]:
     return runs
 
 
-def number_runs(text: str) -> list[tuple[bool, str]]:
-    """(is_number, text) pieces: digits with the separators between them kept together."""
-    pieces: list[tuple[bool, str]] = []
+def number_flags(text: str) -> list[bool]:
+    """For each character, whether it belongs to a number: digits, a single separator between
+    two numbers (rule W4: 1,000.5 and 2027-11-24), and a sequence of terminators right before
+    or after European digits (W5: 100%, $5; 20 °C keeps its °C apart, and so does an Arabic
+    number's ٪, which W5 leaves to the letters around it)."""
+    kinds = [unicodedata.bidirectional(char) for char in text]
+    joined = [kind in NUMBER for kind in kinds]
+    for index in range(1, len(text) - 1):
+        if (kinds[index] in NUMBER_JOINERS and kinds[index - 1] in NUMBER
+                and kinds[index + 1] in NUMBER):
+            joined[index] = True
     index = 0
     while index < len(text):
-        char = text[index]
-        if unicodedata.bidirectional(char) in NUMBER:
-            end = index + 1
-            while end < len(text):
-                kind = unicodedata.bidirectional(text[end])
-                if kind in NUMBER:
-                    end += 1
-                elif (kind in NUMBER_JOINERS and end + 1 < len(text)
-                      and unicodedata.bidirectional(text[end + 1]) in NUMBER):
-                    end += 2
-                else:
-                    break
-            pieces.append((True, text[index:end]))
-            index = end
+        if kinds[index] != "ET" or joined[index]:
+            index += 1
+            continue
+        end = index
+        while end < len(text) and kinds[end] == "ET":
+            end += 1
+        if (index > 0 and kinds[index - 1] == "EN") or (end < len(text) and kinds[end] == "EN"):
+            joined[index:end] = [True] * (end - index)
+        index = end
+    return joined
+
+
+def number_runs(text: str) -> list[tuple[bool, str]]:
+    """(is_number, text) pieces, numbers as `number_flags` finds them: in a right-to-left
+    line "100%" printed "%100"."""
+    pieces: list[tuple[bool, str]] = []
+    for char, is_number in zip(text, number_flags(text)):
+        if pieces and pieces[-1][0] == is_number:
+            pieces[-1] = (is_number, pieces[-1][1] + char)
         else:
-            end = index + 1
-            while end < len(text) and unicodedata.bidirectional(text[end]) not in NUMBER:
-                end += 1
-            pieces.append((False, text[index:end]))
-            index = end
+            pieces.append((is_number, char))
     return pieces
 
 

@@ -14,18 +14,10 @@ import tempfile
 from pathlib import Path
 from typing import Iterator
 
+from floatpage.model.atomic_file import process_alive
+
 PREFIX = "floatpage-build-"
 NAME = re.compile(re.escape(PREFIX) + r"(\d+)-")
-
-
-def process_alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:  # alive, someone else's
-        return True
-    return True
 
 
 def remove_stale_build_folders(parent: Path | None = None) -> list[Path]:

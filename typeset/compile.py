@@ -10,7 +10,7 @@ timeout or the log. We call the engine directly, once:
 - SOURCE_DATE_EPOCH fixed, so the PDF's dates never change;
 - a timeout that kills the whole process group (`\\def\\x{\\x}\\x` runs forever);
 - the engine dies with its parent (Linux's PR_SET_PDEATHSIG), so a killed `render` leaves no
-  LuaLaTeX running, and runs under a memory limit (MEMORY_LIMIT_BYTES of address space).
+  LuaLaTeX running, and runs under a memory limit (`engine_memory_mb`, of address space).
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ import subprocess
 import time
 from pathlib import Path
 
-from floatpage.typeset.errors import LatexCompileError, LogError, TexNotFoundError
+from floatpage.typeset.errors import LatexCompileError, LogError, RenderError, TexNotFoundError
 from floatpage.typeset.latex_log import errors_with_items
 
 ENGINE = "lualatex"
@@ -32,11 +32,25 @@ MAIN = "main.tex"
 # Address space, not resident memory: LuaTeX maps its font caches, so it reserves more than it
 # touches. A real page takes ~0.4 GB of address space; 1 MB of text in one box took 2.5 GB.
 # FLOATPAGE_ENGINE_MEMORY_MB changes it, for a machine with less (or a page that needs more).
-MEMORY_LIMIT_BYTES = int(os.environ.get("FLOATPAGE_ENGINE_MEMORY_MB", "3072")) << 20
+DEFAULT_MEMORY_MB = 3072
+MEMORY_VARIABLE = "FLOATPAGE_ENGINE_MEMORY_MB"
 PR_SET_PDEATHSIG = 1
 
 
-def limit_engine() -> None:
+def engine_memory_mb() -> int:
+    """The engine's memory limit in MB: $FLOATPAGE_ENGINE_MEMORY_MB, else 3072.  A value that
+    is not a whole number of megabytes is refused, rather than ignored (no limit at all)."""
+    text = os.environ.get(MEMORY_VARIABLE, "").strip()
+    if not text:
+        return DEFAULT_MEMORY_MB
+    if not text.isdigit() or not 1 <= int(text) <= 1 << 30:
+        raise RenderError(f"{MEMORY_VARIABLE}={text[:40]!r} is not a memory limit: give a whole "
+                          f"number of megabytes, e.g. {MEMORY_VARIABLE}=4096, or unset it for "
+                          f"{DEFAULT_MEMORY_MB}")
+    return int(text)
+
+
+def limit_engine(memory_bytes: int) -> None:
     """Run in the child between fork and exec: die with the parent, and cap memory."""
     try:
         import ctypes
@@ -48,7 +62,7 @@ def limit_engine() -> None:
     try:
         import resource
 
-        resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT_BYTES, MEMORY_LIMIT_BYTES))
+        resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
     except (ImportError, ValueError, OSError):
         pass
 
@@ -83,11 +97,12 @@ def engine_environment(picture_dir: Path | None) -> dict[str, str]:
 def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = None
                ) -> tuple[int | None, float]:
     """Run the engine on build_dir/main.tex; (exit code or None on timeout, seconds)."""
+    memory_bytes = engine_memory_mb() << 20
     start = time.perf_counter()
     process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                env=engine_environment(picture_dir), start_new_session=True,
-                               preexec_fn=limit_engine)
+                               preexec_fn=lambda: limit_engine(memory_bytes))
     try:
         code = process.wait(timeout=timeout_s)
     except subprocess.TimeoutExpired:
@@ -140,7 +155,7 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
 
 
 def memory_message() -> str:
-    return (f"it most likely reached its memory limit of {MEMORY_LIMIT_BYTES >> 20} MB (very "
+    return (f"it most likely reached its memory limit of {engine_memory_mb()} MB (very "
             "long texts or very many items on one page need more); set "
             "FLOATPAGE_ENGINE_MEMORY_MB to raise it")
 

@@ -28,6 +28,9 @@ ESCAPES: dict[str, str] = {
     "[": "{[}",
     "]": "{]}",
     "\n": r"\\{}",
+    # LuaTeX reads a literal U+FFFD as its own mark for invalid UTF-8 and stops with "String
+    # contains an invalid utf-8 sequence"; the same character given by number prints as typed.
+    "\ufffd": r"\char65533\relax{}",
 }
 
 LINE_BREAKS = {"\r\n": "\n", "\r": "\n", "\u2028": "\n", "\u2029": "\n", "\x85": "\n"}

@@ -142,7 +142,7 @@ def place_background(project: Project, page: Page) -> list:
     whole = Rect(0.0, 0.0, page.width_mm, page.height_mm)
     if background.picture:
         plan = plan_picture(project.base_dir / background.picture, page.width_mm, page.height_mm,
-                            label)
+                            label, cover=True)
         # Cover the page, keeping the picture's proportions; the clip trims the overflow.
         scale = max(page.width_mm / plan.aspect, page.height_mm)
         w, h = scale * plan.aspect, scale

@@ -68,12 +68,22 @@ STEERING = frozenset("\u200b\u200e\u200f\u2060\ufeff\u202a\u202b\u202c\u202d\u20
                      "\u2066\u2067\u2068\u2069\u00ad")
 
 
+def is_variation_selector(char: str) -> bool:
+    """U+FE00-FE0F and U+E0100-E01EF ask for a form of the character before them (emoji or
+    text style, a CJK variant); a font without that form shows the plain one.  A selector no
+    font has is left out silently: kept, it fell into the main face's run apart from its
+    base and printed as a box."""
+    code = ord(char)
+    return 0xFE00 <= code <= 0xFE0F or 0xE0100 <= code <= 0xE01EF
+
+
 def rich_text(text: str, face: FaceKey) -> tuple[str, FaceKey, list[str]]:
     """What will be printed, the face (with the fallback chain it needs), what cannot be.
 
     A character the face lacks goes to the first fallback font that has it; a space
-    no font has becomes a plain space; an invisible format character no font has is
-    left out silently; any other character no font has is left out and reported.
+    no font has becomes a plain space; an invisible format character no font has is left
+    out silently, and so is a variation selector no font has (the plain form shows); any
+    other character no font has is left out and reported.
     Base letters are kept whatever their marks do. Marks, right-to-left letters and
     fallback text switch the face to HarfBuzz mode, which shapes them and writes a
     text layer that gives back what was typed.
@@ -99,7 +109,7 @@ def rich_text(text: str, face: FaceKey) -> tuple[str, FaceKey, list[str]]:
             kept.append(char)
         elif category == "Zs":
             kept.append(" ")
-        elif category != "Cf":
+        elif category != "Cf" and not is_variation_selector(char):
             missing[char] = None
     chained = FaceKey(face.family, face.style, tuple(sorted(fallbacks)),
                       harf or bool(fallbacks))

@@ -214,6 +214,35 @@ def test_two_settles_at_once_keep_the_version_from_before_both(tmp_path):
     assert (tmp_path / "card.toml.bak").read_text() == original
 
 
+def test_a_lock_file_that_is_not_a_file_is_refused_with_a_message(tmp_path):
+    """A pipe, folder, symlink or device where `.NAME.toml.lock` belongs: a pipe was an
+    internal error, and a device got the PID written into it."""
+    leftovers = {"pipe": os.mkfifo, "folder": os.mkdir,
+                 "symbolic link": lambda p: p.symlink_to(tmp_path / "elsewhere")}
+    if os.geteuid() == 0:  # a copy of /dev/full in the scratch folder: writes there fail
+        leftovers["device"] = lambda p: os.mknod(p, stat.S_IFCHR | 0o666, os.makedev(1, 7))
+    for kind, make in leftovers.items():
+        folder = tmp_path / kind.replace(" ", "-")
+        folder.mkdir()
+        path = card(folder)
+        before = path.read_bytes()
+        make(folder / ".card.toml.lock")
+        result = run("settle", str(path), timeout=60)
+        assert result.returncode == 1, (kind, result.stderr)
+        assert ".card.toml.lock: cannot lock the project" in result.stderr, result.stderr
+        assert "remove it and try again" in result.stderr
+        assert path.read_bytes() == before
+    assert not (tmp_path / "elsewhere").exists(), "nothing was made through the link"
+
+
+def test_a_lock_file_left_by_a_dead_editor_does_not_lock(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
+    (tmp_path / ".card.toml.lock").write_text(f"{dead_pid()} floatpage edit\n")
+    result = run("settle", str(path))
+    assert result.returncode == 0, result.stderr
+
+
 def test_the_editor_refuses_a_project_another_process_holds(tmp_path):
     path = card(tmp_path)
     with ProjectLock(path, purpose="floatpage settle"):
@@ -228,7 +257,7 @@ def test_a_save_removes_stale_temporaries_and_keeps_fresh_ones(tmp_path):
     path = card(tmp_path)
     stale = tmp_path / ".card.toml.999.deadbeef.floatpage-tmp"
     stale_backup = tmp_path / ".card.toml.999.deadbeef.floatpage-tmp.bak"
-    fresh = tmp_path / ".card.toml.998.cafecafe.floatpage-tmp"
+    fresh = tmp_path / f".card.toml.{os.getpid()}.cafecafe.floatpage-tmp"  # a live writer
     for leftover in (stale, stale_backup, fresh):
         leftover.write_bytes(b"partial")
     old = os.stat(path).st_mtime - 3600
@@ -237,12 +266,59 @@ def test_a_save_removes_stale_temporaries_and_keeps_fresh_ones(tmp_path):
     path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
     assert run("settle", str(path)).returncode == 0
     assert not stale.exists() and not stale_backup.exists()
-    assert fresh.exists(), "a temporary younger than a minute may belong to a save in progress"
+    assert fresh.exists(), "a live writer's young temporary may belong to a save in progress"
+
+
+def dead_pid() -> int:
+    """The PID of a process that has run and been reaped (not reused within a test)."""
+    finished = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                              capture_output=True, text=True, check=True)
+    return int(finished.stdout)
+
+
+def test_a_fresh_temporary_of_a_dead_writer_goes_at_the_next_save(tmp_path):
+    path = card(tmp_path)
+    leftover = tmp_path / f".card.toml.{dead_pid()}.0badf00d.floatpage-tmp"
+    leftover.write_bytes(b"half a save, killed a moment ago")
+    path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
+    assert run("settle", str(path)).returncode == 0
+    assert not leftover.exists()
+
+
+def test_a_save_killed_by_sigkill_leaves_nothing_after_the_next_save(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
+    writer = subprocess.Popen([sys.executable, "-c", f"""
+import time
+from floatpage.model import atomic_file
+def slow(handle, data, chunk=1):
+    handle.write(data[:10]); handle.flush(); print("writing", flush=True); time.sleep(60)
+atomic_file.write_chunks = slow
+atomic_file.atomic_write({str(path)!r}, b"x" * 100_000)
+"""], stdout=subprocess.PIPE, text=True, cwd=ROOT)
+    assert writer.stdout.readline().strip() == "writing"
+    writer.kill()
+    writer.wait()
+    assert len(list(tmp_path.glob("*.floatpage-tmp"))) == 1, "the kill left its temporary"
+    assert run("settle", str(path)).returncode == 0
+    assert list(tmp_path.glob("*.floatpage-tmp")) == []
+
+
+def test_a_backup_name_taken_by_a_folder_is_named_and_nothing_changes(tmp_path):
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
+    before = path.read_bytes()
+    (tmp_path / "card.toml.bak").mkdir()
+    result = run("settle", str(path))
+    assert result.returncode == 1
+    assert "card.toml.bak: not saved" in result.stderr and "move it away" in result.stderr
+    assert path.read_bytes() == before
 
 
 # 8, 9. deep nesting and seeds ---------------------------------------------------------------------
 
-@pytest.mark.parametrize("value", ["[" * 5000 + "]" * 5000, "{a=" * 3000 + "1" + "}" * 3000])
+@pytest.mark.parametrize("value", ["[" * 10_000 + "]" * 10_000, "{a=" * 10_000 + "1" + "}" * 10_000,
+                                   "[{a=" * 5000 + "1" + "}]" * 5000])
 def test_deep_nesting_is_a_clear_error(tmp_path, value):
     path = tmp_path / "deep.toml"
     path.write_text(f"format = 1\nx = {value}\n")
@@ -250,6 +326,23 @@ def test_deep_nesting_is_a_clear_error(tmp_path, value):
         result = run(command, str(path))
         assert result.returncode == 1, result.stderr
         assert "nested too deeply" in result.stderr
+
+
+def test_a_project_that_is_a_pipe_a_device_a_folder_or_empty_is_named_as_such(tmp_path):
+    """A pipe named as the project hung every command; a device that never ends (a copy of
+    /dev/zero, made in the scratch folder as root) filled memory into an internal error."""
+    cases = {"pipe.toml": (os.mkfifo, "is not a regular file"),
+             "folder.toml": (os.mkdir, "is a folder, not a project file"),
+             "empty.toml": (lambda p: p.write_bytes(b"\xef\xbb\xbf \n"), "is empty")}
+    if os.geteuid() == 0:
+        cases["zero.toml"] = (lambda p: os.mknod(p, stat.S_IFCHR | 0o666, os.makedev(1, 5)),
+                              "is not a regular file")
+    for name, (make, words) in cases.items():
+        make(tmp_path / name)
+        for command in ("check", "settle", "render", "edit"):
+            result = run(command, str(tmp_path / name), timeout=60)
+            assert result.returncode == 1, (name, command, result.stderr)
+            assert result.stderr.startswith(f"floatpage: {tmp_path / name}: {words}"), result.stderr
 
 
 def test_a_negative_seed_is_a_clear_error(tmp_path):
@@ -302,6 +395,26 @@ def test_a_truncated_jpeg_renders_with_a_warning_naming_the_item(tmp_path):
     assert 'warning: item "photo" on page "front": picture "cut.jpg"' in result.stderr
 
 
+def test_a_pdf_picture_is_opened_by_check_not_only_sniffed(tmp_path):
+    """A PDF header followed by garbage passed check and stopped LuaLaTeX at render; a good
+    PDF got a bogus "pixels do not decode" warning."""
+    (tmp_path / "garbage.pdf").write_bytes(b"%PDF-1.4\n" + bytes(range(256)) * 4)
+    Image.new("RGB", (100, 50), "green").save(tmp_path / "good.pdf")
+    bad = card(tmp_path, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=20.0,
+                                     path="garbage.pdf"), name="bad.toml")
+    for command in ("check", "settle", "render"):
+        result = run(command, str(bad))
+        assert result.returncode == 1, (command, result.stderr)
+        assert 'item "photo": picture file "garbage.pdf" is not a PDF floatpage can read' \
+            in result.stderr and "LaTeX" not in result.stderr
+    good = card(tmp_path, PictureItem(id="photo", x=60.0, y=60.0, w=40.0, h=20.0,
+                                      path="good.pdf"), name="good.toml")
+    checked = run("check", str(good))
+    assert checked.returncode == 0 and "warning" not in checked.stdout, checked.stdout
+    rendered = run("render", "--no-settle", str(good), "-o", str(tmp_path / "good-out.pdf"))
+    assert rendered.returncode == 0 and "warning" not in rendered.stderr, rendered.stderr
+
+
 def test_pictures_outside_the_project_need_permission(tmp_path):
     outside = tmp_path / "elsewhere"
     outside.mkdir()
@@ -344,6 +457,21 @@ def test_control_characters_in_a_file_are_escaped_in_messages(tmp_path):
     assert len(result.stderr.strip().splitlines()) == 1, "no fake lines"
 
 
+def test_a_file_name_with_control_characters_is_escaped_on_stdout_too(tmp_path):
+    """A name is a user string as well: check, settle and render echoed it raw on stdout."""
+    name = "card\x1b[2J\nfake line.toml"
+    path = card(tmp_path, name=name)
+    out_pdf = tmp_path / "out\x1b]0;title\x07.pdf"
+    for args in (("check", str(path)), ("settle", str(path)),
+                 ("render", str(path), "-o", str(out_pdf))):
+        result = run(*args)
+        assert result.returncode == 0, result.stderr
+        assert "\x1b" not in result.stdout and "\x07" not in result.stdout, args
+        assert "card\\x1b[2J\\nfake line.toml" in result.stdout or "out\\x1b]0;title\\x07.pdf" in result.stdout
+        assert len(result.stdout.splitlines()) == len([line for line in result.stdout.split("\n") if line]), args
+    assert out_pdf.read_bytes().startswith(b"%PDF-")
+
+
 def test_a_long_list_of_problems_is_cut_at_twenty(tmp_path):
     items = "".join(f'\n[[pages.items]]\nid = "same"\nkind = "block"\nx = {10 + i % 50}.0\n'
                     f"y = 10.0\nw = 5.0\nh = 5.0\n" for i in range(780))
@@ -379,6 +507,53 @@ def test_the_engine_runs_under_a_memory_limit_and_says_so_when_it_is_hit(tmp_pat
     assert result.returncode == 1
     assert "memory limit of 40 MB" in result.stderr and "FLOATPAGE_ENGINE_MEMORY_MB" in result.stderr
     assert not (tmp_path / "card.pdf").exists()
+
+
+@pytest.mark.parametrize("value", ["abc", "-5", "0", "4096x"])
+def test_a_memory_limit_that_is_not_a_number_is_refused_not_ignored(tmp_path, value):
+    path = card(tmp_path)
+    env = {**os.environ, "FLOATPAGE_ENGINE_MEMORY_MB": value}
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "render", str(path)],
+                            capture_output=True, text=True, timeout=300, cwd=ROOT, env=env)
+    assert result.returncode == 1, result.stderr
+    assert f"FLOATPAGE_ENGINE_MEMORY_MB='{value}' is not a memory limit" in result.stderr
+    assert not (tmp_path / "card.pdf").exists()
+
+
+def blocks_on_one_spot(path: Path, count: int) -> Path:
+    items = "".join(f'\n[[pages.items]]\nid = "b{k}"\nkind = "block"\nx = 50.0\ny = 50.0\n'
+                    f"w = 1.0\nh = 1.0\n" for k in range(count))
+    path.write_text(f'format = 1\n\n[[pages]]\nid = "p"\nsize = "A4"\n{items}')
+    return path
+
+
+def test_more_than_10000_items_on_a_page_is_a_clear_error(tmp_path):
+    path = blocks_on_one_spot(tmp_path / "many.toml", 10_001)
+    for command in ("check", "settle"):
+        result = run(command, str(path))
+        assert result.returncode == 1
+        assert 'page "p": holds 10,001 items, more than the 10,000' in result.stderr
+        assert len(result.stderr.splitlines()) == 1
+
+
+def test_10000_items_piled_on_one_spot_stay_under_a_gigabyte(tmp_path):
+    """50 million overlapping pairs: check counts them (it listed them all, gigabytes), and
+    settle refuses before the physics holds them all (it failed past 4 GB)."""
+    path = blocks_on_one_spot(tmp_path / "pile.toml", 10_000)
+    before = path.read_bytes()
+    for command, code in (("check", 0), ("settle", 1)):
+        process = subprocess.Popen([sys.executable, "-m", "floatpage.cli.main", command,
+                                    str(path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                   cwd=ROOT)
+        _, status, usage = os.wait4(process.pid, 0)
+        out, err = process.stdout.read().decode(), process.stderr.read().decode()
+        assert os.waitstatus_to_exitcode(status) == code, err
+        assert usage.ru_maxrss < 1024 * 1024, (command, f"{usage.ru_maxrss / 1024:.0f} MB")
+        if command == "check":
+            assert "49995000 overlaps" in out
+        else:
+            assert "are piled on each other" in err and "49,995,000" in err
+    assert path.read_bytes() == before
 
 
 def test_check_of_a_10000_item_file_stays_under_a_gigabyte(tmp_path):

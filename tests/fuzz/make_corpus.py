@@ -4,8 +4,8 @@ Run it again after changing it (`.venv/bin/python tests/fuzz/make_corpus.py`); t
 committed, so the fuzz test reads fixed bytes and a failure names a file one can open.
 Families: numbers at and beyond their limits (inf, nan, 1e308, huge integers, negative zero),
 every key given the wrong TOML type (datetimes included), broken structure and encodings,
-text built to break LaTeX, anchors that chain, loop and point off the page, crowded and
-degenerate pages, and pictures that lie about themselves.
+text built to break LaTeX, anchors that chain, loop and point off the page, crowded, piled-up
+and degenerate pages, and pictures that lie about themselves or that TeX cannot size.
 """
 
 from __future__ import annotations
@@ -136,6 +136,8 @@ def files() -> dict[str, bytes]:
         "newlines": '"line\\nline\\r\\nline\\u2028line"', "empty": '""', "spaces": '"     "',
         "at-cap": '"' + "word " * 4000 + '"', "over-cap": '"' + "word " * 4001 + '"',
         "multiline": '"""\nmany\n\n\nblank\nlines\n"""', "surrogate-escape": r'"\uD800"',
+        "replacement-char": r'"mojibake \uFFFD \uFFFD\uFFFD5"', "noncharacters": r'"\uFFFE \U0010FFFF \uFDD0"',
+        "variation-selectors": r'"\u263A\uFE0F \u2764\uFE0E \u845B\U000E0100 a\uFE00b"',
     }
     for name, text in hostile_texts.items():
         out[f"text-{name}"] = project(text=text)
@@ -232,6 +234,14 @@ def files() -> dict[str, bytes]:
     }
     for name, path in pictures.items():
         out[name] = picture_project(path)
+    for name in ("panorama-20000x100.png", "one-dpi.jpg", "strip-1x60000.png"):
+        stem = name.split(".")[0]  # each stopped LuaLaTeX: "Dimension too large"
+        out[f"picture-{stem}"] = picture_project(f"pictures/{name}")
+        out[f"background-{stem}"] = picture_project(f"pictures/{name}", background=True)
+    out["picture-good-pdf"] = picture_project("pictures/good.pdf")
+    piled = "".join(f'\n[[pages.items]]\nid = "q{i}"\nkind = "block"\nx = 74.0\ny = 105.0\n'
+                    f"w = 2.0\nh = 2.0\n" for i in range(2000))
+    out["items-2000-piled"] = HEAD.format(**DEFAULTS) + piled  # 2 million pairs: 270 s, refused
     out["background-bomb"] = picture_project("pictures/bomb-header.png", background=True)
     out["background-truncated"] = picture_project("pictures/truncated.jpg", background=True)
     return {name: (text.encode("utf-8") if isinstance(text, str) else text) for name, text in out.items()}
@@ -263,6 +273,10 @@ def pictures() -> dict[str, bytes]:
         "animated.gif": gif.getvalue(),
         "deep.tiff": saved(Image.new("I;16", (30, 20), 1000), "TIFF"),
         "good.png": saved(noise, "PNG"),
+        "panorama-20000x100.png": saved(Image.new("RGB", (20_000, 100), "red"), "PNG", optimize=True),
+        "one-dpi.jpg": saved(Image.new("RGB", (300, 200), "blue"), "JPEG", dpi=(1, 1)),
+        "strip-1x60000.png": saved(Image.new("L", (1, 60_000), 128), "PNG", optimize=True),
+        "good.pdf": saved(Image.new("RGB", (100, 50), "green"), "PDF"),
     }
 
 

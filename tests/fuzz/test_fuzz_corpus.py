@@ -71,6 +71,16 @@ def test_every_refusal_names_the_file_and_says_something(results):
                 assert "\x1b" not in outcome["stderr"], (name, command)
 
 
+def test_what_check_accepts_never_breaks_the_engine(results):
+    """`check` saying yes means LuaLaTeX can set the file: a garbage PDF, a panorama or a
+    U+FFFD that check let through stopped the engine at `render`."""
+    broken = [f"{name}: {record['render']['stderr'][-300:]}" for name, record in results.items()
+              if record["check"]["code"] == 0 and record["render"]["code"] == 1
+              and ("LaTeX reported" in record["render"]["stderr"]
+                   or "LuaLaTeX" in record["render"]["stderr"])]
+    assert not broken, "\n".join(broken)
+
+
 def test_settle_never_saves_a_non_finite_number(results):
     bad = {name: r["non_finite_after_settle"] for name, r in results.items()
            if r["non_finite_after_settle"]}

@@ -1,13 +1,14 @@
 """Random project files, from a TOML strategy that bends every key of a real project, through
 `check` and `settle` in this process: no internal error, nothing escaping the CLI, and never
-an inf or NaN in a saved file.  (`render` runs over the fixed corpus, where each case costs a
-TeX run; here the cases are many and cheap.)"""
+an inf or NaN in a saved file.  Fewer of them also go through `render` (each costs a TeX run),
+under a timeout: what `check` accepts must never break the engine."""
 
 from __future__ import annotations
 
 import contextlib
 import io
 import math
+import signal
 import tempfile
 import tomllib
 from pathlib import Path
@@ -133,18 +134,33 @@ def run(argv: list[str]) -> tuple[int, str]:
     return code, err.getvalue()
 
 
-@settings(max_examples=150, deadline=None, derandomize=True, database=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
-@given(documents())
-def test_random_files_get_a_clean_answer_and_never_a_non_finite_save(document):
-    with tempfile.TemporaryDirectory() as folder:
-        path = Path(folder) / "fuzz.toml"
+@contextlib.contextmanager
+def scratch_project(document: dict):
+    """The document as fuzz.toml in a scratch folder beside the pictures it may name (an
+    empty p.png and a good one); None when tomlkit cannot write it (nothing to test)."""
+    with tempfile.TemporaryDirectory() as scratch:
+        folder = Path(scratch)
+        path = folder / "fuzz.toml"
         try:
             path.write_text(tomlkit.dumps(document), encoding="utf-8")
-        except (ValueError, TypeError):  # tomlkit cannot write this document: nothing to test
+        except (ValueError, TypeError):
+            yield None
             return
-        (Path(folder) / "p.png").write_bytes(b"")
-        Image.new("RGB", (30, 20), "teal").save(Path(folder) / "good.png")
+        (folder / "p.png").write_bytes(b"")
+        Image.new("RGB", (30, 20), "teal").save(folder / "good.png")
+        yield path
+
+
+FUZZ = dict(deadline=None, derandomize=True, database=None,
+            suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+
+
+@settings(max_examples=150, **FUZZ)
+@given(documents())
+def test_random_files_get_a_clean_answer_and_never_a_non_finite_save(document):
+    with scratch_project(document) as path:
+        if path is None:
+            return
         was_finite = finite(path)
         for command in (["check", str(path)], ["settle", "-q", str(path)]):
             code, err = run(command)
@@ -153,3 +169,36 @@ def test_random_files_get_a_clean_answer_and_never_a_non_finite_save(document):
             assert "\x1b" not in err
         if was_finite:
             assert finite(path), path.read_text()
+
+
+RENDER_TIMEOUT_S = 180  # the engine's own limit is 120 s; past this the command hangs
+
+
+class Hang(Exception):
+    pass
+
+
+def on_alarm(signum, frame):
+    raise Hang
+
+
+@settings(max_examples=30, **FUZZ)
+@given(documents())
+def test_random_files_through_check_settle_and_render_in_time(document):
+    with scratch_project(document) as path:
+        if path is None:
+            return
+        previous = signal.signal(signal.SIGALRM, on_alarm)
+        signal.alarm(RENDER_TIMEOUT_S)
+        try:
+            checked, _ = run(["check", str(path)])
+            run(["settle", "-q", str(path)])
+            code, err = run(["render", "-q", str(path), "-o", str(path.with_suffix(".pdf"))])
+        except Hang:
+            raise AssertionError(f"a command ran past {RENDER_TIMEOUT_S} s") from None
+        finally:
+            signal.alarm(0)
+            signal.signal(signal.SIGALRM, previous)
+        assert code in (0, 1) and "internal error" not in err, err
+        if checked == 0:
+            assert "LaTeX reported" not in err and "LuaLaTeX" not in err, err

@@ -47,7 +47,9 @@ ATTACKS = [
 ]
 UNICODE = ["naïve café", "Ærøskøbing Łódź", "Straße ẞ", "ﬁ ﬂ ligatures", "e\u0301 decomposed",
            "Ελληνικά", "Кириллица", "€ £ ¥ ¢", "„Anführung“ «guillemets»", "emoji 😀 here",
-           "中文 text", "עברית", "…—–·•", "½ ¼ ¾", "№ ™ © ®", "private \ue000 use"]
+           "中文 text", "עברית", "…—–·•", "½ ¼ ¾", "№ ™ © ®", "private \ue000 use",
+           # LuaTeX reads a literal U+FFFD as invalid UTF-8 and stopped the whole compile
+           "mojibake \ufffd here", "\ufffd\ufffd5\ufffd", "noncharacter \ufffe \U0010ffff"]
 
 
 def hostile_strings() -> list[str]:

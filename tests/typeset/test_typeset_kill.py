@@ -1,5 +1,6 @@
 """Killing `render` mid-typesetting leaves no LuaLaTeX running, no partial PDF, and no build
-folder for long: SIGTERM cleans up on the way out, and after SIGKILL the next render does."""
+folder for long: SIGTERM and SIGHUP clean up on the way out, and after SIGKILL the next render
+does."""
 
 from __future__ import annotations
 
@@ -49,7 +50,8 @@ def wait_until(condition, timeout: float) -> bool:
     return False
 
 
-@pytest.mark.parametrize("how", [signal.SIGTERM, signal.SIGKILL], ids=["SIGTERM", "SIGKILL"])
+@pytest.mark.parametrize("how", [signal.SIGTERM, signal.SIGHUP, signal.SIGKILL],
+                         ids=["SIGTERM", "SIGHUP", "SIGKILL"])
 def test_killing_render_stops_the_engine_and_cleans_up(tmp_path, how):
     project_folder = tmp_path / "calendar"
     shutil.copytree(SAMPLE, project_folder)
@@ -69,7 +71,7 @@ def test_killing_render_stops_the_engine_and_cleans_up(tmp_path, how):
     assert wait_until(lambda: not engines_working_in(scratch), 0.5), "LuaLaTeX outlived render"
     assert not out.exists(), "no partial PDF at the output path"
     leftovers = list(scratch.glob("floatpage-build-*"))
-    if how == signal.SIGTERM:
+    if how in (signal.SIGTERM, signal.SIGHUP):  # a closed terminal unwinds as a kill does
         assert render.returncode == 130 and "interrupted" in render.stderr.read()
         assert leftovers == []
     else:

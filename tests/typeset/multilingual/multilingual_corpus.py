@@ -92,10 +92,39 @@ def marks_systematically() -> list[str]:
     return [f"{letter}{accent}{letter.lower()}" for letter in letters for accent in accents[:2]]
 
 
+# Written in a later hostile pass (none of them was in the lists above): more Indic scripts
+# with their conjuncts, South-East Asian and other alphabets, right-to-left text in brackets
+# with numbers, marks on CJK, variation selectors, controls, invisible characters, U+FFFD
+# (which stopped LuaLaTeX) and TeX's own characters beside Arabic.
+MORE_SCRIPTS = [
+    "আমি বাংলায় গান গাই", "ক্ষ জ্ঞ ন্ত্র", "தமிழ் நாடு ஸ்ரீ க்ஷ", "తెలుగు భాష క్ష్మ",
+    "ગુજરાતી ભાષા શ્ર", "ਪੰਜਾਬੀ ਗੁਰਮੁਖੀ ੴ", "ಕನ್ನಡ ಭಾಷೆ ಕ್ಷ", "മലയാളം ഭാഷ ന്റെ",
+    "සිංහල භාෂාව ශ්‍රී", "ភាសាខ្មែរ ស្រី", "ພາສາລາວ ສະບາຍດີ", "မြန်မာဘာသာ ကျွန်ုပ်",
+    "ქართული ენა", "Հայերեն լեզու", "ግዕዝ ፊደል ሰላም", "क्‍ष", "ि",
+]
+MORE_MIXED = [
+    "(مرحبا [123] abc)", "שלום (עולם) [1-2]", "{عربي} <English> 3.5%", "א) 1. ב) 2.",
+    "السعر: ١٬٢٣٤٫٥٦ ر.س", "version 2.0 (הגרסה החדשה)", "«اقتباس (داخلي) هنا»",
+    "−5 °C درجة", "\\relax مرحبا %$#&_{}~^", "文字\\par{}",
+]
+MORE_MARKS_AND_INVISIBLES = [
+    "漢\u0301字\u0308", "か\u3099 は\u309a", "한\u0323글", "א\u05b0\u05b1\u05b2\u05b3\u05b4\u05b5\u05b6",
+    "\u0301 leading mark", "İIıi ǰ", "Ä\u0304 ǟ", "𝐀𝐁𝐂 𝔄𝔅 𝕏", "Ⓐⓑ",
+    "☺\ufe0f ☺\ufe0e text", "❤\ufe0e mono heart", "葛\U000E0100 variation", "a\ufe00b",
+    "bell\u0007here", "esc\u001b[31mred", "null\u0000byte", "del\u007fchar", "c1\u0085next\u009bcsi",
+    "tab\tnew\nline", "cr\rreturn", "vt\u000bff\u000c", "lone\ud800surrogate",
+    "\ufeffBOM at start", "zero\u200bwidth\u200bspaces", "soft\u00adhy\u00adphen\u00ad",
+    "line\u2028sep\u2029para", "bidi\u202eoverride\u202c end", "iso\u2066late\u2069 d",
+    "\u061c alm \u200f rlm", "word\u2060joiner", "inv\u2062times", "\U000e0041 tag",
+    "repl\ufffd", "\ufffd\ufffd5\ufffd",
+]
+
 GROUPS = {
     "latin": LATIN, "greek-cyrillic": GREEK_CYRILLIC, "cjk": CJK, "rtl": RTL, "mixed": MIXED,
     "indic": INDIC, "southeast-other": SOUTHEAST_AND_OTHER, "emoji": EMOJI, "symbols": SYMBOLS,
     "marks": MARKS + marks_systematically(), "spaces": SPACES,
+    "more-scripts": MORE_SCRIPTS, "more-mixed": MORE_MIXED,
+    "more-marks-invisibles": MORE_MARKS_AND_INVISIBLES,
 }
 
 

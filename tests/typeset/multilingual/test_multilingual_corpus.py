@@ -30,7 +30,7 @@ from floatpage.typeset import render_pdf
 from floatpage.typeset.bidi import has_rtl
 from floatpage.typeset.escape import clean_text
 from floatpage.typeset.fonts import FaceKey
-from floatpage.typeset.text_layout import face_for, rich_text
+from floatpage.typeset.text_layout import face_for, is_variation_selector, rich_text
 from multilingual_corpus import corpus
 from typeset_pdfcheck import BoxPt, chars_in, fill
 
@@ -55,7 +55,9 @@ def classify(typed: str, read: str, face: FaceKey) -> str:
     expected, got = visible(printable), visible(read)
     if not missing and (got == expected or has_rtl(expected) and Counter(got) == Counter(expected)):
         return "ok"
-    letters = Counter(ch for ch in visible(clean_text(typed)) if not unicodedata.combining(ch))
+    # A variation selector is no letter: it picks a form, and without one the plain form shows.
+    letters = Counter(ch for ch in visible(clean_text(typed))
+                      if not unicodedata.combining(ch) and not is_variation_selector(ch))
     found = Counter(ch for ch in got if not unicodedata.combining(ch))
     lost = letters - found
     extra = found - letters
