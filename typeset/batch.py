@@ -4,9 +4,11 @@ The engine's start-up (formats, fonts, TikZ) costs about a second; each further 
 the same run costs a tenth of that, which is what makes `floatpage merge` fast. Two
 things could make a record's PDF depend on its neighbours in the run, and both are undone:
 
-- Fonts: LuaTeX embeds one subset per font file for the whole run. Each record loads its
-  fonts through its own slot folder of links, and `merge.tex.j2` names the font after the
-  link, so each record gets a subset of its own glyphs only.
+- Fonts: LuaTeX embeds one subset per font file name for the whole run. Each face of each
+  record loads its font through a slot folder of links, and `merge.tex.j2` names the font
+  after the link, so the subset holds that face's glyphs in that record only. Records that
+  set exactly the same lines in a face share its slot (FontSlots): the glyphs, and so the
+  subset, are the same as each would get alone, and the run writes it once, not per record.
 - Names and object numbers: `typeset.pdf_split` renames and renumbers per record.
 """
 
@@ -29,12 +31,13 @@ from floatpage.typeset.templates import make_environment, tex_path
 
 @dataclass(frozen=True)
 class SlotFace:
-    """A face as one record of a batch loads it: a luaotfload request of its own (`fpslot`),
-    so that record gets font instances, and subsets, of its own."""
+    """A face as one record of a batch loads it: a luaotfload request of its own (`fpslot`)
+    and a slot folder whose links name the font files, so it gets a subset of its own."""
 
     face: FaceKey
     file: Path
     slot: int
+    slot_dir: Path
     size_bp: float = 10.0
 
     @property
@@ -83,18 +86,16 @@ def at_one_size(scene: DocumentScene) -> DocumentScene:
     return replace(scene, pages=pages)
 
 
-def font_files(scene: DocumentScene) -> list[Path]:
-    """Every font file the scene's faces load: the faces' own and their fallbacks."""
-    files: dict[Path, None] = {}
-    for face, file in scene.faces:
-        files[Path(file)] = None
-        for index in face.fallbacks:
-            files[fallback_candidates(face.chain_key)[index].path] = None
+def face_files(face: FaceKey, file: Path) -> list[Path]:
+    """Every font file a face loads: its own and its fallbacks'."""
+    files = {Path(file): None}
+    for index in face.fallbacks:
+        files[fallback_candidates(face.chain_key)[index].path] = None
     return list(files)
 
 
 def link_fonts(files: list[Path], slot_dir: Path) -> None:
-    """The slot folder: a link to every font file the record loads, under its own name."""
+    """The slot folder: a link to every font file the face loads, under its own name."""
     slot_dir.mkdir(parents=True)
     for file in files:
         link = slot_dir / file.name
@@ -104,16 +105,42 @@ def link_fonts(files: list[Path], slot_dir: Path) -> None:
         link.symlink_to(file)
 
 
-def record_context(number: int, scene: DocumentScene, slot_root: Path) -> dict:
-    slot_dir = slot_root / str(number)
-    link_fonts(font_files(scene), slot_dir)
-    faces = [SlotFace(face, Path(file), number, BATCH_FONT_BP) for face, file in scene.faces]
-    return {"number": number, "slot_dir": slot_dir, "faces": faces, "pages": scene.pages}
+def lines_in_face(scene: DocumentScene, face: FaceKey) -> tuple[str, ...]:
+    """Every line the scene sets in `face`, as TeX, in drawing order: what decides which
+    glyphs (and which ToUnicode entries) the face's subset gets."""
+    return tuple(str(run.tex) for page in scene.pages for item in page.background + page.items
+                 for group in getattr(item, "groups", ()) if group.face == face
+                 for run in group.runs)
+
+
+class FontSlots:
+    """The slots of one batch run. A face gets a new slot unless an earlier record of the run
+    set exactly the same lines in it; sharing that slot then adds no glyph to its subset, so
+    each record's PDF is what it would be alone, and the engine writes one subset, not two
+    (a subset costs LuaTeX about 10 ms: it reads the whole font program each time)."""
+
+    def __init__(self, root: Path):
+        self.root = root
+        self.numbers: dict[tuple, int] = {}
+
+    def face(self, face: FaceKey, file: Path, lines: tuple[str, ...]) -> SlotFace:
+        key = (face, Path(file), lines)
+        number = self.numbers.get(key)
+        if number is None:
+            number = self.numbers[key] = len(self.numbers)
+            link_fonts(face_files(face, file), self.root / str(number))
+        return SlotFace(face, Path(file), number, self.root / str(number), BATCH_FONT_BP)
+
+
+def record_context(number: int, scene: DocumentScene, slots: FontSlots) -> dict:
+    faces = [slots.face(face, file, lines_in_face(scene, face)) for face, file in scene.faces]
+    return {"number": number, "faces": faces, "pages": scene.pages}
 
 
 def batch_tex(scenes: list[DocumentScene], slot_root: Path) -> str:
     scenes = [at_one_size(scene) for scene in scenes]
-    records = [record_context(number, scene, slot_root) for number, scene in enumerate(scenes)]
+    slots = FontSlots(slot_root)
+    records = [record_context(number, scene, slots) for number, scene in enumerate(scenes)]
     colors = list(dict.fromkeys(color for scene in scenes for color in scene.colors))
     folders = {scene.picture_dir for scene in scenes if scene.pictures}
     template = make_environment().get_template("merge.tex.j2")

@@ -163,9 +163,12 @@ def test_json_lines_work_like_csv(merge_folder):
 def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
     data = write_csv(merge_folder / "customers.csv", rows(24))
     out = merge_folder / "out"
+    builds = merge_folder / "tmp"  # its own, so other runs' engines on this machine don't count
+    builds.mkdir()
     process = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
                                 "-o", str(out), "--chunk-size", "2", "--workers", "2"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               env={**os.environ, "TMPDIR": str(builds)})
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and len(list(out.glob("*.pdf"))) < 2:
         time.sleep(0.05)
@@ -182,16 +185,17 @@ def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
     assert leftovers == []
     assert (out / "report.csv").is_file()
     time.sleep(1.0)
-    assert engines_in_build_folders() == []
+    assert engines_in_build_folders(builds) == []
 
 
-def engines_in_build_folders() -> list[int]:
-    """Processes (LuaLaTeX) still working in a floatpage build folder."""
+def engines_in_build_folders(parent: Path) -> list[int]:
+    """Processes (LuaLaTeX) still working in a floatpage build folder under `parent`."""
     found = []
     for entry in Path("/proc").iterdir():
         if entry.name.isdigit():
             try:
-                if "floatpage-build" in os.readlink(entry / "cwd"):
+                cwd = os.readlink(entry / "cwd")
+                if cwd.startswith(str(parent) + os.sep) and "floatpage-build" in cwd:
                     found.append(int(entry.name))
             except OSError:
                 pass
