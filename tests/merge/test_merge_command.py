@@ -64,6 +64,26 @@ def test_the_pdfs_do_not_depend_on_chunk_size_or_workers(merge_folder):
     assert len(one) == 5 and one == many
 
 
+def test_records_that_share_lines_in_one_run_keep_the_bytes_they_get_alone(merge_folder):
+    """Records setting the same lines in a face share its font subset in a run (also a face
+    with a fallback font, here Arabic through HarfBuzz): each PDF must still hold only its
+    own glyphs, so one engine run per record makes the same bytes as one run for all."""
+    base = rows(1)[0]
+    shared = [[str(3001 + n), first, "Haddad", product, "€2", "pears.png", note, "1 May"]
+              for n, (first, product, note) in enumerate([
+                  ("فاطمة", "Peonies", "Picked this morning."), ("فاطمة", "Peonies", ""),
+                  ("Ana", "Peonies", "Picked this morning."), ("Ana", "Tulips", "")])]
+    data = write_csv(merge_folder / "customers.csv", [base] + shared)
+    alone = merge(merge_folder, data, "alone", "--chunk-size", "1", "--workers", "1")
+    together = merge(merge_folder, data, "together", "--chunk-size", "5", "--workers", "1")
+    assert alone.returncode == 0 and together.returncode == 0, alone.stderr + together.stderr
+    first = {p.name: p.read_bytes() for p in (merge_folder / "alone").glob("*.pdf")}
+    second = {p.name: p.read_bytes() for p in (merge_folder / "together").glob("*.pdf")}
+    assert len(first) == 5 and first == second
+    arabic = text_of(merge_folder / "together" / "3001-Haddad.pdf")
+    assert "فاطمة" in arabic or "فاطمة"[::-1] in arabic  # pdfplumber reads it left to right
+
+
 def test_a_second_run_skips_what_has_not_changed(merge_folder):
     data = write_csv(merge_folder / "customers.csv", rows(4))
     assert merge(merge_folder, data).returncode == 0
