@@ -165,6 +165,8 @@ def typeset_batch(scenes: list[DocumentScene], *, timeout_s: float = 600.0) -> l
                                   f"{error}") from None
     with build_folder() as build:
         tex = batch_tex(scenes, Path(build) / "fonts")
-        pdf = compile_pdf(tex, Path(build), labels=None, timeout_s=timeout_s,
+        # Markers count from 0 in every record: alone, an error names the record's item.
+        labels = scenes[0].labels if len(scenes) == 1 else None
+        pdf = compile_pdf(tex, Path(build), labels=labels, timeout_s=timeout_s,
                           picture_dir=cache_dir())
         return split_records(pdf, [len(scene.pages) for scene in scenes], skip_first=1)

@@ -55,6 +55,24 @@ def test_each_record_gets_its_own_pdf_and_a_failing_record_is_isolated(merge_fol
     assert "Product number 1" in text and "Person1" in text and "€1.50" in text
 
 
+def test_a_record_that_breaks_the_engine_run_fails_alone(merge_folder):
+    """A picture whose header reads well but whose data is cut short passes the layout and
+    fails in LuaLaTeX: the chunk's run is split until that record runs alone."""
+    whole = (merge_folder / "pictures" / "pears.png").read_bytes()
+    (merge_folder / "pictures" / "cut.png").write_bytes(whole[:len(whole) // 3])
+    records = rows(5)
+    records[2][5] = "cut.png"
+    data = write_csv(merge_folder / "customers.csv", records)
+    done = merge(merge_folder, data, "out", "--chunk-size", "5", "--workers", "1")
+    assert done.returncode == 3, done.stderr
+    statuses = [(row["status"], row["reason"]) for row in report(merge_folder)]
+    assert [status for status, _ in statuses] == ["made", "made", "failed", "made", "made"]
+    assert statuses[2][1].startswith("LuaLaTeX could not typeset it: ")
+    assert "writepng" in statuses[2][1] and "pictures/cut.png" in statuses[2][1]
+    assert "full log" not in statuses[2][1]  # the build folder, and its log, are gone
+    assert len(list((merge_folder / "out").glob("*.pdf"))) == 4
+
+
 def test_the_pdfs_do_not_depend_on_chunk_size_or_workers(merge_folder):
     data = write_csv(merge_folder / "customers.csv", rows(5))
     assert merge(merge_folder, data, "one", "--chunk-size", "1", "--workers", "1").returncode == 0
