@@ -43,8 +43,8 @@ def add_merge_parser(commands, allow_outside_option) -> None:
     merge.add_argument("--force", action="store_true",
                        help="redo every record, even those whose inputs have not changed")
     merge.add_argument("--chunk-size", type=positive, default=None, metavar="N",
-                       help="records per LuaLaTeX run (default: up to 32, fewer for short data "
-                            "so every worker has work); the PDFs do not depend on it")
+                       help="records per LuaLaTeX run (default: up to 128, fewer towards the "
+                            "end so every worker has work); the PDFs do not depend on it")
     merge.add_argument("--workers", type=positive, default=None, metavar="N",
                        help="worker processes (default: one per core)")
     merge.add_argument("--dask", metavar="ADDRESS",

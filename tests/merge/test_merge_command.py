@@ -120,6 +120,35 @@ def test_a_second_run_skips_what_has_not_changed(merge_folder):
     assert "4 made" in merge(merge_folder, data, "out", "--force").stdout, third.stdout
 
 
+def test_a_pdf_cut_short_is_made_again_and_a_killed_runs_temporaries_go(merge_folder):
+    """A power cut can leave a PDF whose key was written but whose bytes never reached the
+    disk: a resumed run keeps only PDFs that end whole. Temporaries a killed run left are
+    removed when the next run starts."""
+    data = write_csv(merge_folder / "customers.csv", rows(2))
+    assert merge(merge_folder, data).returncode == 0
+    out = merge_folder / "out"
+    whole = (out / "1001-Silva.pdf").read_bytes()
+    (out / "1001-Silva.pdf").write_bytes(whole[:len(whole) // 2])
+    leftover = out / ".1002-Müller.pdf.999999.0badcafe.floatpage-tmp"
+    leftover.write_bytes(b"half a PDF")
+    os.utime(leftover, (time.time() - 3600, time.time() - 3600))
+    again = merge(merge_folder, data)
+    assert "1 made, 1 unchanged" in again.stdout, again.stdout + again.stderr
+    assert (out / "1001-Silva.pdf").read_bytes() == whole
+    assert not leftover.exists()
+
+
+def test_an_output_hard_linked_elsewhere_is_replaced_not_written_through(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(1))
+    (merge_folder / "out").mkdir()
+    precious = merge_folder / "precious.pdf"
+    precious.write_bytes(b"%PDF-1.7 the user's own file")
+    os.link(precious, merge_folder / "out" / "1001-Silva.pdf")
+    assert merge(merge_folder, data).returncode == 0
+    assert precious.read_bytes() == b"%PDF-1.7 the user's own file"
+    assert (merge_folder / "out" / "1001-Silva.pdf").read_bytes().startswith(b"%PDF")
+
+
 def test_columns_the_template_needs_are_checked_before_any_work(merge_folder):
     columns = [c for c in COLUMNS if c != "price"] + ["unused"]
     data = write_csv(merge_folder / "customers.csv", [["1"] * len(columns)], columns)
