@@ -30,7 +30,11 @@ STATE_DIR = ".floatpage-merge"
 REPORT = "report.csv"
 COMBINED = "combined.pdf"
 UNSAFE = re.compile(r"[^\w.\-+=@,()\[\] ]+", re.UNICODE)
-MAX_NAME_CHARS = 120
+# File systems limit a name to 255 bytes; the temporary a file is written under adds ~40.
+MAX_NAME_BYTES = 120
+# Windows refuses these as a name's first part, whatever follows ("con.pdf", "lpt1.tar.pdf").
+WINDOWS_RESERVED = {"con", "prn", "aux", "nul", *(f"com{n}" for n in range(10)),
+                    *(f"lpt{n}" for n in range(10))}
 REPORT_COLUMNS = ("record", "line", "name", "status", "reason")
 
 
@@ -44,10 +48,15 @@ def name_fields(pattern: str | None) -> list[str]:
 
 
 def safe_name(text: str, number: int) -> str:
-    """A file name any file system takes: no separators, controls or leading dots."""
+    """A file name any file system takes: no separators, controls or leading dots, at most
+    MAX_NAME_BYTES in UTF-8, and no name Windows reserves for a device."""
     text = unicodedata.normalize("NFC", text)
     text = UNSAFE.sub("-", text).strip(" .-")
-    text = re.sub(r"\s+", " ", text)[:MAX_NAME_CHARS].strip(" .-")
+    text = re.sub(r"\s+", " ", text)
+    text = text.encode("utf-8")[:MAX_NAME_BYTES].decode("utf-8", "ignore").strip(" .-")
+    first, dot, rest = text.partition(".")
+    if first.rstrip().casefold() in WINDOWS_RESERVED:
+        text = f"{first.rstrip()}_{dot}{rest}"
     return text or f"record-{number:05d}"
 
 

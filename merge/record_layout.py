@@ -71,13 +71,13 @@ def check_picture(root: Path, relative: str, allow_outside: bool, use: FieldUse)
         raise RecordFailure(f"{use.where}: the picture's column is empty (mark the item "
                             "`drop_if_empty = true` to leave it out instead)")
     path = root / relative
+    if not allow_outside and is_outside(path, root):  # refused before a byte of it is read
+        raise RecordFailure(f'{use.where}: picture "{relative}" is outside {root}; copy it '
+                            "there, or allow it with --allow-outside-files")
     header = read_header(path)
     if header.problem:
         raise RecordFailure(f'{use.where}: picture "{relative}" {header.problem} '
                             f"(paths are relative to {root})")
-    if not allow_outside and is_outside(path, root):
-        raise RecordFailure(f'{use.where}: picture "{relative}" is outside {root}; copy it '
-                            "there, or allow it with --allow-outside-files")
 
 
 def reshape_to_picture(item, path: Path, page, use: FieldUse) -> None:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import stat
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -22,6 +23,7 @@ from floatpage.merge.placeholders import fill
 from floatpage.merge.pools import cores, dask_results, local_results
 from floatpage.merge.records import DataFile, Record
 from floatpage.merge.template import MergeTemplate
+from floatpage.model.picture_files import is_outside
 from floatpage.typeset.compile import engine_path
 from floatpage.typeset.pdf_split import concatenate
 
@@ -72,11 +74,33 @@ def auto_chunk_size(remaining: int, total: int, workers: int) -> int:
     return max(1, min(MAX_AUTO_CHUNK, max(floor, share)))
 
 
-def file_digest(path: Path) -> bytes:
+def open_regular(path: Path):
+    """`path` open for reading if it is a regular file, else None: a picture path from the
+    data may name a pipe (opening it would wait forever) or /dev/zero (it never ends)."""
     try:
-        return hashlib.sha256(path.read_bytes()).digest()
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     except OSError:
-        return b"missing"
+        return None
+    if not stat.S_ISREG(os.fstat(fd).st_mode):
+        os.close(fd)
+        return None
+    return os.fdopen(fd, "rb")
+
+
+def file_digest(path: Path) -> bytes:
+    handle = open_regular(path)
+    if handle is None:
+        return b"missing"  # the worker reports why, with the record
+    with handle:
+        return hashlib.file_digest(handle, "sha256").digest()
+
+
+def file_bytes(path: Path) -> bytes | None:
+    handle = open_regular(path)
+    if handle is None:
+        return None
+    with handle:
+        return handle.read()
 
 
 class Merge:
@@ -113,9 +137,14 @@ class Merge:
                 paths.append(page.background.picture)
             for path in paths:
                 if "{" not in path:
-                    found[path] = ((self.root / path).read_bytes() if self.options.ship_pictures
+                    found[path] = (file_bytes(self.root / path) if self.options.ship_pictures
                                    else None)
         return found
+
+    def readable(self, path: str) -> bool:
+        """Whether a picture path from the data may be read here: inside the template's
+        folder, or anywhere with --allow-outside-files (the worker says why not)."""
+        return self.template.allow_outside or not is_outside(self.root / path, self.root)
 
     def record_pictures(self, record: Record) -> list[str]:
         paths = []
@@ -130,8 +159,8 @@ class Merge:
 
     def digest(self, record: Record, name: str) -> str:
         values = json.dumps(record.values, sort_keys=True, ensure_ascii=False).encode("utf-8")
-        pictures = [path.encode() + file_digest(self.root / path)
-                    for path in self.record_pictures(record)]
+        pictures = [path.encode() + (file_digest(self.root / path) if self.readable(path)
+                                     else b"outside") for path in self.record_pictures(record)]
         return input_digest(self.template_digest.encode(), values, name.encode(), *pictures)
 
     def run(self, progress: Callable[[int, int, int], None] | None = None) -> MergeSummary:
@@ -198,10 +227,9 @@ class Merge:
             self.digests[record.number] = digest
             if self.options.ship_pictures:
                 for path in self.record_pictures(record):
-                    try:
-                        shipped[path] = (self.root / path).read_bytes()
-                    except OSError:
-                        pass  # the worker reports it missing, with the record
+                    data = file_bytes(self.root / path) if self.readable(path) else None
+                    if data is not None:  # else the worker reports why, with the record
+                        shipped[path] = data
         return ChunkTask(self.source, [record for record, _, _ in chunk],
                          [name for _, name, _ in chunk], self.toml_prefix, shipped)
 

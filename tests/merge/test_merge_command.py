@@ -159,6 +159,29 @@ def test_columns_the_template_needs_are_checked_before_any_work(merge_folder):
     assert not (merge_folder / "out").exists()
 
 
+def test_picture_paths_from_the_data_never_read_devices_pipes_or_outside(merge_folder):
+    """A path column may name /dev/zero (reading it never ends), a pipe (opening it waits
+    forever) or a file outside the template's folder: each record fails alone, at once, and
+    nothing outside the folder is read, also when pictures are shipped to the workers."""
+    template = merge_folder / "offer.toml"
+    template.write_text(template.read_text(encoding="utf-8").replace(
+        'path = "pictures/{photo}"', 'path = "{photo}"'), encoding="utf-8")
+    os.mkfifo(merge_folder / "pipe.png")
+    secret = merge_folder.parent / "secret.png"
+    secret.write_bytes((merge_folder / "pictures" / "pears.png").read_bytes())
+    paths = ["/dev/zero", "pipe.png", "../secret.png", "/etc/passwd", "pictures/pears.png"]
+    records = rows(len(paths))
+    for record, path in zip(records, paths):
+        record[5] = path
+    data = write_csv(merge_folder / "customers.csv", records)
+    for out, extra in (("shared", []), ("ship", ["--pictures", "ship"])):
+        done = merge(merge_folder, data, out, *extra)
+        assert done.returncode == 3, done.stderr
+        reasons = [row["reason"] for row in report(merge_folder, out)]
+        assert "outside" in reasons[0] and "outside" in reasons[2] and "outside" in reasons[3]
+        assert "not a regular file" in reasons[1] and reasons[4] == ""
+
+
 def test_user_text_is_set_as_text_never_run_as_latex(merge_folder):
     hostile = ["7", r"\input{/etc/passwd}", "x", r"\directlua{os.exit(1)} $x$ 100% #1 ~ ^ _ &",
                "{price}", "pears.png", r"}\end{document}", "1 June"]
@@ -267,6 +290,18 @@ def engines_in_build_folders(parent: Path) -> list[int]:
             except OSError:
                 pass
     return found
+
+
+def test_a_pipe_gets_plain_progress_lines_and_the_end_once(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(3))
+    done = subprocess.run([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
+                           "-o", str(merge_folder / "out")], capture_output=True, text=True,
+                          timeout=600)
+    assert done.returncode == 0, done.stderr
+    lines = [line for line in done.stderr.splitlines() if line.startswith("merge: ")]
+    assert lines and lines[-1].startswith("merge: 3/3 records, 0 failed, ")
+    assert "records/s, ETA 0 s" in lines[-1] and len(lines) == len(set(lines))
+    assert "\x1b" not in done.stderr  # no terminal codes in a pipe
 
 
 def test_a_terminal_gets_a_progress_bar_with_rate_and_eta(merge_folder):
