@@ -293,11 +293,14 @@ def engines_in_build_folders(parent: Path) -> list[int]:
 
 
 def test_a_pipe_gets_plain_progress_lines_and_the_end_once(merge_folder):
-    data = write_csv(merge_folder / "customers.csv", rows(3))
+    """Also: a column no placeholder uses is noted before any work."""
+    data = write_csv(merge_folder / "customers.csv", [row + ["gold"] for row in rows(3)],
+                     COLUMNS + ["loyalty"])
     done = subprocess.run([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
                            "-o", str(merge_folder / "out")], capture_output=True, text=True,
                           timeout=600)
     assert done.returncode == 0, done.stderr
+    assert done.stderr.startswith("note: column 'loyalty' of ") and "no placeholder" in done.stderr
     lines = [line for line in done.stderr.splitlines() if line.startswith("merge: ")]
     assert lines and lines[-1].startswith("merge: 3/3 records, 0 failed, ")
     assert "records/s, ETA 0 s" in lines[-1] and len(lines) == len(set(lines))
