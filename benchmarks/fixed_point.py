@@ -22,7 +22,7 @@ from floatpage import starters
 from floatpage.model import load_project, save_project
 from floatpage.model.document import BlockItem, Page, Project
 from floatpage.model.layout import engine_for_page, settle_project
-from floatpage.physics.scenes import Scene, big_item_scene, dropped_scene, mixed_scene
+from seeded_scenes import Scene, big_item_scene, dropped_scene, mixed_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 LETTER = (215.9, 279.4)

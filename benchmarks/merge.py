@@ -15,6 +15,7 @@ from 1:3 to 3:1, with the sample template sample_projects/merge-offers/offer.tom
 from __future__ import annotations
 
 import argparse
+import os
 import shutil
 import subprocess
 import sys
@@ -86,6 +87,12 @@ def peak_memory(folder: Path, records: int) -> tuple[float, float]:
     return peak / 1024, time.perf_counter() - started
 
 
+def load() -> str:
+    """How busy the machine is: its ratios hold within one run, its seconds do not."""
+    one, five, _ = os.getloadavg()
+    return f"load {one:.1f} (5 min {five:.1f}) on {os.cpu_count()} cores"
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--records", type=int, default=1000)
@@ -108,19 +115,22 @@ def main() -> None:
         write_customers(data, args.records, pictures)
         merge_run(folder, data, "warm-up", "--force")  # fonts and picture caches, as in use
         shutil.rmtree(folder / "warm-up")
+        print(f"start: {load()}", flush=True)
         naive = naive_renders(folder, data, args.naive)
         naive_rate = args.naive / naive
-        print(f"naive loop: {args.naive} renders in {naive:.1f} s = {naive_rate:.2f} records/s")
+        print(f"naive loop: {args.naive} renders in {naive:.1f} s = {naive_rate:.2f} records/s "
+              f"({load()})", flush=True)
         local = merge_run(folder, data, "local")
         local_rate = args.records / local
         print(f"merge, local pool: {args.records} records in {local:.1f} s = {local_rate:.2f} "
-              f"records/s, {local_rate / naive_rate:.1f}x the naive loop")
+              f"records/s, {local_rate / naive_rate:.1f}x the naive loop ({load()})", flush=True)
         again = merge_run(folder, data, "local")
         print(f"merge again, nothing changed: {again:.1f} s (every record skipped)")
         if args.dask:
             dask = merge_run(folder, data, "dask", "--dask", "local")
             print(f"merge, --dask local: {args.records} records in {dask:.1f} s = "
-                  f"{args.records / dask:.2f} records/s, {dask / local:.2f}x the local pool's time")
+                  f"{args.records / dask:.2f} records/s, {dask / local:.2f}x the local pool's time "
+                  f"({load()})", flush=True)
             same = all((folder / "dask" / p.name).read_bytes() == p.read_bytes()
                        for p in (folder / "local").glob("*.pdf"))
             print(f"dask PDFs byte-identical to the local pool's: {same}")

@@ -38,7 +38,7 @@ import numpy as np
 
 from floatpage.physics import Engine, Params, measure_quality
 from floatpage.physics.params import A4_W_MM
-from floatpage.physics.scenes import Scene, big_item_scene, dropped_scene, load, mixed_scene
+from seeded_scenes import Scene, big_item_scene, dropped_scene, load, mixed_scene
 
 FRAME_RATE = 30  # the editor's frames per second
 try:  # the editor's physics budget per frame, so the live figures follow the editor

@@ -23,7 +23,7 @@ def run_scene(name: str) -> dict:
     import numpy as np
 
     from floatpage.physics import Engine, Params
-    from floatpage.physics.scenes import load, mixed_scene
+    from seeded_scenes import load, mixed_scene
 
     if name.startswith("10,000"):
         scene = mixed_scene(10_000, 0.3, seed=1)

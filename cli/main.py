@@ -16,12 +16,11 @@ from pathlib import Path
 from typing import Callable, Iterator, Sequence
 
 from floatpage.model.errors import FloatpageError, printable
-from floatpage.model.schema import CALENDAR_LANGUAGES
+from floatpage.model.key_specs import CALENDAR_LANGUAGES, WEEKDAYS
 
 EXIT_OK, EXIT_USER_ERROR, EXIT_MISUSE = 0, 1, 2
 EXIT_INTERNAL_ERROR = 70  # sysexits' EX_SOFTWARE: a bug of ours, never the user's mistake
 STARTER_KINDS = ("blank", "calendar", "card", "album", "flyer")
-WEEKDAY_NAMES = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
 
 
 @contextlib.contextmanager
@@ -246,7 +245,7 @@ def build_parser() -> argparse.ArgumentParser:
     new.add_argument("path", help="the .toml file to create (refuses to overwrite)")
     new.add_argument("--year", type=int, help="calendar year (default: next year)")
     new.add_argument("--photos", metavar="DIR", help="use the pictures in DIR")
-    new.add_argument("--first-weekday", choices=WEEKDAY_NAMES, default="monday")
+    new.add_argument("--first-weekday", choices=WEEKDAYS, default="monday")
     new.add_argument("--lang", default="en", choices=CALENDAR_LANGUAGES,
                      help="language of month and day names")
     new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait")

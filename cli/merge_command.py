@@ -43,8 +43,8 @@ def add_merge_parser(commands, allow_outside_option) -> None:
     merge.add_argument("--force", action="store_true",
                        help="redo every record, even those whose inputs have not changed")
     merge.add_argument("--chunk-size", type=positive, default=None, metavar="N",
-                       help="records per LuaLaTeX run (default: up to 32, fewer for short data "
-                            "so every worker has work); the PDFs do not depend on it")
+                       help="records per LuaLaTeX run (default: up to 128, fewer towards the "
+                            "end so every worker has work); the PDFs do not depend on it")
     merge.add_argument("--workers", type=positive, default=None, metavar="N",
                        help="worker processes (default: one per core)")
     merge.add_argument("--dask", metavar="ADDRESS",
@@ -92,6 +92,7 @@ class merge_progress:
         self.bar = None
         self.started = time.monotonic()
         self.last_line = 0.0
+        self.last_done = -1
 
     def __enter__(self) -> Callable[[int, int, int], None]:
         if not self.quiet and sys.stderr.isatty():
@@ -118,8 +119,10 @@ class merge_progress:
                             failed=failed)
             return
         now = time.monotonic()
+        if done == self.last_done:
+            return  # the end is reported once, though the run reports it again when done
         if now - self.last_line >= self.PLAIN_EVERY_S or done == total:
-            self.last_line = now
+            self.last_line, self.last_done = now, done
             left = (total - done) / rate if rate > 0 else 0
             print(f"merge: {done}/{total} records, {failed} failed, {rate:.1f} records/s, "
                   f"ETA {left:.0f} s", file=sys.stderr, flush=True)

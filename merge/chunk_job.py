@@ -20,7 +20,7 @@ from floatpage.merge.template import MergeTemplate
 from floatpage.model.errors import FloatpageError
 from floatpage.model.save import dump_project
 from floatpage.typeset.batch import typeset_batch
-from floatpage.typeset.scene import build_scene
+from floatpage.typeset.placed import place_document
 from floatpage.typeset.text_layout import DOES_NOT_FIT_HINT
 
 
@@ -87,7 +87,7 @@ def run_chunk(task: ChunkTask) -> list[RecordResult]:
     template, root = template_on_worker(task.template)
     if task.shipped:
         unpack(root, task.shipped)
-    results, scenes, made = [], [], []
+    results, documents, made = [], [], []
     for record, name in zip(task.records, task.names):
         result = RecordResult(record.number, record.line, name)
         results.append(result)
@@ -96,42 +96,57 @@ def run_chunk(task: ChunkTask) -> list[RecordResult]:
             continue
         try:
             project = lay_out_record(template, record.values, root)
-            scene = build_scene(project)
+            document = place_document(project)
         except RecordFailure as failure:
             result.reason = str(failure)
             continue
         except FloatpageError as error:
             result.reason = str(error)
             continue
-        too_long = [w for w in scene.warnings if w.endswith(DOES_NOT_FIT_HINT)]
+        too_long = [w for w in document.warnings if w.endswith(DOES_NOT_FIT_HINT)]
         if too_long:
             result.reason = too_long[0]
             continue
-        result.warnings = list(scene.warnings)
-        result.pages = len(scene.pages)
+        result.warnings = list(document.warnings)
+        result.pages = len(document.pages)
         if task.toml_picture_prefix is not None:
             result.toml = record_toml(project, task.toml_picture_prefix)
-        scenes.append(scene)
+        documents.append(document)
         made.append(result)
-    typeset_chunk(scenes, made)
+    typeset_chunk(documents, made)
     return results
 
 
-def typeset_chunk(scenes: list, results: list[RecordResult]) -> None:
-    """One engine run for all; if it fails, one run per record, so only the bad one fails."""
-    if not scenes:
+def typeset_chunk(documents: list, results: list[RecordResult]) -> None:
+    """One engine run for all; if it fails, each half is run again, and so on down to the
+    records that fail alone: a bad record in a chunk of 128 costs 15 runs, not 128."""
+    if not documents:
         return
     try:
-        pdfs = typeset_batch(scenes)
+        pdfs = typeset_batch(documents)
     except FloatpageError as error:
-        if len(scenes) == 1:
-            results[0].reason = f"LuaLaTeX could not typeset it: {error}"
+        if len(documents) == 1:
+            results[0].reason = engine_failure(error, documents[0])
         else:
-            for scene, result in zip(scenes, results):
-                typeset_chunk([scene], [result])
+            half = len(documents) // 2
+            typeset_chunk(documents[:half], results[:half])
+            typeset_chunk(documents[half:], results[half:])
         return
     for result, pdf in zip(results, pdfs):
         result.pdf = pdf
+
+
+def engine_failure(error: FloatpageError, document) -> str:
+    """A record's failed engine run, for report.csv: the log's errors with their items (the
+    log itself went with the build folder, so its path is left out). An error LuaTeX reports
+    at shipout (a damaged picture) lies in no item: then the record's pictures are named."""
+    errors = getattr(error, "errors", None)
+    if not errors:
+        return f"LuaLaTeX could not typeset it: {error}"
+    reason = "LuaLaTeX could not typeset it: " + "; ".join(str(found) for found in errors)
+    if not any(found.item for found in errors) and document.pictures:
+        reason += " (its pictures: " + ", ".join(str(plan.source) for plan in document.pictures) + ")"
+    return reason
 
 
 def record_toml(project, prefix: str) -> str:

@@ -1,9 +1,15 @@
 """Where a merge writes: one folder, names made safe and unique, nothing half-written.
 
-Every file is written whole to a temporary name and renamed (model.save.atomic_write), so
-Ctrl+C or a kill never leaves a partial PDF at an output path. A record's input digest is
-kept in `.floatpage-merge/NAME.key`, written after its PDF: a second run skips a record
-whose digest and outputs are unchanged.
+Every file is written whole to a temporary name and renamed (write_whole), so Ctrl+C or a
+kill never leaves a partial PDF at an output path. A record's input digest is kept in
+`.floatpage-merge/NAME.key`, written after its PDF: a second run skips a record whose
+digest and outputs are unchanged.
+
+Not model.save.atomic_write, which suits one project file: it flushes every file and its
+folder to disk (16 ms a record here) and lists the folder for a killed save's leftovers on
+every write, which grows with the folder (34 ms a file at 20,000 PDFs). A merge lists its
+folders for leftovers once, when it starts, and flushes the disk once, when it ends; a
+resumed run keeps a PDF only if it ends whole, so a power cut in between costs a redo.
 """
 
 from __future__ import annotations
@@ -11,18 +17,24 @@ from __future__ import annotations
 import csv
 import os
 import re
+import secrets
+import time
 import unicodedata
 from pathlib import Path
 
 from floatpage.merge.placeholders import PlaceholderError, fields_in, fill
 from floatpage.model.errors import FloatpageError
-from floatpage.model.save import atomic_write
+from floatpage.model.atomic_file import STALE_AFTER_S, TEMPORARY_SUFFIX
 
 STATE_DIR = ".floatpage-merge"
 REPORT = "report.csv"
 COMBINED = "combined.pdf"
 UNSAFE = re.compile(r"[^\w.\-+=@,()\[\] ]+", re.UNICODE)
-MAX_NAME_CHARS = 120
+# File systems limit a name to 255 bytes; the temporary a file is written under adds ~40.
+MAX_NAME_BYTES = 120
+# Windows refuses these as a name's first part, whatever follows ("con.pdf", "lpt1.tar.pdf").
+WINDOWS_RESERVED = {"con", "prn", "aux", "nul", *(f"com{n}" for n in range(10)),
+                    *(f"lpt{n}" for n in range(10))}
 REPORT_COLUMNS = ("record", "line", "name", "status", "reason")
 
 
@@ -36,10 +48,15 @@ def name_fields(pattern: str | None) -> list[str]:
 
 
 def safe_name(text: str, number: int) -> str:
-    """A file name any file system takes: no separators, controls or leading dots."""
+    """A file name any file system takes: no separators, controls or leading dots, at most
+    MAX_NAME_BYTES in UTF-8, and no name Windows reserves for a device."""
     text = unicodedata.normalize("NFC", text)
     text = UNSAFE.sub("-", text).strip(" .-")
-    text = re.sub(r"\s+", " ", text)[:MAX_NAME_CHARS].strip(" .-")
+    text = re.sub(r"\s+", " ", text)
+    text = text.encode("utf-8")[:MAX_NAME_BYTES].decode("utf-8", "ignore").strip(" .-")
+    first, dot, rest = text.partition(".")
+    if first.rstrip().casefold() in WINDOWS_RESERVED:
+        text = f"{first.rstrip()}_{dot}{rest}"
     return text or f"record-{number:05d}"
 
 
@@ -66,6 +83,47 @@ class Names:
         return name
 
 
+def write_whole(path: Path, data: bytes) -> None:
+    """`data` at `path`, whole or not at all: written to a hidden temporary beside it, then
+    renamed over it (a link at `path` is replaced, never written through)."""
+    temporary: Path | None = path.with_name(
+        f".{path.name}.{os.getpid()}.{secrets.token_hex(4)}{TEMPORARY_SUFFIX}")
+    try:
+        with open(temporary, "xb") as handle:
+            handle.write(data)
+        os.replace(temporary, path)
+        temporary = None
+    except OSError as error:
+        raise FloatpageError(f"{path}: could not write it ({error.strerror or error}); check "
+                             "that the output folder is writable and the disk not full") from None
+    finally:  # also on Ctrl+C: no temporary stays behind
+        if temporary is not None:
+            temporary.unlink(missing_ok=True)
+
+
+def remove_leftovers(folder: Path, *, now: float | None = None) -> None:
+    """Temporaries of a merge that was killed (SIGKILL, a power cut): older than a write."""
+    now = time.time() if now is None else now
+    for entry in os.scandir(folder):
+        if entry.name.startswith(".") and entry.name.endswith(TEMPORARY_SUFFIX):
+            try:
+                if entry.is_file(follow_symlinks=False) and \
+                        now - entry.stat(follow_symlinks=False).st_mtime > STALE_AFTER_S:
+                    os.unlink(entry.path)
+            except OSError:
+                pass
+
+
+def ends_whole(pdf: Path) -> bool:
+    """Whether a PDF ends as a written one does (its last bytes hold %%EOF)."""
+    try:
+        with pdf.open("rb") as handle:
+            handle.seek(max(0, pdf.stat().st_size - 32))
+            return b"%%EOF" in handle.read()
+    except OSError:
+        return False
+
+
 class OutputFolder:
     def __init__(self, folder: Path, inputs: list[Path]):
         self.folder = Path(folder)
@@ -77,6 +135,8 @@ class OutputFolder:
         except OSError as error:
             raise FloatpageError(f"{self.folder}: cannot create the output folder "
                                  f"({error.strerror})") from None
+        remove_leftovers(self.folder)
+        remove_leftovers(self.folder / STATE_DIR)
         self.inputs = {self.key(path) for path in inputs}
         for fixed in (self.folder / REPORT, self.folder / COMBINED):
             problem = self.refuse(fixed)
@@ -102,7 +162,7 @@ class OutputFolder:
                 return False
         except (OSError, UnicodeDecodeError):
             return False
-        return self.pdf(name).is_file() and (not with_toml or self.toml(name).is_file())
+        return ends_whole(self.pdf(name)) and (not with_toml or self.toml(name).is_file())
 
     def refuse(self, path: Path) -> str:
         """Why `path` may not be written ("" if it may): never an input, link or device."""
@@ -125,9 +185,14 @@ class OutputFolder:
                 return problem
         self.digest_file(name).unlink(missing_ok=True)  # stale until all its files are new
         for path, data in targets:
-            atomic_write(path, data, backup=False)
-        atomic_write(self.digest_file(name), digest.encode("ascii"), backup=False)
+            write_whole(path, data)
+        write_whole(self.digest_file(name), digest.encode("ascii"))
         return ""
+
+    @staticmethod
+    def flush() -> None:
+        """Everything written so far to the disk, once per run rather than once per file."""
+        os.sync()
 
 
 class Report:

@@ -12,11 +12,11 @@ from pathlib import Path
 from typing import Mapping
 
 from floatpage.merge.placeholders import fill
+from floatpage.merge.settled_layouts import SettledLayouts
 from floatpage.merge.template import FieldUse, MergeTemplate
 from floatpage.model import Project
 from floatpage.model.document import ItemAnchor, MAX_TEXT_CHARS
 from floatpage.model.errors import FloatpageError
-from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.model.picture_files import is_outside, read_header
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.pictures import plan_picture
@@ -71,13 +71,13 @@ def check_picture(root: Path, relative: str, allow_outside: bool, use: FieldUse)
         raise RecordFailure(f"{use.where}: the picture's column is empty (mark the item "
                             "`drop_if_empty = true` to leave it out instead)")
     path = root / relative
+    if not allow_outside and is_outside(path, root):  # refused before a byte of it is read
+        raise RecordFailure(f'{use.where}: picture "{relative}" is outside {root}; copy it '
+                            "there, or allow it with --allow-outside-files")
     header = read_header(path)
     if header.problem:
         raise RecordFailure(f'{use.where}: picture "{relative}" {header.problem} '
                             f"(paths are relative to {root})")
-    if not allow_outside and is_outside(path, root):
-        raise RecordFailure(f'{use.where}: picture "{relative}" is outside {root}; copy it '
-                            "there, or allow it with --allow-outside-files")
 
 
 def reshape_to_picture(item, path: Path, page, use: FieldUse) -> None:
@@ -95,22 +95,17 @@ def reshape_to_picture(item, path: Path, page, use: FieldUse) -> None:
     item.w, item.h = w * shrink, h * shrink
 
 
-def settle_and_gate(project: Project) -> None:
+# One per process: pages of the same geometry settle once (see settled_layouts.py).
+SETTLED = SettledLayouts()
+
+
+def settle_and_gate(project: Project, layouts: SettledLayouts = SETTLED) -> None:
     """Settle every page from the template's positions (anchors kept), then demand no
     overlap and nothing off the page."""
-    settle_project(project)
     for page in project.pages:
-        quality = engine_for_page(page, project.physics).quality()
-        if quality.overlapping_pairs:
-            a, b = quality.overlapping_pairs[0]
-            ids = page.item_ids()
-            raise RecordFailure(f'page "{page.id}": items "{ids[a]}" and "{ids[b]}" still overlap '
-                                f"after settling ({quality.overlap_count} pair(s)); "
-                                "the page is too full for this record's content")
-        if quality.off_page:
-            ids = page.item_ids()
-            raise RecordFailure(f'page "{page.id}": item "{ids[quality.off_page[0]]}" lies off '
-                                "the page after settling")
+        problem = layouts.settle(page, project.physics)
+        if problem:
+            raise RecordFailure(problem)
 
 
 def lay_out_record(template: MergeTemplate, values: Mapping[str, str],

@@ -16,7 +16,12 @@ from typing import Iterator
 
 from floatpage.model.errors import FloatpageError
 
-csv.field_size_limit(1 << 20)  # one cell may hold a long text; a whole file may not
+# A value longer than MAX_VALUE_CHARS fails its record alone (no text may hold it). Python's
+# csv reader cannot step past a field over its own limit without losing its place in quoted
+# lines, so that limit is far higher, and a field beyond it stops the run, naming the line.
+MAX_VALUE_CHARS = 1 << 20
+READ_LIMIT_CHARS = 64 << 20
+csv.field_size_limit(READ_LIMIT_CHARS)
 
 
 @dataclass
@@ -84,23 +89,42 @@ class DataFile:
 
     def csv_records(self) -> Iterator[Record]:
         with self.open() as handle:
-            reader = csv.reader(handle)
+            reader = csv.reader(handle, strict=True)
             header = [name.strip() for name in next(reader, [])]
             number = 0
-            line = reader.line_num + 1
-            for row in reader:
-                if not any(cell.strip() for cell in row):
-                    line = reader.line_num + 1
+            for row, line, problem in self.rows(reader):
+                if not problem and not any(cell.strip() for cell in row):
                     continue  # blank lines separate nothing
                 number += 1
-                record = Record(number, line)
+                record = Record(number, line, problem=problem)
                 if len(row) > len(header):
                     record.problem = (f"the row has {len(row)} fields but the header names "
                                       f"{len(header)} columns (a comma in a value needs quotes)")
                 record.values = {name: (row[index] if index < len(row) else "")
                                  for index, name in enumerate(header)}
-                yield record
-                line = reader.line_num + 1
+                yield too_long_values_dropped(record)
+
+    def rows(self, reader) -> Iterator[tuple[list[str], int, str]]:
+        """(row, the line it starts on, "" or why it cannot be read). A row the reader
+        refuses (`"a"b`) fails alone: the reader goes on from the next line, in step. A quote
+        left open swallows the rest of the file, and a field beyond READ_LIMIT_CHARS leaves the
+        reader out of step: both end the run, naming the line where that row starts."""
+        while True:
+            line = reader.line_num + 1
+            try:
+                row = next(reader)
+            except StopIteration:
+                return
+            except csv.Error as error:
+                if "unexpected end of data" in str(error) or "field limit" in str(error):
+                    raise FloatpageError(
+                        f"{self.path}, line {line}: not readable as CSV ({error}): a quote "
+                        "that opens there never closes, so the rest of the file would be one "
+                        "value; close the quote, or quote the whole value") from None
+                yield [], line, (f"not readable as CSV ({error}); a value with a quote in "
+                                 'it must be quoted whole, its quotes doubled: "say ""hi"""')
+                continue
+            yield row, line, ""
 
     def json_records(self) -> Iterator[Record]:
         with self.open() as handle:
@@ -126,4 +150,16 @@ class DataFile:
                                          "give a string or a number"
                     record.values[str(key)] = "" if value is None else (
                         ("true" if value else "false") if isinstance(value, bool) else str(value))
-                yield record
+                yield too_long_values_dropped(record)
+
+
+def too_long_values_dropped(record: Record) -> Record:
+    """A value no text could hold fails its record, and is dropped rather than carried along
+    to a worker."""
+    for name, value in record.values.items():
+        if len(value) > MAX_VALUE_CHARS:
+            record.problem = record.problem or (
+                f"column {name!r} holds {len(value):,} characters, more than a value may hold "
+                f"({MAX_VALUE_CHARS:,}); is a quote in that row left open?")
+            record.values[name] = ""
+    return record

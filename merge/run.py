@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import stat
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -22,6 +23,7 @@ from floatpage.merge.placeholders import fill
 from floatpage.merge.pools import cores, dask_results, local_results
 from floatpage.merge.records import DataFile, Record
 from floatpage.merge.template import MergeTemplate
+from floatpage.model.picture_files import is_outside
 from floatpage.typeset.compile import engine_path
 from floatpage.typeset.pdf_split import concatenate
 
@@ -56,20 +58,49 @@ class MergeSummary:
     report: Path | None = None
 
 
-# An engine run costs about 0.8 s to start and 0.1 s a record: 32 records make the start-up
-# a fifth of the work. Fewer records per run when there are too few to keep every worker busy.
-MAX_AUTO_CHUNK = 32
+# An engine run costs about 0.5 s to start and a record 40-60 ms more, and the records of
+# one run share font subsets (typeset.batch.FontSlots) while a worker settles each page
+# geometry once: the longer the run, the cheaper each record. So runs of up to 128 records,
+# but at most a quarter of each worker's share of the records still to come, so that the
+# last runs are short and no worker waits long for another to finish (guided scheduling).
+# The PDFs do not depend on where a chunk starts or ends.
+MAX_AUTO_CHUNK = 128
+MIN_AUTO_CHUNK = 16
 
 
-def auto_chunk_size(records: int, workers: int) -> int:
-    return max(1, min(MAX_AUTO_CHUNK, -(-records // (2 * workers))))
+def auto_chunk_size(remaining: int, total: int, workers: int) -> int:
+    share = -(-remaining // (2 * workers))
+    floor = min(MIN_AUTO_CHUNK, -(-total // (2 * workers)))
+    return max(1, min(MAX_AUTO_CHUNK, max(floor, share)))
+
+
+def open_regular(path: Path):
+    """`path` open for reading if it is a regular file, else None: a picture path from the
+    data may name a pipe (opening it would wait forever) or /dev/zero (it never ends)."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    except OSError:
+        return None
+    if not stat.S_ISREG(os.fstat(fd).st_mode):
+        os.close(fd)
+        return None
+    return os.fdopen(fd, "rb")
 
 
 def file_digest(path: Path) -> bytes:
-    try:
-        return hashlib.sha256(path.read_bytes()).digest()
-    except OSError:
-        return b"missing"
+    handle = open_regular(path)
+    if handle is None:
+        return b"missing"  # the worker reports why, with the record
+    with handle:
+        return hashlib.file_digest(handle, "sha256").digest()
+
+
+def file_bytes(path: Path) -> bytes | None:
+    handle = open_regular(path)
+    if handle is None:
+        return None
+    with handle:
+        return handle.read()
 
 
 class Merge:
@@ -106,9 +137,14 @@ class Merge:
                 paths.append(page.background.picture)
             for path in paths:
                 if "{" not in path:
-                    found[path] = ((self.root / path).read_bytes() if self.options.ship_pictures
+                    found[path] = (file_bytes(self.root / path) if self.options.ship_pictures
                                    else None)
         return found
+
+    def readable(self, path: str) -> bool:
+        """Whether a picture path from the data may be read here: inside the template's
+        folder, or anywhere with --allow-outside-files (the worker says why not)."""
+        return self.template.allow_outside or not is_outside(self.root / path, self.root)
 
     def record_pictures(self, record: Record) -> list[str]:
         paths = []
@@ -123,8 +159,8 @@ class Merge:
 
     def digest(self, record: Record, name: str) -> str:
         values = json.dumps(record.values, sort_keys=True, ensure_ascii=False).encode("utf-8")
-        pictures = [path.encode() + file_digest(self.root / path)
-                    for path in self.record_pictures(record)]
+        pictures = [path.encode() + (file_digest(self.root / path) if self.readable(path)
+                                     else b"outside") for path in self.record_pictures(record)]
         return input_digest(self.template_digest.encode(), values, name.encode(), *pictures)
 
     def run(self, progress: Callable[[int, int, int], None] | None = None) -> MergeSummary:
@@ -137,11 +173,14 @@ class Merge:
         done_names: list[str] = []
         show = progress or (lambda done, total, failed: None)
         workers = options.workers or cores()
-        chunk_size = options.chunk_size or auto_chunk_size(total, workers)
+
+        def chunk_size(records_read: int) -> int:
+            return options.chunk_size or auto_chunk_size(total - records_read, total, workers)
 
         def tasks() -> Iterator[ChunkTask]:
             chunk: list[tuple[Record, str, str]] = []
             names = Names(options.name)
+            size = chunk_size(0)
             for record in self.data.records():
                 name = names.name_for(record.number, record.values)
                 if record.problem:
@@ -153,9 +192,10 @@ class Merge:
                     summary.unchanged += 1
                     continue
                 chunk.append((record, name, digest))
-                if len(chunk) >= chunk_size:
+                if len(chunk) >= size:
                     yield self.task(chunk)
                     chunk = []
+                    size = chunk_size(record.number)
             if chunk:
                 yield self.task(chunk)
 
@@ -171,6 +211,7 @@ class Merge:
             results.close()  # now, not when the traceback lets go: stops the pool's workers
             ordered.flush_all()
             report.save()
+            self.out.flush()
             summary.failed = report.failed
             summary.seconds = time.perf_counter() - started
         show(total, total, report.failed)
@@ -186,10 +227,9 @@ class Merge:
             self.digests[record.number] = digest
             if self.options.ship_pictures:
                 for path in self.record_pictures(record):
-                    try:
-                        shipped[path] = (self.root / path).read_bytes()
-                    except OSError:
-                        pass  # the worker reports it missing, with the record
+                    data = file_bytes(self.root / path) if self.readable(path) else None
+                    if data is not None:  # else the worker reports why, with the record
+                        shipped[path] = data
         return ChunkTask(self.source, [record for record, _, _ in chunk],
                          [name for _, name, _ in chunk], self.toml_prefix, shipped)
 

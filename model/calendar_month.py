@@ -9,9 +9,7 @@ from __future__ import annotations
 
 import calendar
 
-from floatpage.model.document import WEEKDAYS
-
-LANGUAGES = ("en", "de", "fr", "es", "it", "pt", "nl")
+from floatpage.model.key_specs import CALENDAR_LANGUAGES as LANGUAGES, WEEKDAYS
 
 MONTH_NAMES: dict[str, tuple[str, ...]] = {
     "en": ("January", "February", "March", "April", "May", "June", "July", "August",

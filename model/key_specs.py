@@ -18,7 +18,8 @@ HEX_COLOUR = re.compile(r"^#[0-9a-fA-F]{6}$")
 CALENDAR_LANGUAGES = ("en", "de", "fr", "es", "it", "pt", "nl")
 FONT_FAMILIES = ("serif", "sans", "display")
 WEEKDAYS = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
-PICTURE_SUFFIXES = (".png", ".jpg", ".jpeg", ".pdf", ".webp", ".gif", ".bmp", ".tif", ".tiff")
+# What the typesetter reads: JPEG, PNG and PDF go to LaTeX as they are, the rest are converted.
+PICTURE_SUFFIXES = (".jpg", ".jpeg", ".png", ".pdf", ".webp", ".gif", ".bmp", ".tif", ".tiff")
 MAX_TITLE_CHARS = 1_000  # a title is PDF metadata; 200,000 characters overflowed TeX's line buffer
 MAX_TEXT_CHARS = 20_000  # a poster's worth; 1 MB of text drove LuaLaTeX to 2.5 GB
 

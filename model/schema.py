@@ -58,3 +58,20 @@ KIND_KEYS = {kind: keys_of(cls, skip=tuple(key.name for key in _BASE))
              for kind, cls in ITEM_CLASSES.items()}
 POINT_ANCHOR_KEYS = keys_of(PointAnchor)
 ITEM_ANCHOR_KEYS = keys_of(ItemAnchor)
+
+
+def complaints(obj: Any) -> list[tuple[str, str]]:
+    """(field, what is wrong) for each value of a model object that its field's spec refuses:
+    the loader's own checks, for objects built in code (the editor, merge) rather than read from
+    a file. Nested tables (an item's anchor) are not walked."""
+    found = []
+    for key in keys_of(type(obj)):
+        value = getattr(obj, key.name)
+        if key.kind == "table" or value is None:
+            continue
+        if not type_matches(key.kind, value):
+            found.append((key.name, f"must be {TYPE_WORDS[key.kind]}, not {value!r}"))
+        elif key.check is not None and (complaint := key.check(value)):
+            found.append((key.name, complaint))
+    return found
+

@@ -16,10 +16,11 @@ from pathlib import Path
 from PIL import Image, UnidentifiedImageError
 
 from floatpage.model.errors import FloatpageError
+from floatpage.model.key_specs import PICTURE_SUFFIXES
 
 PICTURES_DIR = "pictures"
-# What the typesetter accepts: JPEG and PNG go to LaTeX as they are, the rest are converted.
-ACCEPTED_SUFFIXES = (".jpg", ".jpeg", ".png", ".webp", ".gif", ".bmp", ".tif", ".tiff")
+# What the typesetter reads, but PDFs: a starter measures its photos' pixels.
+ACCEPTED_SUFFIXES = tuple(suffix for suffix in PICTURE_SUFFIXES if suffix != ".pdf")
 EXIF_ORIENTATION = 0x0112
 ROTATED_ORIENTATIONS = (5, 6, 7, 8)  # EXIF values that turn the picture a quarter turn
 

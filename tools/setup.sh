@@ -47,7 +47,7 @@ fi
 # floatpage.physics -> physics/ and so on. It links files, not folders, so a new or removed
 # module means installing again; the stamp holds the list of files it was made from.
 stamp=.venv/.floatpage-installed
-package_files=$(find physics model typeset tui cli starters latex_templates -type f \
+package_files=$(find physics model typeset tui cli starters latex_templates merge -type f \
   \( -name '*.py' -o -name '*.j2' -o -name '*.tcss' -o -path 'starters/bundled/*' \) | LC_ALL=C sort)
 if [[ ! -f $stamp || pyproject.toml -nt $stamp ]]; then
   echo "setup: installing Python packages into .venv"

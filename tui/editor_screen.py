@@ -12,16 +12,18 @@ from __future__ import annotations
 
 import datetime
 import math
-
 import time
+from functools import partial
 from pathlib import Path
+from typing import Callable, TypeVar
 
 from rich.markup import escape
 from rich.text import Text
 from textual import work
 from textual.app import ComposeResult
 from textual.reactive import reactive
-from textual.screen import Screen
+from textual.screen import ModalScreen, Screen
+from textual.timer import Timer
 from textual.widgets import Footer, Label
 
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
@@ -30,7 +32,7 @@ from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.frame_meter import FrameMeter
 from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank, in_footer
-from floatpage.tui.page_painter import Scene
+from floatpage.tui.page_painter import PageView
 from floatpage.tui.page_preview import PagePreview
 from floatpage.tui.session import EditError, EditSession
 from floatpage.physics.quality import GAP_TOLERANCE_MM
@@ -83,13 +85,22 @@ def next_month(project) -> tuple[int, int]:
     return (year + 1, 1) if month == 12 else (year, month + 1)
 
 
+Answer = TypeVar("Answer")
+
+
 class EditorScreen(Screen):
-    """The main screen. `selected_id` and `running` are the UI state; the session holds the rest."""
+    """The main screen: a thin layer that turns keys, clicks and dialog answers into session
+    calls, then shows the session's state (`after_edit`).
+
+    The session holds the document, the selection included (undo brings a selection back with
+    its page); the screen holds only how it is shown: `running`, `labels`, `details` and the
+    export state. `item_selected` follows the session's selection so that the footer greys
+    out the item commands when nothing is selected."""
 
     BINDINGS = bindings()
 
-    selected_id: reactive[str | None] = reactive(None, bindings=True)
-    running: reactive[bool] = reactive(True)
+    running: reactive[bool] = reactive(True, init=False)
+    item_selected: reactive[bool] = reactive(False, bindings=True, init=False)
 
     def __init__(self, session: EditSession, *, autostart: bool = True):
         super().__init__(id="editor")
@@ -97,8 +108,7 @@ class EditorScreen(Screen):
         self.meter = FrameMeter()
         self.set_reactive(EditorScreen.running, autostart)
         self.export_state: str | None = None
-        self._release_timer = None
-        self._composed = False
+        self.release_timer: Timer | None = None  # lets go of a nudged item after the last key
         self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
         self._quality = ("", "")
         self.details = False  # `v`: the status line shows its numbers
@@ -113,7 +123,6 @@ class EditorScreen(Screen):
         yield Footer()
 
     def on_mount(self) -> None:
-        self._composed = True
         self.frame_timer = self.set_interval(FRAME_S, self.tick, pause=True)
         self.query_one(PagePreview).focus()
         self.redraw()
@@ -169,15 +178,21 @@ class EditorScreen(Screen):
             self.wake()
         self.redraw()
 
-    def watch_selected_id(self, selected_id: str | None) -> None:
-        self.session.select(selected_id)
-        self.redraw()
+    @property
+    def selected_id(self) -> str | None:
+        """The selected item's id: the session's, the one selection there is."""
+        return self.session.selected_id
+
+    @selected_id.setter
+    def selected_id(self, item_id: str | None) -> None:
+        self.session.select(item_id)
+        self.after_edit()
 
     # -- drawing ------------------------------------------------------------------------------
 
-    def scene(self) -> Scene:
+    def page_view(self) -> PageView:
         session = self.session
-        return Scene(page=session.page, positions=session.engine.positions(),
+        return PageView(page=session.page, positions=session.engine.positions(),
                      selected_id=session.selected_id, base_dir=session.project.base_dir,
                      labels=self.labels)
 
@@ -189,9 +204,7 @@ class EditorScreen(Screen):
         return "settled" if self.session.engine.settled else "settling"
 
     def redraw(self) -> None:
-        if not self._composed:
-            return
-        self.preview.show(self.scene())
+        self.preview.show(self.page_view())
         engine = self.session.engine
         summary, words = self.quality_summary()
         self.query_one(StatusLine).show(Status(
@@ -258,10 +271,18 @@ class EditorScreen(Screen):
         super().notify(message, markup=markup, **kwargs)
 
     def after_edit(self) -> None:
-        """Push the session's selection up into the UI state, redraw, wake the physics."""
-        self.selected_id = self.session.selected_id
+        """Show what an edit, a selection or a release did: the footer's item commands follow
+        the selection, the page is redrawn and the physics woken."""
+        self.item_selected = self.session.selected_id is not None
         self.redraw()
         self.wake()
+
+    def ask(self, dialog: ModalScreen[Answer | None], then: Callable[[Answer], object]) -> None:
+        """Show a dialog; its answer goes to `then`, unless it was cancelled (None)."""
+        def answered(answer: Answer | None) -> None:
+            if answer is not None:
+                then(answer)
+        self.app.push_screen(dialog, callback=answered)
 
     def attempt(self, edit, *args) -> bool:
         """Run a session edit; a refusal (EditError, or the engine's ValueError) is a notice."""
@@ -331,90 +352,80 @@ class EditorScreen(Screen):
     # -- selecting ---------------------------------------------------------------------------
 
     def action_select_next(self) -> None:
-        self.release_held()
-        self.selected_id = self.session.select_step(1)
+        self.session.select_step(1)
+        self.after_edit()
 
     def action_select_previous(self) -> None:
-        self.release_held()
-        self.selected_id = self.session.select_step(-1)
+        self.session.select_step(-1)
+        self.after_edit()
 
     def action_select_none(self) -> None:
-        self.release_held()
         self.selected_id = None
+
+    def on_page_preview_item_pressed(self, message: PagePreview.ItemPressed) -> None:
+        self.selected_id = message.item_id
 
     # -- moving and resizing ------------------------------------------------------------------
 
     def action_nudge(self, dx_mm: float, dy_mm: float) -> None:
+        """Move the selected item, held until RELEASE_AFTER_S after the last arrow key."""
         if self.attempt(self.session.nudge, dx_mm, dy_mm):
-            if self._release_timer is not None:
-                self._release_timer.stop()
-            self._release_timer = self.set_timer(RELEASE_AFTER_S, self.release_held)
-
-    def release_held(self) -> None:
-        if self._release_timer is not None:
-            self._release_timer.stop()
-            self._release_timer = None
-        if self.session.held_id is not None:
-            self.session.end_move()
-            self.after_edit()
-
-    def action_resize(self, fx: float, fy: float) -> None:
-        self.release_held()
-        self.attempt(self.session.resize_selected, fx, fy)
-
-    def on_page_preview_item_pressed(self, message: PagePreview.ItemPressed) -> None:
-        self.release_held()
-        self.selected_id = message.item_id
+            self.stop_release_timer()
+            self.release_timer = self.set_timer(RELEASE_AFTER_S, self.release_held)
 
     def on_page_preview_item_dragged(self, message: PagePreview.ItemDragged) -> None:
+        self.stop_release_timer()  # a drag holds the item until the button goes up
         self.attempt(self.session.move_to, message.item_id, message.x_mm, message.y_mm)
 
     def on_page_preview_drag_ended(self, message: PagePreview.DragEnded) -> None:
         self.release_held()
 
+    def release_held(self) -> None:
+        """Let go of the nudged or dragged item. Any other edit or a new selection lets go of
+        it too, in the session, before it changes anything."""
+        self.stop_release_timer()
+        self.session.end_move()
+        self.after_edit()
+
+    def stop_release_timer(self) -> None:
+        if self.release_timer is not None:
+            self.release_timer.stop()
+            self.release_timer = None
+
+    def action_resize(self, fx: float, fy: float) -> None:
+        self.attempt(self.session.resize_selected, fx, fy)
+
     # -- inserting -----------------------------------------------------------------------------
 
     def action_insert(self) -> None:
-        self.release_held()
-        self.app.push_screen(ChoiceDialog("Insert", item_forms.INSERT_CHOICES,
-                                          dialog_id="insert-dialog"),
-                             callback=lambda kind: kind and self.action_insert_kind(kind))
+        self.ask(ChoiceDialog("Insert", item_forms.INSERT_CHOICES, dialog_id="insert-dialog"),
+                 self.action_insert_kind)
 
     def action_insert_kind(self, kind: str) -> None:
-        self.release_held()
-        session = self.session
-        if kind == "text":
-            self.app.push_screen(
-                FormDialog("Insert a text box", item_forms.new_text_fields(),
-                           item_forms.parse_new_text, dialog_id="text-dialog"),
-                callback=lambda values: values and self.insert("text", values))
-        elif kind == "picture":
-            self.app.push_screen(PictureDialog(session.project.base_dir),
-                                 callback=lambda path: path and self.insert_picture(path))
-        elif kind == "block":
-            self.app.push_screen(
-                FormDialog("Insert a colour block", item_forms.new_block_fields(),
-                           item_forms.parse_new_block, dialog_id="block-dialog"),
-                callback=lambda values: values and self.insert("block", values))
-        elif kind == "calendar":
-            self.app.push_screen(
-                FormDialog("Insert a calendar month",
-                           item_forms.new_calendar_fields(*next_month(session.project), session.project.language),
-                           item_forms.parse_calendar, dialog_id="calendar-dialog"),
-                callback=lambda values: values and self.insert("calendar", values))
+        project = self.session.project
+        if kind == "picture":
+            self.ask(PictureDialog(project.base_dir), self.insert_picture)
         elif kind == "background":
-            self.app.push_screen(
-                ChoiceDialog("Page background", [("A colour…", "color"), ("A picture…", "picture"),
-                                                 ("None (plain paper)", "none")],
-                             dialog_id="background-dialog"),
-                callback=lambda choice: choice and self.choose_background(choice))
+            self.ask(ChoiceDialog("Page background", item_forms.BACKGROUND_CHOICES,
+                                  dialog_id="background-dialog"), self.choose_background)
+        elif kind == "text":
+            self.ask(FormDialog("Insert a text box", item_forms.new_text_fields(),
+                                item_forms.parse_new_text, dialog_id="text-dialog"),
+                     partial(self.insert, "text"))
+        elif kind == "block":
+            self.ask(FormDialog("Insert a colour block", item_forms.new_block_fields(),
+                                item_forms.parse_new_block, dialog_id="block-dialog"),
+                     partial(self.insert, "block"))
+        elif kind == "calendar":
+            fields = item_forms.new_calendar_fields(*next_month(project), project.language)
+            self.ask(FormDialog("Insert a calendar month", fields, item_forms.parse_calendar,
+                                dialog_id="calendar-dialog"), partial(self.insert, "calendar"))
 
     def insert(self, kind: str, values: dict) -> None:
         self.attempt(lambda: self.session.insert_item(self.session.make_item(kind, **values)))
 
     def insert_picture(self, path: Path) -> None:
-        relative = self.session.relative_picture_path(path)
-        self.insert("picture", {"path": relative})
+        self.insert("picture", {"path": self.session.relative_picture_path(path)})
 
     def choose_background(self, choice: str) -> None:
         session = self.session
@@ -422,49 +433,42 @@ class EditorScreen(Screen):
             self.attempt(session.set_background, None)
         elif choice == "color":
             current = session.page.background.color if session.page.background else None
-            self.app.push_screen(
-                FormDialog("Background colour", item_forms.background_colour_fields(current),
-                           item_forms.parse_background_colour, dialog_id="background-colour"),
-                callback=lambda values: values and self.attempt(
-                    session.set_background, Background(color=values["color"])))
+            self.ask(FormDialog("Background colour", item_forms.background_colour_fields(current),
+                                item_forms.parse_background_colour,
+                                dialog_id="background-colour"),
+                     partial(self.attempt, session.set_background))
         else:
-            self.app.push_screen(
-                PictureDialog(session.project.base_dir, "Background picture"),
-                callback=lambda path: path and self.attempt(
-                    session.set_background,
-                    Background(picture=session.relative_picture_path(path))))
+            self.ask(PictureDialog(session.project.base_dir, "Background picture"),
+                     self.set_background_picture)
+
+    def set_background_picture(self, path: Path) -> None:
+        session = self.session
+        self.attempt(session.set_background,
+                     Background(picture=session.relative_picture_path(path)))
 
     # -- editing -------------------------------------------------------------------------------
 
     def action_edit(self) -> None:
-        self.release_held()
         item = self.session.selected_item
-        if item is None:
-            return
-        self.app.push_screen(
-            FormDialog(f"Edit {item.id} ({item.kind})", item_forms.edit_fields(item),
-                       item_forms.parse_edit, dialog_id="edit-dialog"),
-            callback=lambda values: values and self.attempt(self.session.update_item, item.id,
-                                                            values))
+        if item is not None:
+            self.ask(FormDialog(f"Edit {item.id} ({item.kind})", item_forms.edit_fields(item),
+                                item_forms.parse_edit, dialog_id="edit-dialog"),
+                     partial(self.attempt, self.session.update_item, item.id))
 
     def action_toggle_decorative(self) -> None:
-        self.release_held()
         item = self.session.selected_item
         if item is not None:
             self.attempt(self.session.update_item, item.id, {"decorative": not item.decorative})
 
     def action_delete(self) -> None:
-        self.release_held()
         self.attempt(self.session.delete_selected)
 
     # -- anchoring ------------------------------------------------------------------------------
 
     def action_anchor_here(self) -> None:
-        self.release_held()
         self.attempt(self.session.anchor_here)
 
     def action_anchor_to_item(self) -> None:
-        self.release_held()
         item = self.session.selected_item
         if item is None:
             return
@@ -472,12 +476,10 @@ class EditorScreen(Screen):
         if not others:
             self.notify("there is no other item on this page to anchor to", severity="warning")
             return
-        self.app.push_screen(
-            ChoiceDialog(f"Anchor {item.id} to…", others, dialog_id="anchor-dialog"),
-            callback=lambda target: target and self.attempt(self.session.anchor_to, target))
+        self.ask(ChoiceDialog(f"Anchor {item.id} to…", others, dialog_id="anchor-dialog"),
+                 partial(self.attempt, self.session.anchor_to))
 
     def action_unanchor(self) -> None:
-        self.release_held()
         self.attempt(self.session.unanchor)
 
     # -- physics ------------------------------------------------------------------------------
@@ -497,76 +499,69 @@ class EditorScreen(Screen):
     # -- history ------------------------------------------------------------------------------
 
     def action_undo(self) -> None:
-        self.release_held()
-        try:
-            label = self.session.undo()
-        except EditError as error:
-            self.notify(str(error), severity="warning")
-            return
-        self.notify(f"undid {label}", timeout=2)
-        self.after_edit()
+        self.step_history(self.session.undo, "undid")
 
     def action_redo(self) -> None:
-        self.release_held()
+        self.step_history(self.session.redo, "redid")
+
+    def step_history(self, step, verb: str) -> None:
+        """Undo or redo, and say which edit it was."""
         try:
-            label = self.session.redo()
+            label = step()
         except EditError as error:
             self.notify(str(error), severity="warning")
             return
-        self.notify(f"redid {label}", timeout=2)
+        self.notify(f"{verb} {label}", timeout=2)
         self.after_edit()
 
     # -- pages ---------------------------------------------------------------------------------
 
     def action_switch_page(self, step: int) -> None:
-        self.release_held()
         self.attempt(self.session.switch_page, step)
 
     def action_add_page(self) -> None:
-        self.release_held()
         self.attempt(self.session.add_page)
 
     def action_remove_page(self) -> None:
-        self.release_held()
         page = self.session.page
         if len(self.session.project.pages) == 1:
             self.notify("a project keeps at least one page", severity="warning")
             return
-        self.app.push_screen(
-            ChoiceDialog(f"Remove page {page.id}?", [("Remove it", True), ("Keep it", False)],
-                         message=f"It holds {len(page.items)} item(s). Undo brings it back.",
-                         highlighted=False, dialog_id="remove-page-dialog"),
-            callback=lambda remove: remove and self.attempt(self.session.remove_page))
+        self.ask(ChoiceDialog(f"Remove page {page.id}?", [("Remove it", page.id),
+                                                          ("Keep it", None)],
+                              message=f"It holds {len(page.items)} item(s). Undo brings it back.",
+                              highlighted=None, dialog_id="remove-page-dialog"),
+                 self.remove_page)
+
+    def remove_page(self, page_id: str) -> None:
+        if page_id == self.session.page.id:  # still the page the dialog asked about
+            self.attempt(self.session.remove_page)
 
     def action_page_size(self) -> None:
-        self.release_held()
-        page = self.session.page
-        self.app.push_screen(
-            ChoiceDialog("Page size", item_forms.PAGE_SIZE_CHOICES, highlighted=page.size,
-                         dialog_id="page-size-dialog"),
-            callback=self.choose_page_size)
+        self.ask(ChoiceDialog("Page size", item_forms.PAGE_SIZE_CHOICES,
+                              highlighted=self.session.page.size, dialog_id="page-size-dialog"),
+                 self.choose_page_size)
 
-    def choose_page_size(self, size: str | None) -> None:
+    def choose_page_size(self, size: str) -> None:
         page = self.session.page
-        if size == "custom":
-            self.app.push_screen(
-                FormDialog("Custom page size", item_forms.custom_size_fields(page.width_mm,
-                                                                             page.height_mm),
-                           item_forms.parse_custom_size, dialog_id="custom-size-dialog"),
-                callback=lambda values: values and self.attempt(
-                    self.session.set_page_size, "custom", page.orientation,
-                    values["width_mm"], values["height_mm"]))
-        elif size:
+        if size != "custom":
             self.attempt(self.session.set_page_size, size, page.orientation)
+            return
+        self.ask(FormDialog("Custom page size", item_forms.custom_size_fields(page.width_mm,
+                                                                             page.height_mm),
+                            item_forms.parse_custom_size, dialog_id="custom-size-dialog"),
+                 self.set_custom_size)
+
+    def set_custom_size(self, size: dict) -> None:
+        self.attempt(self.session.set_page_size, "custom", self.session.page.orientation,
+                     size["width_mm"], size["height_mm"])
 
     def action_toggle_orientation(self) -> None:
-        self.release_held()
         self.attempt(self.session.toggle_orientation)
 
     # -- files -------------------------------------------------------------------------------
 
     def action_save(self) -> None:
-        self.release_held()
         try:
             path = self.session.save()
         except Exception as error:  # the work stays in the editor; say why and let them retry
@@ -578,7 +573,6 @@ class EditorScreen(Screen):
         self.redraw()
 
     def action_export_pdf(self) -> None:
-        self.release_held()
         if self.export_state:
             self.notify("an export is already running", severity="warning")
             return
@@ -643,19 +637,17 @@ class EditorScreen(Screen):
         self.app.push_screen(HelpScreen(id="help"))
 
     def action_quit(self) -> None:
-        self.release_held()
         if not self.session.unsaved:
             self.app.exit()
             return
-        self.app.push_screen(
-            ChoiceDialog("Quit floatpage?", [("Save and quit", "save"),
-                                             ("Quit without saving", "discard"),
-                                             ("Keep editing", None)],
-                         message="There are unsaved changes.", highlighted="save",
-                         dialog_id="quit-dialog"),
-            callback=self.finish_quit)
+        self.ask(ChoiceDialog("Quit floatpage?", [("Save and quit", "save"),
+                                                  ("Quit without saving", "discard"),
+                                                  ("Keep editing", None)],
+                              message="There are unsaved changes.", highlighted="save",
+                              dialog_id="quit-dialog"),
+                 self.finish_quit)
 
-    def finish_quit(self, choice: str | None) -> None:
+    def finish_quit(self, choice: str) -> None:
         if choice == "discard":
             self.app.exit()
         elif choice == "save":

@@ -1,48 +1,64 @@
 """The forms for inserting and editing items: which fields each kind has, and how to read them.
 
 Parsers turn what was typed into model values or raise ValueError with a
-sentence for the user (the form shows it and stays open).
+sentence for the user (the form shows it and stays open). Values are checked
+by the model's own field checks (model/key_specs.py), so the editor accepts
+exactly what the loader accepts.
 """
 
 from __future__ import annotations
 
 import calendar
-import re
 from typing import Any
 
-from floatpage.model.document import WEEKDAYS, BlockItem, CalendarItem, PictureItem, PointAnchor, TextItem
+from floatpage.model.document import (
+    WEEKDAYS, Background, BlockItem, CalendarItem, Page, PictureItem, PointAnchor, TextItem,
+)
 from floatpage.model.page_sizes import PAGE_SIZES_MM
-from floatpage.model.schema import CALENDAR_LANGUAGES, FONT_FAMILIES
+from floatpage.model.key_specs import CALENDAR_LANGUAGES, FONT_FAMILIES, HEX_COLOUR, keys_of
 from floatpage.tui.dialogs.form import Field
 
-HEX_COLOUR = re.compile(r"^#?[0-9a-fA-F]{6}$")
 MONTHS = tuple((calendar.month_name[number], number) for number in range(1, 13))
 FONTS = tuple((name, name) for name in FONT_FAMILIES)
 WEEKDAY_CHOICES = tuple((day.capitalize(), day) for day in WEEKDAYS)
 LANGUAGES = tuple((code, code) for code in CALENDAR_LANGUAGES)
 INSERT_CHOICES = [("Text box", "text"), ("Picture…", "picture"), ("Colour block", "block"),
                   ("Calendar month", "calendar"), ("Background…", "background")]
+BACKGROUND_CHOICES = [("A colour…", "color"), ("A picture…", "picture"),
+                      ("None (plain paper)", "none")]
 
 
 def colour(text: str, what: str = "colour") -> str:
+    """A colour as the model writes it, "#rrggbb"; the "#" may be left out when typing."""
     text = text.strip()
-    if not HEX_COLOUR.match(text):
+    written = text if text.startswith("#") else "#" + text
+    if not HEX_COLOUR.match(written):
         raise ValueError(f'{what} must be written as #rrggbb, e.g. #1f77b4 (not "{text}")')
-    return "#" + text.lstrip("#").lower()
+    return written.lower()
 
 
-def number(text: str, what: str, low: float, high: float) -> float:
+def checked(owner: type, name: str, value: Any, what: str) -> Any:
+    """`value` if the model takes it for the field `owner.name`; else the model's own complaint
+    (the loader's check, read off the field: the form keeps no second copy of a range)."""
+    check = next(key.check for key in keys_of(owner) if key.name == name)
+    complaint = check(value) if check is not None else None
+    if complaint:
+        raise ValueError(f"{what} {complaint}")
+    return value
+
+
+def number(text: str, what: str, owner: type, name: str) -> float:
+    """A typed number for the model's field `owner.name`."""
     try:
         value = float(text)
     except ValueError:
         raise ValueError(f'{what} must be a number (not "{text}")') from None
-    if not low <= value <= high:
-        raise ValueError(f"{what} must be between {low:g} and {high:g}")
-    return value
+    return checked(owner, name, value, what)
 
 
-def whole(text: str, what: str, low: int, high: int) -> int:
-    value = number(text, what, low, high)
+def whole(text: str, what: str, owner: type, name: str) -> int:
+    """A typed whole number for the model's field `owner.name`."""
+    value = number(text, what, owner, name)
     if value != int(value):
         raise ValueError(f"{what} must be a whole number")
     return int(value)
@@ -58,7 +74,7 @@ def parse_new_text(values: dict[str, Any]) -> dict[str, Any]:
     text = values["text"].strip()
     if not text:
         raise ValueError("type some text first")
-    return {"text": text}
+    return {"text": checked(TextItem, "text", text, "the text")}
 
 
 def new_block_fields() -> list[Field]:
@@ -78,7 +94,7 @@ def new_calendar_fields(year: int, month: int, language: str) -> list[Field]:
 
 def parse_calendar(values: dict[str, Any]) -> dict[str, Any]:
     parsed = dict(values)
-    parsed["year"] = whole(values["year"], "the year", 1, 9999)
+    parsed["year"] = whole(values["year"], "the year", CalendarItem, "year")
     return parsed
 
 
@@ -86,8 +102,8 @@ def background_colour_fields(current: str | None) -> list[Field]:
     return [Field("color", "Background colour (#rrggbb)", "line", current or "#fdf6e3")]
 
 
-def parse_background_colour(values: dict[str, Any]) -> dict[str, Any]:
-    return {"color": colour(values["color"])}
+def parse_background_colour(values: dict[str, Any]) -> Background:
+    return Background(color=colour(values["color"]))
 
 
 PAGE_SIZE_CHOICES = [(f"{name}  ({w:g} × {h:g} mm)", name)
@@ -100,9 +116,8 @@ def custom_size_fields(width_mm: float, height_mm: float) -> list[Field]:
 
 
 def parse_custom_size(values: dict[str, Any]) -> dict[str, Any]:
-    """The loader's limits: 10 to 5000 mm a side."""
-    return {"width_mm": number(values["width_mm"], "the width", 10, 5000),
-            "height_mm": number(values["height_mm"], "the height", 10, 5000)}
+    return {"width_mm": number(values["width_mm"], "the width", Page, "width_mm"),
+            "height_mm": number(values["height_mm"], "the height", Page, "height_mm")}
 
 
 # -- editing --------------------------------------------------------------------------------
@@ -141,11 +156,13 @@ def parse_edit(values: dict[str, Any]) -> dict[str, Any]:
     if "color" in parsed:
         parsed["color"] = colour(parsed["color"])
     if "opacity" in parsed:
-        parsed["opacity"] = number(parsed["opacity"], "the opacity", 0.0, 1.0)
+        parsed["opacity"] = number(parsed["opacity"], "the opacity", BlockItem, "opacity")
     if "gamma" in parsed:
-        parsed["gamma"] = number(parsed["gamma"], "gamma", 0.0, 1.0)
+        parsed["gamma"] = number(parsed["gamma"], "gamma", PointAnchor, "gamma")
     if "year" in parsed:
-        parsed["year"] = whole(parsed["year"], "the year", 1, 9999)
-    if "text" in parsed and not parsed["text"].strip():
-        raise ValueError("a text box needs some text (delete the item instead)")
+        parsed["year"] = whole(parsed["year"], "the year", CalendarItem, "year")
+    if "text" in parsed:
+        if not parsed["text"].strip():
+            raise ValueError("a text box needs some text (delete the item instead)")
+        checked(TextItem, "text", parsed["text"], "the text")
     return parsed

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from textual.binding import Binding
+from textual.keys import format_key
 
 SMALL_STEP_MM = 2.0
 LARGE_STEP_MM = 10.0
@@ -37,18 +38,26 @@ class Command:
         """The action without its parameters, as `check_action` receives it."""
         return self.action.split("(", 1)[0]
 
-
-ARROWS = {"left": "\u2190", "right": "\u2192", "up": "\u2191", "down": "\u2193"}
+    @property
+    def binding_id(self) -> str:
+        """The binding's id, from the label ("Move far left" -> "move-far-left"): what a Textual
+        keymap (`App.set_keymap`) names to give a command other keys."""
+        return self.label.lower().replace(" ", "-")
 
 
 def _move(keys: str, dx: int, dy: int, step: float, name: str) -> Command:
     first = keys.split(",")[0]
     large = first.startswith("shift+")
-    display = "\u21e7" + ARROWS[first[6:]] if large else ARROWS[first]
+    display = "\u21e7" + format_key(first[6:]) if large else format_key(first)
     return Command(keys, f"nudge({dx * step},{dy * step})", f"Move {name}",
                    f"Move the selected item {name} by {step:g} mm; the others make way",
                    "Move and resize", footer="item", rank=16 if large else 2, needs_item=True,
                    key_display=display)
+
+
+def _resize(keys: str, fx: float, fy: float, label: str, how: str) -> Command:
+    return Command(keys, f"resize({fx},{fy})", label, f"Make the selected item {how}",
+                   "Move and resize", footer="item", rank=3, needs_item=True)
 
 
 COMMANDS: tuple[Command, ...] = (
@@ -66,31 +75,20 @@ COMMANDS: tuple[Command, ...] = (
     _move("shift+right,L", 1, 0, LARGE_STEP_MM, "far right"),
     _move("shift+up,K", 0, -1, LARGE_STEP_MM, "far up"),
     _move("shift+down,J", 0, 1, LARGE_STEP_MM, "far down"),
-    Command("plus,equals_sign", f"resize({GROW},{GROW})", "Grow",
-            "Make the selected item larger, keeping its shape", "Move and resize",
-            footer="item", rank=3, needs_item=True),
-    Command("minus", f"resize({SHRINK},{SHRINK})", "Shrink",
-            "Make the selected item smaller, keeping its shape", "Move and resize",
-            footer="item", rank=3, needs_item=True),
-    Command("greater_than_sign", f"resize({GROW},1)", "Wider",
-            "Make the selected item wider (a picture keeps its aspect ratio)", "Move and resize",
-            footer="item", rank=3, needs_item=True),
-    Command("less_than_sign", f"resize({SHRINK},1)", "Narrower",
-            "Make the selected item narrower (a picture keeps its aspect ratio)", "Move and resize",
-            footer="item", rank=3, needs_item=True),
-    Command("circumflex_accent", f"resize(1,{GROW})", "Taller",
-            "Make the selected item taller (a picture keeps its aspect ratio)", "Move and resize",
-            footer="item", rank=3, needs_item=True),
-    Command("underscore", f"resize(1,{SHRINK})", "Shorter",
-            "Make the selected item shorter (a picture keeps its aspect ratio)", "Move and resize",
-            footer="item", rank=3, needs_item=True),
+    _resize("plus,equals_sign", GROW, GROW, "Grow", "larger, keeping its shape"),
+    _resize("minus", SHRINK, SHRINK, "Shrink", "smaller, keeping its shape"),
+    _resize("greater_than_sign", GROW, 1, "Wider", "wider (a picture keeps its aspect ratio)"),
+    _resize("less_than_sign", SHRINK, 1, "Narrower",
+            "narrower (a picture keeps its aspect ratio)"),
+    _resize("circumflex_accent", 1, GROW, "Taller", "taller (a picture keeps its aspect ratio)"),
+    _resize("underscore", 1, SHRINK, "Shorter", "shorter (a picture keeps its aspect ratio)"),
     Command("i", "insert", "Insert", "Insert an item or a background (asks which)", "Insert",
             rank=2),
-    Command("t", "insert_kind('text')", "Text", "Insert a text box", "Insert", rank=2),
-    Command("p", "insert_kind('picture')", "Picture", "Insert a picture from a file", "Insert",
+    Command("t", "insert_kind('text')", "Insert text", "Insert a text box", "Insert", rank=2),
+    Command("p", "insert_kind('picture')", "Insert picture", "Insert a picture from a file", "Insert",
             rank=2),
-    Command("b", "insert_kind('block')", "Block", "Insert a colour block", "Insert", rank=2),
-    Command("c", "insert_kind('calendar')", "Calendar", "Insert a calendar month panel",
+    Command("b", "insert_kind('block')", "Insert block", "Insert a colour block", "Insert", rank=2),
+    Command("c", "insert_kind('calendar')", "Insert calendar", "Insert a calendar month panel",
             "Insert", rank=2),
     Command("g", "insert_kind('background')", "Background",
             "Set the page background: a colour or a picture", "Insert", rank=2),
@@ -146,21 +144,12 @@ ITEM_ACTIONS = frozenset(command.action_name for command in COMMANDS if command.
 ITEM_KEYS = {key: command for command in COMMANDS if command.needs_item
              for key in command.keys.split(",")}
 
-KEY_NAMES = {
-    "plus": "+", "equals_sign": "=", "minus": "-", "greater_than_sign": ">",
-    "less_than_sign": "<", "circumflex_accent": "^", "underscore": "_",
-    "right_square_bracket": "]", "left_square_bracket": "[", "question_mark": "?",
-    "space": "Space", "escape": "Esc", "delete": "Del", "enter": "Enter", "tab": "Tab",
-    "shift+tab": "Shift+Tab", "pagedown": "PgDn", "pageup": "PgUp",
-}
-
-
 def key_label(keys: str) -> str:
-    """Keys as a person types them: 'plus,equals_sign' -> '+ ='."""
+    """Keys as a person types them, each named by Textual's format_key as the footer names it,
+    modifiers spelled out: 'plus,equals_sign' -> '+ =', 'shift+left,H' -> 'Shift+← H'."""
     def one(key: str) -> str:
-        if key in KEY_NAMES:
-            return KEY_NAMES[key]
-        return "+".join(part.capitalize() if len(part) > 1 else part for part in key.split("+"))
+        *modifiers, name = key.split("+")
+        return "+".join([modifier.capitalize() for modifier in modifiers] + [format_key(name)])
     return " ".join(one(key) for key in keys.split(","))
 
 
@@ -190,7 +179,7 @@ def bindings() -> list[Binding]:
     """The editor screen's BINDINGS, built from COMMANDS: every command shows in the footer."""
     return [Binding(command.keys, command.action, command.label, show=True,
                     priority=command.priority, group=footer_group(command),
-                    key_display=command.key_display)
+                    key_display=command.key_display, id=command.binding_id)
             for command in COMMANDS]
 
 

@@ -33,7 +33,7 @@ BLACK: RGB = (0, 0, 0)
 
 
 @dataclass
-class Scene:
+class PageView:
     """Everything one frame shows. positions override the items' own x, y (live physics)."""
 
     page: Page
@@ -87,23 +87,23 @@ def calendar_lines(item: CalendarItem) -> list[str]:
 
 
 class PagePainter:
-    """Paints scenes; holds nothing between frames but the projection it was given."""
+    """Paints page views; holds nothing between frames but the projection it was given."""
 
     def __init__(self, projection: Projection):
         self.projection = projection
 
-    def paint(self, scene: Scene) -> CellCanvas:
+    def paint(self, view: PageView) -> CellCanvas:
         p = self.projection
         canvas = CellCanvas(p.cols, p.rows, SURROUND)
-        self._background(canvas, scene)
-        items = sorted(scene.page.items, key=lambda item: (not item.decorative, item.z))
-        boxes = {item.id: self._box(item, scene) for item in scene.page.items}
+        self._background(canvas, view)
+        items = sorted(view.page.items, key=lambda item: (not item.decorative, item.z))
+        boxes = {item.id: self._box(item, view) for item in view.page.items}
         for item in items:
-            self._item(canvas, scene, item, boxes[item.id])
-        centres = {item.id: self._centre(item, scene) for item in scene.page.items}
-        for item in scene.page.items:
+            self._item(canvas, view, item, boxes[item.id])
+        centres = {item.id: self._centre(item, view) for item in view.page.items}
+        for item in view.page.items:
             self._anchor(canvas, item, centres)
-        selected = next((item for item in scene.page.items if item.id == scene.selected_id), None)
+        selected = next((item for item in view.page.items if item.id == view.selected_id), None)
         if selected is not None:
             canvas.outline(*boxes[selected.id], SELECTION)
             self._label(canvas, selected, boxes[selected.id], BLACK, SELECTION)
@@ -111,11 +111,11 @@ class PagePainter:
 
     # -- geometry ----------------------------------------------------------------------------
 
-    def _centre(self, item, scene: Scene) -> tuple[float, float]:
-        return scene.positions.get(item.id, (item.x, item.y))
+    def _centre(self, item, view: PageView) -> tuple[float, float]:
+        return view.positions.get(item.id, (item.x, item.y))
 
-    def _box(self, item, scene: Scene) -> tuple[int, int, int, int]:
-        x, y = self._centre(item, scene)
+    def _box(self, item, view: PageView) -> tuple[int, int, int, int]:
+        x, y = self._centre(item, view)
         return self.projection.rect(x, y, item.w, item.h)
 
     @staticmethod
@@ -126,15 +126,15 @@ class PagePainter:
 
     # -- layers ------------------------------------------------------------------------------
 
-    def _background(self, canvas: CellCanvas, scene: Scene) -> None:
+    def _background(self, canvas: CellCanvas, view: PageView) -> None:
         p = self.projection
         box = (p.left, p.top, p.left + p.width, p.top + p.height)
-        background = scene.page.background
+        background = view.page.background
         canvas.fill(*box, PAPER)
         if background is None:
             return
         if background.picture:
-            image = thumbnail(scene.base_dir / background.picture, p.width, p.height)
+            image = thumbnail(view.base_dir / background.picture, p.width, p.height)
             if image is not None:
                 canvas.blit(p.left, p.top, image)
             else:
@@ -142,16 +142,16 @@ class PagePainter:
         elif background.color:
             canvas.fill(*box, hex_to_rgb(background.color, PAPER))
 
-    def _item(self, canvas: CellCanvas, scene: Scene, item, box) -> None:
+    def _item(self, canvas: CellCanvas, view: PageView, item, box) -> None:
         x0, y0, x1, y1 = box
         if isinstance(item, PictureItem):
-            image = thumbnail(scene.base_dir / item.path, x1 - x0, y1 - y0)
+            image = thumbnail(view.base_dir / item.path, x1 - x0, y1 - y0)
             if image is None:
                 canvas.fill(*box, MISSING_PICTURE)
                 self._body(canvas, box, [f"missing {item.path}"], BLACK, MISSING_PICTURE)
             else:
                 canvas.blit(x0, y0, image)
-            if scene.labels:
+            if view.labels:
                 self._label(canvas, item, box, WHITE, BLACK)
             return
         under = tuple(int(v) for v in canvas.pixels[
@@ -160,7 +160,7 @@ class PagePainter:
         if isinstance(item, BlockItem):
             fill = mix(under, hex_to_rgb(item.color, MISSING_PICTURE), item.opacity)
             canvas.fill(*box, fill)
-            if scene.labels:
+            if view.labels:
                 self._label(canvas, item, box, readable_on(fill), fill)
             return
         # Text is printed straight on the page, so its box is only a faint tint of what lies
@@ -168,8 +168,8 @@ class PagePainter:
         ink = hex_to_rgb(getattr(item, "color", None))
         fill = mix(under, ink, TEXT_TINT)
         canvas.fill(*box, fill)
-        labelled = scene.labels or item.id == scene.selected_id
-        if scene.labels:
+        labelled = view.labels or item.id == view.selected_id
+        if view.labels:
             self._label(canvas, item, box, mix(readable_on(fill), fill, 0.45), fill)
         if isinstance(item, TextItem):
             self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold,

@@ -1,6 +1,6 @@
 """The page preview: a Line API widget over a cell grid rebuilt at most once per frame.
 
-The screen hands it a Scene with `show(scene)`; the widget paints it into a
+The screen hands it a PageView with `show(view)`; the widget paints it into a
 grid, keeps the resulting Strips and refreshes once. `render_line` only reads
 the stored Strips. Mouse presses and drags go up as messages in millimetres,
 so the screen never deals in cells.
@@ -17,7 +17,7 @@ from textual.strip import Strip
 from textual.widget import Widget
 
 from floatpage.tui.cell_canvas import CellCanvas, StripCache
-from floatpage.tui.page_painter import PagePainter, Scene
+from floatpage.tui.page_painter import PagePainter, PageView
 from floatpage.tui.projection import Projection
 
 
@@ -54,7 +54,7 @@ class PagePreview(Widget, can_focus=True):
 
     def __init__(self, *, id: str | None = None):
         super().__init__(id=id)
-        self.scene: Scene | None = None
+        self.view: PageView | None = None
         self.projection: Projection | None = None
         self.canvas: CellCanvas | None = None  # the last frame's grid, kept for hit tests and tests
         self._strips: list[Strip] = []
@@ -64,21 +64,21 @@ class PagePreview(Widget, can_focus=True):
 
     # -- drawing -------------------------------------------------------------------------
 
-    def show(self, scene: Scene) -> None:
-        """Paint a scene and refresh once."""
-        self.scene = scene
+    def show(self, view: PageView) -> None:
+        """Paint a view and refresh once."""
+        self.view = view
         self.redraw()
 
     def redraw(self) -> None:
-        if self.scene is None:
+        if self.view is None:
             return
         width, height = self.size
         if width < 1 or height < 1:
             return
-        page = self.scene.page
+        page = self.view.page
         projection = Projection.fit(width, height, page.width_mm, page.height_mm)
         self.projection = projection
-        canvas = PagePainter(projection).paint(self.scene)
+        canvas = PagePainter(projection).paint(self.view)
         self.canvas = canvas
         old, self._strips = self._strips, self._cache.strips(canvas)
         self.frames_drawn += 1
@@ -116,25 +116,25 @@ class PagePreview(Widget, can_focus=True):
 
     def item_at(self, col: int, row: int) -> str | None:
         """Topmost item under a cell, in painting order; None on empty page or outside it."""
-        if self.scene is None or self.projection is None:
+        if self.view is None or self.projection is None:
             return None
         x_mm, y_mm = self.projection.mm_at(col, row)
         half_cell = 0.5 / self.projection.scale
         hits = []
-        for item in self.scene.page.items:
-            x, y = self.scene.positions.get(item.id, (item.x, item.y))
+        for item in self.view.page.items:
+            x, y = self.view.positions.get(item.id, (item.x, item.y))
             if abs(x_mm - x) <= item.w / 2 + half_cell and abs(y_mm - y) <= item.h / 2 + half_cell:
                 hits.append(item)
         if not hits:
             return None
         return max(hits, key=lambda item: (not item.decorative, item.z,
-                                           self.scene.page.items.index(item))).id
+                                           self.view.page.items.index(item))).id
 
     def cell_centre_of(self, item_id: str) -> tuple[int, int]:
         """The cell under an item's centre (for tests that click on items)."""
-        assert self.scene is not None and self.projection is not None
-        item = self.scene.page.item(item_id)
-        return self.projection.cell_of(*self.scene.positions.get(item_id, (item.x, item.y)))
+        assert self.view is not None and self.projection is not None
+        item = self.view.page.item(item_id)
+        return self.projection.cell_of(*self.view.positions.get(item_id, (item.x, item.y)))
 
     def on_mouse_down(self, event: events.MouseDown) -> None:
         if self.projection is None or event.button != 1:
@@ -143,9 +143,9 @@ class PagePreview(Widget, can_focus=True):
         item_id = self.item_at(event.x, event.y)
         x_mm, y_mm = self.projection.mm_at(event.x, event.y)
         self.post_message(self.ItemPressed(item_id, x_mm, y_mm))
-        if item_id is not None and self.scene is not None:
-            item = self.scene.page.item(item_id)
-            x, y = self.scene.positions.get(item_id, (item.x, item.y))
+        if item_id is not None and self.view is not None:
+            item = self.view.page.item(item_id)
+            x, y = self.view.positions.get(item_id, (item.x, item.y))
             self._drag = (item_id, x - x_mm, y - y_mm)
             self.capture_mouse()
 

@@ -150,15 +150,21 @@ class EditSession:
         return reading_order(self.page.items)
 
     def select_step(self, step: int) -> str | None:
-        self.selected_id = step_through(self.reading_order(), self.selected_id, step)
+        self.select(step_through(self.reading_order(), self.selected_id, step))
         return self.selected_id
 
     def select(self, item_id: str | None) -> None:
+        """Select an item (None: nothing), letting go of the held one first."""
+        self.end_move()
         self.selected_id = item_id
 
     # -- history ---------------------------------------------------------------------------
 
     def _snapshot(self, label: str) -> Snapshot:
+        """The document at rest. A held item is let go first: every edit, undo and redo takes
+        a snapshot, so a move ends here before anything else changes the page, and the
+        editor's commands need not each remember to end it."""
+        self.end_move()
         self.sync_positions()
         return Snapshot.take(label, self.project.pages, self.page_index, self.selected_id,
                              self.version)
@@ -287,8 +293,7 @@ class EditSession:
         """Hold an item (it pushes the others and is not pushed) for a move or a drag."""
         if self.held_id == item_id:
             return
-        self.end_move()
-        self.checkpoint(f"move {item_id}")
+        self.checkpoint(f"move {item_id}")  # lets go of any other held item first
         self.held_id = item_id
         self.engine.hold(item_id)
 

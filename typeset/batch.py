@@ -4,9 +4,11 @@ The engine's start-up (formats, fonts, TikZ) costs about a second; each further 
 the same run costs a tenth of that, which is what makes `floatpage merge` fast. Two
 things could make a record's PDF depend on its neighbours in the run, and both are undone:
 
-- Fonts: LuaTeX embeds one subset per font file for the whole run. Each record loads its
-  fonts through its own slot folder of links, and `merge.tex.j2` names the font after the
-  link, so each record gets a subset of its own glyphs only.
+- Fonts: LuaTeX embeds one subset per font file name for the whole run. Each face of each
+  record loads its font through a slot folder of links, and `merge.tex.j2` names the font
+  after the link, so the subset holds that face's glyphs in that record only. Records that
+  set exactly the same lines in a face share its slot (FontSlots): the glyphs, and so the
+  subset, are the same as each would get alone, and the run writes it once, not per record.
 - Names and object numbers: `typeset.pdf_split` renames and renumbers per record.
 """
 
@@ -23,18 +25,19 @@ from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FaceKey, fallback_candidates
 from floatpage.typeset.pdf_split import split_records
 from floatpage.typeset.pictures import cache_dir, materialize
-from floatpage.typeset.scene import DocumentScene
+from floatpage.typeset.placed import PlacedDocument
 from floatpage.typeset.templates import make_environment, tex_path
 
 
 @dataclass(frozen=True)
 class SlotFace:
-    """A face as one record of a batch loads it: a luaotfload request of its own (`fpslot`),
-    so that record gets font instances, and subsets, of its own."""
+    """A face as one record of a batch loads it: a luaotfload request of its own (`fpslot`)
+    and a slot folder whose links name the font files, so it gets a subset of its own."""
 
     face: FaceKey
     file: Path
     slot: int
+    slot_dir: Path
     size_bp: float = 10.0
 
     @property
@@ -68,8 +71,8 @@ class SlotFace:
 BATCH_FONT_BP = 10.0
 
 
-def at_one_size(scene: DocumentScene) -> DocumentScene:
-    """The scene with every text group drawn at BATCH_FONT_BP and scaled to its fitted size:
+def at_one_size(document: PlacedDocument) -> PlacedDocument:
+    """The document with every text group drawn at BATCH_FONT_BP and scaled to its fitted size:
     the same glyphs at the same places, from one font instance per face."""
     def rescaled(item):
         groups = getattr(item, "groups", None)
@@ -79,22 +82,20 @@ def at_one_size(scene: DocumentScene) -> DocumentScene:
             replace(group, size_pt=BATCH_FONT_BP, scale=group.size_pt / BATCH_FONT_BP)
             for group in groups))
 
-    pages = [replace(page, items=[rescaled(item) for item in page.items]) for page in scene.pages]
-    return replace(scene, pages=pages)
+    pages = [replace(page, items=[rescaled(item) for item in page.items]) for page in document.pages]
+    return replace(document, pages=pages)
 
 
-def font_files(scene: DocumentScene) -> list[Path]:
-    """Every font file the scene's faces load: the faces' own and their fallbacks."""
-    files: dict[Path, None] = {}
-    for face, file in scene.faces:
-        files[Path(file)] = None
-        for index in face.fallbacks:
-            files[fallback_candidates(face.chain_key)[index].path] = None
+def face_files(face: FaceKey, file: Path) -> list[Path]:
+    """Every font file a face loads: its own and its fallbacks'."""
+    files = {Path(file): None}
+    for index in face.fallbacks:
+        files[fallback_candidates(face.chain_key)[index].path] = None
     return list(files)
 
 
 def link_fonts(files: list[Path], slot_dir: Path) -> None:
-    """The slot folder: a link to every font file the record loads, under its own name."""
+    """The slot folder: a link to every font file the face loads, under its own name."""
     slot_dir.mkdir(parents=True)
     for file in files:
         link = slot_dir / file.name
@@ -104,40 +105,100 @@ def link_fonts(files: list[Path], slot_dir: Path) -> None:
         link.symlink_to(file)
 
 
-def record_context(number: int, scene: DocumentScene, slot_root: Path) -> dict:
-    slot_dir = slot_root / str(number)
-    link_fonts(font_files(scene), slot_dir)
-    faces = [SlotFace(face, Path(file), number, BATCH_FONT_BP) for face, file in scene.faces]
-    return {"number": number, "slot_dir": slot_dir, "faces": faces, "pages": scene.pages}
+def lines_in_face(document: PlacedDocument, face: FaceKey) -> tuple[str, ...]:
+    """Every line the document sets in `face`, as TeX, in drawing order: what decides which
+    glyphs (and which ToUnicode entries) the face's subset gets."""
+    return tuple(str(run.tex) for page in document.pages for item in page.background + page.items
+                 for group in getattr(item, "groups", ()) if group.face == face
+                 for run in group.runs)
 
 
-def batch_tex(scenes: list[DocumentScene], slot_root: Path) -> str:
-    scenes = [at_one_size(scene) for scene in scenes]
-    records = [record_context(number, scene, slot_root) for number, scene in enumerate(scenes)]
-    colors = list(dict.fromkeys(color for scene in scenes for color in scene.colors))
-    folders = {scene.picture_dir for scene in scenes if scene.pictures}
+class FontSlots:
+    """The slots of one batch run. A face gets a new slot unless an earlier record of the run
+    set exactly the same lines in it; sharing that slot then adds no glyph to its subset, so
+    each record's PDF is what it would be alone, and the engine writes one subset, not two
+    (a subset costs LuaTeX about 10 ms: it reads the whole font program each time)."""
+
+    def __init__(self, root: Path):
+        self.root = root
+        self.numbers: dict[tuple, int] = {}
+
+    def face(self, face: FaceKey, file: Path, lines: tuple[str, ...]) -> SlotFace:
+        key = (face, Path(file), lines)
+        number = self.numbers.get(key)
+        if number is None:
+            number = self.numbers[key] = len(self.numbers)
+            link_fonts(face_files(face, file), self.root / str(number))
+        return SlotFace(face, Path(file), number, self.root / str(number), BATCH_FONT_BP)
+
+
+# Each font slot is a font LuaTeX holds for the rest of the run, about 4 MB of its address
+# space: 768 in one run (128 records of six faces, no line shared) passed the 3 GB limit.
+MAX_SLOTS_PER_RUN = 256
+
+
+def runs_within_slots(documents: list[PlacedDocument], max_slots: int = MAX_SLOTS_PER_RUN
+                      ) -> list[list[int]]:
+    """The documents' indices in consecutive runs whose faces need at most `max_slots` slots
+    together (a document that needs more runs alone)."""
+    runs: list[list[int]] = []
+    keys: set = set()
+    for index, document in enumerate(documents):
+        mine = {(face, Path(file), lines_in_face(document, face)) for face, file in document.faces}
+        if runs and runs[-1] and len(keys | mine) <= max_slots:
+            runs[-1].append(index)
+            keys |= mine
+        else:
+            runs.append([index])
+            keys = set(mine)
+    return runs
+
+
+def record_context(number: int, document: PlacedDocument, slots: FontSlots) -> dict:
+    faces = [slots.face(face, file, lines_in_face(document, face)) for face, file in document.faces]
+    return {"number": number, "faces": faces, "pages": document.pages}
+
+
+def batch_tex(documents: list[PlacedDocument], slot_root: Path) -> str:
+    documents = [at_one_size(document) for document in documents]
+    slots = FontSlots(slot_root)
+    records = [record_context(number, document, slots) for number, document in enumerate(documents)]
+    colors = list(dict.fromkeys(color for document in documents for color in document.colors))
+    folders = {document.picture_dir for document in documents if document.pictures}
     template = make_environment().get_template("merge.tex.j2")
     try:
         return template.render(records=records, colors=colors,
                                picture_dir=folders.pop() if len(folders) == 1 else None,
-                               any_rich=any(face.rich for scene in scenes
-                                            for face, _ in scene.faces))
+                               any_rich=any(face.rich for document in documents
+                                            for face, _ in document.faces))
     except ValueError as error:
         raise RenderError(f"could not write the LaTeX: {error}") from None
 
 
-def typeset_batch(scenes: list[DocumentScene], *, timeout_s: float = 600.0) -> list[bytes]:
-    """One PDF per scene, from one engine run; each independent of the others in the batch."""
+def typeset_batch(documents: list[PlacedDocument], *, timeout_s: float = 600.0,
+                  max_slots: int = MAX_SLOTS_PER_RUN) -> list[bytes]:
+    """One PDF per document, from as few engine runs as memory allows (runs_within_slots); each
+    PDF independent of the others in its run."""
+    pdfs: list[bytes] = []
+    for run in runs_within_slots(documents, max_slots):
+        pdfs += typeset_run([documents[index] for index in run], timeout_s=timeout_s)
+    return pdfs
+
+
+def typeset_run(documents: list[PlacedDocument], *, timeout_s: float) -> list[bytes]:
+    """One PDF per document, from one engine run."""
     engine_path()
-    for scene in scenes:
-        for plan in scene.pictures:
+    for document in documents:
+        for plan in document.pictures:
             try:
                 materialize(plan)
             except OSError as error:
                 raise RenderError(f'picture "{plan.source}" could not be converted: '
                                   f"{error}") from None
     with build_folder() as build:
-        tex = batch_tex(scenes, Path(build) / "fonts")
-        pdf = compile_pdf(tex, Path(build), labels=None, timeout_s=timeout_s,
+        tex = batch_tex(documents, Path(build) / "fonts")
+        # Markers count from 0 in every record: alone, an error names the record's item.
+        labels = documents[0].labels if len(documents) == 1 else None
+        pdf = compile_pdf(tex, Path(build), labels=labels, timeout_s=timeout_s,
                           picture_dir=cache_dir())
-        return split_records(pdf, [len(scene.pages) for scene in scenes], skip_first=1)
+        return split_records(pdf, [len(document.pages) for document in documents], skip_first=1)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 
 from floatpage.model.document import Project
 from floatpage.typeset.calendar_panel import Rect
-from floatpage.typeset.scene import BlockScene, DocumentScene, PageScene, PictureScene
+from floatpage.typeset.placed import PlacedBlock, PlacedDocument, PlacedPage, PlacedPicture
 
 DEFAULT_BLEED_MM = 3.0  # the usual ask of print shops in Europe and North America
 MARK_GAP_MM = 1.0  # crop marks start this far outside the bleed, so a cut never shows them
@@ -64,49 +64,49 @@ def extended(rect: Rect, w_mm: float, h_mm: float, bleed_mm: float, *, always: b
                 else rect.bottom_mm)
 
 
-def covering(scene: PictureScene, target: Rect) -> PictureScene:
+def covering(picture: PlacedPicture, target: Rect) -> PlacedPicture:
     """The picture scaled, proportions kept, to cover ``target``, and clipped to it."""
     w, h = target.right_mm - target.left_mm, target.bottom_mm - target.top_mm
-    if scene.plan.pixel_size == (0, 0):  # a PDF: stretched, as on the page itself
+    if picture.plan.pixel_size == (0, 0):  # a PDF: stretched, as on the page itself
         new_w, new_h = w, h
     else:
-        scale = max(w / scene.w_mm, h / scene.h_mm)
-        new_w, new_h = scene.w_mm * scale, scene.h_mm * scale
+        scale = max(w / picture.w_mm, h / picture.h_mm)
+        new_w, new_h = picture.w_mm * scale, picture.h_mm * scale
     centre_x, centre_y = (target.left_mm + target.right_mm) / 2, (target.top_mm + target.bottom_mm) / 2
-    return replace(scene, left_mm=centre_x - new_w / 2, top_mm=centre_y - new_h / 2, w_mm=new_w,
+    return replace(picture, left_mm=centre_x - new_w / 2, top_mm=centre_y - new_h / 2, w_mm=new_w,
                    h_mm=new_h, clip=target)
 
 
-def page_for_print(page: PageScene, bleeding: set[str], bleed_mm: float) -> PageScene:
+def page_for_print(page: PlacedPage, bleeding: set[str], bleed_mm: float) -> PlacedPage:
     w, h = page.w_mm, page.h_mm
     whole = Rect(-bleed_mm, -bleed_mm, w + bleed_mm, h + bleed_mm)
     background = []
-    for scene in page.background:
-        if isinstance(scene, BlockScene):
-            background.append(replace(scene, rect=whole))
-        elif isinstance(scene, PictureScene):
-            background.append(covering(scene, whole))
+    for placed in page.background:
+        if isinstance(placed, PlacedBlock):
+            background.append(replace(placed, rect=whole))
+        elif isinstance(placed, PlacedPicture):
+            background.append(covering(placed, whole))
         else:
-            background.append(scene)
+            background.append(placed)
     items = []
-    for scene in page.items:
-        if scene.item_id in bleeding and isinstance(scene, BlockScene):
-            scene = replace(scene, rect=extended(scene.rect, w, h, bleed_mm, always=False))
-        elif scene.item_id in bleeding and isinstance(scene, PictureScene):
-            own = scene.clip or Rect(scene.left_mm, scene.top_mm, scene.left_mm + scene.w_mm,
-                                     scene.top_mm + scene.h_mm)
+    for placed in page.items:
+        if placed.item_id in bleeding and isinstance(placed, PlacedBlock):
+            placed = replace(placed, rect=extended(placed.rect, w, h, bleed_mm, always=False))
+        elif placed.item_id in bleeding and isinstance(placed, PlacedPicture):
+            own = placed.clip or Rect(placed.left_mm, placed.top_mm, placed.left_mm + placed.w_mm,
+                                      placed.top_mm + placed.h_mm)
             target = extended(own, w, h, bleed_mm, always=False)
             if target != own:
-                scene = covering(scene, target)
-        items.append(scene)
+                placed = covering(placed, target)
+        items.append(placed)
     return replace(page, background=background, items=items,
                    print_setup=print_setup(w, h, bleed_mm))
 
 
-def for_print(scene: DocumentScene, project: Project, bleed_mm: float) -> DocumentScene:
+def for_print(document: PlacedDocument, project: Project, bleed_mm: float) -> PlacedDocument:
     """The document as the print shop wants it (see the module's docstring)."""
     pages = []
-    for page_scene, page in zip(scene.pages, project.pages):
+    for placed_page, page in zip(document.pages, project.pages):
         bleeding = {item.id for item in page.items if getattr(item, "bleed", False)}
-        pages.append(page_for_print(page_scene, bleeding, bleed_mm))
-    return replace(scene, pages=pages)
+        pages.append(page_for_print(placed_page, bleeding, bleed_mm))
+    return replace(document, pages=pages)

@@ -26,7 +26,7 @@ from floatpage.typeset.print_marks import for_print
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FontNotFoundError
 from floatpage.typeset.pictures import cache_dir, materialize
-from floatpage.typeset.scene import DocumentScene, build_scene, text_warnings
+from floatpage.typeset.placed import PlacedDocument, place_document, text_warnings
 from floatpage.typeset.templates import make_environment
 
 
@@ -39,34 +39,34 @@ class RenderReport:
     engine_seconds: float = 0.0
 
 
-def scene_of(project: Project) -> DocumentScene:
+def placed_document(project: Project) -> PlacedDocument:
     try:
-        return build_scene(project)
+        return place_document(project)
     except FontNotFoundError as error:
         raise RenderError(str(error)) from None
 
 
-def tex_from_scene(scene: DocumentScene, *, fragment: bool = False) -> str:
+def tex_from_placed(document: PlacedDocument, *, fragment: bool = False) -> str:
     env = make_environment()
     template = env.get_template("fragment.tex.j2" if fragment else "page.tex.j2")
     try:
-        body = template.render(title=scene.title or "untitled", pages=scene.pages,
-                               faces=scene.faces, colors=scene.colors,
-                               picture_dir=scene.picture_dir, trailer_id=NoEscape("0" * 32))
+        body = template.render(title=document.title or "untitled", pages=document.pages,
+                               faces=document.faces, colors=document.colors,
+                               picture_dir=document.picture_dir, trailer_id=NoEscape("0" * 32))
     except ValueError as error:  # a filter refused a value (a font path TeX cannot take...)
         raise RenderError(f"could not write the LaTeX: {error}") from None
     if fragment:
         return body
     # The PDF's ID is the hash of everything else, so equal projects give equal bytes; the
     # picture cache's folder is left out, so it does not matter whose cache the pictures are in.
-    hashed = body.replace(str(scene.picture_dir), "") if scene.picture_dir else body
+    hashed = body.replace(str(document.picture_dir), "") if document.picture_dir else body
     trailer = hashlib.md5(hashed.encode("utf-8")).hexdigest().upper()
     return body.replace("<" + "0" * 32 + ">", f"<{trailer}>")
 
 
 def render_tex(project: Project, *, fragment: bool = False) -> str:
     """The standalone .tex (or the TikZ-only fragment) for the project, positions as in the model."""
-    return tex_from_scene(scene_of(project), fragment=fragment)
+    return tex_from_placed(placed_document(project), fragment=fragment)
 
 
 def text_fit_warnings(project: Project) -> list[str]:
@@ -131,26 +131,26 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     if not project.pages:
         raise RenderError("the project has no pages; add a [[pages]] table")
     say("laying out text")
-    scene = scene_of(project)
-    scene.warnings.extend(picture_warnings(project))
+    document = placed_document(project)
+    document.warnings.extend(picture_warnings(project))
     say("preparing pictures")
-    for plan in scene.pictures:
+    for plan in document.pictures:
         try:
             materialize(plan)
         except OSError as error:
             raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
-    fragment = tex_from_scene(scene, fragment=True) if fragment_out is not None else ""
+    fragment = tex_from_placed(document, fragment=True) if fragment_out is not None else ""
     if print_bleed_mm is not None:
-        scene = for_print(scene, project, print_bleed_mm)
-    tex = tex_from_scene(scene)
+        document = for_print(document, project, print_bleed_mm)
+    tex = tex_from_placed(document)
     say("typesetting with LuaLaTeX")
     engine_started = time.perf_counter()
     with build_folder() as build:
-        pdf = compile_pdf(tex, Path(build), labels=scene.labels, timeout_s=timeout_s,
+        pdf = compile_pdf(tex, Path(build), labels=document.labels, timeout_s=timeout_s,
                           picture_dir=cache_dir(),
                           keep_log=log_path_for(out_pdf))
         data = pdf.read_bytes()
-        pages = count_pages(Path(build), len(scene.pages))
+        pages = count_pages(Path(build), len(document.pages))
     engine_seconds = time.perf_counter() - engine_started
     # Only now, with the PDF made, is anything replaced: a failed render overwrites nothing.
     if tex_out is not None:
@@ -160,5 +160,5 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     write_output(out_pdf, data)
     log_path_for(out_pdf).unlink(missing_ok=True)  # a failed render's log is now stale
     say(f"wrote {out_pdf}")
-    return RenderReport(out_pdf, pages, scene.warnings,
+    return RenderReport(out_pdf, pages, document.warnings,
                         time.perf_counter() - started, engine_seconds)

@@ -18,11 +18,11 @@ from pathlib import Path
 import jinja2
 from pylatex.utils import NoEscape
 
+from floatpage.model.key_specs import HEX_COLOUR
 from floatpage.typeset.escape import finalize
 
 TEMPLATES = "floatpage.latex_templates"
 SAFE_PATH = re.compile(r"^[A-Za-z0-9/._+-]+$")
-HEX = re.compile(r"^#?([0-9a-fA-F]{6})$")
 
 
 def number(value: float, decimals: int = 4) -> NoEscape:
@@ -41,17 +41,18 @@ def tex_path(value: Path | str) -> NoEscape:
 
 def color_name(value: str) -> NoEscape:
     """The xcolor name the preamble defines for "#rrggbb"."""
-    match = HEX.match(value)
-    if not match:
-        raise ValueError(f"colour {value!r} is not #rrggbb")
-    return NoEscape("fp" + match.group(1).lower())
+    return NoEscape("fp" + digits_of(value).lower())
 
 
 def hex_digits(value: str) -> NoEscape:
-    match = HEX.match(value)
-    if not match:
+    return NoEscape(digits_of(value).upper())
+
+
+def digits_of(value: str) -> str:
+    """The six hex digits of a colour written as the model writes it, "#rrggbb"."""
+    if not isinstance(value, str) or not HEX_COLOUR.match(value):
         raise ValueError(f"colour {value!r} is not #rrggbb")
-    return NoEscape(match.group(1).upper())
+    return value[1:]
 
 
 def control_sequence(name: str) -> NoEscape:

@@ -55,6 +55,24 @@ def test_each_record_gets_its_own_pdf_and_a_failing_record_is_isolated(merge_fol
     assert "Product number 1" in text and "Person1" in text and "€1.50" in text
 
 
+def test_a_record_that_breaks_the_engine_run_fails_alone(merge_folder):
+    """A picture whose header reads well but whose data is cut short passes the layout and
+    fails in LuaLaTeX: the chunk's run is split until that record runs alone."""
+    whole = (merge_folder / "pictures" / "pears.png").read_bytes()
+    (merge_folder / "pictures" / "cut.png").write_bytes(whole[:len(whole) // 3])
+    records = rows(5)
+    records[2][5] = "cut.png"
+    data = write_csv(merge_folder / "customers.csv", records)
+    done = merge(merge_folder, data, "out", "--chunk-size", "5", "--workers", "1")
+    assert done.returncode == 3, done.stderr
+    statuses = [(row["status"], row["reason"]) for row in report(merge_folder)]
+    assert [status for status, _ in statuses] == ["made", "made", "failed", "made", "made"]
+    assert statuses[2][1].startswith("LuaLaTeX could not typeset it: ")
+    assert "writepng" in statuses[2][1] and "pictures/cut.png" in statuses[2][1]
+    assert "full log" not in statuses[2][1]  # the build folder, and its log, are gone
+    assert len(list((merge_folder / "out").glob("*.pdf"))) == 4
+
+
 def test_the_pdfs_do_not_depend_on_chunk_size_or_workers(merge_folder):
     data = write_csv(merge_folder / "customers.csv", rows(5))
     assert merge(merge_folder, data, "one", "--chunk-size", "1", "--workers", "1").returncode == 0
@@ -62,6 +80,26 @@ def test_the_pdfs_do_not_depend_on_chunk_size_or_workers(merge_folder):
     one = {p.name: p.read_bytes() for p in (merge_folder / "one").glob("*.pdf")}
     many = {p.name: p.read_bytes() for p in (merge_folder / "many").glob("*.pdf")}
     assert len(one) == 5 and one == many
+
+
+def test_records_that_share_lines_in_one_run_keep_the_bytes_they_get_alone(merge_folder):
+    """Records setting the same lines in a face share its font subset in a run (also a face
+    with a fallback font, here Arabic through HarfBuzz): each PDF must still hold only its
+    own glyphs, so one engine run per record makes the same bytes as one run for all."""
+    base = rows(1)[0]
+    shared = [[str(3001 + n), first, "Haddad", product, "€2", "pears.png", note, "1 May"]
+              for n, (first, product, note) in enumerate([
+                  ("فاطمة", "Peonies", "Picked this morning."), ("فاطمة", "Peonies", ""),
+                  ("Ana", "Peonies", "Picked this morning."), ("Ana", "Tulips", "")])]
+    data = write_csv(merge_folder / "customers.csv", [base] + shared)
+    alone = merge(merge_folder, data, "alone", "--chunk-size", "1", "--workers", "1")
+    together = merge(merge_folder, data, "together", "--chunk-size", "5", "--workers", "1")
+    assert alone.returncode == 0 and together.returncode == 0, alone.stderr + together.stderr
+    first = {p.name: p.read_bytes() for p in (merge_folder / "alone").glob("*.pdf")}
+    second = {p.name: p.read_bytes() for p in (merge_folder / "together").glob("*.pdf")}
+    assert len(first) == 5 and first == second
+    arabic = text_of(merge_folder / "together" / "3001-Haddad.pdf")
+    assert "فاطمة" in arabic or "فاطمة"[::-1] in arabic  # pdfplumber reads it left to right
 
 
 def test_a_second_run_skips_what_has_not_changed(merge_folder):
@@ -82,6 +120,35 @@ def test_a_second_run_skips_what_has_not_changed(merge_folder):
     assert "4 made" in merge(merge_folder, data, "out", "--force").stdout, third.stdout
 
 
+def test_a_pdf_cut_short_is_made_again_and_a_killed_runs_temporaries_go(merge_folder):
+    """A power cut can leave a PDF whose key was written but whose bytes never reached the
+    disk: a resumed run keeps only PDFs that end whole. Temporaries a killed run left are
+    removed when the next run starts."""
+    data = write_csv(merge_folder / "customers.csv", rows(2))
+    assert merge(merge_folder, data).returncode == 0
+    out = merge_folder / "out"
+    whole = (out / "1001-Silva.pdf").read_bytes()
+    (out / "1001-Silva.pdf").write_bytes(whole[:len(whole) // 2])
+    leftover = out / ".1002-Müller.pdf.999999.0badcafe.floatpage-tmp"
+    leftover.write_bytes(b"half a PDF")
+    os.utime(leftover, (time.time() - 3600, time.time() - 3600))
+    again = merge(merge_folder, data)
+    assert "1 made, 1 unchanged" in again.stdout, again.stdout + again.stderr
+    assert (out / "1001-Silva.pdf").read_bytes() == whole
+    assert not leftover.exists()
+
+
+def test_an_output_hard_linked_elsewhere_is_replaced_not_written_through(merge_folder):
+    data = write_csv(merge_folder / "customers.csv", rows(1))
+    (merge_folder / "out").mkdir()
+    precious = merge_folder / "precious.pdf"
+    precious.write_bytes(b"%PDF-1.7 the user's own file")
+    os.link(precious, merge_folder / "out" / "1001-Silva.pdf")
+    assert merge(merge_folder, data).returncode == 0
+    assert precious.read_bytes() == b"%PDF-1.7 the user's own file"
+    assert (merge_folder / "out" / "1001-Silva.pdf").read_bytes().startswith(b"%PDF")
+
+
 def test_columns_the_template_needs_are_checked_before_any_work(merge_folder):
     columns = [c for c in COLUMNS if c != "price"] + ["unused"]
     data = write_csv(merge_folder / "customers.csv", [["1"] * len(columns)], columns)
@@ -90,6 +157,29 @@ def test_columns_the_template_needs_are_checked_before_any_work(merge_folder):
     assert 'item "price" on page "offer" asks for "{price}"' in done.stderr
     assert "has no column 'price'" in done.stderr and "Traceback" not in done.stderr
     assert not (merge_folder / "out").exists()
+
+
+def test_picture_paths_from_the_data_never_read_devices_pipes_or_outside(merge_folder):
+    """A path column may name /dev/zero (reading it never ends), a pipe (opening it waits
+    forever) or a file outside the template's folder: each record fails alone, at once, and
+    nothing outside the folder is read, also when pictures are shipped to the workers."""
+    template = merge_folder / "offer.toml"
+    template.write_text(template.read_text(encoding="utf-8").replace(
+        'path = "pictures/{photo}"', 'path = "{photo}"'), encoding="utf-8")
+    os.mkfifo(merge_folder / "pipe.png")
+    secret = merge_folder.parent / "secret.png"
+    secret.write_bytes((merge_folder / "pictures" / "pears.png").read_bytes())
+    paths = ["/dev/zero", "pipe.png", "../secret.png", "/etc/passwd", "pictures/pears.png"]
+    records = rows(len(paths))
+    for record, path in zip(records, paths):
+        record[5] = path
+    data = write_csv(merge_folder / "customers.csv", records)
+    for out, extra in (("shared", []), ("ship", ["--pictures", "ship"])):
+        done = merge(merge_folder, data, out, *extra)
+        assert done.returncode == 3, done.stderr
+        reasons = [row["reason"] for row in report(merge_folder, out)]
+        assert "outside" in reasons[0] and "outside" in reasons[2] and "outside" in reasons[3]
+        assert "not a regular file" in reasons[1] and reasons[4] == ""
 
 
 def test_user_text_is_set_as_text_never_run_as_latex(merge_folder):
@@ -161,11 +251,15 @@ def test_json_lines_work_like_csv(merge_folder):
 
 
 def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
-    data = write_csv(merge_folder / "customers.csv", rows(24))
+    # enough records that a loaded machine cannot finish them all before the signal lands
+    data = write_csv(merge_folder / "customers.csv", rows(80))
     out = merge_folder / "out"
+    builds = merge_folder / "tmp"  # its own, so other runs' engines on this machine don't count
+    builds.mkdir()
     process = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
                                 "-o", str(out), "--chunk-size", "2", "--workers", "2"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               env={**os.environ, "TMPDIR": str(builds)})
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and len(list(out.glob("*.pdf"))) < 2:
         time.sleep(0.05)
@@ -173,7 +267,7 @@ def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
     _, stderr = process.communicate(timeout=60)
     assert process.returncode == 130, stderr
     pdfs = list(out.glob("*.pdf"))
-    assert 2 <= len(pdfs) < 24
+    assert 2 <= len(pdfs) < 80
     for pdf in pdfs:
         with pikepdf.open(pdf) as document:
             assert len(document.pages) == 1
@@ -182,20 +276,38 @@ def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
     assert leftovers == []
     assert (out / "report.csv").is_file()
     time.sleep(1.0)
-    assert engines_in_build_folders() == []
+    assert engines_in_build_folders(builds) == []
 
 
-def engines_in_build_folders() -> list[int]:
-    """Processes (LuaLaTeX) still working in a floatpage build folder."""
+def engines_in_build_folders(parent: Path) -> list[int]:
+    """Processes (LuaLaTeX) still working in a floatpage build folder under `parent`."""
     found = []
     for entry in Path("/proc").iterdir():
         if entry.name.isdigit():
             try:
-                if "floatpage-build" in os.readlink(entry / "cwd"):
+                cwd = os.readlink(entry / "cwd")
+                if cwd.startswith(str(parent) + os.sep) and "floatpage-build" in cwd:
                     found.append(int(entry.name))
             except OSError:
                 pass
     return found
+
+
+def test_a_pipe_gets_plain_progress_lines_and_the_end_once(merge_folder):
+    """Also: a column no placeholder uses is noted before any work."""
+    data = write_csv(merge_folder / "customers.csv", [row + ["gold"] for row in rows(3)],
+                     COLUMNS + ["loyalty"])
+    done = subprocess.run([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
+                           "-o", str(merge_folder / "out")], capture_output=True, text=True,
+                          timeout=600)
+    assert done.returncode == 0, done.stderr
+    said = done.stderr.splitlines()
+    notes = [n for n, line in enumerate(said) if line.startswith("note: column 'loyalty' of ")]
+    lines = [line for line in said if line.startswith("merge: ")]
+    assert notes and notes[0] < said.index(lines[0]) and "no placeholder" in said[notes[0]]
+    assert lines and lines[-1].startswith("merge: 3/3 records, 0 failed, ")
+    assert "records/s, ETA 0 s" in lines[-1] and len(lines) == len(set(lines))
+    assert "\x1b" not in done.stderr  # no terminal codes in a pipe
 
 
 def test_a_terminal_gets_a_progress_bar_with_rate_and_eta(merge_folder):

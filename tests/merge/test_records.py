@@ -57,3 +57,41 @@ def test_json_lines_take_their_columns_from_the_first_object(tmp_path):
     assert (second.line, "not a JSON object" in second.problem) == (3, True)
     assert "dict" in third.problem
     assert "not valid JSON" in fourth.problem
+
+
+def test_a_ten_megabyte_value_fails_its_record_alone_and_is_not_carried(tmp_path):
+    big = "x" * (10 << 20)
+    first, second, third = data(tmp_path, f"a,b\n1,ok\n2,{big}\n3,ok\n").records()
+    assert not first.problem and not third.problem and third.values == {"a": "3", "b": "ok"}
+    assert "column 'b' holds 10,485,760 characters" in second.problem
+    assert second.values["b"] == ""  # not shipped to a worker
+
+
+def test_a_row_the_reader_refuses_fails_alone_and_the_next_rows_stay_in_step(tmp_path):
+    first, second, third = data(tmp_path, 'a,b\n1,"x"y\n2,"ok, quoted"\n3,z\n').records()
+    assert (first.line, "not readable as CSV" in first.problem) == (2, True)
+    assert (second.line, second.values, second.problem) == (3, {"a": "2", "b": "ok, quoted"}, "")
+    assert (third.line, third.values) == (4, {"a": "3", "b": "z"})
+
+
+def test_a_quote_left_open_stops_before_work_naming_its_line(tmp_path):
+    """Without this, the open quote made the rest of the file one value: rows 3 and 4 were
+    silently lost inside record 1."""
+    source = data(tmp_path, 'a,b\n1,ok\n2,"open\n3,x\n4,y\n')
+    with pytest.raises(FloatpageError, match=r"data.csv, line 3: .*never closes"):
+        list(source.records())
+
+
+def test_a_column_named_like_a_placeholder_is_only_a_name(tmp_path):
+    source = data(tmp_path, "{id},{{x}}\n1,2\n")
+    assert source.columns == ["{id}", "{{x}}"]
+    (record,) = source.records()
+    assert record.values == {"{id}": "1", "{{x}}": "2"}
+
+
+def test_json_lines_with_a_non_object_line_fail_that_record_only(tmp_path):
+    source = data(tmp_path, '{"a": "1"}\n"just a string"\n42\nnull\n{"a": "5"}\n',
+                  name="data.jsonl")
+    found = list(source.records())
+    assert [bool(record.problem) for record in found] == [False, True, True, True, False]
+    assert [record.line for record in found] == [1, 2, 3, 4, 5]

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from floatpage.physics import Engine, Params
-from floatpage.physics.scenes import dropped_scene, load, mixed_scene
+from seeded_scenes import dropped_scene, load, mixed_scene
 
 A4 = (210.0, 297.0)
 

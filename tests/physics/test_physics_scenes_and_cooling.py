@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from floatpage.physics.fast_mode import COOLING_SHARE_RANGE, cooling_rate
-from floatpage.physics.scenes import big_item_scene, dropped_scene, mixed_scene
+from seeded_scenes import big_item_scene, dropped_scene, mixed_scene
 
 
 @pytest.mark.parametrize("count, coverage", [(5, 0.5), (50, 0.5), (40, 0.9)])

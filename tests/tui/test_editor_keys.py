@@ -138,6 +138,24 @@ async def test_insert_a_picture_from_the_file_picker(project_path):
         assert new.h / new.w == pytest.approx(2.0)  # the file is 20 x 40 pixels
 
 
+async def test_the_picture_dialog_takes_what_the_typesetter_reads(project_path):
+    """One list of picture suffixes (the model's): a PDF is a picture, a text file is not."""
+    folder = project_path.parent
+    (folder / "notes.txt").write_text("not a picture")
+    (folder / "logo.pdf").write_bytes(b"%PDF-1.4\n%%EOF\n")
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("p", "tab")
+        await type_text(pilot, "notes.txt")
+        await pilot.press("enter")
+        error = str(app.screen.query_one("#picture-error").render())
+        assert app.screen.id == "picture-dialog" and ".pdf" in error and ".jpg" in error
+        await pilot.press("ctrl+a", "ctrl+k")
+        await type_text(pilot, "logo.pdf")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert item(app, "picture-1").path == "logo.pdf"
+
+
 async def test_insert_a_picture_by_walking_the_tree(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("p")
@@ -277,6 +295,46 @@ async def test_pause_resume_and_reheat(project_path):
         await pilot.press("space")
         await pilot.pause(0.2)
         assert screen.running and app.session.engine.heat < 1.0  # steps ran after resuming
+
+
+@pytest.mark.parametrize("next_keys", [("tab",), ("plus",), ("ctrl+z",), ("right_square_bracket",)])
+async def test_the_next_command_lets_go_of_a_nudged_item_first(project_path, next_keys):
+    """The session ends a move before any other selection, edit, undo or page change; no
+    command of the screen has to remember it (they used to, 26 times)."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "tab", "tab", "tab", "tab", "tab")  # month, anchored to a point
+        await pilot.press("H")
+        engine = app.session.engine
+        assert engine.bodies.held[engine.ids.index("month")]
+        moved_x = position(app, "month")[0]
+        await pilot.press(*next_keys)
+        assert app.session.held_id is None
+        assert screen_of(app).release_timer is not None  # the screen never had to release it
+        if next_keys != ("ctrl+z",):  # undo goes back to before the move
+            month = app.session.project.pages[0].item("month")
+            assert (month.x, month.anchor.x) == pytest.approx((moved_x, moved_x))
+
+
+async def test_a_keymap_gives_a_command_other_keys_by_its_binding_id(project_path):
+    async with editor(project_path) as (app, pilot):
+        app.set_keymap({"grow": "f5"})
+        await pilot.press("tab", "tab", "tab")  # block
+        width = item(app, "block").w
+        await pilot.press("f5")
+        assert item(app, "block").w > width
+
+
+async def test_a_cancelled_dialog_changes_nothing(project_path):
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab")
+        for key, dialog in (("e", "edit-dialog"), ("i", "insert-dialog"), ("A", "anchor-dialog"),
+                            ("S", "page-size-dialog"), ("D", "remove-page-dialog")):
+            await pilot.press(key)
+            assert app.screen.id == dialog
+            await pilot.press("escape")
+            assert app.screen is screen_of(app)
+        assert not app.session.unsaved and not app.session.history.undo_stack
+        assert screen_of(app).selected_id == "title"
 
 
 async def test_the_physics_runs_live_then_stops_drawing_once_settled(project_path):

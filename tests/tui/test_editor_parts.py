@@ -9,7 +9,8 @@ import pytest
 from floatpage.tui.cell_canvas import UPPER_HALF, CellCanvas, Glyph, StripCache
 from floatpage.tui.frame_meter import FrameMeter
 from floatpage.tui.history import History, Snapshot
-from floatpage.tui.keymap import COMMANDS, key_label
+from floatpage.tui import item_forms
+from floatpage.tui.keymap import COMMANDS, bindings, key_label
 from floatpage.tui.reading_order import reading_order, step_through
 
 
@@ -59,8 +60,34 @@ def test_frame_meter_counts_frames_and_steps_over_the_window():
 
 def test_key_labels_read_as_typed():
     assert key_label("plus,equals_sign") == "+ ="
-    assert key_label("shift+left,H") == "Shift+Left H"
+    assert key_label("shift+left,H") == "Shift+\u2190 H"
+    assert key_label("right_square_bracket,pagedown") == "] pgdn"
     assert all("ctrl+shift" not in command.keys for command in COMMANDS)
+
+
+def test_a_typed_colour_is_written_as_the_model_writes_it():
+    assert item_forms.colour("1F77B4") == item_forms.colour(" #1f77b4 ") == "#1f77b4"
+    for wrong in ("#12345", "##1f77b4", "red"):
+        with pytest.raises(ValueError, match="#rrggbb"):
+            item_forms.colour(wrong)
+
+
+def test_the_forms_refuse_what_the_loader_refuses_in_its_words():
+    """The editor's forms check values with the model's own field checks, not copies."""
+    with pytest.raises(ValueError, match=r"^the opacity must be between 0.0 and 1.0$"):
+        item_forms.parse_edit({"opacity": "1.5"})
+    with pytest.raises(ValueError, match="the year must be between 1 and 9999"):
+        item_forms.parse_calendar({"year": "0", "month": 1})
+    with pytest.raises(ValueError, match="the width must be between 10.0 and 5000.0"):
+        item_forms.parse_custom_size({"width_mm": "5", "height_mm": "100"})
+    with pytest.raises(ValueError, match="the text holds 20001 characters"):
+        item_forms.parse_new_text({"text": "x" * 20_001})
+    assert item_forms.parse_edit({"opacity": "0.5", "gamma": "1"}) == {"opacity": 0.5, "gamma": 1.0}
+
+
+def test_every_binding_has_its_own_id():
+    ids = [binding.id for binding in bindings()]
+    assert None not in ids and len(set(ids)) == len(COMMANDS)
 
 
 def test_canvas_rows_become_half_block_strips_and_later_fills_hide_glyphs():

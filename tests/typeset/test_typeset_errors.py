@@ -94,10 +94,12 @@ def test_missing_tex_says_what_to_install(tmp_path, monkeypatch):
         render_pdf(good_project(tmp_path), tmp_path / "out.pdf")
 
 
-@pytest.mark.parametrize("change, message", [
-    ({"x": float("nan")}, "not a finite number"),
-    ({"w": 0.0}, "greater than 0"),
-    ({"color": "#fff}\\input{x}"}, "is not written as"),
+@pytest.mark.parametrize("change, message", [  # the loader's own words (model/key_specs.py)
+    ({"x": float("nan")}, '"x" must be a finite number'),
+    ({"w": 0.0}, '"w" must be greater than 0'),
+    ({"y": "ten"}, '"y" must be a number'),
+    ({"color": "#fff}\\input{x}"}, 'must be a colour written as "#rrggbb"'),
+    ({"text": "x" * 20_001}, '"text" holds 20001 characters'),
 ])
 def test_bad_values_from_code_are_refused_with_the_item_named(tmp_path, change, message):
     item = TextItem(id="caption", x=50, y=50, w=40, h=10, text="Hi")

@@ -19,7 +19,7 @@ from PIL import Image
 from floatpage.model.document import Page, Project, TextItem
 from floatpage.typeset import render_pdf
 from floatpage.typeset.escape import clean_text
-from floatpage.typeset.scene import build_scene
+from floatpage.typeset.placed import place_document
 from typeset_pdfcheck import BoxPt, chars_in, fill
 
 SEED = 20261121
@@ -88,11 +88,11 @@ def typeset(tmp_path_factory):
     project = random_project()
     out = tmp_path_factory.mktemp("fit") / "boxes.pdf"
     report = render_pdf(project, out)
-    scene = build_scene(project)
+    document = place_document(project)
     lines = {}
-    for page in scene.pages:
-        for item_scene in page.items:
-            lines[item_scene.item_id] = [run.text for g in item_scene.groups for run in g.runs]
+    for page in document.pages:
+        for placed in page.items:
+            lines[placed.item_id] = [run.text for g in placed.groups for run in g.runs]
     results = []
     with pdfplumber.open(out) as pdf:
         assert len(pdf.pages) == PAGES == report.pages

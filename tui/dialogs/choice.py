@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Generic, TypeVar
 
 from textual.app import ComposeResult
 from textual.binding import Binding
@@ -12,13 +12,18 @@ from textual.widgets import Label, OptionList
 from textual.widgets.option_list import Option
 
 
-class ChoiceDialog(ModalScreen[Any]):
-    """A title, an optional message and a list; Enter picks, Esc cancels (dismisses None)."""
+Value = TypeVar("Value")
+
+
+class ChoiceDialog(ModalScreen[Value | None], Generic[Value]):
+    """A title, an optional message and a list; Enter picks, Esc cancels (dismisses None).
+
+    A choice whose value is None ("Keep editing") answers as Esc does."""
 
     BINDINGS = [Binding("escape", "cancel", "Cancel")]
 
-    def __init__(self, title: str, choices: list[tuple[str, Any]], *, message: str = "",
-                 highlighted: Any = None, dialog_id: str | None = None):
+    def __init__(self, title: str, choices: list[tuple[str, Value | None]], *, message: str = "",
+                 highlighted: Value | None = None, dialog_id: str | None = None):
         super().__init__(id=dialog_id)
         self.title_text = title
         self.message = message

@@ -7,7 +7,7 @@ open and shows it, so a typo in a colour is a message, never a crash.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Literal
+from typing import Any, Callable, Generic, Literal, TypeVar
 
 from textual.app import ComposeResult
 from textual.binding import Binding
@@ -29,23 +29,26 @@ class Field:
     choices: tuple[tuple[str, Any], ...] = ()
 
 
-Parser = Callable[[dict[str, Any]], dict[str, Any]]
+Answer = TypeVar("Answer")
+Parser = Callable[[dict[str, Any]], Answer]
 
 
-class FormDialog(ModalScreen[dict | None]):
+class FormDialog(ModalScreen[Answer | None], Generic[Answer]):
     """Fields, an error line and OK / Cancel. Enter in a one-line field or Ctrl+S applies.
+
+    It dismisses with what the parser made of the fields (its type is the parser's), or None.
 
     Compact widgets and a scrolling field list keep the buttons on screen at 80 x 24.
     """
 
     BINDINGS = [Binding("escape", "cancel", "Cancel"), Binding("ctrl+s", "apply", "Apply")]
 
-    def __init__(self, title: str, fields: list[Field], parse: Parser | None = None, *,
+    def __init__(self, title: str, fields: list[Field], parse: Parser[Answer], *,
                  dialog_id: str | None = None):
         super().__init__(id=dialog_id)
         self.title_text = title
         self.fields = fields
-        self.parse = parse or (lambda values: values)
+        self.parse = parse
 
     def compose(self) -> ComposeResult:
         with Vertical(classes="dialog form"):

@@ -11,7 +11,8 @@ from textual.containers import Vertical
 from textual.screen import ModalScreen
 from textual.widgets import DirectoryTree, Input, Label
 
-PICTURE_SUFFIXES = {".png", ".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff", ".webp"}
+from floatpage.model.key_specs import PICTURE_SUFFIXES
+
 
 
 class PictureTree(DirectoryTree):
@@ -59,7 +60,7 @@ class PictureDialog(ModalScreen[Path | None]):
             return
         if path.suffix.lower() not in PICTURE_SUFFIXES:
             self.query_one("#picture-error", Label).update(
-                "not a picture (use " + ", ".join(sorted(PICTURE_SUFFIXES)) + ")")
+                "not a picture (use " + ", ".join(PICTURE_SUFFIXES) + ")")
             return
         self.dismiss(path)
 

@@ -1,20 +1,22 @@
 """From the document model to everything the templates print, every number computed.
 
-`build_scene(project)` is the only place that turns mm rectangles into text
-runs, picture placements and rules; the templates only lay them out. It reads
-picture files (to hash them) but writes nothing.
+`place_document(project)` is the only place that turns mm rectangles into text
+runs, picture placements and rules: a PlacedDocument of PlacedPages holding
+PlacedText, PlacedPicture, PlacedBlock and PlacedCalendar, each an item as it
+will be printed. The templates only lay them out. It reads picture files (to
+hash them) but writes nothing.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import ClassVar
 
 from floatpage.model.document import (
     BlockItem, CalendarItem, Page, PictureItem, Project, TextItem,
 )
-from floatpage.model.key_specs import HEX_COLOUR
+from floatpage.model.schema import complaints
 from floatpage.typeset.calendar_panel import Rect, layout_calendar
 from floatpage.model.picture_files import is_merge_placeholder
 from floatpage.typeset.errors import RenderError
@@ -27,66 +29,66 @@ from floatpage.typeset.text_layout import (
 
 
 @dataclass(frozen=True)
-class TextScene:
+class PlacedItem:
+    """What every placed item has: its id, a label that names it in messages, and its marker
+    (its number in the .tex, which maps a TeX error back to the item). `kind` names the
+    template that prints it, latex_templates/items/KIND.tex.j2."""
+
     item_id: str
     label: str
-    groups: tuple[RunGroup, ...]
-    kind: str = "text"
-    marker: int = 0
+    marker: int = field(default=0, kw_only=True)
+    kind: ClassVar[str]
 
 
 @dataclass(frozen=True)
-class PictureScene:
-    item_id: str
-    label: str
+class PlacedText(PlacedItem):
+    kind: ClassVar[str] = "text"
+    groups: tuple[RunGroup, ...]
+
+
+@dataclass(frozen=True)
+class PlacedPicture(PlacedItem):
+    kind: ClassVar[str] = "picture"
     left_mm: float
     top_mm: float
     w_mm: float
     h_mm: float
     plan: PicturePlan
     clip: Rect | None = None  # for a background picture that covers (and overflows) the page
-    kind: str = "picture"
-    marker: int = 0
 
 
 @dataclass(frozen=True)
-class BlockScene:
-    item_id: str
-    label: str
+class PlacedBlock(PlacedItem):
+    kind: ClassVar[str] = "block"
     rect: Rect
     color: str
     opacity: float
-    kind: str = "block"
-    marker: int = 0
 
 
 @dataclass(frozen=True)
-class CalendarScene:
-    item_id: str
-    label: str
+class PlacedCalendar(PlacedItem):
+    kind: ClassVar[str] = "calendar"
     rect: Rect
     color: str
     groups: tuple[RunGroup, ...]
     rules: tuple[tuple[float, float, float, float], ...]
     weekend: tuple[Rect, ...]
-    kind: str = "calendar"
-    marker: int = 0
 
 
 @dataclass
-class PageScene:
+class PlacedPage:
     page_id: str
     w_mm: float
     h_mm: float
-    background: list = field(default_factory=list)  # BlockScene / PictureScene
-    items: list = field(default_factory=list)
+    background: list[PlacedItem] = field(default_factory=list)  # a block or a picture
+    items: list[PlacedItem] = field(default_factory=list)
     print_setup: object = None  # print_marks.PrintSetup for `render --print`
 
 
 @dataclass
-class DocumentScene:
+class PlacedDocument:
     title: str
-    pages: list[PageScene]
+    pages: list[PlacedPage]
     faces: list[tuple[FaceKey, Path]]
     colors: list[str]
     pictures: list[PicturePlan]
@@ -100,41 +102,38 @@ def item_label(item, page: Page) -> str:
 
 
 def check_item(item, label: str) -> None:
-    """Refuse what the loader would have refused, for projects built in code (the editor)."""
-    numbers = (item.x, item.y, item.w, item.h)
-    if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in numbers):
-        raise RenderError(f"{label}: its position or size is not a finite number {numbers} "
-                          "(move or resize it, or run the layout again)")
-    if item.w <= 0 or item.h <= 0:
-        raise RenderError(f"{label}: its width and height must be greater than 0")
-    colour = getattr(item, "color", "#000000")
-    if not isinstance(colour, str) or not HEX_COLOUR.match(colour):
-        raise RenderError(f'{label}: colour {colour!r} is not written as "#rrggbb"')
+    """Refuse what the loader would have refused, for projects built in code (the editor, merge),
+    with the model's own checks and words."""
+    problems = complaints(item)
+    if problems:
+        name, complaint = problems[0]
+        raise RenderError(f'{label}: "{name}" {complaint} (change it in the editor or the project '
+                          "file, or undo the edit that made it)")
 
 
 def rect_of(item) -> Rect:
     return Rect(item.x - item.w / 2, item.y - item.h / 2, item.x + item.w / 2, item.y + item.h / 2)
 
 
-def text_scene(item: TextItem, label: str, warnings: list[str]) -> TextScene | None:
+def place_text(item: TextItem, label: str, warnings: list[str]) -> PlacedText | None:
     face = face_for(item.font, item.bold, item.italic)
     fit, missing, face = fit_in_box(item.text, face, item.w, item.h)
     warnings += fit_warnings(label, face, fit, missing)
     if not fit.lines:
         return None
     runs = place_lines(fit, None, item.x - item.w / 2, item.y - item.h / 2, item.h)
-    return TextScene(item.id, label, (RunGroup(face, fit.font_pt, item.color, runs),))
+    return PlacedText(item.id, label, (RunGroup(face, fit.font_pt, item.color, runs),))
 
 
-def calendar_scene(item: CalendarItem, label: str, warnings: list[str]) -> CalendarScene:
+def place_calendar(item: CalendarItem, label: str, warnings: list[str]) -> PlacedCalendar:
     layout = layout_calendar(item)
     if layout.missing:
         warnings.append(missing_glyph_warning(label, layout.groups[0].face, list(layout.missing)))
-    return CalendarScene(item.id, label, rect_of(item), item.color, layout.groups, layout.rules,
-                         layout.weekend)
+    return PlacedCalendar(item.id, label, rect_of(item), item.color, layout.groups, layout.rules,
+                          layout.weekend)
 
 
-def background_scenes(project: Project, page: Page) -> list:
+def place_background(project: Project, page: Page) -> list:
     background = page.background
     if background is None:
         return []
@@ -149,27 +148,26 @@ def background_scenes(project: Project, page: Page) -> list:
         w, h = scale * plan.aspect, scale
         if plan.pixel_size == (0, 0):
             w, h = page.width_mm, page.height_mm
-        return [PictureScene("background", label, (page.width_mm - w) / 2, (page.height_mm - h) / 2,
-                             w, h, plan, clip=whole)]
+        return [PlacedPicture("background", label, (page.width_mm - w) / 2,
+                              (page.height_mm - h) / 2, w, h, plan, clip=whole)]
     if background.color:
-        if not HEX_COLOUR.match(str(background.color)):
-            raise RenderError(f'{label}: colour {background.color!r} is not written as "#rrggbb"')
-        return [BlockScene("background", label, whole, background.color, 1.0)]
+        check_item(background, label)
+        return [PlacedBlock("background", label, whole, background.color, 1.0)]
     return []
 
 
-def build_scene(project: Project) -> DocumentScene:
+def place_document(project: Project) -> PlacedDocument:
     warnings: list[str] = []
     pages = []
     for page in project.pages:
-        scene = PageScene(page.id, page.width_mm, page.height_mm,
-                          background=background_scenes(project, page))
+        placed_page = PlacedPage(page.id, page.width_mm, page.height_mm,
+                                 background=place_background(project, page))
         ordered = sorted(enumerate(page.items), key=lambda pair: (pair[1].z, pair[0]))
         for _, item in ordered:
             label = item_label(item, page)
             check_item(item, label)
             if isinstance(item, TextItem):
-                made = text_scene(item, label, warnings)
+                made = place_text(item, label, warnings)
             elif isinstance(item, PictureItem):
                 if is_merge_placeholder(item.path):
                     raise RenderError(f'{label}: picture "{item.path}" is filled from a data '
@@ -177,41 +175,41 @@ def build_scene(project: Project) -> DocumentScene:
                                       "with `floatpage merge TEMPLATE DATA -o OUTDIR`")
                 left, top = item.x - item.w / 2, item.y - item.h / 2
                 plan = plan_picture(project.base_dir / item.path, item.w, item.h, label)
-                made = PictureScene(item.id, f'{label} (picture file "{item.path}")', left, top,
-                                    item.w, item.h, plan)
+                made = PlacedPicture(item.id, f'{label} (picture file "{item.path}")', left, top,
+                                     item.w, item.h, plan)
             elif isinstance(item, BlockItem):
-                made = BlockScene(item.id, label, rect_of(item), item.color,
-                                  min(1.0, max(0.0, float(item.opacity))))
+                made = PlacedBlock(item.id, label, rect_of(item), item.color,
+                                   min(1.0, max(0.0, float(item.opacity))))
             elif isinstance(item, CalendarItem):
-                made = calendar_scene(item, label, warnings)
+                made = place_calendar(item, label, warnings)
             else:
                 raise TypeError(f"unknown item kind {type(item).__name__}")
             if made is not None:
-                scene.items.append(made)
-        pages.append(scene)
+                placed_page.items.append(made)
+        pages.append(placed_page)
     labels: list[str] = []
     for page in pages:
         for group in (page.background, page.items):
-            for index, scene in enumerate(group):
-                group[index] = replace(scene, marker=len(labels))
-                labels.append(scene.label)
+            for index, placed in enumerate(group):
+                group[index] = replace(placed, marker=len(labels))
+                labels.append(placed.label)
     faces: dict[FaceKey, None] = {}
     colors: dict[str, None] = {}
     pictures: dict[Path, PicturePlan] = {}
     for page in pages:
-        for scene in page.background + page.items:
-            for group in getattr(scene, "groups", ()):
+        for placed in page.background + page.items:
+            for group in getattr(placed, "groups", ()):
                 faces[group.face] = None
                 colors[group.color.lower()] = None
-            if hasattr(scene, "color"):
-                colors[scene.color.lower()] = None
-            if isinstance(scene, PictureScene):
-                pictures[scene.plan.cache_path] = scene.plan
+            if hasattr(placed, "color"):
+                colors[placed.color.lower()] = None
+            if isinstance(placed, PlacedPicture):
+                pictures[placed.plan.cache_path] = placed.plan
     folders = {plan.cache_path.parent for plan in pictures.values()}
     picture_dir = folders.pop() if len(folders) == 1 else None
     if picture_dir is not None and not SAFE_PATH.match(str(picture_dir)):
         picture_dir = None
-    return DocumentScene(project.title, pages, [(face, font_path(face.plain)) for face in faces],
+    return PlacedDocument(project.title, pages, [(face, font_path(face.plain)) for face in faces],
                          list(colors), list(pictures.values()), warnings, labels, picture_dir)
 
 
@@ -221,7 +219,7 @@ def text_warnings(project: Project) -> list[str]:
     for page in project.pages:
         for item in page.items:
             if isinstance(item, TextItem):
-                text_scene(item, item_label(item, page), warnings)
+                place_text(item, item_label(item, page), warnings)
             elif isinstance(item, CalendarItem):
-                calendar_scene(item, item_label(item, page), warnings)
+                place_calendar(item, item_label(item, page), warnings)
     return warnings

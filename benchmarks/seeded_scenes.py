@@ -1,6 +1,8 @@
-"""Seeded test and benchmark pages: mixed photos and text boxes on A4.
+"""Seeded scenes for the physics tests and benchmarks: mixed photos and text boxes on A4.
 
-Shared by tests/physics and benchmarks/physics.py so that both talk about the same pages.
+A scene is a page size and the items' centres and sizes, before any physics. Shared by
+tests/physics (pytest's pythonpath holds this folder) and the benchmarks run from here, so
+that both talk about the same pages; not part of the installed package.
 """
 
 from __future__ import annotations
@@ -18,6 +20,8 @@ TEXT_SHARE = 0.35  # share of items that are text boxes
 
 @dataclass(frozen=True)
 class Scene:
+    """One seeded page of boxes: a name for the tables, the page, the centres and sizes."""
+
     name: str
     page_w_mm: float
     page_h_mm: float
