@@ -124,12 +124,32 @@ class CellCanvas:
             at += wide
 
 
+def changed_span(cached: tuple[bytes, tuple, Strip] | None, pair: np.ndarray, glyphs: tuple,
+                 cols: int) -> tuple[int, int]:
+    """(first, end) columns of a row that differ from its cached version, one cell wider on
+    each side for wide characters; the whole row when there is nothing to compare with."""
+    if cached is None or cached[2].cell_length != cols or len(cached[0]) != pair.nbytes:
+        return 0, cols
+    old_pair = np.frombuffer(cached[0], dtype=pair.dtype).reshape(pair.shape)
+    columns = set(np.flatnonzero((old_pair != pair).any(axis=0)).tolist())
+    columns.update(col for col, _glyph in set(cached[1]) ^ set(glyphs))
+    if not columns:
+        return 0, 0
+    return max(min(columns) - 1, 0), min(max(columns) + 2, cols)
+
+
 class StripCache:
-    """Turns a canvas into Strips, reusing styles and unchanged rows across frames."""
+    """Turns a canvas into Strips, reusing styles and unchanged rows across frames.
+
+    `changed` tells, after each `strips` call, which cells of which rows differ from the last
+    frame, as {row: (first col, end col)}: the preview repaints only those, since a moving
+    item changes a few columns of its rows and the page's surround none (issue 11).
+    """
 
     def __init__(self):
         self._styles: dict[tuple[int, int, bool], Style] = {}
         self._rows: dict[int, tuple[bytes, tuple, Strip]] = {}
+        self.changed: dict[int, tuple[int, int]] = {}
 
     def style(self, fg: int, bg: int, bold: bool = False) -> Style:
         key = (fg, bg, bold)
@@ -148,6 +168,7 @@ class StripCache:
         for (row, col), glyph in canvas.glyphs.items():
             glyph_rows.setdefault(row, []).append((col, glyph))
         strips = []
+        self.changed = {}
         for row in range(canvas.rows):
             pair = packed[2 * row:2 * row + 2]
             glyphs = tuple(sorted(glyph_rows.get(row, ()), key=lambda entry: entry[0]))
@@ -158,6 +179,7 @@ class StripCache:
                 strips.append(cached[2])
                 continue
             strip = self._row_strip(pair[0].tolist(), pair[1].tolist(), dict(glyphs))
+            self.changed[row] = changed_span(cached, pair, glyphs, canvas.cols)
             self._rows[row] = (key, glyphs, strip)
             strips.append(strip)
         return strips

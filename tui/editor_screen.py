@@ -29,6 +29,7 @@ from floatpage.model.errors import FloatpageError, printable
 from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.frame_meter import FrameMeter
+from floatpage.tui.frame_pacer import FramePacer
 from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank, in_footer
 from floatpage.tui.page_painter import Scene
 from floatpage.tui.page_preview import PagePreview
@@ -100,6 +101,7 @@ class EditorScreen(Screen):
         self._release_timer = None
         self._composed = False
         self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
+        self._steps_undrawn = 0  # physics steps since the last drawn frame
         self._quality = ("", "")
         self.details = False  # `v`: the status line shows its numbers
         self._page_bar = None
@@ -115,6 +117,7 @@ class EditorScreen(Screen):
     def on_mount(self) -> None:
         self._composed = True
         self.frame_timer = self.set_interval(FRAME_S, self.tick, pause=True)
+        self.pacer = FramePacer(getattr(self.app._driver, "link", None))
         self.query_one(PagePreview).focus()
         self.redraw()
         self.wake()
@@ -126,20 +129,27 @@ class EditorScreen(Screen):
     # -- the physics loop ----------------------------------------------------------------
 
     def tick(self) -> None:
-        """One frame: physics for a time budget, then one redraw. Pauses itself when settled."""
+        """One frame: physics for a time budget, then one redraw, if the link has taken the
+        frames before (`frame_pacer`); else the physics goes on and the drawing waits. Pauses
+        itself once settled and its last frame is drawn."""
         engine = self.session.engine
-        if not self.running or engine.settled:
-            self.frame_timer.pause()
-            self.redraw()
+        if not self.running or engine.settled:  # at rest: draw the last frame, then stop
+            if self.pacer.may_draw():
+                self.frame_timer.pause()
+                self.redraw()
             return
         start = time.perf_counter()
-        steps = engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
+        self._steps_undrawn += engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
+        if engine.settled:
+            self.finish_settling()
+        if not self.pacer.may_draw():
+            return
         if engine.settled:
             self.frame_timer.pause()
-            self.finish_settling()
         self.redraw()
         now = time.perf_counter()
-        self.meter.record(now, steps, now - start)
+        self.meter.record(now, self._steps_undrawn, now - start)
+        self._steps_undrawn = 0
         self.frames_ticked += 1
 
     def finish_settling(self) -> None:
@@ -154,7 +164,11 @@ class EditorScreen(Screen):
             engine.finalize()
 
     def wake(self) -> None:
-        """Start the frame timer if the physics has something to do."""
+        """Start the frame timer if the physics has something to do, once the screen has been
+        written: a key's answer goes out before the physics frame it set off (issue 11)."""
+        self.call_after_refresh(self._resume_frames)
+
+    def _resume_frames(self) -> None:
         if self.running and not self.session.engine.settled:
             self.frame_timer.resume()
 
@@ -202,7 +216,7 @@ class EditorScreen(Screen):
         bar = self.page_bar_text()
         if bar != self._page_bar:  # an unchanged bar costs no bytes
             self._page_bar = bar
-            self.query_one("#page-bar", Label).update(bar)
+            self.query_one("#page-bar", Label).update(bar, layout=False)  # one fixed line
 
     def quality_summary(self) -> tuple[str, str]:
         """The layout's quality, as numbers and in words; exact when idle, refreshed a few
