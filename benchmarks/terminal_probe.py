@@ -21,6 +21,7 @@ import termios
 import time
 from dataclasses import dataclass
 
+CURSOR_QUERY, CURSOR_ANSWER = b"\x1b[6n", b"\x1b[1;1R"
 QUIET_S = 2.0  # "visibly still": nothing written for this long
 UP, DOWN = b"\x1b[A", b"\x1b[B"
 KEY_REPEAT_HZ = 30  # a terminal's key repeat while an arrow is held
@@ -41,6 +42,7 @@ class Terminal:
         self.total = 0
         self.last_byte_at = time.monotonic()
         self.seen = bytearray()  # everything received since the last until_seen
+        self._carry = b""  # the end of the last read, for a query split between reads
 
     def pump(self, seconds: float) -> int:
         """Read for `seconds`; the bytes read."""
@@ -60,9 +62,19 @@ class Terminal:
                     break
                 got += len(data)
                 self.seen += data
+                self.answer_queries(data)
                 self.last_byte_at = time.monotonic()
         self.total += got
         return got
+
+    def answer_queries(self, data: bytes) -> None:
+        """Answer cursor-position queries, as a terminal emulator does once it has drawn
+        everything before them (the editor paces its frames by these answers)."""
+        joined = self._carry + data
+        for _ in range(joined.count(CURSOR_QUERY)):
+            os.write(self.fd, CURSOR_ANSWER)
+        self._carry = joined[-(len(CURSOR_QUERY) - 1):] if not joined.endswith(CURSOR_QUERY) \
+            else b""
 
     def until_quiet(self, quiet_s: float = QUIET_S, limit_s: float = 60.0) -> int:
         """Read until nothing has come for `quiet_s` (or `limit_s` passed); the bytes read."""

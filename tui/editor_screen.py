@@ -40,6 +40,7 @@ from floatpage.tui.status_line import Status, StatusLine
 FRAME_S = 1 / 30
 PHYSICS_BUDGET_S = 0.008  # leaves most of a 33 ms frame for drawing and for keys
 RELEASE_AFTER_S = 0.6  # a nudged item is let go this long after the last arrow key
+ANSWER_FIRST_S = 0.02  # longer than Textual's screen update period (1/60 s)
 QUALITY_EVERY_S = 0.25  # the quality measure is O(n^2): while settling, refresh it 4 times a second
 
 
@@ -102,6 +103,7 @@ class EditorScreen(Screen):
         self._composed = False
         self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
         self._steps_undrawn = 0  # physics steps since the last drawn frame
+        self._wake_timer = None
         self._quality = ("", "")
         self.details = False  # `v`: the status line shows its numbers
         self._page_bar = None
@@ -164,11 +166,14 @@ class EditorScreen(Screen):
             engine.finalize()
 
     def wake(self) -> None:
-        """Start the frame timer if the physics has something to do, once the screen has been
-        written: a key's answer goes out before the physics frame it set off (issue 11)."""
-        self.call_after_refresh(self._resume_frames)
+        """Start the frame timer if the physics has something to do, a screen update later:
+        a key's answer is written before the physics frame it set off, which used to come
+        first and hold the answer back by a frame (issue 11)."""
+        if self._wake_timer is None:
+            self._wake_timer = self.set_timer(ANSWER_FIRST_S, self._resume_frames)
 
     def _resume_frames(self) -> None:
+        self._wake_timer = None
         if self.running and not self.session.engine.settled:
             self.frame_timer.resume()
 
@@ -206,6 +211,12 @@ class EditorScreen(Screen):
         if not self._composed:
             return
         self.preview.show(self.scene())
+        self.redraw_words()
+
+    def redraw_words(self) -> None:
+        """The status lines and the top bar."""
+        if not self._composed:
+            return
         engine = self.session.engine
         summary, words = self.quality_summary()
         self.query_one(StatusLine).show(Status(
@@ -256,6 +267,10 @@ class EditorScreen(Screen):
         parts.append((4, 4, f"{len(page.items)} items"))
         if selected:
             parts.append((1, 5, f"[b]{escape(selected.id)}[/b] ({describe_item(selected)})"))
+            # where it is: an arrow moves it 2 mm, often less than a cell of the preview, and
+            # the key would have shown nothing at all (issue 11: key to screen)
+            x_mm, y_mm = session.engine.positions().get(selected.id, (selected.x, selected.y))
+            parts.append((2, 6, f"at {x_mm:.0f}, {y_mm:.0f} mm"))
         width = max(self.size.width - 2, 20) if self.is_mounted else 200
         kept = sorted(parts)
         while len(kept) > 1 and Text.from_markup(" · ".join(

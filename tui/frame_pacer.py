@@ -80,9 +80,10 @@ class LinkMeter:
                 self.answered_any = True
 
     def backlog_s(self) -> float:
-        """How long the oldest unanswered query has waited (0 when none is)."""
+        """How long the oldest unanswered query has waited (0 when none is, or before the
+        terminal has shown that it answers at all)."""
         with self._lock:
-            if not self._in_flight or not self.supported:
+            if not self._in_flight or not self.supported or not self.answered_any:
                 return 0.0
             return self.clock() - self._in_flight[0]
 
