@@ -104,6 +104,7 @@ class EditorScreen(Screen):
         self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
         self._steps_undrawn = 0  # physics steps since the last drawn frame
         self._wake_timer = None
+        self.pacer = FramePacer(None)  # on_mount gives it the terminal's link, if there is one
         self._quality = ("", "")
         self.details = False  # `v`: the status line shows its numbers
         self._page_bar = None
@@ -289,6 +290,9 @@ class EditorScreen(Screen):
     def after_edit(self) -> None:
         """Push the session's selection up into the UI state, redraw, wake the physics."""
         self.selected_id = self.session.selected_id
+        if self.running and not self.session.engine.settled and not self.pacer.may_draw():
+            self.wake()  # a held key outruns the link or the byte budget: a frame shows it
+            return
         self.redraw()
         self.wake()
 

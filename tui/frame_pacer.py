@@ -11,6 +11,9 @@ by more than a couple of frames, and draws again as soon as the answers catch up
 frame rate falls to what the link carries and rises back when it drains. Nothing is lost:
 the next frame drawn shows the latest state, and the last frame is owed until it is drawn.
 
+Whatever the link, drawn frames stay within BYTES_PER_S a second (goal: motion at most
+100 KB/s): a page whose every frame repaints pictures draws fewer of them.
+
 A terminal that never answers (none within NO_ANSWER_S of the first query) is not asked
 again; then the only sign left is output the writer thread could not hand to the terminal
 (`pending`, bytes written but not yet flushed), which also holds frames back.
@@ -28,6 +31,8 @@ NO_ANSWER_S = 2.0
 SLACK_S = 0.07  # about two frames beyond the link's bare delay
 RECENT_ANSWERS = 32
 STUCK_WRITE_S = 0.05  # output not flushed for this long: the terminal is not reading
+BYTES_PER_S = 80_000  # drawn frames' budget; keys' answers are never held back
+BUDGET_WINDOW_S = 1.0
 
 
 class LinkMeter:
@@ -46,6 +51,7 @@ class LinkMeter:
         self.pending = 0  # characters handed to the writer thread, not yet flushed
         self._pending_since: float | None = None
         self.armed = False  # a drawn frame is on its way: follow it with a query
+        self.bytes_written = 0  # everything handed to the terminal, in UTF-8 bytes
 
     def arm(self) -> None:
         """The next write carries a physics frame: ask after it (keys and dialogs are not
@@ -94,8 +100,9 @@ class LinkMeter:
 
     # -- output the writer thread holds ---------------------------------------------------
 
-    def queued(self, characters: int) -> None:
+    def queued(self, characters: int, size_bytes: int = 0) -> None:
         with self._lock:
+            self.bytes_written += size_bytes
             if self.pending == 0:
                 self._pending_since = self.clock()
             self.pending += characters
@@ -114,17 +121,28 @@ class LinkMeter:
 class FramePacer:
     """Decides at each physics tick whether to draw it. `link` is None without a terminal."""
 
-    def __init__(self, link: LinkMeter | None):
+    def __init__(self, link: LinkMeter | None, clock=time.monotonic):
         self.link = link
+        self.clock = clock
         self.skipped = 0  # frames not drawn since the last one that was
+        self._written: deque[tuple[float, int]] = deque()  # (time, bytes written) per tick
+
+    def over_budget(self, link: LinkMeter) -> bool:
+        """More than BYTES_PER_S written in the last BUDGET_WINDOW_S."""
+        now, total = self.clock(), link.bytes_written
+        self._written.append((now, total))
+        while len(self._written) > 1 and now - self._written[1][0] >= BUDGET_WINDOW_S:
+            self._written.popleft()
+        return total - self._written[0][1] > BYTES_PER_S * BUDGET_WINDOW_S
 
     def may_draw(self) -> bool:
-        """True when the link has caught up; then the frame about to be drawn is followed by
-        a query."""
+        """True when the link has caught up and the byte budget allows; then the frame about
+        to be drawn is followed by a query."""
         link = self.link
         if link is None:
             return True
-        behind = link.backlog_s() > link.bare_delay_s() + SLACK_S or link.write_stuck()
+        behind = (link.backlog_s() > link.bare_delay_s() + SLACK_S or link.write_stuck()
+                  or self.over_budget(link))
         self.skipped = self.skipped + 1 if behind else 0
         if not behind:
             link.arm()

@@ -62,7 +62,7 @@ class HangupAwareDriver(LinuxDriver):
         """The same screen for fewer bytes (over SSH each byte counts, issue 11), and after a
         physics frame a query whose answer tells when the terminal has drawn it."""
         data = self.compactor.compact(data) + self.link.probe()
-        self.link.queued(len(data))
+        self.link.queued(len(data), len(data.encode("utf-8", "replace")))
         super().write(data)
 
     def run_input_thread(self) -> None:
