@@ -40,6 +40,7 @@ from floatpage.tui.status_line import Status, StatusLine
 FRAME_S = 1 / 30
 PHYSICS_BUDGET_S = 0.008  # leaves most of a 33 ms frame for drawing and for keys
 RELEASE_AFTER_S = 0.6  # a nudged item is let go this long after the last arrow key
+STILL_FRAMES = 15  # half a second of frames that change nothing on screen: at rest
 ANSWER_FIRST_S = 0.02  # longer than Textual's screen update period (1/60 s)
 QUALITY_EVERY_S = 0.25  # the quality measure is O(n^2): while settling, refresh it 4 times a second
 
@@ -150,10 +151,22 @@ class EditorScreen(Screen):
         if engine.settled:
             self.frame_timer.pause()
         self.redraw()
+        if self.preview.unchanged_frames >= STILL_FRAMES and self.session.held_id is None:
+            self.come_to_rest()
         now = time.perf_counter()
         self.meter.record(now, self._steps_undrawn, now - start)
         self._steps_undrawn = 0
         self.frames_ticked += 1
+
+    def come_to_rest(self) -> None:
+        """The page has looked the same for STILL_FRAMES frames: what moves still moves by
+        less than a cell, so stop there, as `finish_settling` would at the physics' own rest.
+        The calendar went on creeping unseen for 5 s after a held arrow, and a key meanwhile
+        waited for the frame in progress (issue 11: visibly still within 2 s)."""
+        self.session.engine.mark_settled()
+        self.finish_settling()
+        self.frame_timer.pause()
+        self.redraw()
 
     def finish_settling(self) -> None:
         """What `floatpage settle` does at the end, the editor does too: the no-overlap pass,

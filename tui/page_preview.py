@@ -61,6 +61,7 @@ class PagePreview(Widget, can_focus=True):
         self._cache = StripCache()
         self._drag: tuple[str, float, float] | None = None  # item id, grab offset x, y (mm)
         self.frames_drawn = 0
+        self.unchanged_frames = 0  # frames in a row that changed no cell of the preview
 
     # -- drawing -------------------------------------------------------------------------
 
@@ -82,6 +83,7 @@ class PagePreview(Widget, can_focus=True):
         self.canvas = canvas
         old, self._strips = self._strips, self._cache.strips(canvas)
         self.frames_drawn += 1
+        self.unchanged_frames = 0 if self._cache.changed else self.unchanged_frames + 1
         self.refresh_changed_rows(old, self._strips)
 
     def refresh_changed_rows(self, old: list[Strip], new: list[Strip]) -> None:
