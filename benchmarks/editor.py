@@ -93,13 +93,14 @@ def sessions(scratch: Path) -> list[tuple[str, list[str], Path, bytes, bool]]:
 def run_link(args: argparse.Namespace) -> None:
     sizes = [tuple(int(part) for part in size.split("x")) for size in args.size]
     with tempfile.TemporaryDirectory() as folder:
-        scratch = Path(folder)
-        apps = sessions(scratch)
         sshd = LoopbackSshd() if args.link == "ssh" else None
         try:
             if sshd is not None:
                 sshd.start()
-            for size in sizes:
+            for size in sizes:  # fresh copies: a killed session leaves a recovery file behind
+                scratch = Path(folder) / f"{size[0]}x{size[1]}"
+                scratch.mkdir()
+                apps = sessions(scratch)
                 results: list[tuple[str, SessionFigures]] = []
                 for name, argv, cwd, ready, select_first in apps:
                     term = open_terminal(args.link, sshd, argv, cwd, size, args.colors)
