@@ -17,7 +17,8 @@ test: setup
 benchmarks: setup
 	.venv/bin/python benchmarks/physics.py
 	.venv/bin/python benchmarks/render.py
-	.venv/bin/python benchmarks/editor.py
+	.venv/bin/python benchmarks/editor.py frames
+	.venv/bin/python benchmarks/editor.py link    # starts its own sshd on 127.0.0.1 (openssh-server)
 
 clean:
 	rm -rf .venv .pytest_cache build *.egg-info

@@ -1,171 +1,161 @@
-"""Editor benchmark: frame time (physics + drawing) at N items, and keypress-to-redraw latency.
+"""The editor benchmark: what a user at the far end of an SSH link gets, against a trivial
+Textual app over the same link in the same run.
 
-Runs the real app headless (Textual's run_test, 100 x 40 cells) on a generated A4 page of N
-items, so the figures include the real engine, the real painter and the real Strip building.
+    .venv/bin/python benchmarks/editor.py                   # link: over a real sshd, 100x32 and 80x24
+    .venv/bin/python benchmarks/editor.py link --link pty   # the same over a bare pty (no sshd)
+    .venv/bin/python benchmarks/editor.py frames            # headless frame time at N = 50 and 200
+    .venv/bin/python benchmarks/editor.py hangup            # kill the ssh client / the tmux session
 
-    .venv/bin/python benchmarks/editor.py            # N = 50 and N = 200
-    .venv/bin/python benchmarks/editor.py --n 50 --frames 120
-
-Frame time: `EditorScreen.tick` as a whole (physics under the editor's time budget, then
-the drawing: paint the grid, build the Strips, status lines), and the drawing alone. The page
-starts scattered and is scattered again whenever it settles, so the physics never idles.
-Then the real 30 Hz loop runs on its own for two seconds and its frame rate is counted. Keypress to redraw: from sending an arrow key until the
-screen with the moved item has been written out, with the physics running in the background.
+`link` starts its own sshd on 127.0.0.1 (benchmarks/loopback_sshd.py: a throwaway host key and
+client key in a temporary folder; it is stopped at the end, also on failure), then for each
+terminal size runs, through `ssh -tt` on a pty of that size, a trivial Textual app (a label
+showing the last key) and `floatpage edit` on each sample. Per session it counts (see
+benchmarks/terminal_probe.py): one arrow press from rest, a 1 s held arrow (30 presses),
+bytes a second while it is held, the seconds from the last key until nothing more is written
+(2 s quiet), idle bytes, and the median time from a key to the first byte of its answer, from
+rest. The remote end gets TERM=xterm-256color and COLORTERM=truecolor: every colour is sent in
+full, the costliest case (`--colors 256` for a link that does not pass COLORTERM). The goals
+are issue 11's, at 100x32. Compare within one run; the machine is shared.
 """
 
 from __future__ import annotations
 
 import argparse
-import asyncio
-import copy
-import random
-import statistics
+import os
+import shlex
+import shutil
 import sys
 import tempfile
-import time
+import textwrap
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from textual import events
+import editor_frames  # noqa: E402
+import editor_hangup  # noqa: E402
+from loopback_sshd import LoopbackSshd  # noqa: E402
+from terminal_probe import SessionFigures, Terminal, measure_session  # noqa: E402
 
-from floatpage.model.document import BlockItem, Page, Project, TextItem
-from floatpage.model.save import save_project
-from floatpage.tui.app import make_app
-from floatpage.tui.editor_screen import PHYSICS_BUDGET_S
+ROOT = Path(__file__).resolve().parents[1]
+SAMPLES = ("greeting-card", "shop-flyer", "calendar-2027")
+TRIVIAL_APP = textwrap.dedent("""
+    from textual.app import App
+    from textual.widgets import Label
 
-
-def build_page(folder: Path, count: int, seed: int = 1) -> Path:
-    """An A4 page with `count` text and block items scattered at random (overlapping at first)."""
-    rng = random.Random(seed)
-    items = []
-    for index in range(count):
-        w, h = rng.uniform(10, 40), rng.uniform(8, 30)
-        x, y = rng.uniform(w / 2, 210 - w / 2), rng.uniform(h / 2, 297 - h / 2)
-        if index % 2:
-            items.append(TextItem(id=f"t{index}", x=x, y=y, w=w, h=h, text=f"text {index}"))
-        else:
-            items.append(BlockItem(id=f"b{index}", x=x, y=y, w=w, h=h, color="#4c8ed9"))
-    project = Project(title=f"bench {count}", pages=[Page(id="p", items=items)])
-    path = folder / f"bench-{count}.toml"
-    save_project(project, path)
-    return path
-
-
-def summary(samples_s: list[float]) -> str:
-    ms = sorted(1000 * s for s in samples_s)
-    p95 = ms[min(len(ms) - 1, int(0.95 * len(ms)))]
-    return f"median {statistics.median(ms):6.2f} ms · p95 {p95:6.2f} ms · max {ms[-1]:6.2f} ms"
+    class Trivial(App):
+        def compose(self):
+            yield Label("press keys", id="last")
+        def on_key(self, event):
+            self.query_one("#last", Label).update(f"last key: {event.key}")
+    Trivial().run()
+""")
+GOALS = {"one_key_kb": 10.0, "held_kb": 300.0, "steady_kb_s": 100.0, "still_after_s": 2.0,
+         "idle_b_s": 0.0}
+LATENCY_GOAL = 2.0  # times the trivial app's median
 
 
-async def measure_frames(path: Path, frames: int) -> dict:
-    """Time `EditorScreen.tick` (physics under its budget, then the redraw) frame by frame.
-
-    The frame timer is paused and ticks are driven here, one after another; whenever the page
-    settles it is put back to its scattered start and reheated, so every frame has work to do.
-    """
-    app = make_app(path, autostart=True)
-    async with app.run_test(size=(100, 40)) as pilot:
-        await pilot.pause()
-        screen, session = app.editor, app.session
-        start_items = copy.deepcopy(session.page.items)
-
-        def restart() -> None:
-            session.page.items[:] = copy.deepcopy(start_items)
-            session.engine = session._build_engine()  # from the scattered start, not write-back
-            session.engine.reheat()
-            screen.frame_timer.pause()
-
-        restart()
-        frame, drawing, steps = [], [], []
-        original_redraw = screen.redraw
-
-        def timed_redraw() -> None:  # the drawing inside the tick, timed where it happens
-            start = time.perf_counter()
-            original_redraw()
-            drawing.append(time.perf_counter() - start)
-
-        screen.redraw = timed_redraw
-        for _ in range(frames):
-            if session.engine.settled:
-                restart()
-            start = time.perf_counter()
-            screen.tick()
-            frame.append(time.perf_counter() - start)
-            steps.append(screen.meter.frames[-1][1])
-        screen.redraw = original_redraw
-        restart()
-        screen.wake()  # now let the real 30 Hz loop run on its own for two seconds
-        ticked, began = screen.frames_ticked, time.perf_counter()
-        while time.perf_counter() - began < 2.0:
-            await asyncio.sleep(0.02)
-            if session.engine.settled:  # scatter it again so the loop never idles
-                restart()
-                screen.wake()
-        live_fps = (screen.frames_ticked - ticked) / (time.perf_counter() - began)
-    return {"frame": frame, "drawing": drawing, "steps": steps, "live_fps": live_fps}
+def remote_env(colors: str) -> dict[str, str]:
+    env = {"TERM": "xterm-256color", "LANG": "C.UTF-8"}
+    if colors == "truecolor":
+        env["COLORTERM"] = "truecolor"
+    return env
 
 
-async def measure_keypresses(path: Path, presses: int) -> list[float]:
-    """Key event posted -> action done and preview repainted -> the screen written to the driver.
+def open_terminal(link: str, sshd: LoopbackSshd | None, argv: list[str], cwd: Path,
+                  size: tuple[int, int], colors: str) -> Terminal:
+    """`argv` in `cwd`, on a pty of `size` (columns, rows): directly, or through ssh -tt."""
+    env = remote_env(colors)
+    if link == "pty":
+        local = {k: v for k, v in os.environ.items() if k != "COLORTERM"}
+        return Terminal(argv, str(cwd), {**local, **env}, *size)
+    assert sshd is not None
+    assignments = " ".join(f"{key}={shlex.quote(value)}" for key, value in env.items())
+    command = f"cd {shlex.quote(str(cwd))} && exec env {assignments} {shlex.join(argv)}"
+    local = {**os.environ, "TERM": env["TERM"]}
+    return Terminal(sshd.ssh_argv(command), str(cwd), local, *size)
 
-    The physics loop runs throughout (the page is reheated before each key), so a key may have
-    to wait for the frame in progress; that wait is part of the figure.
-    """
-    app = make_app(path, autostart=True)
-    displays: list[float] = []
-    original_display = app._display
 
-    def timed_display(screen, renderable) -> None:
-        original_display(screen, renderable)
-        displays.append(time.perf_counter())
+def sessions(scratch: Path) -> list[tuple[str, list[str], Path, bytes, bool]]:
+    """(name, argv, folder, text that shows it is up, select an item first) for each app."""
+    trivial = scratch / "trivial.py"
+    trivial.write_text(TRIVIAL_APP)
+    rows = [("trivial Textual app", [sys.executable, str(trivial)], scratch, b"press keys",
+             False)]
+    editor = str(ROOT / ".venv" / "bin" / "floatpage")
+    for sample in SAMPLES:
+        folder = scratch / sample
+        shutil.copytree(ROOT / "sample_projects" / sample, folder)
+        toml = next(folder.glob("*.toml"))
+        rows.append((sample, [editor, "edit", str(toml)], folder, b"items", True))
+    return rows
 
-    app._display = timed_display
-    latencies = []
-    async with app.run_test(size=(100, 40)) as pilot:
-        await pilot.press("tab")
-        await pilot.pause()
-        screen = app.editor
-        handled: list[float] = []
-        original_nudge = screen.action_nudge
 
-        def timed_nudge(dx_mm: float, dy_mm: float) -> None:
-            original_nudge(dx_mm, dy_mm)
-            handled.append(time.perf_counter())
+def run_link(args: argparse.Namespace) -> None:
+    sizes = [tuple(int(part) for part in size.split("x")) for size in args.size]
+    with tempfile.TemporaryDirectory() as folder:
+        sshd = LoopbackSshd() if args.link == "ssh" else None
+        try:
+            if sshd is not None:
+                sshd.start()
+            for size in sizes:  # fresh copies: a killed session leaves a recovery file behind
+                scratch = Path(folder) / f"{size[0]}x{size[1]}"
+                scratch.mkdir()
+                apps = sessions(scratch)
+                results: list[tuple[str, SessionFigures]] = []
+                for name, argv, cwd, ready, select_first in apps:
+                    term = open_terminal(args.link, sshd, argv, cwd, size, args.colors)
+                    try:
+                        results.append((name, measure_session(term, ready=ready,
+                                                              select_first=select_first)))
+                    finally:
+                        term.close()
+                    print(f"  measured {name} at {size[0]}x{size[1]}", file=sys.stderr)
+                print_table(args, size, results)
+        finally:
+            if sshd is not None:
+                sshd.stop()
 
-        screen.action_nudge = timed_nudge
-        for index in range(presses):
-            app.session.engine.reheat()
-            screen.wake()
-            await asyncio.sleep(0.05 + 0.011 * (index % 3))  # land keys at varied frame phases
-            handled.clear()
-            key = "l" if index % 2 else "h"
-            start = time.perf_counter()
-            app.post_message(events.Key(key, key))
-            while not (handled and displays and displays[-1] > handled[0]):
-                await asyncio.sleep(0.0005)
-            latencies.append(displays[-1] - start)
-    return latencies
+
+def print_table(args: argparse.Namespace, size: tuple[int, int],
+                results: list[tuple[str, SessionFigures]]) -> None:
+    floor = results[0][1].latency_ms
+    print(f"\n{args.link} link, {size[0]}x{size[1]}, {args.colors} colours "
+          f"(goals at 100x32; ✗ marks a miss)\n")
+    print("| app | one arrow from rest | 1 s held arrow | steady motion | still after release "
+          "| idle | key to screen, median (p90) |")
+    print("|---|---|---|---|---|---|---|")
+    for name, m in results:
+        def mark(key: str) -> str:
+            is_editor = name != results[0][0]
+            return " ✗" if is_editor and getattr(m, key) > GOALS[key] else ""
+        ratio = m.latency_ms / floor
+        late = " ✗" if name != results[0][0] and ratio > LATENCY_GOAL else ""
+        print(f"| {name} | {m.one_key_kb:.1f} KB{mark('one_key_kb')} "
+              f"| {m.held_kb:.1f} KB{mark('held_kb')} | {m.steady_kb_s:.1f} KB/s"
+              f"{mark('steady_kb_s')} | {m.still_after_s:.2f} s{mark('still_after_s')} "
+              f"| {m.idle_b_s:.0f} B/s{mark('idle_b_s')} | {m.latency_ms:.1f} ms "
+              f"({m.latency_p90_ms:.1f}) = {ratio:.1f}x{late} |")
+    sys.stdout.flush()
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--n", type=int, nargs="*", default=[50, 200])
-    parser.add_argument("--frames", type=int, default=90)
-    parser.add_argument("--presses", type=int, default=40)
+    parts = parser.add_subparsers(dest="part")
+    link = parts.add_parser("link", help="bytes and latency over ssh or a pty (the default)")
+    for target in (parser, link):
+        target.add_argument("--link", choices=["ssh", "pty"], default="ssh")
+        target.add_argument("--size", nargs="*", default=["100x32", "80x24"],
+                            help="COLUMNSxROWS, one or more")
+        target.add_argument("--colors", choices=["truecolor", "256"], default="truecolor")
+    editor_frames.add_arguments(parts.add_parser("frames", help="headless frame time"))
+    editor_hangup.add_arguments(parts.add_parser("hangup", help="hang-up over ssh and tmux"))
     args = parser.parse_args()
-    with tempfile.TemporaryDirectory() as folder:
-        for count in args.n:
-            path = build_page(Path(folder), count)
-            result = asyncio.run(measure_frames(path, args.frames))
-            print(f"N = {count}")
-            print(f"  frame, physics ({1000 * PHYSICS_BUDGET_S:.0f} ms budget) + drawing: "
-                  f"{summary(result['frame'])} · {statistics.median(result['steps']):.0f} "
-                  "steps/frame")
-            print(f"  of which drawing:                         {summary(result['drawing'])}")
-            print(f"  live loop: {result['live_fps']:.1f} frames/s; steps per frame: mean "
-                  f"{statistics.mean(result['steps']):.0f}, max {max(result['steps'])}")
-            latencies = asyncio.run(measure_keypresses(path, args.presses))
-            print(f"  keypress to redraw, physics running: {summary(latencies)}")
+    if args.part == "frames":
+        editor_frames.run(args)
+    elif args.part == "hangup":
+        editor_hangup.run(args)
+    else:
+        run_link(args)
 
 
 if __name__ == "__main__":

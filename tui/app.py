@@ -40,6 +40,10 @@ class FloatpageApp(App):
     def on_mount(self) -> None:
         if not self.is_headless:  # a real terminal, which can hang up
             HangupGuard(self.session, self.exit).install()
+            # The writer and input threads wait for the interpreter lock while a physics frame
+            # runs; Python hands it over every 5 ms by default, which delayed a key's screen
+            # write or the key itself by up to that much. 1 ms costs little with three threads.
+            sys.setswitchinterval(0.001)
         # Everything alive now (Textual, numpy, the project) lives as long as the app: move it
         # out of the collector's sight, so a full collection during a frame is short. Without
         # this, frames at 200 items spiked to 40-50 ms once a few seconds (measured).

@@ -124,12 +124,32 @@ class CellCanvas:
             at += wide
 
 
+def changed_span(cached: tuple[bytes, tuple, Strip] | None, pair: np.ndarray, glyphs: tuple,
+                 cols: int) -> tuple[int, int]:
+    """(first, end) columns of a row that differ from its cached version, one cell wider on
+    each side for wide characters; the whole row when there is nothing to compare with."""
+    if cached is None or cached[2].cell_length != cols or len(cached[0]) != pair.nbytes:
+        return 0, cols
+    old_pair = np.frombuffer(cached[0], dtype=pair.dtype).reshape(pair.shape)
+    columns = set(np.flatnonzero((old_pair != pair).any(axis=0)).tolist())
+    columns.update(col for col, _glyph in set(cached[1]) ^ set(glyphs))
+    if not columns:
+        return 0, 0
+    return max(min(columns) - 1, 0), min(max(columns) + 2, cols)
+
+
 class StripCache:
-    """Turns a canvas into Strips, reusing styles and unchanged rows across frames."""
+    """Turns a canvas into Strips, reusing styles and unchanged rows across frames.
+
+    `changed` tells, after each `strips` call, which cells of which rows differ from the last
+    frame, as {row: (first col, end col)}: the preview repaints only those, since a moving
+    item changes a few columns of its rows and the page's surround none (issue 11).
+    """
 
     def __init__(self):
         self._styles: dict[tuple[int, int, bool], Style] = {}
         self._rows: dict[int, tuple[bytes, tuple, Strip]] = {}
+        self.changed: dict[int, tuple[int, int]] = {}
 
     def style(self, fg: int, bg: int, bold: bool = False) -> Style:
         key = (fg, bg, bold)
@@ -148,6 +168,7 @@ class StripCache:
         for (row, col), glyph in canvas.glyphs.items():
             glyph_rows.setdefault(row, []).append((col, glyph))
         strips = []
+        self.changed = {}
         for row in range(canvas.rows):
             pair = packed[2 * row:2 * row + 2]
             glyphs = tuple(sorted(glyph_rows.get(row, ()), key=lambda entry: entry[0]))
@@ -157,35 +178,50 @@ class StripCache:
                     and cached[2].cell_length == canvas.cols:
                 strips.append(cached[2])
                 continue
-            strip = self._row_strip(pair[0].tolist(), pair[1].tolist(), dict(glyphs))
+            strip = self._row_strip(pair, dict(glyphs))
+            self.changed[row] = changed_span(cached, pair, glyphs, canvas.cols)
             self._rows[row] = (key, glyphs, strip)
             strips.append(strip)
         return strips
 
-    def _row_strip(self, tops: list[int], bottoms: list[int], glyphs: dict[int, Glyph]) -> Strip:
+    def _row_strip(self, pair: np.ndarray, glyphs: dict[int, Glyph]) -> Strip:
+        """One row's Strip. Cells between glyphs go by runs of equal pixels (numpy finds
+        where the pixels change), not one by one: building rows was most of a key's redraw."""
+        tops, bottoms = pair[0], pair[1]
+        cols = len(tops)
+        starts = np.empty(cols, dtype=bool)
+        starts[0] = True
+        np.not_equal(tops[1:], tops[:-1], out=starts[1:])
+        starts[1:] |= bottoms[1:] != bottoms[:-1]
+        for col in glyphs:  # every glyph is a run of its own, and so is what follows it
+            starts[col] = True
+            if col + 1 < cols:
+                starts[col + 1] = True
+        bounds = np.flatnonzero(starts).tolist() + [cols]
+        top_at, bottom_at = tops.tolist(), bottoms.tolist()
         segments: list[Segment] = []
         run_text: list[str] = []
         run_style: Style | None = None
-        for col, (top, bottom) in enumerate(zip(tops, bottoms)):
+        for col, end in zip(bounds, bounds[1:]):
+            top, bottom = top_at[col], bottom_at[col]
             glyph = glyphs.get(col)
             if glyph is not None and glyph.char == "" and col > 0 and glyphs.get(col - 1) is not None:
                 continue  # the second cell of a wide character, drawn by the first
             if glyph is not None and glyph.char:
                 bg = pack(glyph.bg) if glyph.bg is not None else top
-                style, char = self.style(pack(glyph.fg), bg, glyph.bold), glyph.char
+                style, text = self.style(pack(glyph.fg), bg, glyph.bold), glyph.char
                 following = glyphs.get(col + 1)
-                if width(char) == 2 and (following is None or following.char != ""):
-                    char = " "  # its second cell was drawn over: keep the row's width
-            elif top == bottom:
-                style, char = self.style(top, bottom), " "
+                if width(text) == 2 and (following is None or following.char != ""):
+                    text = " "  # its second cell was drawn over: keep the row's width
             else:
-                style, char = self.style(top, bottom), UPPER_HALF
+                style = self.style(top, bottom)
+                text = (" " if top == bottom else UPPER_HALF) * (end - col)
             if style is run_style:
-                run_text.append(char)
+                run_text.append(text)
             else:
                 if run_text:
                     segments.append(Segment("".join(run_text), run_style))
-                run_text, run_style = [char], style
+                run_text, run_style = [text], style
         if run_text:
             segments.append(Segment("".join(run_text), run_style))
-        return Strip(segments, len(tops))
+        return Strip(segments, cols)

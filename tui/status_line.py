@@ -45,6 +45,6 @@ class StatusLine(Static):
         text = status_text(status)
         if text != getattr(self, "_shown", None):  # an unchanged line costs no bytes
             self._shown = text
-            self.update(text)
+            self.update(text, layout=False)  # two fixed lines: no layout pass, which cost ms
         self.set_class(status.state == "settled", "-settled")
         self.set_class(status.state == "paused", "-paused")

@@ -21,8 +21,8 @@ def test_main_screen(project_path, snap_compare):
     dotted blue link and 'o' ends down to its grey caption 'Summer', a green block framed in
     yellow and labelled 'block' (selected: only the selected item shows its id), and the
     decorative yellow band behind the March 2027 grid, whose anchor shows as a magenta cell.
-    The top bar names the selected block and its size; the status lines speak words ('paused ·
-    Space resumes', 'no overlaps · gaps kept · v details'); the footer fits 100 columns: Help,
+    The top bar names the selected block, its size and where it is ('at 115, 85 mm'); the
+    status lines speak words ('paused · Space resumes', 'no overlaps · gaps kept · v details'); the footer fits 100 columns: Help,
     Save, Export and Quit first, then the item commands while they fit."""
     async def run_before(pilot) -> None:
         pilot.app.editor.selected_id = "block"

@@ -1,0 +1,160 @@
+"""A scripted user at a real terminal: a pty whose master side this process reads and types
+into, for the editor benchmark.
+
+The program under test runs on the pty's slave side (for the SSH link, that program is the
+`ssh -tt` client, so every byte has crossed sshd and back). `measure_session` types what a
+user types and counts what the terminal receives: bytes per key, per held second, while
+idle, how long motion lasts after the last key, and the delay from a key to the first byte
+of its answer.
+"""
+
+from __future__ import annotations
+
+import fcntl
+import os
+import pty
+import select
+import signal
+import statistics
+import struct
+import termios
+import time
+from dataclasses import dataclass
+
+CURSOR_QUERY, CURSOR_ANSWER = b"\x1b[6n", b"\x1b[1;1R"
+QUIET_S = 2.0  # "visibly still": nothing written for this long
+UP, DOWN = b"\x1b[A", b"\x1b[B"
+KEY_REPEAT_HZ = 30  # a terminal's key repeat while an arrow is held
+
+
+class Terminal:
+    """A pty of `columns` x `rows` running `argv`; reads everything it is sent."""
+
+    def __init__(self, argv: list[str], cwd: str, env: dict[str, str], columns: int, rows: int):
+        self.pid, self.fd = pty.fork()
+        if self.pid == 0:  # the child: set the size before anything reads it, then run
+            try:
+                fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack("HHHH", rows, columns, 0, 0))
+                os.chdir(cwd)
+                os.execvpe(argv[0], argv, env)
+            finally:
+                os._exit(127)
+        self.total = 0
+        self.last_byte_at = time.monotonic()
+        self.seen = bytearray()  # everything received since the last until_seen
+        self._carry = b""  # the end of the last read, for a query split between reads
+
+    def pump(self, seconds: float) -> int:
+        """Read for `seconds`; the bytes read."""
+        got, deadline = 0, time.monotonic() + seconds
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                break
+            ready, _, _ = select.select([self.fd], [], [], min(0.02, left))
+            if ready:
+                try:
+                    data = os.read(self.fd, 1 << 16)
+                except OSError:  # the program is gone
+                    time.sleep(max(deadline - time.monotonic(), 0))
+                    break
+                if not data:
+                    break
+                got += len(data)
+                self.seen += data
+                self.answer_queries(data)
+                self.last_byte_at = time.monotonic()
+        self.total += got
+        return got
+
+    def answer_queries(self, data: bytes) -> None:
+        """Answer cursor-position queries, as a terminal emulator does once it has drawn
+        everything before them (the editor paces its frames by these answers)."""
+        joined = self._carry + data
+        for _ in range(joined.count(CURSOR_QUERY)):
+            os.write(self.fd, CURSOR_ANSWER)
+        self._carry = joined[-(len(CURSOR_QUERY) - 1):] if not joined.endswith(CURSOR_QUERY) \
+            else b""
+
+    def until_quiet(self, quiet_s: float = QUIET_S, limit_s: float = 60.0) -> int:
+        """Read until nothing has come for `quiet_s` (or `limit_s` passed); the bytes read."""
+        got, start = 0, time.monotonic()
+        while time.monotonic() - start < limit_s:
+            got += self.pump(0.05)
+            if time.monotonic() - self.last_byte_at >= quiet_s:
+                break
+        return got
+
+    def until_seen(self, text: bytes, limit_s: float = 60.0) -> None:
+        """Read until `text` has been received (since the last call); then forget it."""
+        start = time.monotonic()
+        while text not in self.seen:
+            if time.monotonic() - start > limit_s:
+                raise RuntimeError(f"never saw {text!r}; the terminal shows {self.seen[-600:]!r}")
+            self.pump(0.05)
+        self.seen.clear()
+
+    def send(self, data: bytes) -> None:
+        os.write(self.fd, data)
+
+    def close(self) -> None:
+        """SIGKILL the program on the slave side (never left running) and close the pty."""
+        try:
+            os.kill(self.pid, signal.SIGKILL)
+            os.waitpid(self.pid, 0)
+        except (ProcessLookupError, ChildProcessError):
+            pass
+        os.close(self.fd)
+
+
+@dataclass
+class SessionFigures:
+    one_key_kb: float  # one arrow from rest, every byte until QUIET_S of quiet
+    held_kb: float  # a 1 s held arrow, every byte until quiet
+    steady_kb_s: float  # bytes a second while the arrow is held (steady motion)
+    still_after_s: float  # last key of the held second to the last byte
+    idle_b_s: float  # bytes a second with nothing pressed
+    latency_ms: float  # median, key to the first byte of the answer, from rest
+    latency_p90_ms: float
+
+
+def hold_arrow(term: Terminal, seconds: float, key: bytes) -> tuple[int, float]:
+    """Press `key` KEY_REPEAT_HZ times a second for `seconds`; (bytes read meanwhile, time)."""
+    got, start = 0, time.monotonic()
+    for press in range(round(seconds * KEY_REPEAT_HZ)):
+        term.send(key)
+        got += term.pump(start + (press + 1) / KEY_REPEAT_HZ - time.monotonic())
+    return got, time.monotonic() - start
+
+
+def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
+                    presses: int = 21) -> SessionFigures:
+    """The user's session: wait for `ready` on the screen, select an item, then the measures."""
+    term.until_seen(ready)
+    term.until_quiet()
+    if select_first:
+        term.send(b"\t")
+        term.until_quiet()
+    term.send(DOWN)  # down, not sideways: a band as wide as the page cannot move sideways
+    one_key = term.until_quiet()
+    held, held_s = hold_arrow(term, 1.0, DOWN)
+    last_key = time.monotonic()
+    after = term.until_quiet()
+    still_after = max(term.last_byte_at - last_key, 0.0)
+    idle_s = 3.0
+    idle = term.pump(idle_s)
+    latencies = []
+    for press in range(presses):  # from rest each time: the page is still when the key goes
+        term.until_quiet(quiet_s=QUIET_S / 2)
+        term.send(DOWN if press % 2 else UP)
+        sent = time.monotonic()
+        ready_fds, _, _ = select.select([term.fd], [], [], 5.0)
+        if ready_fds:
+            latencies.append(time.monotonic() - sent)
+    term.until_quiet(quiet_s=QUIET_S / 2)
+    latencies_ms = sorted(1000 * seconds for seconds in latencies) or [float("nan")]
+    return SessionFigures(
+        one_key_kb=one_key / 1024, held_kb=(held + after) / 1024,
+        steady_kb_s=held / 1024 / held_s, still_after_s=still_after, idle_b_s=idle / idle_s,
+        latency_ms=statistics.median(latencies_ms),
+        latency_p90_ms=latencies_ms[int(0.9 * (len(latencies_ms) - 1))])

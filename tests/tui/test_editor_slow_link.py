@@ -1,0 +1,130 @@
+"""A terminal that reads slowly: the editor draws fewer frames a second, and more again once
+the terminal keeps up; nothing is lost.
+
+The editor runs in a real pty; this test is its terminal. It answers the cursor-position
+queries the editor sends after its frames once it has read up to them, as a terminal
+emulator does, and reads either as fast as it can or 1 KB every 0.1 s (10 KB/s, a poor
+link). An arrow is held throughout, so the page keeps moving, and the status line's details
+(`v`) show the frames drawn a second.
+"""
+
+from __future__ import annotations
+
+import fcntl
+import os
+import pty
+import re
+import select
+import signal
+import statistics
+import struct
+import sys
+import termios
+import time
+from pathlib import Path
+
+import pyte
+
+from floatpage.model import BlockItem, Page, Project, load_project, save_project
+
+ROOT = Path(__file__).resolve().parents[2]
+QUERY, ANSWER = b"\x1b[6n", b"\x1b[1;1R"
+FPS = re.compile(rb"(\d+\.\d) fps")
+
+
+def crowded_page(folder: Path) -> Path:
+    """An A4 page of 24 blocks in a crowd, so that a moved block pushes the others."""
+    items = [BlockItem(id=f"b{index}", x=40.0 + 25 * (index % 6), y=60.0 + 30 * (index // 6),
+                       w=30.0, h=28.0, color=f"#{(40 * index) % 256:02x}60c0")
+             for index in range(24)]
+    path = folder / "crowd.toml"
+    save_project(Project(title="Crowd", pages=[Page(id="p", items=items)]), path)
+    return path
+
+
+class SlowTerminal:
+    def __init__(self, path: Path):
+        self.pid, self.fd = pty.fork()
+        if self.pid == 0:
+            fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack("HHHH", 32, 100, 0, 0))
+            os.chdir(ROOT)
+            os.execvpe(sys.executable, [sys.executable, "-m", "floatpage.cli.main", "edit",
+                                        str(path)], {**os.environ, "TERM": "xterm-256color"})
+        self.received = bytearray()
+        self.screen = pyte.Screen(100, 32)
+        self.stream = pyte.ByteStream(self.screen)
+
+    def read(self, limit: int) -> int:
+        """Read what is there, at most `limit` bytes, answering queries read so far."""
+        ready, _, _ = select.select([self.fd], [], [], 0)
+        if not ready:
+            return 0
+        data = os.read(self.fd, limit)
+        tail = bytes(self.received[-3:])
+        self.received += data
+        for _ in range((tail + data).count(QUERY)):
+            os.write(self.fd, ANSWER)
+        self.stream.feed(data)
+        return len(data)
+
+    def run(self, seconds: float, *, slow: bool, keys: bytes = b"") -> list[float]:
+        """Read (slowly or not) for `seconds`, pressing `keys` 30 times a second; the frame
+        rates the status line showed in what was read."""
+        start, rates, next_key = time.monotonic(), [], time.monotonic()
+        while time.monotonic() - start < seconds:
+            if keys and time.monotonic() >= next_key:
+                os.write(self.fd, keys)
+                next_key += 1 / 30
+            before = len(self.received)
+            if slow:
+                self.read(1024)
+                time.sleep(0.1)
+            else:
+                while self.read(1 << 16):
+                    pass
+                time.sleep(0.005)
+            rates += [float(rate) for rate in FPS.findall(bytes(self.received[before:]))]
+        return rates
+
+    def text(self) -> str:
+        return "\n".join(self.screen.display)
+
+    def close(self) -> None:
+        try:
+            os.kill(self.pid, signal.SIGKILL)
+            os.waitpid(self.pid, 0)
+        except (ProcessLookupError, ChildProcessError):
+            pass
+        os.close(self.fd)
+
+
+def test_a_slow_terminal_gets_fewer_frames_and_nothing_is_lost(tmp_path):
+    path = crowded_page(tmp_path)
+    term = SlowTerminal(path)
+    try:
+        deadline = time.monotonic() + 60
+        while "items" not in term.text():
+            assert time.monotonic() < deadline, term.text()
+            term.run(0.2, slow=False)
+        term.run(0.5, slow=False, keys=b"v")  # the details: frames a second
+        term.run(0.2, slow=False, keys=b"\t")
+        fast = term.run(2.0, slow=False, keys=b"\x1b[B")  # hold Down
+        slow = term.run(4.0, slow=True, keys=b"\x1b[A")  # hold Up, on a 10 KB/s link
+        again = term.run(2.5, slow=False, keys=b"\x1b[B")
+        term.run(4.0, slow=False)  # let go; read everything until the page rests
+        os.write(term.fd, b"\x13")  # Ctrl+S
+        term.run(2.0, slow=False)
+    finally:
+        term.close()
+    assert fast and slow and again, (fast, slow, again)
+    assert max(fast[-5:]) >= 20, f"a fast terminal gets the full rate: {fast}"
+    assert statistics.median(slow[len(slow) // 2:]) <= 15, \
+        f"a slow one gets half the frames or fewer: {slow}"
+    assert max(again[-5:]) >= 20, f"and the full rate again once it keeps up: {again}"
+    screen = term.text()
+    assert "still" in screen, screen
+    shown = re.search(r"(b\d+) \(block[^)]*\) · at (\d+), (\d+) mm", screen)
+    assert shown, screen
+    saved = load_project(path).pages[0].item(shown.group(1))
+    assert (round(saved.x), round(saved.y)) == (int(shown.group(2)), int(shown.group(3))), \
+        "the last frame on screen is the saved layout: no frame was lost"

@@ -1,0 +1,170 @@
+"""Fewer bytes per frame: colour codes sent only when the colour changes.
+
+Textual writes every run of same-styled cells as `ESC[<full style>m text ESC[0m`. The preview
+is half-block pixels, nearly every cell a style of its own, so in truecolour a cell cost about
+40 bytes, of which 3 are the character: one arrow press on the greeting card sent 15 KB, 12 KB
+of them colour codes. Terminals keep the current style until told otherwise, so the stream
+only has to say what changes from one cell to the next (as curses and mosh do).
+
+`SgrCompactor.compact` rewrites the driver's output with the same meaning: it follows the
+style the original stream asks for, and just before anything that shows that style (text,
+a line feed, an erase, any sequence it does not know), it sends the change from the style the
+terminal has to the one asked for. Cursor movement sends nothing, since it paints nothing.
+A style code it cannot follow passes through unchanged, and the terminal's style counts as
+unknown until the next full reset. The compactor keeps the terminal's style between writes.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+
+# SGR (style) sequences, and cursor movement that paints nothing; everything else is output.
+TOKEN = re.compile(r"\x1b\[([0-9;:]*)m|\x1b\[[0-9;]*[HfABCDEFGd]")
+
+FLAG_ON = {"1": "bold", "2": "dim", "3": "italic", "4": "underline", "5": "blink",
+           "6": "blink2", "7": "reverse", "8": "conceal", "9": "strike",
+           "21": "underline2", "51": "frame", "52": "encircle", "53": "overline"}
+FLAG_CODE = {flag: code for code, flag in FLAG_ON.items()}
+# Codes that turn flags off, and every flag each one turns off.
+FLAG_OFF = {"22": ("bold", "dim"), "23": ("italic",), "24": ("underline", "underline2"),
+            "25": ("blink", "blink2"), "27": ("reverse",), "28": ("conceal",), "29": ("strike",),
+            "54": ("frame", "encircle"), "55": ("overline",)}
+OFF_CODE = {flag: code for code, flags in FLAG_OFF.items() for flag in flags}
+# Flags that make the foreground colour visible on a blank cell.
+SHOWN_ON_BLANKS = frozenset({"underline", "underline2", "strike", "reverse", "overline", "frame",
+                             "encircle"})
+
+
+@dataclass(frozen=True)
+class Style:
+    """A terminal's graphic rendition: flags on, and the foreground and background as the
+    parameters that set them ("38;2;1;2;3", "31"), None for the terminal's default."""
+
+    flags: frozenset[str] = frozenset()
+    fg: str | None = None
+    bg: str | None = None
+
+
+DEFAULT = Style()
+
+
+@lru_cache(maxsize=8192)
+def apply_sgr(style: Style | None, params: str) -> Style | None:
+    """The style after `ESC[params m`; None when it holds a code this module does not follow."""
+    if ":" in params:  # sub-parameters (curly underlines and the like): not followed
+        return None
+    codes = params.split(";") if params else ["0"]
+    flags = set(style.flags) if style is not None else None
+    fg = style.fg if style is not None else None
+    bg = style.bg if style is not None else None
+    index = 0
+    while index < len(codes):
+        code = codes[index].lstrip("0") or "0"
+        if code == "0":
+            flags, fg, bg = set(), None, None
+        elif flags is None:  # unknown until a reset
+            return None
+        elif code in FLAG_ON:
+            flags.add(FLAG_ON[code])
+        elif code in FLAG_OFF:
+            flags.difference_update(FLAG_OFF[code])
+        elif code in ("38", "48"):
+            kind = codes[index + 1] if index + 1 < len(codes) else ""
+            size = {"2": 5, "5": 3}.get(kind)
+            if size is None or index + size > len(codes):
+                return None
+            value = ";".join(codes[index:index + size])
+            fg, bg = (value, bg) if code == "38" else (fg, value)
+            index += size - 1
+        elif code == "39":
+            fg = None
+        elif code == "49":
+            bg = None
+        elif code.isdigit() and (30 <= int(code) <= 37 or 90 <= int(code) <= 97):
+            fg = code
+        elif code.isdigit() and (40 <= int(code) <= 47 or 100 <= int(code) <= 107):
+            bg = code
+        else:
+            return None
+        index += 1
+    if flags is None:
+        return None
+    return Style(frozenset(flags), fg, bg)
+
+
+@lru_cache(maxsize=8192)
+def transition(have: Style | None, want: Style) -> str:
+    """The shortest SGR sequence (of two ways) that turns `have` into `want`; "" if equal."""
+    if have == want:
+        return ""
+    full = ["0", *sorted(FLAG_CODE[flag] for flag in want.flags)]
+    full += [part for part in (want.fg, want.bg) if part is not None]
+    if have is None:
+        return f"\x1b[{';'.join(full)}m"
+    params = sorted({OFF_CODE[flag] for flag in have.flags - want.flags})
+    cleared = {flag for code in params for flag in FLAG_OFF[code]}
+    params += sorted(FLAG_CODE[flag] for flag in want.flags & cleared | want.flags - have.flags)
+    if have.fg != want.fg:
+        params.append(want.fg or "39")
+    if have.bg != want.bg:
+        params.append(want.bg or "49")
+    diff = ";".join(params)
+    if len(diff) > len(";".join(full)):
+        diff = ";".join(full)
+    return f"\x1b[{diff}m"
+
+
+class SgrCompactor:
+    """Rewrites one terminal's output stream, write by write, to send only style changes."""
+
+    def __init__(self) -> None:
+        self.terminal: Style | None = None  # what the terminal has (None: unknown)
+        self.wanted: Style | None = DEFAULT  # what the stream has asked for so far
+        self.raw_pending = ""  # style codes passed on verbatim while the style is unknown
+
+    def _settle(self, out: list[str], shown: str = "x") -> None:
+        """Bring the terminal to the wanted style before `shown` is written. Blanks show no
+        foreground colour, so before spaces the terminal keeps its own (the page's surround
+        and blocks are runs of spaces)."""
+        wanted, terminal = self.wanted, self.terminal
+        if wanted is None:
+            if self.raw_pending:
+                out.append(self.raw_pending)
+                self.raw_pending = ""
+            self.terminal = None
+            return
+        if (terminal is not None and wanted.fg != terminal.fg and shown.strip(" ") == ""
+                and not (wanted.flags | terminal.flags) & SHOWN_ON_BLANKS):
+            wanted = Style(wanted.flags, terminal.fg, wanted.bg)
+        out.append(transition(terminal, wanted))
+        self.terminal = wanted
+
+    def compact(self, text: str) -> str:
+        out: list[str] = []
+        position = 0
+        for match in TOKEN.finditer(text):
+            if match.start() > position:
+                shown = text[position:match.start()]
+                self._settle(out, shown)
+                out.append(shown)
+            params = match.group(1)
+            if params is None:  # cursor movement: paints nothing, needs no style
+                out.append(match.group(0))
+            else:
+                wanted = apply_sgr(self.wanted, params)
+                if wanted is None:  # a code we do not follow: pass it on as it came,
+                    if self.wanted is not None:  # over the style it was meant to change
+                        self._settle(out)
+                    self.raw_pending += match.group(0)
+                elif self.wanted is None:  # a reset ends the unknown stretch
+                    self.raw_pending = ""
+                    self.terminal = None
+                self.wanted = wanted
+            position = match.end()
+        if position < len(text):
+            self._settle(out, text[position:])
+            out.append(text[position:])
+        self._settle(out)  # end every write in the style the stream left (usually reset)
+        return "".join(out)
