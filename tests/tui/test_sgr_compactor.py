@@ -10,7 +10,7 @@ from rich.console import Console
 
 from floatpage.model import load_project
 from floatpage.tui.cell_canvas import StripCache
-from floatpage.tui.page_painter import PagePainter, Scene
+from floatpage.tui.page_painter import PagePainter, PageView
 from floatpage.tui.projection import Projection
 from floatpage.tui.sgr_compactor import (
     DEFAULT, TOKEN, SgrCompactor, Style, apply_sgr, transition,
@@ -102,7 +102,7 @@ def test_a_real_preview_frame_draws_the_same_for_far_fewer_bytes(project_path):
     global COLUMNS, ROWS
     page = load_project(project_path).pages[0]
     projection = Projection.fit(40, 20, page.width_mm, page.height_mm)
-    canvas = PagePainter(projection).paint(Scene(page=page, base_dir=project_path.parent))
+    canvas = PagePainter(projection).paint(PageView(page=page, base_dir=project_path.parent))
     console = Console(color_system="truecolor", width=canvas.cols)
     frame = "".join(f"\x1b[{row + 1};1H" + strip.render(console)
                     for row, strip in enumerate(StripCache().strips(canvas)))
