@@ -21,6 +21,7 @@ from floatpage.physics.finalize import remove_overlaps
 from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
+from floatpage.physics.snapping import snap_page
 
 BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the clock
 
@@ -260,6 +261,7 @@ class Engine:
         """The no-overlap pass; returns whether every pair now keeps the gutter."""
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
                                self.params.gutter_mm, margin_mm=self.margin_mm)
+        snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)
         self._bodies.velocities[:] = 0.0
         return fits
 

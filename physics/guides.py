@@ -1,0 +1,169 @@
+"""Magnetic alignment guides, as a force of the fast mode (issue 16).
+
+A page looks designed when its items line up; the physics alone spreads them evenly and lines
+up nothing.  Every active item offers *guide lines* on each axis: its two edges and its centre.
+The page offers its print-safe margin lines (edges) and its centre lines (centres).  An edge
+near another item's edge, or a centre near another item's centre, closer than the snap range
+(``SNAP_MM`` on A4, scaled with the page's linear size), is pulled onto it.  Held items,
+hard-anchored items and followers are guides for the others but are never pulled.
+
+A feature d mm from its guide is pulled with ``k d (1 - |d| / range)``: zero on the line and
+at the range's edge, so the force is continuous and nothing jumps.  Each item takes one pull
+per axis, from the guide nearest to any of its three features, so two guides never fight over
+one item; a follower's pull goes to the root of its group, as all its forces do.  The guides
+act once the page has cooled below ``GUIDE_HEAT`` (fading in as it cools): while the page is
+hot the items are still finding their places and lines would only hold them back, and a hot
+page costs nothing extra.  Which guide an item follows is worked out every ``REFRESH_STEPS``
+steps (a sort per axis); in between the pull follows the chosen partner's current position (a
+gather), as a Verlet list does for contacts.
+
+The exact step that makes aligned pairs equal once the page has settled, checked against
+overlap, the gutter and the margin, is ``physics.snapping``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from floatpage.physics.bodies import Bodies
+from floatpage.physics.params import page_scale
+
+SNAP_MM = 4.0  # snap range on an A4 page; smaller pages scale it down with their linear size
+K_GUIDE = 0.05  # pull per step^2 per mm at strength 1 (a quarter of a contact's stiffness)
+GUIDE_HEAT = 0.3  # the guides pull below this heat, in full below half of it
+REFRESH_STEPS = 32  # steps between two searches for each item's nearest guide
+PAGE = -1  # owner of the page's own guide lines
+LOW, CENTRE, HIGH = 0, 1, 2  # an item's three features on one axis
+
+
+def snap_range(page_w_mm: float, page_h_mm: float) -> float:
+    """How near a feature must come to a guide to be pulled onto it, mm (4 mm on A4)."""
+    return SNAP_MM * page_scale(page_w_mm, page_h_mm)
+
+
+def features(centres: np.ndarray, halves: np.ndarray, axis: int) -> np.ndarray:
+    """Each item's low edge, centre and high edge on ``axis``, shape (n, 3)."""
+    c, h = centres[:, axis], halves[:, axis]
+    return np.column_stack([c - h, c, c + h])
+
+
+def page_lines(page_w_mm: float, page_h_mm: float, margin_mm: float, axis: int
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """The page's own guide lines on ``axis``: (edge lines, centre lines) in mm.  The margin
+    lines are guides for edges, the page's middle for centres."""
+    extent = (page_w_mm, page_h_mm)[axis]
+    return np.array([margin_mm, extent - margin_mm]), np.array([extent / 2])
+
+
+def nearest_guides(values: np.ndarray, owners: np.ndarray, queries: np.ndarray,
+                   query_owners: np.ndarray, reach: float) -> tuple[np.ndarray, np.ndarray]:
+    """For each query value, the index into ``values`` of the nearest value of another owner
+    within ``reach`` (-1 if none), and the signed distance to it (query to guide).
+
+    ``values`` need not be sorted.  A query's own owner holds at most two values in one pool
+    (an item's two edges), so looking two places either side of its sorted position finds the
+    nearest other value.
+    """
+    order = np.argsort(values, kind="stable")
+    ordered, ordered_owners = values[order], owners[order]
+    last = len(ordered) - 1
+    found = np.full(len(queries), -1)
+    best = np.full(len(queries), np.inf)
+    if last < 0:
+        return found, best
+    place = np.searchsorted(ordered, queries)
+    for shift in (-2, -1, 0, 1, 2):
+        k = np.clip(place + shift, 0, last)
+        distance = ordered[k] - queries
+        better = (ordered_owners[k] != query_owners) & (np.abs(distance) < np.abs(best))
+        best = np.where(better, distance, best)
+        found = np.where(better, order[k], found)
+    near = np.abs(best) <= reach
+    return np.where(near, found, -1), np.where(near, best, np.inf)
+
+
+class GuidePulls:
+    """The force: each free item is pulled, per axis, onto its nearest guide line.
+
+    The chosen pulls are kept flat, over ``centres.ravel()`` (row * 2 + axis): the pulled
+    coordinate, the guide's coordinate (or the pulled one's own, with a zero factor, for a
+    page line) and fixed offsets, so a step costs a handful of whole-array operations."""
+
+    def __init__(self, centres: np.ndarray, sizes: np.ndarray, active: np.ndarray,
+                 pulled: np.ndarray, page: tuple[float, float], margin_mm: float,
+                 strength: float):
+        self.halves = sizes / 2
+        self.guides = np.flatnonzero(active)  # rows whose features are guides
+        self.pulled = np.flatnonzero(pulled & active)  # rows the force moves
+        self.page, self.margin_mm = page, margin_mm
+        self.k = K_GUIDE * strength
+        self.reach = snap_range(*page)
+        self.steps = 0
+        self.own = np.zeros(0, dtype=int)
+
+    def refresh(self, centres: np.ndarray) -> None:
+        """Choose, per pulled item and axis, the feature to pull and the line to pull it to."""
+        rows, guides, halves = self.pulled, self.guides, self.halves
+        own, partner, factor, offset = [], [], [], []
+        for axis in (0, 1):
+            edges_page, centres_page = page_lines(*self.page, self.margin_mm, axis)
+            mine = features(centres[rows], halves[rows], axis)
+            theirs = features(centres[guides], halves[guides], axis)
+            # Edges: both of a pulled item's edges against every guide edge and margin line.
+            edge_pool = np.concatenate([theirs[:, LOW], theirs[:, HIGH], edges_page])
+            edge_rows = np.concatenate([guides, guides, [PAGE, PAGE]])
+            edge_sides = np.concatenate([-halves[guides, axis], halves[guides, axis], [0, 0]])
+            found_e, dist_e = nearest_guides(edge_pool, edge_rows,
+                                             np.concatenate([mine[:, LOW], mine[:, HIGH]]),
+                                             np.concatenate([rows, rows]), self.reach)
+            count = len(rows)
+            low_better = np.abs(dist_e[:count]) <= np.abs(dist_e[count:])
+            found_e = np.where(low_better, found_e[:count], found_e[count:])
+            dist_e = np.where(low_better, dist_e[:count], dist_e[count:])
+            own_side_e = np.where(low_better, -halves[rows, axis], halves[rows, axis])
+            centre_pool = np.concatenate([theirs[:, CENTRE], centres_page])
+            centre_rows = np.concatenate([guides, [PAGE]])
+            found_c, dist_c = nearest_guides(centre_pool, centre_rows, mine[:, CENTRE], rows,
+                                             self.reach)
+            use_edge = np.abs(dist_e) <= np.abs(dist_c)
+            found = np.where(use_edge, found_e, found_c)
+            keep = found >= 0
+            pool = np.where(use_edge, edge_pool[found_e], centre_pool[found_c])[keep]
+            guide_row = np.where(use_edge, edge_rows[found_e], centre_rows[found_c])[keep]
+            guide_side = np.where(use_edge, edge_sides[found_e], 0.0)[keep]
+            on_page = guide_row == PAGE
+            own.append(rows[keep] * 2 + axis)
+            partner.append(np.where(on_page, rows[keep], guide_row) * 2 + axis)
+            factor.append(np.where(on_page, 0.0, 1.0))
+            # line = factor * partner coordinate + guide offset; feature = own coordinate + side
+            offset.append(np.where(on_page, pool, guide_side)
+                          - np.where(use_edge, own_side_e, 0.0)[keep])
+        self.own, self.partner = np.concatenate(own), np.concatenate(partner)
+        self.factor, self.offset = np.concatenate(factor), np.concatenate(offset)
+
+    def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        if heat >= GUIDE_HEAT:
+            return
+        if self.steps % REFRESH_STEPS == 0:
+            self.refresh(centres)
+        self.steps += 1
+        if len(self.own) == 0:
+            return
+        flat = centres.ravel()
+        distance = self.factor * flat[self.partner] + self.offset - flat[self.own]
+        pull = distance * np.maximum(1.0 - np.abs(distance) / self.reach, 0.0)
+        share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT))
+        acc.ravel()[self.own] += self.k * share * pull
+
+
+def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],
+                margin_mm: float, strength: float) -> list[GuidePulls]:
+    """The guide force for one page, as a list of zero or one force (none at strength 0).
+
+    Free items and the followers of free items are pulled (a follower's pull moves its whole
+    group); every active item, held and hard-anchored ones included, is a guide."""
+    active = bodies.active
+    if strength <= 0 or not active.any():
+        return []
+    pulled = (bodies.free | bodies.followers & bodies.free[roots]) & ~bodies.held
+    return [GuidePulls(bodies.centres, bodies.sizes, active, pulled, page, margin_mm, strength)]
