@@ -261,7 +261,8 @@ class Engine:
         """The no-overlap pass; returns whether every pair now keeps the gutter."""
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
                                self.params.gutter_mm, margin_mm=self.margin_mm)
-        snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)
+        if fits:  # on a page too full for the gutter, alignment gives way first
+            snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)
         self._bodies.velocities[:] = 0.0
         return fits
 

@@ -13,9 +13,11 @@ per axis, from the guide nearest to any of its three features, so two guides nev
 one item; a follower's pull goes to the root of its group, as all its forces do.  The guides
 act once the page has cooled below ``GUIDE_HEAT`` (fading in as it cools): while the page is
 hot the items are still finding their places and lines would only hold them back, and a hot
-page costs nothing extra.  Which guide an item follows is worked out every ``REFRESH_STEPS``
-steps (a sort per axis); in between the pull follows the chosen partner's current position (a
-gather), as a Verlet list does for contacts.
+page costs nothing extra.  Which guide an item follows is worked out again (a sort per axis)
+every ``REFRESH_STEPS`` steps if an item has moved half the snap range since; in between
+the pull follows the chosen partner's current position (a gather), as a Verlet list does for
+contacts.  A pull this weak and slow needs no update every step: it is given every
+``PULL_EVERY``-th step, that many times as strong (the same average, a quarter of the cost).
 
 The exact step that makes aligned pairs equal once the page has settled, checked against
 overlap, the gutter and the margin, is ``physics.snapping``.
@@ -29,9 +31,10 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import page_scale
 
 SNAP_MM = 4.0  # snap range on an A4 page; smaller pages scale it down with their linear size
-K_GUIDE = 0.05  # pull per step^2 per mm at strength 1 (a quarter of a contact's stiffness)
+K_GUIDE = 0.03  # pull per step^2 per mm at strength 1 (a quarter of a contact's stiffness)
 GUIDE_HEAT = 0.3  # the guides pull below this heat, in full below half of it
-REFRESH_STEPS = 32  # steps between two searches for each item's nearest guide
+PULL_EVERY = 4  # the pull comes as one push every 4th step, four times as strong
+REFRESH_STEPS = 64  # steps between two searches for each item's nearest guide
 PAGE = -1  # owner of the page's own guide lines
 LOW, CENTRE, HIGH = 0, 1, 2  # an item's three features on one axis
 
@@ -100,9 +103,11 @@ class GuidePulls:
         self.reach = snap_range(*page)
         self.steps = 0
         self.own = np.zeros(0, dtype=int)
+        self.refreshed_at: np.ndarray | None = None
 
     def refresh(self, centres: np.ndarray) -> None:
         """Choose, per pulled item and axis, the feature to pull and the line to pull it to."""
+        self.refreshed_at = centres.copy()
         rows, guides, halves = self.pulled, self.guides, self.halves
         own, partner, factor, offset = [], [], [], []
         for axis in (0, 1):
@@ -144,16 +149,20 @@ class GuidePulls:
     def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
         if heat >= GUIDE_HEAT:
             return
-        if self.steps % REFRESH_STEPS == 0:
-            self.refresh(centres)
         self.steps += 1
+        if self.steps % PULL_EVERY:
+            return
+        if self.refreshed_at is None or (
+                self.steps % REFRESH_STEPS == 0
+                and np.abs(centres - self.refreshed_at).max() > self.reach / 2):
+            self.refresh(centres)
         if len(self.own) == 0:
             return
         flat = centres.ravel()
         distance = self.factor * flat[self.partner] + self.offset - flat[self.own]
         pull = distance * np.maximum(1.0 - np.abs(distance) / self.reach, 0.0)
         share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT))
-        acc.ravel()[self.own] += self.k * share * pull
+        acc.ravel()[self.own] += PULL_EVERY * self.k * share * pull
 
 
 def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],

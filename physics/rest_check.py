@@ -23,7 +23,7 @@ from floatpage.physics.fast_forces import (
 )
 from floatpage.physics.force_terms import BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL
 
-REST_ACC = 0.5  # mm per step^2 on A4: a cold page's run (heat 0.02) moves such an item
+REST_ACC = 0.8  # mm per step^2 on A4: a cold page's run (heat 0.02) moves such an item
 # about 0.006 mm a step, below the stillness threshold
 
 
@@ -87,12 +87,12 @@ class RestCheck:
         follower's forces to its root)."""
         touching = np.concatenate([self.pairs_of[m] for m in members])
         touched = np.concatenate([members, self.i[touching], self.j[touching]])
-        groups = np.unique(self.roots[touched])
+        groups = sorted_unique(self.roots[touched])
         groups = groups[self.movable[groups]]
         if len(groups) == 0:
             return True
         rows = np.concatenate([self.group_rows[g] for g in groups])
-        pairs = np.unique(np.concatenate([self.pairs_of[r] for r in rows]))
+        pairs = sorted_unique(np.concatenate([self.pairs_of[r] for r in rows]))
         centres = self.bodies.centres
         trial = centres.copy()
         trial[members, axis] += shift
@@ -107,3 +107,13 @@ class RestCheck:
         summed = np.zeros((self.bodies.count, 2))
         np.add.at(summed, self.roots[rows], per_row)
         return np.abs(summed[groups]).max(axis=1)
+
+
+def sorted_unique(values: np.ndarray) -> np.ndarray:
+    """``np.unique`` for the small arrays of one move: a sort and a mask (np.unique's set-up
+    cost was a third of the snapping's time)."""
+    ordered = np.sort(values)
+    keep = np.empty(len(ordered), dtype=bool)
+    keep[:1] = True
+    np.not_equal(ordered[1:], ordered[:-1], out=keep[1:])
+    return ordered[keep]

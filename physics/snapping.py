@@ -27,7 +27,7 @@ import numpy as np
 from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import Params, page_margin, page_scale
-from floatpage.physics.rest_check import RestCheck
+from floatpage.physics.rest_check import RestCheck, sorted_unique
 from floatpage.physics.fast_forces import target_gap
 from floatpage.physics.finalize import ROUNDING_MM
 from floatpage.physics.guides import CENTRE, HIGH, LOW, features, page_lines, snap_range
@@ -200,7 +200,7 @@ def candidate_shifts(distance: np.ndarray, reach: float) -> np.ndarray:
     near = distance[(np.abs(distance) > ALIGNED_MM) & (np.abs(distance) < NEAR_MM)]
     away = near - np.sign(near) * ESCAPE_MM
     away = away[np.abs(away) <= reach]
-    return np.unique(np.concatenate([onto, away, [0.0]]))
+    return sorted_unique(np.concatenate([onto, away, [0.0]]))
 
 
 def misses_after(distance: np.ndarray, same: np.ndarray, shifts: np.ndarray) -> np.ndarray:
