@@ -4,8 +4,8 @@ A page looks designed when its items line up; the physics alone spreads them eve
 up nothing.  Every active item offers *guide lines* on each axis: its two edges and its centre.
 The page offers its print-safe margin lines (edges) and its centre lines (centres).  An edge
 near another item's edge, or a centre near another item's centre, closer than the snap range
-(``SNAP_MM`` on A4, scaled with the page's linear size), is pulled onto it.  Held items,
-hard-anchored items and followers are guides for the others but are never pulled.
+(``SNAP_MM`` on A4, scaled with the page's linear size), is pulled onto it.  Held items and
+hard-anchored items are guides for the others but are never pulled.
 
 A feature d mm from its guide is pulled with ``k d (1 - |d| / range)``: zero on the line and
 at the range's edge, so the force is continuous and nothing jumps.  Each item takes one pull

@@ -4,20 +4,27 @@ exactly on one line, one checked move at a time.
 The guide force (physics.guides) brings features close; contacts and rounding leave them a
 fraction of a millimetre apart, and an edge that misses another by 1 mm looks worse than one
 that misses it by 20.  So once the page has settled and the no-overlap pass has run, each free
-item in turn tries, on each axis, the moves that would put one of its features exactly on a
-guide line within the snap range (another item's edge or centre, a margin line, the page's
-middle), and the moves that would open a near miss it cannot close to just beyond what the
-eye reads as one (``ESCAPE_MM``).  It takes the move that leaves it the fewest near misses
-with the rest of the page (each exact alignment counting as half a miss less), the smallest
-such move first, and only if the move
+item (with the items that follow it, as one rigid group) in turn tries, on each axis, the moves
+that would put one of its features exactly on a guide line within the snap range (another
+item's edge or centre, a margin line, or for a bleed item the page's edge, the page's middle),
+and the moves that would open a near miss it cannot close to just beyond what the eye reads as
+one (``ESCAPE_MM``).  It takes the move that leaves it the fewest near misses with the rest of
+the page (each exact alignment counting as half a miss less), the smallest such move first,
+and only if the move
 
 - keeps every pair at least the gutter apart (or, where the pass could not reach the gutter,
   no closer than it left them): never an overlap, never a narrower gap;
-- keeps the item inside the page and its print-safe margin (bleed items: inside the page).
+- keeps the item inside the page and its print-safe margin (bleed items: inside the page);
+- leaves the page at rest (physics.rest_check): no item it touches pushed harder than a cold
+  page's run would leave in place.  Without this a snapped page drifts millimetres in the next
+  gentle run and a settled file stops being a fixed point.  Nudges of at most ``NUDGE_MM`` are
+  exempt: they change the forces too little to matter.
 
 Every move taken lowers the page's count of near misses less half its alignments, so the
 sweeps end; a page where no move helps is left exactly as it is, which keeps a settled file a
-fixed point (model.layout.settle_page).
+fixed point (model.layout.settle_page).  Held items and hard anchors never move: they are
+guides for the others.  On a page too full for the gutter (Engine.finalize), alignment gives
+way first and the step does not run.
 """
 
 from __future__ import annotations
@@ -35,6 +42,7 @@ from floatpage.physics.guides import CENTRE, HIGH, LOW, features, page_lines, sn
 ALIGNED_MM = 0.05  # features this close are aligned (positions are saved to 0.01 mm)
 ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
 ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
+NUDGE_MM = 0.5  # moves this small need no rest check: pairs this close count as aligned anyway
 MAX_SWEEPS = 50
 TOLERANCE_MM = 1e-9
 
@@ -168,8 +176,9 @@ class _Snapper:
 
     def allowed(self, row: int, axis: int, shift: float) -> bool:
         """Whether ``row``'s group may move by ``shift`` along ``axis``: every member inside
-        its margins (or no further out than it is), no pair closer than the clearance (or than it is now), and
-        the page left at rest (RestCheck)."""
+        its margins (or no further out than it is), no pair closer than the clearance (or
+        than it is now), and, unless the move is a nudge of at most ``NUDGE_MM``, the page
+        left at rest (RestCheck)."""
         members = self.members[row]
         centres, halves = self.bodies.centres, self.halves
         current = centres[members, axis]
@@ -190,6 +199,8 @@ class _Snapper:
             after = np.maximum(gap_new, gap_across)
             if not (after >= np.minimum(before, self.clearance) - TOLERANCE_MM).all():
                 return False
+        if abs(shift) <= NUDGE_MM:
+            return True  # a nudge onto a line: forces change too little to disturb the rest
         return self.rest is None or self.rest.keeps_rest(members, axis, shift)
 
 
