@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from floatpage.physics.alignment import Alignment, measure_alignment
 from floatpage.physics.bodies import NO_TARGET, Bodies
 from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
@@ -101,6 +102,11 @@ class Engine:
                                decorative=self._bodies.decorative,
                                groups=self._bodies.group_roots()[0],
                                margins=self._bodies.margins(self.margin_mm))
+
+    def alignment(self) -> Alignment:
+        """How well the page lines up (physics.alignment), decorations left out."""
+        return measure_alignment(self._bodies.centres, self._bodies.sizes,
+                                 self._bodies.decorative)
 
     @property
     def margin_mm(self) -> float:

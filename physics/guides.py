@@ -176,3 +176,26 @@ def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],
         return []
     pulled = (bodies.free | bodies.followers & bodies.free[roots]) & ~bodies.held
     return [GuidePulls(bodies.centres, bodies.sizes, active, pulled, page, margin_mm, strength)]
+
+
+def lines_met(centres: np.ndarray, sizes: np.ndarray, active: np.ndarray, roots: np.ndarray,
+              row: int, page: tuple[float, float], margin_mm: float, within: float
+              ) -> list[tuple[int, float]]:
+    """The guide lines ``row``'s features lie on, within ``within`` mm: (axis, mm), sorted.
+
+    An edge meets other items' edges and the margin lines, a centre other items' centres and
+    the page's middle; items of ``row``'s own rigid group are left out (a caption always lines
+    up with its own photo).  The editor draws these while an item moves."""
+    others = np.flatnonzero(active & (roots != roots[row]))
+    halves = sizes / 2
+    met: set[tuple[int, float]] = set()
+    for axis in (0, 1):
+        mine = features(centres[row:row + 1], halves[row:row + 1], axis)[0]
+        theirs = features(centres[others], halves[others], axis)
+        edges_page, centres_page = page_lines(*page, margin_mm, axis)
+        edges = np.concatenate([theirs[:, LOW], theirs[:, HIGH], edges_page])
+        middles = np.concatenate([theirs[:, CENTRE], centres_page])
+        for value, pool in ((mine[LOW], edges), (mine[HIGH], edges), (mine[CENTRE], middles)):
+            hits = pool[np.abs(pool - value) <= within]
+            met.update((axis, round(float(hit), 2)) for hit in hits)
+    return sorted(met)
