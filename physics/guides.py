@@ -19,8 +19,12 @@ the pull follows the chosen partner's current position (a gather), as a Verlet l
 contacts.  A pull this weak and slow needs no update every step: it is given every
 ``PULL_EVERY``-th step, that many times as strong (the same average, a quarter of the cost).
 
-The exact step that makes aligned pairs equal once the page has settled, checked against
-overlap, the gutter and the margin, is ``physics.snapping``.
+On a cold page (heat below ``HOLD_HEAT``, as in the gentle run that tells a settled page is
+at rest) a line also *holds* a group with a feature on it, as a magnet holds: a static
+friction of up to ``hold`` against the other forces on that axis.  So a page whose items the
+snapping step (physics.snapping) put on lines against a slight push is at rest, and stays a
+fixed point; the hold is what lets that step align items the forces alone would not leave
+there.
 """
 
 from __future__ import annotations
@@ -33,6 +37,9 @@ from floatpage.physics.params import page_scale
 SNAP_MM = 4.0  # snap range on an A4 page; smaller pages scale it down with their linear size
 K_GUIDE = 0.03  # pull per step^2 per mm at strength 1 (a quarter of a contact's stiffness)
 GUIDE_HEAT = 0.3  # the guides pull below this heat, in full below half of it
+K_HOLD = 1.0  # a line's hold on a cold page, mm per step^2 on A4: about 5 mm of contact
+HOLD_HEAT = 0.05  # the hold acts below this heat: a probe's cold run, not the spreading
+ON_LINE_MM = 0.05  # a feature this close to its guide is on it (and held)
 PULL_EVERY = 4  # the pull comes as one push every 4th step, four times as strong
 REFRESH_STEPS = 64  # steps between two searches for each item's nearest guide
 PAGE = -1  # owner of the page's own guide lines
@@ -94,8 +101,11 @@ class GuidePulls:
 
     def __init__(self, centres: np.ndarray, sizes: np.ndarray, active: np.ndarray,
                  pulled: np.ndarray, page: tuple[float, float], margin_mm: float,
-                 strength: float):
+                 strength: float, roots: np.ndarray | None = None):
         self.halves = sizes / 2
+        self.roots = np.arange(len(centres)) if roots is None else roots
+        self.hold = hold_strength(page, strength)
+        self.holding = np.zeros(0, dtype=int)
         self.guides = np.flatnonzero(active)  # rows whose features are guides
         self.pulled = np.flatnonzero(pulled & active)  # rows the force moves
         self.page, self.margin_mm = page, margin_mm
@@ -147,11 +157,17 @@ class GuidePulls:
         self.factor, self.offset = np.concatenate(factor), np.concatenate(offset)
 
     def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        """The pull (every ``PULL_EVERY``-th step), then, on a cold page, the hold.  The hold
+        needs the other forces' sum, so this term comes last in the list (fast_forces)."""
         if heat >= GUIDE_HEAT:
             return
         self.steps += 1
-        if self.steps % PULL_EVERY:
-            return
+        if self.steps % PULL_EVERY == 0 or self.refreshed_at is None:
+            self.pull(acc, centres, heat)
+        if heat < HOLD_HEAT and len(self.holding):
+            self.hold_on_lines(acc)
+
+    def pull(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
         if self.refreshed_at is None or (
                 self.steps % REFRESH_STEPS == 0
                 and np.abs(centres - self.refreshed_at).max() > self.reach / 2):
@@ -163,6 +179,22 @@ class GuidePulls:
         pull = distance * np.maximum(1.0 - np.abs(distance) / self.reach, 0.0)
         share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT))
         acc.ravel()[self.own] += PULL_EVERY * self.k * share * pull
+        on_line = self.own[np.abs(distance) <= ON_LINE_MM]
+        rows, axes = on_line // 2, on_line % 2
+        self.holding = np.unique(self.roots[rows] * 2 + axes)  # root coordinates to hold
+
+    def hold_on_lines(self, acc: np.ndarray) -> None:
+        """Static friction at a line: a group with a feature on its guide keeps its place on
+        that axis unless the other forces on it (summed over the group, as the integrator
+        hands a follower's forces to its root) exceed ``hold``; then only the excess moves it."""
+        count = len(acc)
+        for axis in (0, 1):
+            roots = self.holding[self.holding % 2 == axis] // 2
+            if len(roots) == 0:
+                continue
+            totals = np.bincount(self.roots, acc[:, axis], count)[roots]
+            kept = np.sign(totals) * np.maximum(np.abs(totals) - self.hold, 0.0)
+            acc[roots, axis] += kept - totals
 
 
 def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],
@@ -175,7 +207,13 @@ def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],
     if strength <= 0 or not active.any():
         return []
     pulled = (bodies.free | bodies.followers & bodies.free[roots]) & ~bodies.held
-    return [GuidePulls(bodies.centres, bodies.sizes, active, pulled, page, margin_mm, strength)]
+    return [GuidePulls(bodies.centres, bodies.sizes, active, pulled, page, margin_mm, strength,
+                       roots)]
+
+
+def hold_strength(page: tuple[float, float], strength: float) -> float:
+    """How hard a line holds a group on it, mm per step^2 (``K_HOLD`` on A4, scaled)."""
+    return K_HOLD * strength * page_scale(*page)
 
 
 def lines_met(centres: np.ndarray, sizes: np.ndarray, active: np.ndarray, roots: np.ndarray,

@@ -31,7 +31,7 @@ class RestCheck:
     """One page's forces, set up once for a snapping pass whose moves stay within ``reach``."""
 
     def __init__(self, bodies: Bodies, page: tuple[float, float], gap: float, margins: np.ndarray,
-                 beta: float, reach: float, scale: float):
+                 beta: float, reach: float, scale: float, hold: float = 0.0):
         self.bodies, self.page, self.gap = bodies, page, gap
         self.halves = bodies.sizes / 2
         active = bodies.active
@@ -55,6 +55,7 @@ class RestCheck:
         self.anchors = np.where(anchored[:, None], bodies.anchors, 0.0)
         self.movable = bodies.free & active  # roots of groups the integrator moves
         self.limit = REST_ACC * scale
+        self.hold = hold  # a line's hold on a group with a feature on it (physics.guides)
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
@@ -80,11 +81,12 @@ class RestCheck:
         acc[rows] += self.anchor_k[rows, None] * (self.anchors[rows] - centres[rows])
         return acc
 
-    def keeps_rest(self, members: np.ndarray, axis: int, shift: float) -> bool:
+    def keeps_rest(self, members: np.ndarray, axis: int, shift: float, onto_line: bool) -> bool:
         """Whether moving the rigid group ``members`` by ``shift`` along ``axis`` leaves it and
         every group it touches with a net acceleration within the limit, or no larger than
         it was (a group's acceleration is the sum of its members', as the fast mode hands a
-        follower's forces to its root)."""
+        follower's forces to its root).  A move ``onto_line`` leaves the group on a guide,
+        whose hold takes up to ``hold`` of its push along ``axis``."""
         touching = np.concatenate([self.pairs_of[m] for m in members])
         touched = np.concatenate([members, self.i[touching], self.j[touching]])
         groups = sorted_unique(self.roots[touched])
@@ -96,17 +98,20 @@ class RestCheck:
         centres = self.bodies.centres
         trial = centres.copy()
         trial[members, axis] += shift
-        before = self.group_net(rows, pairs, centres, groups)
-        after = self.group_net(rows, pairs, trial, groups)
-        return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
+        before = np.abs(self.group_net(rows, pairs, centres, groups)).max(axis=1)
+        after = np.abs(self.group_net(rows, pairs, trial, groups))
+        if onto_line:
+            moved = groups == self.roots[members[0]]
+            after[moved, axis] = np.maximum(after[moved, axis] - self.hold, 0.0)
+        return bool((after.max(axis=1) <= np.maximum(before, self.limit) + 1e-9).all())
 
     def group_net(self, rows: np.ndarray, pairs: np.ndarray, centres: np.ndarray,
                   groups: np.ndarray) -> np.ndarray:
-        """Largest component of each group's net acceleration, (len(groups),)."""
+        """Each group's net acceleration, (len(groups), 2)."""
         per_row = self.net(rows, pairs, centres)[rows]
         summed = np.zeros((self.bodies.count, 2))
         np.add.at(summed, self.roots[rows], per_row)
-        return np.abs(summed[groups]).max(axis=1)
+        return summed[groups]
 
 
 def sorted_unique(values: np.ndarray) -> np.ndarray:

@@ -37,7 +37,9 @@ from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, sorted_unique
 from floatpage.physics.fast_forces import target_gap
 from floatpage.physics.finalize import ROUNDING_MM
-from floatpage.physics.guides import CENTRE, HIGH, LOW, features, page_lines, snap_range
+from floatpage.physics.guides import (
+    CENTRE, HIGH, LOW, features, hold_strength, page_lines, snap_range,
+)
 
 ALIGNED_MM = 0.05  # features this close are aligned (positions are saved to 0.01 mm)
 ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
@@ -56,7 +58,7 @@ def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
     page = (page_w_mm, page_h_mm)
     gap = target_gap(bodies.sizes[bodies.active], page_w_mm, page_h_mm, params.gutter_mm)
     rest = RestCheck(bodies, page, gap, bodies.margins(margin), params.beta, snap_range(*page),
-                     page_scale(*page))
+                     page_scale(*page), hold_strength(page, params.guides))
     return snap_to_guides(bodies, page_w_mm, page_h_mm, params.gutter_mm + ROUNDING_MM, margin,
                           params.guides, rest)
 
@@ -167,18 +169,20 @@ class _Snapper:
         for k in order:
             if scores[k] >= now - TOLERANCE_MM:
                 break
-            if self.allowed(row, axis, shifts[k]):
+            onto_line = bool((np.abs(distance[same] - shifts[k]) <= ALIGNED_MM).any())
+            if self.allowed(row, axis, shifts[k], onto_line):
                 self.moved_from[row] = values
                 self.bodies.centres[members, axis] += shifts[k]
                 self.lines[axis][members] += shifts[k]
                 return True
         return False
 
-    def allowed(self, row: int, axis: int, shift: float) -> bool:
+    def allowed(self, row: int, axis: int, shift: float, onto_line: bool = False) -> bool:
         """Whether ``row``'s group may move by ``shift`` along ``axis``: every member inside
         its margins (or no further out than it is), no pair closer than the clearance (or
         than it is now), and, unless the move is a nudge of at most ``NUDGE_MM``, the page
-        left at rest (RestCheck)."""
+        left at rest (RestCheck; a move ``onto_line`` leaves the group on a guide, whose hold
+        on a cold page takes up part of its push)."""
         members = self.members[row]
         centres, halves = self.bodies.centres, self.halves
         current = centres[members, axis]
@@ -201,7 +205,7 @@ class _Snapper:
                 return False
         if abs(shift) <= NUDGE_MM:
             return True  # a nudge onto a line: forces change too little to disturb the rest
-        return self.rest is None or self.rest.keeps_rest(members, axis, shift)
+        return self.rest is None or self.rest.keeps_rest(members, axis, shift, onto_line)
 
 
 def candidate_shifts(distance: np.ndarray, reach: float) -> np.ndarray:
