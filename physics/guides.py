@@ -104,8 +104,9 @@ class GuidePulls:
                  strength: float, roots: np.ndarray | None = None):
         self.halves = sizes / 2
         self.roots = np.arange(len(centres)) if roots is None else roots
+        self.grouped = bool((self.roots != np.arange(len(centres))).any())
         self.hold = hold_strength(page, strength)
-        self.holding = np.zeros(0, dtype=int)
+        self.holding = [np.zeros(0, dtype=int), np.zeros(0, dtype=int)]
         self.guides = np.flatnonzero(active)  # rows whose features are guides
         self.pulled = np.flatnonzero(pulled & active)  # rows the force moves
         self.page, self.margin_mm = page, margin_mm
@@ -164,7 +165,7 @@ class GuidePulls:
         self.steps += 1
         if self.steps % PULL_EVERY == 0 or self.refreshed_at is None:
             self.pull(acc, centres, heat)
-        if heat < HOLD_HEAT and len(self.holding):
+        if heat < HOLD_HEAT and (len(self.holding[0]) or len(self.holding[1])):
             self.hold_on_lines(acc)
 
     def pull(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
@@ -181,18 +182,23 @@ class GuidePulls:
         acc.ravel()[self.own] += PULL_EVERY * self.k * share * pull
         on_line = self.own[np.abs(distance) <= ON_LINE_MM]
         rows, axes = on_line // 2, on_line % 2
-        self.holding = np.unique(self.roots[rows] * 2 + axes)  # root coordinates to hold
+        # the roots to hold on each axis (one entry per root)
+        self.holding = [np.flatnonzero(np.bincount(self.roots[rows[axes == axis]],
+                                                   minlength=len(centres)))
+                        for axis in (0, 1)]
 
     def hold_on_lines(self, acc: np.ndarray) -> None:
         """Static friction at a line: a group with a feature on its guide keeps its place on
         that axis unless the other forces on it (summed over the group, as the integrator
         hands a follower's forces to its root) exceed ``hold``; then only the excess moves it."""
         count = len(acc)
-        for axis in (0, 1):
-            roots = self.holding[self.holding % 2 == axis] // 2
+        for axis, roots in enumerate(self.holding):
             if len(roots) == 0:
                 continue
-            totals = np.bincount(self.roots, acc[:, axis], count)[roots]
+            if self.grouped:
+                totals = np.bincount(self.roots, acc[:, axis], count)[roots]
+            else:
+                totals = acc[roots, axis]
             kept = np.sign(totals) * np.maximum(np.abs(totals) - self.hold, 0.0)
             acc[roots, axis] += kept - totals
 
