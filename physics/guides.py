@@ -35,7 +35,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import page_scale
 
 SNAP_MM = 4.0  # snap range on an A4 page; smaller pages scale it down with their linear size
-K_GUIDE = 0.03  # pull per step^2 per mm at strength 1 (a quarter of a contact's stiffness)
+K_GUIDE = 0.03  # pull per step^2 per mm at strength 1 (about a seventh of a contact's stiffness)
 GUIDE_HEAT = 0.3  # the guides pull below this heat, in full below half of it
 K_HOLD = 1.0  # a line's hold on a cold page, mm per step^2 on A4: about 5 mm of contact
 HOLD_HEAT = 0.05  # the hold acts below this heat: a probe's cold run, not the spreading
