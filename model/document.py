@@ -196,6 +196,7 @@ class PhysicsSettings:
     heat_decay: float = setting("heat_decay")
     gutter_mm: float = setting("gutter_mm")
     margin_mm: float = setting("margin_mm")
+    guides: float = setting("guides")
     seed: int = setting("seed", "int")
 
 

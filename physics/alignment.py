@@ -34,6 +34,12 @@ class Alignment:
                 f"{self.edge_lines_per_item:.2f} edge lines per item · "
                 f"{self.aligned_share:.0%} aligned on both axes")
 
+    def short(self) -> str:
+        """The three numbers for the editor's details line, where room is short: near misses
+        and edge lines per item, the share aligned on both axes."""
+        return (f"misses {self.near_misses_per_item:.2f} · lines {self.edge_lines_per_item:.2f}"
+                f" · aligned {self.aligned_share:.0%}")
+
 
 def near_pairs(values: np.ndarray, owners: np.ndarray, low: float, high: float) -> int:
     """Pairs of values of different owners whose distance d has low < d < high."""

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from floatpage.physics.alignment import Alignment, measure_alignment
 from floatpage.physics.bodies import NO_TARGET, Bodies
 from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
@@ -21,6 +22,7 @@ from floatpage.physics.finalize import remove_overlaps
 from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
+from floatpage.physics.snapping import snap_page
 
 BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the clock
 
@@ -100,6 +102,11 @@ class Engine:
                                decorative=self._bodies.decorative,
                                groups=self._bodies.group_roots()[0],
                                margins=self._bodies.margins(self.margin_mm))
+
+    def alignment(self) -> Alignment:
+        """How well the page lines up (physics.alignment), decorations left out."""
+        return measure_alignment(self._bodies.centres, self._bodies.sizes,
+                                 self._bodies.decorative)
 
     @property
     def margin_mm(self) -> float:
@@ -260,6 +267,8 @@ class Engine:
         """The no-overlap pass; returns whether every pair now keeps the gutter."""
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
                                self.params.gutter_mm, margin_mm=self.margin_mm)
+        if fits:  # on a page too full for the gutter, alignment gives way first
+            snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)
         self._bodies.velocities[:] = 0.0
         return fits
 

@@ -16,6 +16,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
+from floatpage.physics.guides import guide_pulls
 from floatpage.physics.geometry import clamp_to_page, group_extents, page_bounds
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
@@ -58,6 +59,8 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
     anchored = ~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard
     if anchored.any():
         forces.append(AnchorPulls(bodies, anchored, params.beta))
+    forces += guide_pulls(bodies, roots, (page_w_mm, page_h_mm),
+                          page_margin(params.margin_mm, page_w_mm, page_h_mm), params.guides)
     return forces
 
 

@@ -41,6 +41,7 @@ LIMITS: dict[str, tuple[float, float, bool]] = {
     "heat_decay": (0.0, 0.5, True),
     "gutter_mm": (0.0, 100.0, True),
     "margin_mm": (0.0, 100.0, True),
+    "guides": (0.0, 10.0, True),
     "seed": (0, 2**63 - 1, True),
     "heat_min": (0.0, 1.0, True),
     "fast_steps_per_frame": (1, 100_000, True),
@@ -96,6 +97,9 @@ class Params:
     # print-safe margin between items and the page edge, on A4; smaller pages scale it down
     # with their linear size (page_margin). Bleed items and decorations are exempt.
     margin_mm: float = 5.0
+    # strength of the magnetic alignment guides (physics.guides, physics.snapping); 0 turns
+    # them off, 1 is the default pull
+    guides: float = 1.0
     seed: int = 0  # seeds the jitter that separates items sitting on one point
     heat_min: float = 0.001  # below this heat the page counts as settled
     fast_steps_per_frame: int = 10  # fast mode's steps per drawn frame (each moves far more)

@@ -33,7 +33,7 @@ from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureD
 from floatpage.tui.frame_meter import FrameMeter
 from floatpage.tui.frame_pacer import FramePacer
 from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank, in_footer
-from floatpage.tui.page_painter import PageView
+from floatpage.tui.page_painter import PageView, shown_guides
 from floatpage.tui.page_preview import PagePreview
 from floatpage.tui.session import EditError, EditSession
 from floatpage.physics.quality import GAP_TOLERANCE_MM
@@ -225,9 +225,11 @@ class EditorScreen(Screen):
 
     def page_view(self) -> PageView:
         session = self.session
+        moving = session.held_id is not None or self.running and not session.engine.settled
         return PageView(page=session.page, positions=session.engine.positions(),
                      selected_id=session.selected_id, base_dir=session.project.base_dir,
-                     labels=self.labels)
+                     labels=self.labels,
+                     guides=shown_guides(session.engine, session.selected_id, moving))
 
     def state_word(self) -> str:
         if self.export_state:
@@ -261,7 +263,8 @@ class EditorScreen(Screen):
         moving = self.running and not self.session.engine.settled
         if not moving or now - self._quality_at >= QUALITY_EVERY_S:
             quality = self.session.engine.quality()
-            self._quality = (quality.summary(), quality_in_words(quality))
+            summary = f"{quality.summary()} · {self.session.engine.alignment().short()}"
+            self._quality = (summary, quality_in_words(quality))
             self._quality_at = now
         return self._quality
 

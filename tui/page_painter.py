@@ -13,6 +13,7 @@ from pathlib import Path
 
 
 from floatpage.model.calendar_month import month_name, month_weeks, weekday_names
+from floatpage.physics.guides import lines_met
 from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
@@ -26,6 +27,8 @@ PAPER: RGB = (250, 250, 246)
 SELECTION: RGB = (255, 196, 0)
 ANCHOR: RGB = (214, 40, 170)
 LINK: RGB = (0, 150, 200)
+GUIDE: RGB = (0, 190, 210)  # an alignment guide the moving item sits on
+GUIDE_DASH = 3  # one pixel in three: a light dashed line that hides little
 MISSING_PICTURE: RGB = (150, 150, 150)
 WHITE: RGB = (255, 255, 255)
 TEXT_TINT = 0.12  # how much of its ink colour a text box's background takes
@@ -41,6 +44,22 @@ class PageView:
     selected_id: str | None = None
     base_dir: Path = Path(".")
     labels: bool = False  # every item's id; else only the selected one's (ids hid the content)
+    # alignment guides the selected item sits on while it moves: (axis, mm), 0 = a vertical line
+    guides: tuple[tuple[int, float], ...] = ()
+
+
+GUIDE_SHOWN_MM = 0.5  # a feature this close to a guide line is on it (physics.alignment)
+
+
+def shown_guides(engine, item_id: str | None, moving: bool) -> tuple[tuple[int, float], ...]:
+    """The guide lines to draw for the selected item: those it sits on, while it moves (a drag
+    or a held key, or the physics settling); none when the page is still."""
+    if not moving or item_id is None or item_id not in engine.ids:
+        return ()
+    bodies = engine.bodies
+    return tuple(lines_met(bodies.centres, bodies.sizes, bodies.active, bodies.group_roots()[0],
+                           engine.ids.index(item_id), (engine.page_w_mm, engine.page_h_mm),
+                           engine.margin_mm, GUIDE_SHOWN_MM))
 
 
 def hex_to_rgb(value: str | None, default: RGB = BLACK) -> RGB:
@@ -103,6 +122,7 @@ class PagePainter:
         centres = {item.id: self._centre(item, view) for item in view.page.items}
         for item in view.page.items:
             self._anchor(canvas, item, centres)
+        self._guides(canvas, view.guides)
         selected = next((item for item in view.page.items if item.id == view.selected_id), None)
         if selected is not None:
             canvas.outline(*boxes[selected.id], SELECTION)
@@ -201,6 +221,25 @@ class PagePainter:
                 lines.append(visual(printable(paragraph)))
         for row, line in zip(range(first, row1), lines):
             canvas.write(col0, row, line, fg, bg, bold=bold, end_col=col1)
+
+    def _guides(self, canvas: CellCanvas, guides) -> None:
+        """Dashed one-pixel lines across the page, on the pixels no text covers: the guides
+        the moving item has snapped to (design tools' smart guides)."""
+        p = self.projection
+        height, width = canvas.pixels.shape[:2]
+        for axis, mm in guides:
+            if axis == 0:
+                x = min(int(p.to_pixels(mm, 0)[0]), p.left + p.width - 1)
+                if 0 <= x < width:
+                    for y in range(max(p.top, 0), min(p.top + p.height, height), GUIDE_DASH):
+                        if canvas.glyph_at(x, y // 2) is None:
+                            canvas.pixels[y, x] = GUIDE
+            else:
+                y = min(int(p.to_pixels(0, mm)[1]), p.top + p.height - 1)
+                if 0 <= y < height:
+                    for x in range(max(p.left, 0), min(p.left + p.width, width), GUIDE_DASH):
+                        if canvas.glyph_at(x, y // 2) is None:
+                            canvas.pixels[y, x] = GUIDE
 
     def _anchor(self, canvas: CellCanvas, item, centres) -> None:
         start = self.projection.cell_of(*centres[item.id])

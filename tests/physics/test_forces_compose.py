@@ -31,13 +31,21 @@ def test_an_extra_force_in_the_fast_list_moves_items_without_touching_the_loop(m
     assert with_pull > without + 1.0
 
 
-def test_the_fast_list_holds_contacts_walls_and_only_needed_springs():
-    engine = Engine(210.0, 297.0, Params())
+def fast_list(params: Params) -> list[str]:
+    engine = Engine(210.0, 297.0, params)
     engine.insert("a", 60.0, 150.0, 30.0, 30.0)
     engine.insert("b", 70.0, 150.0, 30.0, 30.0)
     bodies = engine.bodies
     roots, _ = bodies.group_roots()
     movable = bodies.free & bodies.active
-    forces = fast_mode.fast_forces(bodies, 210.0, 297.0, Params(), np.random.default_rng(0),
+    forces = fast_mode.fast_forces(bodies, 210.0, 297.0, params, np.random.default_rng(0),
                                    roots, movable, np.ones(2), 3.0, 2.0)
-    assert [type(force).__name__ for force in forces] == ["ContactPushes", "WallPushes"]
+    return [type(force).__name__ for force in forces]
+
+
+def test_the_fast_list_holds_contacts_walls_guides_and_only_needed_springs():
+    assert fast_list(Params()) == ["ContactPushes", "WallPushes", "GuidePulls"]
+
+
+def test_guides_at_strength_zero_leave_the_list():
+    assert fast_list(Params(guides=0.0)) == ["ContactPushes", "WallPushes"]

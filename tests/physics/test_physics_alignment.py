@@ -34,7 +34,7 @@ def test_an_items_own_edges_are_not_a_near_miss_and_decorations_are_left_out():
     assert found.edge_lines_per_item == 4.0
 
 
-def test_the_shipped_flyer_is_measured_as_the_issue_found_it():
+def test_the_shipped_flyer_lines_up_better_than_the_issue_found_it():
     from pathlib import Path
 
     from floatpage.model import load_project
@@ -44,4 +44,6 @@ def test_the_shipped_flyer_is_measured_as_the_issue_found_it():
     project = load_project(root / "sample_projects" / "shop-flyer" / "shop-flyer.toml")
     bodies = engine_for_page(project.pages[0], project.physics).bodies
     found = measure_alignment(bodies.centres, bodies.sizes, bodies.decorative)
-    assert found.near_misses_per_item > 3.0  # the issue measured 5.7 before any guides
+    # the issue measured 5.7 near misses per item; settled without guides it had 3.84, with
+    # them 2.00 (docs/benchmarks.md); the guides' snap never leaves more than it found
+    assert found.near_misses_per_item < 3.0

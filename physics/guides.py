@@ -1,0 +1,245 @@
+"""Magnetic alignment guides, as a force of the fast mode (issue 16).
+
+A page looks designed when its items line up; the physics alone spreads them evenly and lines
+up nothing.  Every active item offers *guide lines* on each axis: its two edges and its centre.
+The page offers its print-safe margin lines (edges) and its centre lines (centres).  An edge
+near another item's edge, or a centre near another item's centre, closer than the snap range
+(``SNAP_MM`` on A4, scaled with the page's linear size), is pulled onto it.  Held items and
+hard-anchored items are guides for the others but are never pulled.
+
+A feature d mm from its guide is pulled with ``k d (1 - |d| / range)``: zero on the line and
+at the range's edge, so the force is continuous and nothing jumps.  Each item takes one pull
+per axis, from the guide nearest to any of its three features, so two guides never fight over
+one item; a follower's pull goes to the root of its group, as all its forces do.  The guides
+act once the page has cooled below ``GUIDE_HEAT`` (fading in as it cools): while the page is
+hot the items are still finding their places and lines would only hold them back, and a hot
+page costs nothing extra.  Which guide an item follows is worked out again (a sort per axis)
+every ``REFRESH_STEPS`` steps if an item has moved half the snap range since; in between
+the pull follows the chosen partner's current position (a gather), as a Verlet list does for
+contacts.  A pull this weak and slow needs no update every step: it is given every
+``PULL_EVERY``-th step, that many times as strong (the same average, a quarter of the cost).
+
+On a cold page (heat below ``HOLD_HEAT``, as in the gentle run that tells a settled page is
+at rest) a line also *holds* a group with a feature on it, as a magnet holds: a static
+friction of up to ``hold`` against the other forces on that axis.  So a page whose items the
+snapping step (physics.snapping) put on lines against a slight push is at rest, and stays a
+fixed point; the hold is what lets that step align items the forces alone would not leave
+there.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from floatpage.physics.bodies import Bodies
+from floatpage.physics.params import page_scale
+
+SNAP_MM = 4.0  # snap range on an A4 page; smaller pages scale it down with their linear size
+K_GUIDE = 0.03  # pull per step^2 per mm at strength 1 (about a seventh of a contact's stiffness)
+GUIDE_HEAT = 0.3  # the guides pull below this heat, in full below half of it
+K_HOLD = 1.0  # a line's hold on a cold page, mm per step^2 on A4: about 5 mm of contact
+HOLD_HEAT = 0.05  # the hold acts below this heat: a probe's cold run, not the spreading
+ON_LINE_MM = 0.05  # a feature this close to its guide is on it (and held)
+PULL_EVERY = 4  # the pull comes as one push every 4th step, four times as strong
+REFRESH_STEPS = 64  # steps between two searches for each item's nearest guide
+PAGE = -1  # owner of the page's own guide lines
+LOW, CENTRE, HIGH = 0, 1, 2  # an item's three features on one axis
+
+
+def snap_range(page_w_mm: float, page_h_mm: float) -> float:
+    """How near a feature must come to a guide to be pulled onto it, mm (4 mm on A4)."""
+    return SNAP_MM * page_scale(page_w_mm, page_h_mm)
+
+
+def features(centres: np.ndarray, halves: np.ndarray, axis: int) -> np.ndarray:
+    """Each item's low edge, centre and high edge on ``axis``, shape (n, 3)."""
+    c, h = centres[:, axis], halves[:, axis]
+    return np.column_stack([c - h, c, c + h])
+
+
+def page_lines(page_w_mm: float, page_h_mm: float, margin_mm: float, axis: int
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """The page's own guide lines on ``axis``: (edge lines, centre lines) in mm.  The margin
+    lines are guides for edges, the page's middle for centres."""
+    extent = (page_w_mm, page_h_mm)[axis]
+    return np.array([margin_mm, extent - margin_mm]), np.array([extent / 2])
+
+
+def nearest_guides(values: np.ndarray, owners: np.ndarray, queries: np.ndarray,
+                   query_owners: np.ndarray, reach: float) -> tuple[np.ndarray, np.ndarray]:
+    """For each query value, the index into ``values`` of the nearest value of another owner
+    within ``reach`` (-1 if none), and the signed distance to it (query to guide).
+
+    ``values`` need not be sorted.  A query's own owner holds at most two values in one pool
+    (an item's two edges), so looking two places either side of its sorted position finds the
+    nearest other value.
+    """
+    order = np.argsort(values, kind="stable")
+    ordered, ordered_owners = values[order], owners[order]
+    last = len(ordered) - 1
+    found = np.full(len(queries), -1)
+    best = np.full(len(queries), np.inf)
+    if last < 0:
+        return found, best
+    place = np.searchsorted(ordered, queries)
+    for shift in (-2, -1, 0, 1, 2):
+        k = np.clip(place + shift, 0, last)
+        distance = ordered[k] - queries
+        better = (ordered_owners[k] != query_owners) & (np.abs(distance) < np.abs(best))
+        best = np.where(better, distance, best)
+        found = np.where(better, order[k], found)
+    near = np.abs(best) <= reach
+    return np.where(near, found, -1), np.where(near, best, np.inf)
+
+
+class GuidePulls:
+    """The force: each free item is pulled, per axis, onto its nearest guide line.
+
+    The chosen pulls are kept flat, over ``centres.ravel()`` (row * 2 + axis): the pulled
+    coordinate, the guide's coordinate (or the pulled one's own, with a zero factor, for a
+    page line) and fixed offsets, so a step costs a handful of whole-array operations."""
+
+    def __init__(self, centres: np.ndarray, sizes: np.ndarray, active: np.ndarray,
+                 pulled: np.ndarray, page: tuple[float, float], margin_mm: float,
+                 strength: float, roots: np.ndarray | None = None):
+        self.halves = sizes / 2
+        self.roots = np.arange(len(centres)) if roots is None else roots
+        self.grouped = bool((self.roots != np.arange(len(centres))).any())
+        self.hold = hold_strength(page, strength)
+        self.holding = [np.zeros(0, dtype=int), np.zeros(0, dtype=int)]
+        self.guides = np.flatnonzero(active)  # rows whose features are guides
+        self.pulled = np.flatnonzero(pulled & active)  # rows the force moves
+        self.page, self.margin_mm = page, margin_mm
+        self.k = K_GUIDE * strength
+        self.reach = snap_range(*page)
+        self.steps = 0
+        self.own = np.zeros(0, dtype=int)
+        self.refreshed_at: np.ndarray | None = None
+
+    def refresh(self, centres: np.ndarray) -> None:
+        """Choose, per pulled item and axis, the feature to pull and the line to pull it to."""
+        self.refreshed_at = centres.copy()
+        rows, guides, halves = self.pulled, self.guides, self.halves
+        own, partner, factor, offset = [], [], [], []
+        for axis in (0, 1):
+            edges_page, centres_page = page_lines(*self.page, self.margin_mm, axis)
+            mine = features(centres[rows], halves[rows], axis)
+            theirs = features(centres[guides], halves[guides], axis)
+            # Edges: both of a pulled item's edges against every guide edge and margin line.
+            edge_pool = np.concatenate([theirs[:, LOW], theirs[:, HIGH], edges_page])
+            edge_rows = np.concatenate([guides, guides, [PAGE, PAGE]])
+            edge_sides = np.concatenate([-halves[guides, axis], halves[guides, axis], [0, 0]])
+            found_e, dist_e = nearest_guides(edge_pool, edge_rows,
+                                             np.concatenate([mine[:, LOW], mine[:, HIGH]]),
+                                             np.concatenate([rows, rows]), self.reach)
+            count = len(rows)
+            low_better = np.abs(dist_e[:count]) <= np.abs(dist_e[count:])
+            found_e = np.where(low_better, found_e[:count], found_e[count:])
+            dist_e = np.where(low_better, dist_e[:count], dist_e[count:])
+            own_side_e = np.where(low_better, -halves[rows, axis], halves[rows, axis])
+            centre_pool = np.concatenate([theirs[:, CENTRE], centres_page])
+            centre_rows = np.concatenate([guides, [PAGE]])
+            found_c, dist_c = nearest_guides(centre_pool, centre_rows, mine[:, CENTRE], rows,
+                                             self.reach)
+            use_edge = np.abs(dist_e) <= np.abs(dist_c)
+            found = np.where(use_edge, found_e, found_c)
+            keep = found >= 0
+            pool = np.where(use_edge, edge_pool[found_e], centre_pool[found_c])[keep]
+            guide_row = np.where(use_edge, edge_rows[found_e], centre_rows[found_c])[keep]
+            guide_side = np.where(use_edge, edge_sides[found_e], 0.0)[keep]
+            on_page = guide_row == PAGE
+            own.append(rows[keep] * 2 + axis)
+            partner.append(np.where(on_page, rows[keep], guide_row) * 2 + axis)
+            factor.append(np.where(on_page, 0.0, 1.0))
+            # line = factor * partner coordinate + guide offset; feature = own coordinate + side
+            offset.append(np.where(on_page, pool, guide_side)
+                          - np.where(use_edge, own_side_e, 0.0)[keep])
+        self.own, self.partner = np.concatenate(own), np.concatenate(partner)
+        self.factor, self.offset = np.concatenate(factor), np.concatenate(offset)
+
+    def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        """The pull (every ``PULL_EVERY``-th step), then, on a cold page, the hold.  The hold
+        needs the other forces' sum, so this term comes last in the list (fast_forces)."""
+        if heat >= GUIDE_HEAT:
+            return
+        self.steps += 1
+        if self.steps % PULL_EVERY == 0 or self.refreshed_at is None:
+            self.pull(acc, centres, heat)
+        if heat < HOLD_HEAT and (len(self.holding[0]) or len(self.holding[1])):
+            self.hold_on_lines(acc)
+
+    def pull(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        if self.refreshed_at is None or (
+                self.steps % REFRESH_STEPS == 0
+                and np.abs(centres - self.refreshed_at).max() > self.reach / 2):
+            self.refresh(centres)
+        if len(self.own) == 0:
+            return
+        flat = centres.ravel()
+        distance = self.factor * flat[self.partner] + self.offset - flat[self.own]
+        pull = distance * np.maximum(1.0 - np.abs(distance) / self.reach, 0.0)
+        share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT))
+        acc.ravel()[self.own] += PULL_EVERY * self.k * share * pull
+        on_line = self.own[np.abs(distance) <= ON_LINE_MM]
+        rows, axes = on_line // 2, on_line % 2
+        # the roots to hold on each axis (one entry per root)
+        self.holding = [np.flatnonzero(np.bincount(self.roots[rows[axes == axis]],
+                                                   minlength=len(centres)))
+                        for axis in (0, 1)]
+
+    def hold_on_lines(self, acc: np.ndarray) -> None:
+        """Static friction at a line: a group with a feature on its guide keeps its place on
+        that axis unless the other forces on it (summed over the group, as the integrator
+        hands a follower's forces to its root) exceed ``hold``; then only the excess moves it."""
+        count = len(acc)
+        for axis, roots in enumerate(self.holding):
+            if len(roots) == 0:
+                continue
+            if self.grouped:
+                totals = np.bincount(self.roots, acc[:, axis], count)[roots]
+            else:
+                totals = acc[roots, axis]
+            kept = np.sign(totals) * np.maximum(np.abs(totals) - self.hold, 0.0)
+            acc[roots, axis] += kept - totals
+
+
+def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],
+                margin_mm: float, strength: float) -> list[GuidePulls]:
+    """The guide force for one page, as a list of zero or one force (none at strength 0).
+
+    Free items and the followers of free items are pulled (a follower's pull moves its whole
+    group); every active item, held and hard-anchored ones included, is a guide."""
+    active = bodies.active
+    if strength <= 0 or not active.any():
+        return []
+    pulled = (bodies.free | bodies.followers & bodies.free[roots]) & ~bodies.held
+    return [GuidePulls(bodies.centres, bodies.sizes, active, pulled, page, margin_mm, strength,
+                       roots)]
+
+
+def hold_strength(page: tuple[float, float], strength: float) -> float:
+    """How hard a line holds a group on it, mm per step^2 (``K_HOLD`` on A4, scaled)."""
+    return K_HOLD * strength * page_scale(*page)
+
+
+def lines_met(centres: np.ndarray, sizes: np.ndarray, active: np.ndarray, roots: np.ndarray,
+              row: int, page: tuple[float, float], margin_mm: float, within: float
+              ) -> list[tuple[int, float]]:
+    """The guide lines ``row``'s features lie on, within ``within`` mm: (axis, mm), sorted.
+
+    An edge meets other items' edges and the margin lines, a centre other items' centres and
+    the page's middle; items of ``row``'s own rigid group are left out (a caption always lines
+    up with its own photo).  The editor draws these while an item moves."""
+    others = np.flatnonzero(active & (roots != roots[row]))
+    halves = sizes / 2
+    met: set[tuple[int, float]] = set()
+    for axis in (0, 1):
+        mine = features(centres[row:row + 1], halves[row:row + 1], axis)[0]
+        theirs = features(centres[others], halves[others], axis)
+        edges_page, centres_page = page_lines(*page, margin_mm, axis)
+        edges = np.concatenate([theirs[:, LOW], theirs[:, HIGH], edges_page])
+        middles = np.concatenate([theirs[:, CENTRE], centres_page])
+        for value, pool in ((mine[LOW], edges), (mine[HIGH], edges), (mine[CENTRE], middles)):
+            hits = pool[np.abs(pool - value) <= within]
+            met.update((axis, round(float(hit), 2)) for hit in hits)
+    return sorted(met)

@@ -1,0 +1,249 @@
+"""The exact step of the alignment guides: after the no-overlap pass, put near-aligned features
+exactly on one line, one checked move at a time.
+
+The guide force (physics.guides) brings features close; contacts and rounding leave them a
+fraction of a millimetre apart, and an edge that misses another by 1 mm looks worse than one
+that misses it by 20.  So once the page has settled and the no-overlap pass has run, each free
+item (with the items that follow it, as one rigid group) in turn tries, on each axis, the moves
+that would put one of its features exactly on a guide line within the snap range (another
+item's edge or centre, a margin line, or for a bleed item the page's edge, the page's middle),
+and the moves that would open a near miss it cannot close to just beyond what the eye reads as
+one (``ESCAPE_MM``).  It takes the move that leaves it the fewest near misses with the rest of
+the page (each exact alignment counting as half a miss less), the smallest such move first,
+and only if the move
+
+- keeps every pair at least the gutter apart (or, where the pass could not reach the gutter,
+  no closer than it left them): never an overlap, never a narrower gap;
+- keeps the item inside the page and its print-safe margin (bleed items: inside the page);
+- leaves the page at rest (physics.rest_check): no item it touches pushed harder than a cold
+  page's run would leave in place.  Without this a snapped page drifts millimetres in the next
+  gentle run and a settled file stops being a fixed point.  Nudges of at most ``NUDGE_MM`` are
+  exempt: they change the forces too little to matter.
+
+Every move taken lowers the page's count of near misses less half its alignments, so the
+sweeps end; a page where no move helps is left exactly as it is, which keeps a settled file a
+fixed point (model.layout.settle_page).  Held items and hard anchors never move: they are
+guides for the others.  On a page too full for the gutter (Engine.finalize), alignment gives
+way first and the step does not run.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from floatpage.physics.alignment import NEAR_MM
+from floatpage.physics.bodies import Bodies
+from floatpage.physics.params import Params, page_margin, page_scale
+from floatpage.physics.rest_check import RestCheck, group_members, sorted_unique
+from floatpage.physics.fast_forces import target_gap
+from floatpage.physics.finalize import ROUNDING_MM
+from floatpage.physics.guides import (
+    CENTRE, HIGH, LOW, features, hold_strength, page_lines, snap_range,
+)
+
+ALIGNED_MM = 0.05  # features this close are aligned (positions are saved to 0.01 mm)
+ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
+ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
+NUDGE_MM = 0.5  # moves this small need no rest check: pairs this close count as aligned anyway
+MAX_SWEEPS = 50
+MAX_CANDIDATES = 32  # moves scored per item and axis: on a crowded page, the 32 shortest
+MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
+TOLERANCE_MM = 1e-9
+
+
+def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params) -> int:
+    """The snapping step of ``Engine.finalize``, after the no-overlap pass: the fast mode's
+    guides (the paper mode stays the published model, without them).  Returns the moves made."""
+    if params.mode != "fast" or params.guides <= 0:
+        return 0
+    margin = page_margin(params.margin_mm, page_w_mm, page_h_mm)
+    page = (page_w_mm, page_h_mm)
+    gap = target_gap(bodies.sizes[bodies.active], page_w_mm, page_h_mm, params.gutter_mm)
+    rest = RestCheck(bodies, page, gap, bodies.margins(margin), params.beta, snap_range(*page),
+                     page_scale(*page), hold_strength(page, params.guides))
+    return snap_to_guides(bodies, page_w_mm, page_h_mm, params.gutter_mm + ROUNDING_MM, margin,
+                          params.guides, rest)
+
+
+def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance_mm: float,
+                   margin_mm: float, strength: float, rest: RestCheck | None = None) -> int:
+    """Snap free items onto their guide lines in place (see the module doc); returns the number
+    of moves made.  ``clearance_mm`` is the gap every pair must keep (the gutter plus the
+    rounding slack), ``margin_mm`` the page's print-safe margin; strength 0 does nothing.
+
+    The first sweep tries every free item on both axes; a later one only the items with a
+    feature near one that moved on that axis (nothing else can have a better move now)."""
+    if strength <= 0:
+        return 0
+    snapper = _Snapper(bodies, (page_w_mm, page_h_mm), clearance_mm, margin_mm, rest)
+    moves = 0
+    todo = [snapper.movers, snapper.movers]
+    for _ in range(MAX_SWEEPS):
+        moved_any = False
+        for axis in (0, 1):
+            moved = [row for row in todo[axis] if snapper.improve(int(row), axis)]
+            todo[axis] = snapper.near(moved, axis)
+            moves += len(moved)
+            moved_any = moved_any or bool(moved)
+        if not moved_any:
+            break
+    return moves
+
+
+class _Snapper:
+    """One page's snapping, what every move's test needs computed once.  A mover is a free
+    item with the items that follow it (a rigid group, moved as one); ``lines[axis]`` holds
+    every row's low edge, centre and high edge on that axis, updated as rows move."""
+
+    def __init__(self, bodies: Bodies, page: tuple[float, float], clearance_mm: float,
+                 margin_mm: float, rest: RestCheck | None):
+        self.bodies, self.clearance, self.rest = bodies, clearance_mm, rest
+        self.halves = bodies.sizes / 2
+        self.active = bodies.active.copy()
+        self.roots, _ = bodies.group_roots()
+        held_groups = np.unique(self.roots[bodies.held])
+        movable = bodies.free & self.active & ~np.isin(np.arange(bodies.count), held_groups)
+        self.movers = np.flatnonzero(movable)
+        groups = group_members(self.roots, self.active)
+        self.members = {int(row): groups[row] for row in self.movers}
+        self.reach = snap_range(*page)
+        self.window = max(self.reach, NEAR_MM) + NEAR_MM  # further apart cannot matter
+        extent = np.array(page)
+        inset = bodies.margins(margin_mm)[:, None]
+        self.lowest = self.halves + inset
+        self.highest = extent - self.halves - inset
+        # The page's own lines per axis: the margin lines for items that keep the margin,
+        # the page's edges for bleed groups (they may reach the edge), and the middle.
+        self.bleeds = {row: bool(bodies.bleed[members].any())
+                       for row, members in self.members.items()}
+        self.page_values = {bleed: [np.concatenate(page_lines(*page, 0.0 if bleed else margin_mm,
+                                                              axis)) for axis in (0, 1)]
+                            for bleed in (False, True)}
+        self.page_kinds = np.array([0.0, 0.0, 1.0])  # two edge lines, one centre line
+        self.lines = [features(bodies.centres, self.halves, axis) for axis in (0, 1)]
+        self.moved_from: dict[int, np.ndarray] = {}
+
+    def mine(self, row: int, axis: int) -> tuple[np.ndarray, np.ndarray]:
+        """The group's features on ``axis`` and their kinds (0 edge, 1 centre)."""
+        lines = self.lines[axis][self.members[row]]
+        return lines.ravel(), np.tile([0.0, 1.0, 0.0], len(lines))
+
+    def pool(self, row: int, axis: int, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Every other active item's features, and the page's lines, within the window of
+        ``values``, with their kinds."""
+        lines = self.lines[axis]
+        near = (self.active & (lines[:, LOW] < values.max() + self.window)
+                & (lines[:, HIGH] > values.min() - self.window))
+        near[self.members[row]] = False
+        theirs = lines[near]
+        return (np.concatenate([theirs.ravel(), self.page_values[self.bleeds[row]][axis]]),
+                np.concatenate([np.tile([0.0, 1.0, 0.0], len(theirs)), self.page_kinds]))
+
+    def near(self, moved: list[int], axis: int) -> np.ndarray:
+        """Movers with a feature within the window of a moved group's features, before or
+        after its move, on ``axis``."""
+        if not moved:
+            return np.zeros(0, dtype=int)
+        lines = self.lines[axis]
+        touched = np.zeros(self.bodies.count, dtype=bool)
+        for row in moved:
+            for spot in (self.moved_from[row], self.mine(row, axis)[0]):
+                low, high = spot.min() - self.window, spot.max() + self.window
+                touched |= (lines[:, LOW] < high) & (lines[:, HIGH] > low)
+        touched = np.isin(self.roots, np.flatnonzero(touched)) | touched
+        return self.movers[touched[self.movers]]
+
+    def improve(self, row: int, axis: int) -> bool:
+        """Make the best allowed move of ``row``'s group along ``axis``; whether it moved."""
+        members = self.members[row]
+        if (self.lowest[members, axis] > self.highest[members, axis]).any():
+            return False  # too large to move within its margins on this axis
+        values, kinds = self.mine(row, axis)
+        pool, pool_kinds = self.pool(row, axis, values)
+        distance = pool[None, :] - values[:, None]
+        same = kinds[:, None] == pool_kinds[None, :]
+        shifts = candidate_shifts(distance[same], self.reach)
+        if len(shifts) > MAX_CANDIDATES:  # a crowded page: the nearest lines only
+            shifts = np.sort(shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]])
+        scores = misses_after(distance, same, shifts)
+        now = float(scores[np.searchsorted(shifts, 0.0)])
+        order = np.lexsort((np.abs(shifts), scores))
+        blockers = self.blockers(row, axis)
+        for k in order[:MAX_TRIES]:
+            if scores[k] >= now - TOLERANCE_MM:
+                break
+            onto_line = bool((np.abs(distance[same] - shifts[k]) <= ALIGNED_MM).any())
+            if self.allowed(row, axis, shifts[k], onto_line, blockers):
+                self.moved_from[row] = values
+                self.bodies.centres[members, axis] += shifts[k]
+                self.lines[axis][members] += shifts[k]
+                return True
+        return False
+
+    def blockers(self, row: int, axis: int) -> np.ndarray:
+        """The other active items a move of ``row``'s group along ``axis`` could come closer
+        than the clearance to: those within the clearance of a member across the axis, and
+        within the snap range of one along it (found once per item and axis, not per move:
+        on a 600-item page the test against every item was two thirds of the time)."""
+        members = self.members[row]
+        centres, halves = self.bodies.centres, self.halves
+        others = np.flatnonzero(self.active & (self.roots != self.roots[row]))
+        across = 1 - axis
+        gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
+                      - halves[others, across][None, :] - halves[members, across][:, None])
+        gap_along = (np.abs(centres[others, axis][None, :] - centres[members, axis][:, None])
+                     - halves[others, axis][None, :] - halves[members, axis][:, None])
+        near = ((gap_across < self.clearance) & (gap_along < self.clearance + self.reach)).any(axis=0)
+        return others[near]
+
+    def allowed(self, row: int, axis: int, shift: float, onto_line: bool = False,
+                others: np.ndarray | None = None) -> bool:
+        """Whether ``row``'s group may move by ``shift`` along ``axis``: every member inside
+        its margins (or no further out than it is), no pair closer than the clearance (or
+        than it is now), and, unless the move is a nudge of at most ``NUDGE_MM``, the page
+        left at rest (RestCheck; a move ``onto_line`` leaves the group on a guide, whose hold
+        on a cold page takes up part of its push).  ``others``: the items to test the
+        clearance against (``blockers``); every other active item if None."""
+        members = self.members[row]
+        centres, halves = self.bodies.centres, self.halves
+        current = centres[members, axis]
+        low = np.minimum(self.lowest[members, axis], current)
+        high = np.maximum(self.highest[members, axis], current)
+        moved = current + shift
+        if ((moved < low - TOLERANCE_MM) | (moved > high + TOLERANCE_MM)).any():
+            return False
+        if others is None:
+            others = np.flatnonzero(self.active & (self.roots != self.roots[row]))
+        if len(others):
+            across = 1 - axis
+            gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
+                          - halves[others, across][None, :] - halves[members, across][:, None])
+            reach = halves[others, axis][None, :] + halves[members, axis][:, None]
+            gap_now = np.abs(centres[others, axis][None, :] - current[:, None]) - reach
+            gap_new = np.abs(centres[others, axis][None, :] - moved[:, None]) - reach
+            before = np.maximum(gap_now, gap_across)
+            after = np.maximum(gap_new, gap_across)
+            if not (after >= np.minimum(before, self.clearance) - TOLERANCE_MM).all():
+                return False
+        if abs(shift) <= NUDGE_MM:
+            return True  # a nudge onto a line: forces change too little to disturb the rest
+        return self.rest is None or self.rest.keeps_rest(members, axis, shift, onto_line)
+
+
+def candidate_shifts(distance: np.ndarray, reach: float) -> np.ndarray:
+    """Shifts within ``reach`` that put a feature on a line at ``distance`` from it, or open
+    a near miss with one to ``ESCAPE_MM``; sorted, with 0 (staying) among them."""
+    onto = distance[np.abs(distance) <= reach]
+    near = distance[(np.abs(distance) > ALIGNED_MM) & (np.abs(distance) < NEAR_MM)]
+    away = near - np.sign(near) * ESCAPE_MM
+    away = away[np.abs(away) <= reach]
+    return sorted_unique(np.concatenate([onto, away, [0.0]]))
+
+
+def misses_after(distance: np.ndarray, same: np.ndarray, shifts: np.ndarray) -> np.ndarray:
+    """For each shift, the near misses between features and pool lines of the same kind at
+    ``distance`` (features, pool), less ``ALIGN_GAIN`` per exact alignment; (len(shifts),)."""
+    gaps = np.abs(distance[None, :, :] - shifts[:, None, None])
+    near = (gaps > ALIGNED_MM) & (gaps < NEAR_MM) & same[None]
+    aligned = (gaps <= ALIGNED_MM) & same[None]
+    return near.sum(axis=(1, 2)) - ALIGN_GAIN * aligned.sum(axis=(1, 2))

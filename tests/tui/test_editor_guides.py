@@ -1,0 +1,42 @@
+"""The editor shows the alignment guide an item sits on while it moves, and the details view
+(`v`) shows the alignment measures: the real app, driven by keys."""
+
+from __future__ import annotations
+
+from editor_helpers import editor, item_pixel_box, screen_of
+from floatpage.tui.page_painter import GUIDE, GUIDE_DASH
+
+
+def guide_pixels(app) -> set[tuple[int, int]]:
+    canvas = screen_of(app).preview.canvas
+    rows, cols = (canvas.pixels == GUIDE).all(axis=2).nonzero()
+    return set(zip(cols.tolist(), rows.tolist()))
+
+
+async def test_a_moving_item_shows_the_guide_it_sits_on_and_a_still_page_none(project_path):
+    async with editor(project_path, size=(100, 40)) as (app, pilot):
+        assert guide_pixels(app) == set()
+        screen_of(app).selected_id = "block"  # its centre is level with the photo's (85 mm)
+        await pilot.pause()
+        assert guide_pixels(app) == set()  # selected, but not moving: no guide
+        await pilot.press("right")  # a held key: the block moves, its centre stays at 85 mm
+        await pilot.pause()
+        shown = guide_pixels(app)
+        p = screen_of(app).preview.projection
+        row = int(p.to_pixels(0, 85.0)[1])
+        photo, block = item_pixel_box(app, "photo"), item_pixel_box(app, "block")
+        on_row = {x for x, y in shown if y == row}
+        # a dashed line across the page, through the gap between the photo and the block
+        assert any(photo[2] <= x < block[0] for x in on_row)
+        assert len(on_row) >= p.width // (2 * GUIDE_DASH)  # across the page, not a stub
+        screen_of(app).release_held()
+        await pilot.pause()
+        assert guide_pixels(app) == set()  # let go and paused: the guide goes
+
+
+async def test_the_details_view_shows_the_alignment_measures(project_path):
+    async with editor(project_path, size=(120, 40)) as (app, pilot):
+        await pilot.press("v")
+        await pilot.pause()
+        text = str(screen_of(app).query_one("StatusLine").render())
+        assert "misses " in text and "lines " in text and "aligned " in text
