@@ -256,10 +256,13 @@ def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
     out = merge_folder / "out"
     builds = merge_folder / "tmp"  # its own, so other runs' engines on this machine don't count
     builds.mkdir()
+    # Ctrl+C as a terminal sends it: to a process that has not been told to ignore it (a
+    # process started with SIGINT ignored, as by `nohup` or an earlier test, keeps ignoring it)
     process = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
                                 "-o", str(out), "--chunk-size", "2", "--workers", "2"],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                               env={**os.environ, "TMPDIR": str(builds)})
+                               env={**os.environ, "TMPDIR": str(builds)},
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and len(list(out.glob("*.pdf"))) < 2:
         time.sleep(0.05)
