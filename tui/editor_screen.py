@@ -225,12 +225,6 @@ class EditorScreen(Screen):
         if not self._composed:
             return
         self.preview.show(self.scene())
-        self.redraw_words()
-
-    def redraw_words(self) -> None:
-        """The status lines and the top bar."""
-        if not self._composed:
-            return
         engine = self.session.engine
         summary, words = self.quality_summary()
         self.query_one(StatusLine).show(Status(
