@@ -240,10 +240,6 @@ class EditorScreen(Screen):
 
     def redraw(self) -> None:
         self.preview.show(self.page_view())
-        self.redraw_words()
-
-    def redraw_words(self) -> None:
-        """The status lines and the top bar."""
         engine = self.session.engine
         summary, words = self.quality_summary()
         self.query_one(StatusLine).show(Status(

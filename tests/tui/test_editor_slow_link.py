@@ -10,24 +10,18 @@ link). An arrow is held throughout, so the page keeps moving, and the status lin
 
 from __future__ import annotations
 
-import fcntl
 import os
-import pty
 import re
 import select
-import signal
 import statistics
-import struct
-import sys
-import termios
 import time
 from pathlib import Path
 
 import pyte
 
 from floatpage.model import BlockItem, Page, Project, load_project, save_project
+from test_editor_hangup import Editor
 
-ROOT = Path(__file__).resolve().parents[2]
 QUERY, ANSWER = b"\x1b[6n", b"\x1b[1;1R"
 FPS = re.compile(rb"(\d+\.\d) fps")
 
@@ -43,13 +37,12 @@ def crowded_page(folder: Path) -> Path:
 
 
 class SlowTerminal:
+    """The test's side of the editor's pty (`floatpage edit` at 100 x 32, as in the hang-up
+    tests), with a VT emulator showing what it has read."""
+
     def __init__(self, path: Path):
-        self.pid, self.fd = pty.fork()
-        if self.pid == 0:
-            fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack("HHHH", 32, 100, 0, 0))
-            os.chdir(ROOT)
-            os.execvpe(sys.executable, [sys.executable, "-m", "floatpage.cli.main", "edit",
-                                        str(path)], {**os.environ, "TERM": "xterm-256color"})
+        self.editor = Editor(path)
+        self.fd = self.editor.fd
         self.received = bytearray()
         self.screen = pyte.Screen(100, 32)
         self.stream = pyte.ByteStream(self.screen)
@@ -90,11 +83,7 @@ class SlowTerminal:
         return "\n".join(self.screen.display)
 
     def close(self) -> None:
-        try:
-            os.kill(self.pid, signal.SIGKILL)
-            os.waitpid(self.pid, 0)
-        except (ProcessLookupError, ChildProcessError):
-            pass
+        self.editor.kill()
         os.close(self.fd)
 
 
