@@ -166,7 +166,12 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"page {page.id}: {quality.summary()}")
         bodies = engine.bodies
         print(f"  {measure_alignment(bodies.centres, bodies.sizes, bodies.decorative).summary()}")
-        issues += quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
+        issues += (quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
+                   + len(quality.outside_region))
+        for k in quality.outside_region:
+            item = page.items[k]
+            print(f'  item "{item.id}" is not wholly inside its region "{item.region}": run '
+                  "`floatpage settle`, or make the region larger")
         if quality.in_margin:
             ids = [page.items[k].id for k in quality.in_margin]
             shown = ", ".join(ids[:5]) + (f" and {len(ids) - 5} more" if len(ids) > 5 else "")

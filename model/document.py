@@ -19,7 +19,7 @@ from typing import Any, Literal, Union
 
 from floatpage.model.key_specs import (
     CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, WEEKDAYS, at_most_chars, between, colour,
-    finite, item_id, one_of, positive, spec,
+    finite, item_id, name_or_empty, one_of, positive, spec,
 )
 from floatpage.physics.params import DISTANCES, MODES, Params, out_of_range
 
@@ -73,6 +73,10 @@ class ItemBase:
     # leaves the item out, instead of printing an empty box
     drop_if_empty: bool = field(default=False, metadata=spec("bool"))
     anchor: Anchor | None = field(default=None, metadata=spec("table"))
+    # the page region (Page.regions) the item is confined to; "" for the whole page
+    region: str = field(default="", metadata=spec("str", name_or_empty))
+    # items that share a group name move as one rigid body (see Page.group_lead)
+    group: str = field(default="", metadata=spec("str", name_or_empty))
 
     kind = "base"
 
@@ -154,6 +158,25 @@ class Background:
 
 
 @dataclass
+class Region:
+    """A named rectangle of a page (the paper's section 7 asks for regions), e.g. "photos in
+    the top two-thirds".  Items confined to it (``region = "photos"``) keep inside it: its
+    edges are walls for them, as the page's edges are, and guide lines for every item.
+    (left, top) is its top-left corner, as a reader measures a frame on a page."""
+
+    id: str = field(metadata=spec("str", item_id, required=True))
+    left: float = field(metadata=spec("number", finite, required=True))
+    top: float = field(metadata=spec("number", finite, required=True))
+    w: float = field(metadata=spec("number", positive, required=True))
+    h: float = field(metadata=spec("number", positive, required=True))
+
+    @property
+    def box(self) -> tuple[float, float, float, float]:
+        """(left, top, right, bottom), mm."""
+        return (self.left, self.top, self.left + self.w, self.top + self.h)
+
+
+@dataclass
 class Page:
     """One independent page; items never flow between pages (paper, section 4)."""
 
@@ -165,6 +188,30 @@ class Page:
     height_mm: float = field(default=297.0, metadata=spec("number", between(10.0, 5000.0)))
     background: Background | None = field(default=None, metadata=spec("table"))
     items: list[Item] = field(default_factory=list, metadata=spec("array"))
+    regions: list[Region] = field(default_factory=list, metadata=spec("array"))
+
+    def region(self, region_id: str) -> Region:
+        for region in self.regions:
+            if region.id == region_id:
+                return region
+        raise KeyError(region_id)
+
+    def group_members(self, group: str) -> list[Item]:
+        """The items of a group, in file order."""
+        return [item for item in self.items if group and item.group == group]
+
+    def group_lead(self, group: str) -> Item | None:
+        """The member a group moves by: the one with a point anchor (an anchor on the group),
+        else the first member that follows no other item.  The others follow it rigidly, so
+        the group moves as one body wherever the physics or the user moves its lead."""
+        members = self.group_members(group)
+        for member in members:
+            if isinstance(member.anchor, PointAnchor):
+                return member
+        for member in members:
+            if not isinstance(member.anchor, ItemAnchor):
+                return member
+        return members[0] if members else None
 
     def item(self, item_id: str) -> Item:
         for item in self.items:

@@ -98,3 +98,8 @@ def item_id(value: str) -> str | None:
     if re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}", value):
         return None
     return "must be 1-64 letters, digits, '-', '_' or '.', starting with a letter or digit"
+
+
+def name_or_empty(value: str) -> str | None:
+    """A region's or group's name on an item: an id, or "" for none."""
+    return None if value == "" else item_id(value)

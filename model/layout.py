@@ -15,7 +15,9 @@ import numpy as np
 from floatpage.physics import Engine, Params, Quality, SettleReport
 from floatpage.physics.finalize import ROUNDING_MM
 from floatpage.model.errors import FloatpageError
-from floatpage.model.document import ItemAnchor, Page, PhysicsSettings, PointAnchor, Project
+from floatpage.model.document import (
+    Item, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
+)
 
 POSITION_DECIMALS = 2  # positions are written back to 0.01 mm
 FIXED_POINT_ROUNDS = 20  # probes before giving up on a fixed point (most pages need 1-3)
@@ -48,8 +50,26 @@ def engine_for_page(page: Page, settings: PhysicsSettings) -> Engine:
                                 hard=anchor.hard)
         elif isinstance(anchor, ItemAnchor):
             engine.anchor_to(item.id, anchor.to, anchor.dx, anchor.dy)
+    for item, lead in group_followers(page):
+        engine.anchor_to(item.id, lead.id, item.x - lead.x, item.y - lead.y)
+    regions = {region.id: region.box for region in page.regions}
+    for item in page.items:
+        if item.region in regions:
+            engine.confine(item.id, *regions[item.region])
     engine.mark_settled()
     return engine
+
+
+def group_followers(page: Page) -> list[tuple[Item, Item]]:
+    """(member, lead) for every member of a group that the engine makes follow its group's
+    lead (Page.group_lead) where it now stands: a group is one rigid body.  Members with an
+    anchor of their own keep it (the loader allows only item anchors within the group)."""
+    pairs = []
+    for group in dict.fromkeys(item.group for item in page.items if item.group):
+        lead = page.group_lead(group)
+        pairs += [(member, lead) for member in page.group_members(group)
+                  if member is not lead and member.anchor is None]
+    return pairs
 
 
 def safe_round(centre_mm: float, half_mm: float, page_mm: float) -> float:
@@ -145,6 +165,8 @@ def follow_roots(page: Page) -> np.ndarray:
     index = {item.id: k for k, item in enumerate(page.items)}
     roots = np.array([index.get(item.anchor.to, k) if isinstance(item.anchor, ItemAnchor) else k
                       for k, item in enumerate(page.items)], dtype=np.int64)
+    for member, lead in group_followers(page):
+        roots[index[member.id]] = index[lead.id]
     while True:  # pointer jumping: log2(chain length) rounds (the loader refuses cycles)
         jumped = roots[roots]
         if np.array_equal(jumped, roots):
@@ -260,7 +282,7 @@ def layout_score(quality: Quality, probe_moved_mm: float) -> tuple[int, int, int
 def copy_of(page: Page) -> Page:
     """A page whose items can be moved without touching ``page``'s."""
     return Page(id=page.id, width_mm=page.width_mm, height_mm=page.height_mm,
-                items=copy.deepcopy(page.items))
+                items=copy.deepcopy(page.items), regions=page.regions)
 
 
 def keeps_guarantees(layout: Quality, settled: Quality) -> bool:

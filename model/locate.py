@@ -31,24 +31,25 @@ class LineFinder:
         self.by_name: dict[str, list[int]] = {}
         for line, name in self.headers:
             self.by_name.setdefault(name, []).append(line)
-        self._items_of_page: dict[int, list[int]] = {}
+        self._items_of_page: dict[tuple[int, str], list[int]] = {}
 
     def table_line(self, name: str, index: int = 0) -> int | None:
         """Line of the index-th `[name]` / `[[name]]` header."""
         found = self.by_name.get(name, [])
         return found[index] if index < len(found) else None
 
-    def item_line(self, page_index: int, item_index: int) -> int | None:
-        """Line of the item_index-th `[[pages.items]]` below the page_index-th `[[pages]]`."""
-        items = self._items_of_page.get(page_index)
+    def item_line(self, page_index: int, item_index: int, array: str = "items") -> int | None:
+        """Line of the item_index-th `[[pages.items]]` (or `[[pages.ARRAY]]`, e.g. regions)
+        below the page_index-th `[[pages]]`."""
+        items = self._items_of_page.get((page_index, array))
         if items is None:
             page_line = self.table_line("pages", page_index)
             if page_line is None:
                 return None
             next_page = self.table_line("pages", page_index + 1) or len(self.lines) + 1
-            every = self.by_name.get("pages.items", [])
+            every = self.by_name.get(f"pages.{array}", [])
             items = every[bisect.bisect_right(every, page_line):bisect.bisect_left(every, next_page)]
-            self._items_of_page[page_index] = items
+            self._items_of_page[(page_index, array)] = items
         return items[item_index] if item_index < len(items) else None
 
     def key_line(self, table_line: int | None, key: str) -> int | None:

@@ -19,6 +19,7 @@ import tomlkit
 
 from floatpage.model.document import (
     ITEM_CLASSES, ITEM_KINDS, Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
+    Region,
 )
 from floatpage.model.errors import Problem, ProjectFileError
 from floatpage.model.locate import LineFinder
@@ -26,7 +27,7 @@ from floatpage.model.picture_files import is_merge_placeholder, is_outside, read
 from floatpage.model.page_sizes import CUSTOM, PAGE_SIZES_MM, canonical_size_name, page_dimensions
 from floatpage.model.schema import (
     BACKGROUND_KEYS, COMMON_ITEM_KEYS, FILES_KEYS, ITEM_ANCHOR_KEYS, KIND_KEYS, PAGE_KEYS, PHYSICS_KEYS,
-    POINT_ANCHOR_KEYS, TOP_KEYS, TYPE_WORDS, Key, type_matches,
+    POINT_ANCHOR_KEYS, REGION_KEYS, TOP_KEYS, TYPE_WORDS, Key, type_matches,
 )
 from floatpage.model.document import FORMAT_VERSION
 
@@ -134,6 +135,7 @@ class _Reader:
         self.allow_outside = allow_outside
         self.lines = LineFinder(text)
         self.problems: list[Problem] = []
+        self.named_regions: set[tuple[int, str]] = set()  # (page index, id) of every region table
 
     def add(self, line: int | None, where: str, message: str, hint: str = "") -> None:
         self.problems.append(Problem(self.path, line, where, message, hint))
@@ -205,6 +207,8 @@ class _Reader:
         for page_index, page in enumerate(project.pages):
             self.check_anchors(page, page_index)
             self.check_extent(page, page_index)
+            self.check_regions(page, page_index)
+            self.check_groups(page, page_index)
         return project
 
     def page(self, table: dict, page_index: int, seen_items: dict[str, str]) -> Page | None:
@@ -235,6 +239,10 @@ class _Reader:
         if "background" in values:
             page.background = self.background(values["background"], label,
                                               self.lines.key_line(page_line, "background"))
+        for region_index, region_table in enumerate(values.get("regions", [])):
+            region = self.region(region_table, page, page_index, region_index)
+            if region is not None:
+                page.regions.append(region)
         items = values.get("items", [])
         if len(items) > MAX_ITEMS_PER_PAGE:
             self.add(page_line, label, f"holds {len(items):,} items, more than the "
@@ -253,6 +261,77 @@ class _Reader:
             seen_items[item.id] = page.id
             page.items.append(item)
         return page
+
+    def region(self, table: dict, page: Page, page_index: int, region_index: int
+               ) -> Region | None:
+        line = self.lines.item_line(page_index, region_index, "regions")
+        label = f'region "{table["id"]}"' if isinstance(table.get("id"), str) else \
+            f"region {region_index + 1} of page {page_index + 1}"
+        values = self.check_table(table, REGION_KEYS, label, line)
+        if isinstance(table.get("id"), str):
+            self.named_regions.add((page_index, table["id"]))  # reported here, not again per item
+        if not {"id", "left", "top", "w", "h"} <= values.keys():
+            return None
+        region = Region(id=values["id"], left=float(values["left"]), top=float(values["top"]),
+                        w=float(values["w"]), h=float(values["h"]))
+        if any(known.id == region.id for known in page.regions):
+            self.add(line, label, f'this region id is used twice on page "{page.id}"',
+                     "give every region of a page its own id")
+            return None
+        left, top, right, bottom = region.box
+        if left < 0 or top < 0 or right > page.width_mm + 1e-9 or bottom > page.height_mm + 1e-9:
+            self.add(line, label, f"reaches outside the page ({left:g}-{right:g} mm across, "
+                     f"{top:g}-{bottom:g} mm down, on a page of {page.width_mm:g} x "
+                     f"{page.height_mm:g} mm)",
+                     "left and top are the region's top-left corner, from the page's; keep "
+                     "left + w and top + h within the page")
+            return None
+        return region
+
+    def check_regions(self, page: Page, page_index: int) -> None:
+        """An item's region must be one of its page's, and the item must fit inside it."""
+        regions = {region.id: region for region in page.regions}
+        for index, item in enumerate(page.items):
+            if not item.region:
+                continue
+            line = self.lines.key_line(self.lines.item_line(page_index, index), "region")
+            where = f'item "{item.id}"'
+            region = regions.get(item.region)
+            if region is None and (page_index, item.region) in self.named_regions:
+                continue  # the region itself was refused, with its own message
+            if region is None:
+                close = difflib.get_close_matches(item.region, sorted(regions), n=1, cutoff=0.6)
+                hint = (f'did you mean "{close[0]}"?' if close else
+                        "name one of the page's [[pages.regions]]" + (
+                            ": " + ", ".join(f'"{name}"' for name in regions) if regions else
+                            ", or add one with id, left, top, w and h"))
+                self.add(line, where, f'is confined to region "{item.region}", which page '
+                         f'"{page.id}" does not have', hint)
+            elif item.w > region.w + 1e-9 or item.h > region.h + 1e-9:
+                self.add(line, where, f"is {item.w:g} x {item.h:g} mm, larger than its region "
+                         f'"{region.id}" ({region.w:g} x {region.h:g} mm)',
+                         "make the item smaller or the region larger")
+
+    def check_groups(self, page: Page, page_index: int) -> None:
+        """A group moves as one body: it may hold one point anchor (the group's anchor), and
+        its members may follow only each other."""
+        lines = {item.id: self.lines.item_line(page_index, k) for k, item in enumerate(page.items)}
+        for group in dict.fromkeys(item.group for item in page.items if item.group):
+            members = page.group_members(group)
+            names = {member.id for member in members}
+            pinned = [member for member in members if isinstance(member.anchor, PointAnchor)]
+            for extra in pinned[1:]:
+                self.add(self.lines.key_line(lines[extra.id], "anchor"), f'item "{extra.id}"',
+                         f'group "{group}" has a second anchor ("{pinned[0].id}" has the '
+                         "first); a group moves as one body, held by one anchor",
+                         "remove one of the two anchors")
+            for member in members:
+                anchor = member.anchor
+                if isinstance(anchor, ItemAnchor) and anchor.to not in names:
+                    self.add(self.lines.key_line(lines[member.id], "anchor"),
+                             f'item "{member.id}"', f'is in group "{group}" but follows '
+                             f'"{anchor.to}", outside it',
+                             f'anchor the group by one member, or add "{anchor.to}" to the group')
 
     def background(self, table: dict, label: str, line: int | None) -> Background | None:
         values = self.check_table(table, BACKGROUND_KEYS, label + " background", line)

@@ -17,7 +17,7 @@ import tomlkit
 from tomlkit.items import AoT, Array, InlineTable, Table, Whitespace
 
 from floatpage.model.document import (
-    Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
+    Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project, Region,
 )
 from floatpage.model.atomic_file import atomic_write, write_chunks  # noqa: F401 (re-exported)
 from floatpage.model.errors import FloatpageError
@@ -28,6 +28,7 @@ UTF8_BOM = b"\xef\xbb\xbf"
 WRITTEN_ONLY_WHEN_TRUE = {"bleed"}  # rare flags: a file names them only where they are set
 KEEP = object()  # a pair's value meaning "leave whatever the user wrote, if anything"
 ANCHOR_DEFAULTS = {"dx": 0.0, "dy": 0.0, "gamma": 1.0, "hard": False}
+ARRAYS_SYNCED_APART = {"items", "regions"}  # a page's arrays of tables, synced by sync_array
 
 
 def mm(value: float) -> float:
@@ -85,6 +86,11 @@ def anchor_value(anchor) -> dict | None:
     return None
 
 
+def region_pairs(region: Region) -> Pairs:
+    return [("id", region.id, None), ("left", mm(region.left), None), ("top", mm(region.top), None),
+            ("w", mm(region.w), None), ("h", mm(region.h), None)]
+
+
 def item_pairs(item) -> Pairs:
     """The item's keys in the order a person reads them: who, where, what, then the anchor."""
     pairs: Pairs = [("id", item.id, None), ("kind", item.kind, None)]
@@ -124,7 +130,7 @@ def equivalent(key: str, current: Any, value: Any) -> bool:
 def sync_table(table: Table, pairs: Pairs) -> None:
     """Make `table` hold `pairs`, changing only what differs, so comments and order survive."""
     wanted = {key for key, value, _ in pairs if value is not None}
-    for key in [k for k in table if k not in wanted and k != "items"]:
+    for key in [k for k in table if k not in wanted and k not in ARRAYS_SYNCED_APART]:
         del table[key]
     for key, value, default in pairs:
         if value is None or value is KEEP:
@@ -255,6 +261,7 @@ def to_document(project: Project) -> tomlkit.TOMLDocument:
             doc["physics"] = new_table(changed)
 
     def fill_page(table: Table, page: Page) -> None:
+        sync_array(table, "regions", page.regions, region_pairs, lambda region: region.id)
         sync_array(table, "items", page.items, item_pairs, lambda item: item.id)
 
     sync_array(doc, "pages", project.pages, page_pairs, lambda page: page.id, fill_page)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Any
 
 from floatpage.model.document import (
-    ITEM_CLASSES, Background, ItemAnchor, ItemBase, Page, PhysicsSettings, PointAnchor,
+    ITEM_CLASSES, Background, ItemAnchor, ItemBase, Page, PhysicsSettings, PointAnchor, Region,
 )
 from floatpage.model.key_specs import (  # noqa: F401 - the vocabulary, for the loader's users
     CALENDAR_LANGUAGES, FONT_FAMILIES, HEX_COLOUR, MAX_TEXT_CHARS, MAX_TITLE_CHARS, Key,
@@ -58,6 +58,7 @@ KIND_KEYS = {kind: keys_of(cls, skip=tuple(key.name for key in _BASE))
              for kind, cls in ITEM_CLASSES.items()}
 POINT_ANCHOR_KEYS = keys_of(PointAnchor)
 ITEM_ANCHOR_KEYS = keys_of(ItemAnchor)
+REGION_KEYS = keys_of(Region)
 
 
 def complaints(obj: Any) -> list[tuple[str, str]]:

@@ -31,6 +31,9 @@ class Bodies:
     hard        hard anchor: the position is set to the anchor after every step
     targets     row of the item this one follows (item-to-item anchor), NO_TARGET if none
     offsets     follower's offset from its target's centre, mm
+    bleed       may reach the page edge (no print-safe margin)
+    regions     the rectangle an item is confined to, (left, top, right, bottom) in mm, NaN
+                where it may use the whole page: a region's edges are walls for its items
     """
 
     centres: np.ndarray = field(default_factory=lambda: _empty((0, 2)))
@@ -44,6 +47,7 @@ class Bodies:
     targets: np.ndarray = field(default_factory=lambda: _empty((0,), np.int64, NO_TARGET))
     offsets: np.ndarray = field(default_factory=lambda: _empty((0, 2)))
     bleed: np.ndarray = field(default_factory=lambda: _empty((0,), bool, False))
+    regions: np.ndarray = field(default_factory=lambda: _empty((0, 4), float, np.nan))
 
     @property
     def count(self) -> int:
@@ -72,6 +76,32 @@ class Bodies:
         """Each row's print-safe margin, (n,): none for bleed items, ``margin_mm`` otherwise."""
         return np.where(self.bleed, 0.0, margin_mm)
 
+    def insets(self, margin_mm: float, page_w_mm: float, page_h_mm: float
+               ) -> tuple[np.ndarray, np.ndarray]:
+        """How far each row's walls stand inside the page: from its left and top edges, and
+        from its right and bottom edges, (n, 2) each.  The print-safe margin (``margins``), or
+        the item's region where that reaches further in.  Everything that keeps items on the
+        page (the walls of both modes, the hard clamp, the no-overlap pass, the snap) reads
+        these, so a region is a wall exactly as the page's edge is."""
+        margins = np.repeat(self.margins(margin_mm)[:, None], 2, axis=1)
+        confined = ~np.isnan(self.regions[:, 0])
+        if not confined.any():
+            return margins, margins.copy()
+        low, high = margins.copy(), margins.copy()
+        regions = self.regions[confined]
+        region_low = regions[:, :2]
+        region_high = np.array([page_w_mm, page_h_mm]) - regions[:, 2:]
+        low[confined] = np.maximum(low[confined], region_low)
+        high[confined] = np.maximum(high[confined], region_high)
+        # A region the user drew flush with the page edge, just as large as its item: the
+        # margin gives way to the region there (the region was asked for, the margin is a
+        # default), rather than both being missed by half.
+        extent = np.array([page_w_mm, page_h_mm])
+        squeezed = extent - low[confined] - high[confined] < self.sizes[confined]
+        low[confined] = np.where(squeezed, region_low, low[confined])
+        high[confined] = np.where(squeezed, region_high, high[confined])
+        return low, high
+
     def append(self, centre, size, *, decorative: bool, bleed: bool = False) -> None:
         """Add one unanchored item at rest."""
         self.centres = np.vstack([self.centres, np.asarray(centre, float)[None]])
@@ -85,6 +115,7 @@ class Bodies:
         self.targets = np.append(self.targets, NO_TARGET).astype(np.int64)
         self.offsets = np.vstack([self.offsets, np.zeros((1, 2))])
         self.bleed = np.append(self.bleed, bleed)
+        self.regions = np.vstack([self.regions, np.full((1, 4), np.nan)])
 
     def remove(self, row: int) -> None:
         """Drop one row; followers of it become free, later target rows shift down by one."""
@@ -94,7 +125,7 @@ class Bodies:
         targets[targets > row] -= 1
         self.targets = targets
         for name in ("centres", "sizes", "velocities", "decorative", "held", "anchors",
-                     "gammas", "hard", "targets", "offsets", "bleed"):
+                     "gammas", "hard", "targets", "offsets", "bleed", "regions"):
             setattr(self, name, getattr(self, name)[keep])
 
     def group_roots(self) -> tuple[np.ndarray, np.ndarray]:

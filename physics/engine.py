@@ -101,7 +101,16 @@ class Engine:
                                self._bodies.sizes, self.params.gutter_mm,
                                decorative=self._bodies.decorative,
                                groups=self._bodies.group_roots()[0],
-                               margins=self._bodies.margins(self.margin_mm))
+                               margins=self._kept_margins(),
+                               regions=self._bodies.regions)
+
+    def _kept_margins(self) -> np.ndarray:
+        """Each row's print-safe margin as its walls keep it: none for bleed items, and less
+        where a region flush with the page's edge has the margin give way (Bodies.insets)."""
+        near, far = self._bodies.insets(self.margin_mm, self.page_w_mm, self.page_h_mm)
+        return np.minimum(self._bodies.margins(self.margin_mm),
+                          np.minimum(near.min(axis=1, initial=np.inf),
+                                     far.min(axis=1, initial=np.inf)))
 
     def alignment(self) -> Alignment:
         """How well the page lines up (physics.alignment), decorations left out."""
@@ -165,7 +174,19 @@ class Engine:
         target = int(self._bodies.targets[row])
         if target != NO_TARGET:
             self._bodies.offsets[row] = self._bodies.centres[row] - self._bodies.centres[target]
+        self._carry_followers(row)
         self.reheat()
+
+    def _carry_followers(self, row: int) -> None:
+        """Set the items that follow ``row`` (directly or down a chain) beside it at once, so a
+        moved group is drawn whole even while the physics is paused."""
+        bodies = self._bodies
+        if not bodies.followers.any():
+            return
+        roots, offsets = bodies.group_roots()
+        carried = (roots == roots[row]) & bodies.followers
+        carried[row] = False
+        bodies.centres[carried] = bodies.centres[roots[carried]] + offsets[carried]
 
     def hold(self, item_id: str) -> None:
         row = self._row(item_id)
@@ -226,6 +247,21 @@ class Engine:
         self._bodies.hard[row] = False
         self._bodies.targets[row] = NO_TARGET
         self._bodies.offsets[row] = 0.0
+        self.reheat()
+
+    def confine(self, item_id: str, left_mm: float, top_mm: float, right_mm: float,
+                bottom_mm: float) -> None:
+        """Keep the item inside the rectangle (left, top)-(right, bottom): a region of the page,
+        whose edges are walls for it (and guides for every item).  Replaces an earlier region."""
+        _finite("region", left_mm, top_mm, right_mm, bottom_mm)
+        if right_mm <= left_mm or bottom_mm <= top_mm:
+            raise ValueError("a region needs right > left and bottom > top")
+        self._bodies.regions[self._row(item_id)] = (left_mm, top_mm, right_mm, bottom_mm)
+        self.reheat()
+
+    def unconfine(self, item_id: str) -> None:
+        """Let the item use the whole page again."""
+        self._bodies.regions[self._row(item_id)] = np.nan
         self.reheat()
 
     def resize_page(self, page_w_mm: float, page_h_mm: float) -> None:

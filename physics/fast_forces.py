@@ -129,19 +129,24 @@ def contact_pushes(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np
     return pushes + radial
 
 
-def wall_rest_box(halves: np.ndarray, page_w_mm: float, page_h_mm: float, margin: float
-                  ) -> tuple[np.ndarray, np.ndarray]:
+def wall_rest_box(halves: np.ndarray, page_w_mm: float, page_h_mm: float, margin,
+                  far_margin=None) -> tuple[np.ndarray, np.ndarray]:
     """Where each centre may rest without a wall push: lowest and highest, (n, 2) each.
+    The walls stand ``margin`` inside the left and top edges and ``far_margin`` (the same if
+    not given) inside the right and bottom ones.
 
-    An item too large for the page (with its margins) on an axis may only rest in the page's
-    middle there.
+    An item too large for the page (with its margins) on an axis may only rest in the middle
+    between its walls there.
     """
     extent = np.array([page_w_mm, page_h_mm])
+    far = margin if far_margin is None else far_margin
     lowest = halves + margin
-    highest = extent - halves - margin
+    highest = extent - halves - far
     too_big = 2 * halves >= extent
     crowded = lowest > highest  # fits, but not with both margins: rest in the middle
     middle = np.broadcast_to(extent / 2, halves.shape)
+    if far_margin is not None:
+        middle = middle + (np.asarray(margin) - np.asarray(far)) / 2
     lowest = np.where(too_big | crowded, middle, lowest)
     highest = np.where(too_big | crowded, middle, highest)
     return lowest, highest

@@ -17,7 +17,9 @@ from floatpage.physics.constraints import enforce_positions, hand_forces_to_root
 from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
 from floatpage.physics.guides import guide_pulls
-from floatpage.physics.geometry import clamp_to_page, group_extents, page_bounds
+from floatpage.physics.geometry import (
+    as_insets, clamp_to_page, confine_followers, group_extents, page_bounds,
+)
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
 
@@ -44,12 +46,15 @@ def cooling_rate(heat_decay: float, count: int) -> float:
 def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
                 rng: np.random.Generator, roots: np.ndarray, movable: np.ndarray,
                 inverse_mass: np.ndarray, gap: float, skin: float,
-                margins: np.ndarray | float = 0.0) -> list[Force]:
-    """The forces the fast mode sums every step; a new force is one more entry here."""
+                margins: np.ndarray | float = 0.0,
+                far_margins: np.ndarray | float | None = None) -> list[Force]:
+    """The forces the fast mode sums every step; a new force is one more entry here.
+    ``margins`` and ``far_margins`` are where the walls stand (Bodies.insets)."""
     halves = bodies.sizes / 2
-    inset = np.asarray(margins, float)
-    inset = inset[:, None] if inset.ndim == 1 else inset
-    rest_low, rest_high = wall_rest_box(halves, page_w_mm, page_h_mm, gap / 2 + inset)
+    near = as_insets(margins)
+    far = near if far_margins is None else as_insets(far_margins)
+    rest_low, rest_high = wall_rest_box(halves, page_w_mm, page_h_mm, gap / 2 + near,
+                                        gap / 2 + far)
     forces: list[Force] = [
         ContactPushes(bodies, np.flatnonzero(bodies.active), roots, inverse_mass, movable, gap,
                       skin, (page_w_mm, page_h_mm), params.gutter_mm,
@@ -84,9 +89,13 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     group_mass = np.bincount(roots, weights=charges, minlength=bodies.count)
     movable = free[roots] & ~bodies.held & active
     inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[roots], 1e-12), 0.0)
-    margins = bodies.margins(page_margin(params.margin_mm, page_w_mm, page_h_mm))
+    near, far = bodies.insets(page_margin(params.margin_mm, page_w_mm, page_h_mm), page_w_mm,
+                              page_h_mm)
     low, high = group_extents(bodies, roots, root_offsets)
-    lowest, highest = page_bounds(free_rows, low, high, page_w_mm, page_h_mm, margins[free_rows])
+    lowest, highest = page_bounds(free_rows, low, high, page_w_mm, page_h_mm, near[free_rows],
+                                  far[free_rows])
+    confine_followers(bodies, roots, root_offsets, free_rows, lowest, highest, near, far,
+                      page_w_mm, page_h_mm)
     constrained = bool((bodies.held | bodies.hard | followers).any())
 
     gap = target_gap(bodies.sizes[active], page_w_mm, page_h_mm, params.gutter_mm)
@@ -97,7 +106,7 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     keep = 1.0 - cooling_rate(params.heat_decay, int(active.sum()))
     count = bodies.count
     forces = fast_forces(bodies, page_w_mm, page_h_mm, params, rng, roots, movable,
-                         inverse_mass, gap, skin, margins)
+                         inverse_mass, gap, skin, near, far)
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))
         for force in forces:

@@ -26,22 +26,60 @@ def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray
 
 
 def page_bounds(rows: np.ndarray, low: np.ndarray, high: np.ndarray, page_w_mm: float,
-                page_h_mm: float, margins: np.ndarray | float = 0.0
-                ) -> tuple[np.ndarray, np.ndarray]:
+                page_h_mm: float, margins: np.ndarray | float = 0.0,
+                far_margins: np.ndarray | float | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Lowest and highest centre, (len(rows), 2) each, that keeps each group inside the page,
-    ``margins`` (a number, or one per row) from its edges.
+    ``margins`` from its left and top edges and ``far_margins`` (the same if not given) from
+    its right and bottom ones: a number, one per row, or (len(rows), 2) per row and axis (a
+    region's walls, Bodies.insets).
 
     A group too large for the page (within its margins) on an axis gets one allowed value
-    there: centred.
+    there: centred between them.
     """
     extent = np.array([page_w_mm, page_h_mm])
-    inset = np.asarray(margins, float)
-    inset = inset[:, None] if inset.ndim == 1 else inset
-    lowest = -low[rows] + inset
-    highest = extent - high[rows] - inset
+    near = as_insets(margins)
+    far = near if far_margins is None else as_insets(far_margins)
+    lowest = -low[rows] + near
+    highest = extent - high[rows] - far
     too_big = lowest > highest
     middle = extent / 2 - (low[rows] + high[rows]) / 2
+    if far_margins is not None:
+        middle = middle + (near - far) / 2
     return np.where(too_big, middle, lowest), np.where(too_big, middle, highest)
+
+
+def as_insets(margins: np.ndarray | float) -> np.ndarray | float:
+    """Margins as something that broadcasts against (n, 2): one per row becomes a column."""
+    inset = np.asarray(margins, float)
+    return inset[:, None] if inset.ndim == 1 else inset
+
+
+def confine_followers(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray,
+                      rows: np.ndarray, lowest: np.ndarray, highest: np.ndarray,
+                      near: np.ndarray, far: np.ndarray, page_w_mm: float, page_h_mm: float
+                      ) -> None:
+    """Narrow the roots' bounds (from page_bounds, for ``rows``) in place so that followers
+    confined to a region keep inside it too: a rigid group fits wherever its every member's
+    walls allow.  Only followers with a region need this; the rest share their root's page
+    margins, which group_extents already counts."""
+    followers = np.flatnonzero(bodies.followers & ~np.isnan(bodies.regions[:, 0]))
+    if not len(followers):
+        return
+    position = {int(row): k for k, row in enumerate(rows)}
+    extent = np.array([page_w_mm, page_h_mm])
+    halves = bodies.sizes / 2
+    for member in followers:
+        k = position.get(int(roots[member]))
+        if k is None:
+            continue
+        offset = root_offsets[member]
+        lowest[k] = np.maximum(lowest[k], halves[member] - offset + near[member])
+        highest[k] = np.minimum(highest[k], extent - halves[member] - offset - far[member])
+        squeezed = lowest[k] > highest[k]
+        if squeezed.any():
+            middle = (lowest[k] + highest[k]) / 2
+            lowest[k] = np.where(squeezed, middle, lowest[k])
+            highest[k] = np.where(squeezed, middle, highest[k])
 
 
 def clamp_to_page(centres: np.ndarray, velocities: np.ndarray, rows: np.ndarray,

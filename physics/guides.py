@@ -57,12 +57,23 @@ def features(centres: np.ndarray, halves: np.ndarray, axis: int) -> np.ndarray:
     return np.column_stack([c - h, c, c + h])
 
 
-def page_lines(page_w_mm: float, page_h_mm: float, margin_mm: float, axis: int
-               ) -> tuple[np.ndarray, np.ndarray]:
+def page_lines(page_w_mm: float, page_h_mm: float, margin_mm: float, axis: int,
+               regions: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The page's own guide lines on ``axis``: (edge lines, centre lines) in mm.  The margin
-    lines are guides for edges, the page's middle for centres."""
+    lines and the edges of the page's regions (``regions``: (k, 4) left, top, right, bottom,
+    NaN rows ignored, as Bodies.regions) are guides for edges, the page's middle for centres."""
     extent = (page_w_mm, page_h_mm)[axis]
-    return np.array([margin_mm, extent - margin_mm]), np.array([extent / 2])
+    return (np.concatenate([[margin_mm, extent - margin_mm], region_edges(regions, axis)]),
+            np.array([extent / 2]))
+
+
+def region_edges(regions: np.ndarray | None, axis: int) -> np.ndarray:
+    """The distinct edges, on ``axis``, of the regions items are confined to: walls for their
+    own items, guides for everyone (a region's edge is a line the page's design drew)."""
+    if regions is None or not len(regions):
+        return np.zeros(0)
+    boxes = regions[~np.isnan(regions[:, 0])]
+    return np.unique(np.concatenate([boxes[:, axis], boxes[:, axis + 2]]))
 
 
 def nearest_guides(values: np.ndarray, owners: np.ndarray, queries: np.ndarray,
@@ -101,7 +112,8 @@ class GuidePulls:
 
     def __init__(self, centres: np.ndarray, sizes: np.ndarray, active: np.ndarray,
                  pulled: np.ndarray, page: tuple[float, float], margin_mm: float,
-                 strength: float, roots: np.ndarray | None = None):
+                 strength: float, roots: np.ndarray | None = None,
+                 regions: np.ndarray | None = None):
         self.halves = sizes / 2
         self.roots = np.arange(len(centres)) if roots is None else roots
         self.grouped = bool((self.roots != np.arange(len(centres))).any())
@@ -109,7 +121,7 @@ class GuidePulls:
         self.holding = [np.zeros(0, dtype=int), np.zeros(0, dtype=int)]
         self.guides = np.flatnonzero(active)  # rows whose features are guides
         self.pulled = np.flatnonzero(pulled & active)  # rows the force moves
-        self.page, self.margin_mm = page, margin_mm
+        self.page, self.margin_mm, self.regions = page, margin_mm, regions
         self.k = K_GUIDE * strength
         self.reach = snap_range(*page)
         self.steps = 0
@@ -122,13 +134,14 @@ class GuidePulls:
         rows, guides, halves = self.pulled, self.guides, self.halves
         own, partner, factor, offset = [], [], [], []
         for axis in (0, 1):
-            edges_page, centres_page = page_lines(*self.page, self.margin_mm, axis)
+            edges_page, centres_page = page_lines(*self.page, self.margin_mm, axis, self.regions)
             mine = features(centres[rows], halves[rows], axis)
             theirs = features(centres[guides], halves[guides], axis)
             # Edges: both of a pulled item's edges against every guide edge and margin line.
             edge_pool = np.concatenate([theirs[:, LOW], theirs[:, HIGH], edges_page])
-            edge_rows = np.concatenate([guides, guides, [PAGE, PAGE]])
-            edge_sides = np.concatenate([-halves[guides, axis], halves[guides, axis], [0, 0]])
+            edge_rows = np.concatenate([guides, guides, np.full(len(edges_page), PAGE)])
+            edge_sides = np.concatenate([-halves[guides, axis], halves[guides, axis],
+                                         np.zeros(len(edges_page))])
             found_e, dist_e = nearest_guides(edge_pool, edge_rows,
                                              np.concatenate([mine[:, LOW], mine[:, HIGH]]),
                                              np.concatenate([rows, rows]), self.reach)
@@ -214,7 +227,7 @@ def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],
         return []
     pulled = (bodies.free | bodies.followers & bodies.free[roots]) & ~bodies.held
     return [GuidePulls(bodies.centres, bodies.sizes, active, pulled, page, margin_mm, strength,
-                       roots)]
+                       roots, bodies.regions)]
 
 
 def hold_strength(page: tuple[float, float], strength: float) -> float:
@@ -223,11 +236,11 @@ def hold_strength(page: tuple[float, float], strength: float) -> float:
 
 
 def lines_met(centres: np.ndarray, sizes: np.ndarray, active: np.ndarray, roots: np.ndarray,
-              row: int, page: tuple[float, float], margin_mm: float, within: float
-              ) -> list[tuple[int, float]]:
+              row: int, page: tuple[float, float], margin_mm: float, within: float,
+              regions: np.ndarray | None = None) -> list[tuple[int, float]]:
     """The guide lines ``row``'s features lie on, within ``within`` mm: (axis, mm), sorted.
 
-    An edge meets other items' edges and the margin lines, a centre other items' centres and
+    An edge meets other items' edges, the margin lines and the regions' edges, a centre other items' centres and
     the page's middle; items of ``row``'s own rigid group are left out (a caption always lines
     up with its own photo).  The editor draws these while an item moves."""
     others = np.flatnonzero(active & (roots != roots[row]))
@@ -236,7 +249,7 @@ def lines_met(centres: np.ndarray, sizes: np.ndarray, active: np.ndarray, roots:
     for axis in (0, 1):
         mine = features(centres[row:row + 1], halves[row:row + 1], axis)[0]
         theirs = features(centres[others], halves[others], axis)
-        edges_page, centres_page = page_lines(*page, margin_mm, axis)
+        edges_page, centres_page = page_lines(*page, margin_mm, axis, regions)
         edges = np.concatenate([theirs[:, LOW], theirs[:, HIGH], edges_page])
         middles = np.concatenate([theirs[:, CENTRE], centres_page])
         for value, pool in ((mine[LOW], edges), (mine[HIGH], edges), (mine[CENTRE], middles)):

@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from floatpage.physics.geometry import as_insets
+
 SIGMA_MIN_MM = 1.0
 
 
@@ -82,19 +84,22 @@ def repulsion(centres: np.ndarray, sizes: np.ndarray, alpha: float, distance: st
 
 
 def wall_forces(centres: np.ndarray, sizes: np.ndarray, page_w_mm: float, page_h_mm: float,
-                alpha: float, margins: np.ndarray | float = 0.0) -> np.ndarray:
+                alpha: float, margins: np.ndarray | float = 0.0,
+                far_margins: np.ndarray | float | None = None) -> np.ndarray:
     """Section 4.4: each wall pushes like a charge equal to the item's own, sitting on the wall
     at the item's height (left/right) or column (top/bottom), by equation (2).
 
     Faithful to the paper, including its flaw: an item whose centre has crossed a wall is pushed
     further out, by that wall, with its full charge. The walls stand ``margins`` (one per row,
-    or one for all) inside the page's edges: our print-safe margin, not the paper's.
+    or one for all) inside the page's left and top edges and ``far_margins`` (the same if not
+    given) inside its right and bottom ones: our print-safe margin and regions, not the
+    paper's.
     """
     charges = sizes[:, 0] * sizes[:, 1]
-    inset = np.asarray(margins, float)
-    inset = inset[:, None] if inset.ndim == 1 else inset
+    inset = as_insets(margins)
+    far_inset = inset if far_margins is None else as_insets(far_margins)
     near = centres - inset  # distance to the left and top walls
-    far = centres - (np.array([page_w_mm, page_h_mm]) - inset)  # to the right and bottom ones
+    far = centres - (np.array([page_w_mm, page_h_mm]) - far_inset)  # to the right and bottom ones
     push = np.zeros_like(centres)
     for offset in (near, far):
         sigma = np.maximum(np.abs(offset), SIGMA_MIN_MM)

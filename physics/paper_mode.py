@@ -33,11 +33,11 @@ class Walls:
     """Section 4.4: the page's edges (moved in by the print-safe margins) push items back in."""
 
     def __init__(self, sizes: np.ndarray, page: tuple[float, float], alpha: float,
-                 margins: np.ndarray):
-        self.sizes, self.page, self.alpha, self.margins = sizes, page, alpha, margins
+                 insets: tuple[np.ndarray, np.ndarray]):
+        self.sizes, self.page, self.alpha, self.insets = sizes, page, alpha, insets
 
     def add_to(self, force: np.ndarray, centres: np.ndarray, heat: float) -> None:
-        force += wall_forces(centres, self.sizes, *self.page, self.alpha * heat, self.margins)
+        force += wall_forces(centres, self.sizes, *self.page, self.alpha * heat, *self.insets)
 
 
 class Springs:
@@ -64,9 +64,11 @@ class PaperForces:
         self.everyone = bool(active.all())
         self.rows = slice(None) if self.everyone else np.flatnonzero(active)
         sizes = bodies.sizes[self.rows]
-        margins = bodies.margins(page_margin(params.margin_mm, page_w_mm, page_h_mm))
+        near, far = bodies.insets(page_margin(params.margin_mm, page_w_mm, page_h_mm),
+                                  page_w_mm, page_h_mm)
         self.terms = [Repulsion(sizes, alpha, params.distance),
-                      Walls(sizes, (page_w_mm, page_h_mm), alpha, margins[self.rows])]
+                      Walls(sizes, (page_w_mm, page_h_mm), alpha,
+                            (near[self.rows], far[self.rows]))]
         anchors = bodies.anchors[self.rows]
         if np.isfinite(anchors).any():
             self.terms.append(Springs(anchors, bodies.gammas[self.rows], params.beta))

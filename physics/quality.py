@@ -29,12 +29,13 @@ class Quality:
     in_margin: tuple[int, ...] = ()
     margin_mm: float = 0.0
     overlap_count: int = 0  # every overlapping pair, listed or not
+    outside_region: tuple[int, ...] = ()  # items not wholly inside the region they are confined to
 
     @property
     def ok(self) -> bool:
         """No overlap, nothing off the page, and every gap at least the gutter."""
         return (not self.overlap_count and not self.off_page and not self.in_margin
-                and self.min_gap_mm >= self.gutter_mm - GAP_TOLERANCE_MM)
+                and not self.outside_region and self.min_gap_mm >= self.gutter_mm - GAP_TOLERANCE_MM)
 
     def summary(self) -> str:
         """One short line for a status bar."""
@@ -42,6 +43,8 @@ class Quality:
         if not math.isinf(self.min_gap_mm) and self.min_gap_mm < self.gutter_mm - GAP_TOLERANCE_MM:
             gap += f" < {self.gutter_mm:g}"
         margin = f"{len(self.in_margin)} in margin · " if self.in_margin else ""
+        if self.outside_region:
+            margin += f"{len(self.outside_region)} outside region · "
         return (f"{self.overlap_count} overlaps · {len(self.off_page)} off page · "
                 f"{margin}gap {gap} · even {self.gap_evenness:.2f} · balance {self.balance:.2f}")
 
@@ -93,7 +96,7 @@ def pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
 
 
 def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_mm: float = 0.0,
-                    *, decorative=None, groups=None, margins=None) -> Quality:
+                    *, decorative=None, groups=None, margins=None, regions=None) -> Quality:
     """All measures for one page.  ``centres`` and ``sizes`` are (n, 2) arrays in mm.
 
     ``decorative`` (n,) bool marks items that sit behind the others by design: they count
@@ -102,6 +105,8 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
     its follow chain): a follower sits where its user put it beside its target, so pairs within
     one group count for neither overlap nor gaps. ``margins`` (n,) is each item's print-safe
     margin (0 for bleed items); items closer to the edge than theirs are ``in_margin``.
+    ``regions`` (n, 4) is the rectangle (left, top, right, bottom) each item is confined to,
+    NaN where none; items not wholly inside theirs are ``outside_region``.
     """
     centres = np.asarray(centres, float).reshape(-1, 2)
     sizes = np.asarray(sizes, float).reshape(-1, 2)
@@ -128,6 +133,15 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
         edge = np.minimum(centres - halves, np.array([page_w_mm, page_h_mm]) - centres - halves)
         short = (edge.min(axis=1) < wanted - MARGIN_TOLERANCE_MM) & ~layered & (wanted > 0)
         in_margin = tuple(int(k) for k in np.flatnonzero(short) if k not in off_page)
+
+    outside_region: tuple[int, ...] = ()
+    if regions is not None:
+        boxes = np.asarray(regions, float).reshape(count, 4)
+        confined = ~np.isnan(boxes[:, 0])
+        with np.errstate(invalid="ignore"):
+            out = (((centres - halves) < boxes[:, :2] - MARGIN_TOLERANCE_MM)
+                   | ((centres + halves) > boxes[:, 2:] + MARGIN_TOLERANCE_MM)).any(axis=1)
+        outside_region = tuple(int(k) for k in np.flatnonzero(out & confined & ~layered))
 
     rows = np.flatnonzero(~layered)
     overlap_total, pairs, overlap_count, min_gap, evenness = 0.0, (), 0, math.inf, 1.0
@@ -162,6 +176,7 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
         in_margin=in_margin,
         margin_mm=margin_mm,
         overlap_count=overlap_count,
+        outside_region=outside_region,
     )
 
 

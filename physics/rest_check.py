@@ -30,8 +30,9 @@ REST_ACC = 0.8  # mm per step^2 on A4: a cold page's run (heat 0.02) moves such 
 class RestCheck:
     """One page's forces, set up once for a snapping pass whose moves stay within ``reach``."""
 
-    def __init__(self, bodies: Bodies, page: tuple[float, float], gap: float, margins: np.ndarray,
-                 beta: float, reach: float, scale: float, hold: float = 0.0):
+    def __init__(self, bodies: Bodies, page: tuple[float, float], gap: float,
+                 insets: tuple[np.ndarray, np.ndarray], beta: float, reach: float, scale: float,
+                 hold: float = 0.0):
         self.bodies, self.page, self.gap = bodies, page, gap
         self.halves = bodies.sizes / 2
         active = bodies.active
@@ -48,8 +49,9 @@ class RestCheck:
         self.i, self.j = i, j
         self.share_i, self.share_j = inverse[i] / total, inverse[j] / total
         self.blocked = blocked_axes(bodies.sizes, i, j, *page, 0.0)
-        self.rest_low, self.rest_high = wall_rest_box(self.halves, *page,
-                                                      gap / 2 + margins[:, None])
+        near, far = insets  # where each row's walls stand (Bodies.insets)
+        self.rest_low, self.rest_high = wall_rest_box(self.halves, *page, gap / 2 + near,
+                                                      gap / 2 + far)
         anchored = ~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard
         self.anchor_k = np.where(anchored, K_ANCHOR * beta / BETA_DEFAULT * bodies.gammas, 0.0)
         self.anchors = np.where(anchored[:, None], bodies.anchors, 0.0)

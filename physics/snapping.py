@@ -59,7 +59,7 @@ def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
     margin = page_margin(params.margin_mm, page_w_mm, page_h_mm)
     page = (page_w_mm, page_h_mm)
     gap = target_gap(bodies.sizes[bodies.active], page_w_mm, page_h_mm, params.gutter_mm)
-    rest = RestCheck(bodies, page, gap, bodies.margins(margin), params.beta, snap_range(*page),
+    rest = RestCheck(bodies, page, gap, bodies.insets(margin, *page), params.beta, snap_range(*page),
                      page_scale(*page), hold_strength(page, params.guides))
     return snap_to_guides(bodies, page_w_mm, page_h_mm, params.gutter_mm + ROUNDING_MM, margin,
                           params.guides, rest)
@@ -109,17 +109,20 @@ class _Snapper:
         self.reach = snap_range(*page)
         self.window = max(self.reach, NEAR_MM) + NEAR_MM  # further apart cannot matter
         extent = np.array(page)
-        inset = bodies.margins(margin_mm)[:, None]
-        self.lowest = self.halves + inset
-        self.highest = extent - self.halves - inset
+        near, far = bodies.insets(margin_mm, *page)
+        self.lowest = self.halves + near
+        self.highest = extent - self.halves - far
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
         self.bleeds = {row: bool(bodies.bleed[members].any())
                        for row, members in self.members.items()}
-        self.page_values = {bleed: [np.concatenate(page_lines(*page, 0.0 if bleed else margin_mm,
-                                                              axis)) for axis in (0, 1)]
-                            for bleed in (False, True)}
-        self.page_kinds = np.array([0.0, 0.0, 1.0])  # two edge lines, one centre line
+        lines = {bleed: [page_lines(*page, 0.0 if bleed else margin_mm, axis, bodies.regions)
+                         for axis in (0, 1)] for bleed in (False, True)}
+        self.page_values = {bleed: [np.concatenate(pair) for pair in pairs]
+                            for bleed, pairs in lines.items()}
+        # kinds: 0 for the edge lines (margins, regions' edges), 1 for the centre line
+        self.page_kinds = {bleed: [np.concatenate([np.zeros(len(edges)), np.ones(len(middles))])
+                                   for edges, middles in pairs] for bleed, pairs in lines.items()}
         self.lines = [features(bodies.centres, self.halves, axis) for axis in (0, 1)]
         self.moved_from: dict[int, np.ndarray] = {}
 
@@ -137,7 +140,8 @@ class _Snapper:
         near[self.members[row]] = False
         theirs = lines[near]
         return (np.concatenate([theirs.ravel(), self.page_values[self.bleeds[row]][axis]]),
-                np.concatenate([np.tile([0.0, 1.0, 0.0], len(theirs)), self.page_kinds]))
+                np.concatenate([np.tile([0.0, 1.0, 0.0], len(theirs)),
+                                self.page_kinds[self.bleeds[row]][axis]]))
 
     def near(self, moved: list[int], axis: int) -> np.ndarray:
         """Movers with a feature within the window of a moved group's features, before or

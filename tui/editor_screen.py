@@ -495,7 +495,9 @@ class EditorScreen(Screen):
     def action_edit(self) -> None:
         item = self.session.selected_item
         if item is not None:
-            self.ask(FormDialog(f"Edit {item.id} ({item.kind})", item_forms.edit_fields(item),
+            regions = tuple(region.id for region in self.session.page.regions)
+            self.ask(FormDialog(f"Edit {item.id} ({item.kind})",
+                                item_forms.edit_fields(item, regions),
                                 item_forms.parse_edit, dialog_id="edit-dialog"),
                      partial(self.attempt, self.session.update_item, item.id))
 
@@ -525,6 +527,19 @@ class EditorScreen(Screen):
 
     def action_unanchor(self) -> None:
         self.attempt(self.session.unanchor)
+
+    def action_group(self) -> None:
+        item = self.session.selected_item
+        if item is None:
+            return
+        groups = tuple(dict.fromkeys(other.group for other in self.session.page.items
+                                     if other.group))
+        self.ask(FormDialog(f"Group {item.id} with…", item_forms.group_fields(item, groups),
+                            item_forms.parse_group, dialog_id="group-dialog"),
+                 partial(self.attempt, self.say_group))
+
+    def say_group(self, group: str) -> None:
+        self.notify(self.session.set_group(group))
 
     # -- physics ------------------------------------------------------------------------------
 

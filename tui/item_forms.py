@@ -122,8 +122,9 @@ def parse_custom_size(values: dict[str, Any]) -> dict[str, Any]:
 
 # -- editing --------------------------------------------------------------------------------
 
-def edit_fields(item) -> list[Field]:
-    """The item's editable properties, kind first, then how the physics treats it."""
+def edit_fields(item, regions: tuple[str, ...] = ()) -> list[Field]:
+    """The item's editable properties, kind first, then how the physics treats it (its
+    anchor's gamma, decorative, its group, and its region where the page has ``regions``)."""
     fields: list[Field] = []
     if isinstance(item, TextItem):
         fields += [Field("text", "Text", "text", item.text),
@@ -148,7 +149,21 @@ def edit_fields(item) -> list[Field]:
                             f"{item.anchor.gamma:g}"))
     fields.append(Field("decorative", "Decorative (behind, never pushed)", "bool",
                         item.decorative))
+    fields.append(Field("group", "Group (items of one group move as one; empty: none)", "line",
+                        item.group))
+    if regions:
+        fields.append(Field("region", "Keep inside region", "choice", item.region,
+                            (("the whole page", ""),) + tuple((name, name) for name in regions)))
     return fields
+
+
+def group_fields(item, groups: tuple[str, ...]) -> list[Field]:
+    known = f" (this page has {', '.join(groups)})" if groups else ""
+    return [Field("group", f"Group name{known}; empty takes {item.id} out", "line", item.group)]
+
+
+def parse_group(values: dict[str, Any]) -> str:
+    return checked(TextItem, "group", values["group"].strip(), "a group name")
 
 
 def parse_edit(values: dict[str, Any]) -> dict[str, Any]:
@@ -161,6 +176,8 @@ def parse_edit(values: dict[str, Any]) -> dict[str, Any]:
         parsed["gamma"] = number(parsed["gamma"], "gamma", PointAnchor, "gamma")
     if "year" in parsed:
         parsed["year"] = whole(parsed["year"], "the year", CalendarItem, "year")
+    if "group" in parsed:
+        parsed["group"] = checked(TextItem, "group", parsed["group"].strip(), "a group name")
     if "text" in parsed:
         if not parsed["text"].strip():
             raise ValueError("a text box needs some text (delete the item instead)")

@@ -106,6 +106,9 @@ COMMANDS: tuple[Command, ...] = (
             footer="item", rank=6, needs_item=True),
     Command("u", "unanchor", "Unanchor", "Remove the selected item's anchor", "Anchor",
             footer="item", rank=6, needs_item=True),
+    Command("G", "group", "Group", "Put the selected item in a group that moves as one "
+            "(asks for its name; empty takes it out)", "Anchor", footer="item", rank=6,
+            needs_item=True),
     Command("space", "toggle_pause", "Pause", "Pause or resume the physics", "Physics",
             footer="both", rank=9),
     Command("r", "reheat", "Reheat", "Reheat the physics so the items spread out again",

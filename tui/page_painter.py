@@ -29,6 +29,8 @@ ANCHOR: RGB = (214, 40, 170)
 LINK: RGB = (0, 150, 200)
 GUIDE: RGB = (0, 190, 210)  # an alignment guide the moving item sits on
 GUIDE_DASH = 3  # one pixel in three: a light dashed line that hides little
+REGION: RGB = (120, 170, 90)  # a region's name, and (mixed with the paper) its frame: green
+GROUP: RGB = (255, 140, 0)  # the frame around the selected item's whole group
 MISSING_PICTURE: RGB = (150, 150, 150)
 WHITE: RGB = (255, 255, 255)
 TEXT_TINT = 0.12  # how much of its ink colour a text box's background takes
@@ -59,7 +61,7 @@ def shown_guides(engine, item_id: str | None, moving: bool) -> tuple[tuple[int, 
     bodies = engine.bodies
     return tuple(lines_met(bodies.centres, bodies.sizes, bodies.active, bodies.group_roots()[0],
                            engine.ids.index(item_id), (engine.page_w_mm, engine.page_h_mm),
-                           engine.margin_mm, GUIDE_SHOWN_MM))
+                           engine.margin_mm, GUIDE_SHOWN_MM, bodies.regions))
 
 
 def hex_to_rgb(value: str | None, default: RGB = BLACK) -> RGB:
@@ -115,6 +117,7 @@ class PagePainter:
         p = self.projection
         canvas = CellCanvas(p.cols, p.rows, SURROUND)
         self._background(canvas, view)
+        self._regions(canvas, view)
         items = sorted(view.page.items, key=lambda item: (not item.decorative, item.z))
         boxes = {item.id: self._box(item, view) for item in view.page.items}
         for item in items:
@@ -124,6 +127,15 @@ class PagePainter:
             self._anchor(canvas, item, centres)
         self._guides(canvas, view.guides)
         selected = next((item for item in view.page.items if item.id == view.selected_id), None)
+        if selected is not None and selected.group:
+            members = [boxes[item.id] for item in view.page.group_members(selected.group)]
+            frame = (min(b[0] for b in members), min(b[1] for b in members),
+                     max(b[2] for b in members), max(b[3] for b in members))
+            self._dashed_frame(canvas, (frame[0] - 2, frame[1] - 2, frame[2] + 2, frame[3] + 2),
+                               GROUP)
+            col0, row = frame[0] - 1, (frame[1] - 2) // 2
+            canvas.write(max(col0, 0), row, printable(f"group {selected.group}"), BLACK, GROUP,
+                         bold=True)
         if selected is not None:
             canvas.outline(*boxes[selected.id], SELECTION)
             self._label(canvas, selected, boxes[selected.id], BLACK, SELECTION)
@@ -161,6 +173,33 @@ class PagePainter:
                 canvas.fill(*box, mix(PAPER, MISSING_PICTURE, 0.3))
         elif background.color:
             canvas.fill(*box, hex_to_rgb(background.color, PAPER))
+
+    def _regions(self, canvas: CellCanvas, view: PageView) -> None:
+        """Each region as a dashed green frame with its name in its top-left corner, under the
+        items: the walls of the items confined to it."""
+        for region in view.page.regions:
+            left, top, right, bottom = region.box
+            x0, y0 = self.projection.to_pixels(left, top)
+            x1, y1 = self.projection.to_pixels(right, bottom)
+            box = (int(x0), int(y0), max(int(x1) - 1, int(x0)), max(int(y1) - 1, int(y0)))
+            self._dashed_frame(canvas, box, mix(PAPER, REGION, 0.7), step=GUIDE_DASH)
+            canvas.write(box[0] + 1, box[1] // 2 + 1, printable(region.id), REGION, None,
+                         end_col=box[2])
+
+    @staticmethod
+    def _dashed_frame(canvas: CellCanvas, box, colour: RGB, step: int = 2) -> None:
+        """A one-pixel dashed rectangle on the pixels (x0, y0)-(x1, y1), ends included, one
+        pixel in ``step`` drawn."""
+        height, width = canvas.pixels.shape[:2]
+        x0, y0, x1, y1 = box
+        for x in range(max(x0, 0), min(x1 + 1, width), step):
+            for y in (y0, y1):
+                if 0 <= y < height:
+                    canvas.pixels[y, x] = colour
+        for y in range(max(y0, 0), min(y1 + 1, height), step):
+            for x in (x0, x1):
+                if 0 <= x < width:
+                    canvas.pixels[y, x] = colour
 
     def _item(self, canvas: CellCanvas, view: PageView, item, box) -> None:
         x0, y0, x1, y1 = box

@@ -284,7 +284,10 @@ class EditSession:
         for follower in followers:
             follower.anchor = None
         self.page.items.remove(item)
-        self.engine.delete(item.id)  # the engine's edits reheat it themselves
+        if item.group:  # the group may lose its lead: the rest follow a new one
+            self.rebuild_engine()
+        else:
+            self.engine.delete(item.id)  # the engine's edits reheat it themselves
         order = reading_order(self.page.items)
         self.selected_id = order[0] if order else None
         return item.id
@@ -297,9 +300,22 @@ class EditSession:
         self.held_id = item_id
         self.engine.hold(item_id)
 
+    def mover_of(self, item_id: str) -> str:
+        """The item a move of ``item_id`` moves: its group's lead for a member of a group (the
+        group is one body, so moving any member moves all of it), else the item itself."""
+        item = self.page.item(item_id)
+        lead = self.page.group_lead(item.group) if item.group else None
+        return lead.id if lead is not None else item_id
+
     def move_to(self, item_id: str, x_mm: float, y_mm: float) -> None:
         """Hold the item at (x, y), kept inside the page: a held key (or a drag) past the edge
-        used to carry the item, and then its anchor, off the page (defect 10)."""
+        used to carry the item, and then its anchor, off the page (defect 10).  A member of a
+        group moves its whole group (by its lead) so that it lands at (x, y)."""
+        lead_id = self.mover_of(item_id)
+        if lead_id != item_id:
+            positions = self.engine.positions()
+            (x, y), (lead_x, lead_y) = positions[item_id], positions[lead_id]
+            item_id, x_mm, y_mm = lead_id, x_mm - x + lead_x, y_mm - y + lead_y
         self.begin_move(item_id)
         item = self.page.item(item_id)
         x_mm = inside(x_mm, item.w, self.page.width_mm)
@@ -352,12 +368,49 @@ class EditSession:
                          and item.anchor.gamma != gamma)
         if not changes and not gamma_changes:
             return
+        self.refuse_bad_group_or_region(item, changes)
         self.checkpoint(f"edit {item_id}")
         for key, value in changes.items():
             setattr(item, key, value)
         if gamma_changes:
             item.anchor.gamma = gamma
         self.rebuild_engine()
+
+    def refuse_bad_group_or_region(self, item, changes: dict) -> None:
+        """Raise EditError for a group or region the project file could not hold (the loader's
+        rules, model.project_file): a region the page lacks or the item does not fit, a group
+        with two anchors, or a member that follows an item outside its group."""
+        region_id = changes.get("region", item.region)
+        if region_id:
+            try:
+                region = self.page.region(region_id)
+            except KeyError:
+                raise EditError(f'this page has no region "{region_id}"') from None
+            if item.w > region.w or item.h > region.h:
+                raise EditError(f'"{item.id}" ({item.w:.0f} x {item.h:.0f} mm) does not fit in '
+                                f'region "{region_id}" ({region.w:.0f} x {region.h:.0f} mm)')
+        group = changes.get("group", item.group)
+        if not group or group == item.group:
+            return
+        members = self.page.group_members(group)
+        if isinstance(item.anchor, ItemAnchor) and item.anchor.to not in {m.id for m in members}:
+            raise EditError(f'"{item.id}" follows "{item.anchor.to}"; remove that anchor (u) '
+                            f'before it joins group "{group}"')
+        pinned = [m for m in members if isinstance(m.anchor, PointAnchor)]
+        if isinstance(item.anchor, PointAnchor) and pinned:
+            raise EditError(f'group "{group}" is anchored already (by "{pinned[0].id}"); remove '
+                            f'"{item.id}"\'s anchor (u) before it joins')
+
+    def set_group(self, group: str) -> str:
+        """Put the selected item in ``group`` ("" takes it out); returns what happened, in
+        words."""
+        item = self._require_selected()
+        group = group.strip()
+        if group == item.group:
+            return f'"{item.id}" is already ' + (f'in group "{group}"' if group else "in no group")
+        self.update_item(item.id, {"group": group})
+        return (f'"{item.id}" joined group "{group}": its members move as one' if group
+                else f'"{item.id}" left its group')
 
     def rebuild_engine(self) -> None:
         """Rebuild the engine from the model after an edit the engine has no call for."""
@@ -367,7 +420,11 @@ class EditSession:
         self.engine.reheat()
 
     def anchor_here(self) -> None:
+        """Anchor the selected item where it is; for a member of a group, the group's anchor,
+        which its lead holds (Page.group_lead)."""
         item = self._require_selected()
+        if item.group:
+            item = self.page.item(self.mover_of(item.id))
         self.checkpoint(f"anchor {item.id}")
         self.sync_positions()
         gamma = item.anchor.gamma if isinstance(item.anchor, PointAnchor) else 1.0
@@ -380,6 +437,9 @@ class EditSession:
         if target_id == item.id:
             raise EditError("an item cannot be anchored to itself")
         target = self.page.item(target_id)
+        if item.group and target.group != item.group:
+            raise EditError(f'"{item.id}" is in group "{item.group}", which moves as one: '
+                            f'anchor the group with a, or take "{item.id}" out of it (G)')
         chain, current = {item.id}, target
         while isinstance(current.anchor, ItemAnchor):
             if current.anchor.to in chain or current.id in chain:

@@ -22,6 +22,8 @@ MARKS = (("~name", "a decoration's id (shown with n): it sits behind and is neve
          ("· · ·", "the line from an item to its anchor, magenta; or to the item it follows, blue"),
          ("o", "the two ends of a follow link (blue): the follower and the item it follows"),
          ("frame", "the selected item, framed in yellow, with its id"),
+         ("- - group", "the selected item's group, dashed orange: it moves as one (g joins or leaves)"),
+         ("- - name", "a region, dashed green: its items stay inside it; its edges are guides"),
          ("▀ ▄", "half-block pixels: each cell shows two rows of the page"))
 
 

@@ -1,0 +1,172 @@
+"""Regions and groups in the project file (issue 16): read, checked with clear messages, kept
+by a settle, saved back as written, and a settled file is a fixed point."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from floatpage.model import load_project, save_project
+from floatpage.model.document import Region
+from floatpage.model.errors import ProjectFileError
+from floatpage.model.layout import settle_project
+
+PROJECT = """\
+format = 1
+title = "Regions and groups"
+
+[[pages]]
+id = "p1"
+size = "A5"
+
+# photos keep to the top two-thirds
+[[pages.regions]]
+id = "photos"
+left = 0
+top = 0
+w = 148
+h = 140
+
+[[pages.items]]
+id = "b1"
+kind = "block"
+x = 70
+y = 180
+w = 40
+h = 30
+region = "photos"
+
+[[pages.items]]
+id = "b2"
+kind = "block"
+x = 75
+y = 185
+w = 40
+h = 30
+region = "photos"
+
+[[pages.items]]
+id = "b3"
+kind = "block"
+x = 80
+y = 60
+w = 50
+h = 30
+
+[[pages.items]]
+id = "t1"
+kind = "text"
+x = 60
+y = 150
+w = 50
+h = 12
+text = "Title"
+group = "head"
+
+[[pages.items]]
+id = "t2"
+kind = "text"
+x = 60
+y = 165
+w = 50
+h = 10
+text = "Subtitle"
+group = "head"
+"""
+
+
+def write(tmp_path: Path, text: str = PROJECT) -> Path:
+    path = tmp_path / "rg.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def floatpage(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "floatpage.cli.main", *args],
+                          capture_output=True, text=True, timeout=300)
+
+
+def test_regions_and_groups_load_and_save_unchanged(tmp_path):
+    path = write(tmp_path)
+    project = load_project(path)
+    page = project.pages[0]
+    assert page.regions == [Region("photos", 0.0, 0.0, 148.0, 140.0)]
+    assert [item.region for item in page.items] == ["photos", "photos", "", "", ""]
+    assert page.group_lead("head").id == "t1"
+    save_project(project)
+    assert path.read_text(encoding="utf-8") == PROJECT
+
+
+def test_settle_keeps_regions_and_moves_a_group_as_one_and_is_a_fixed_point(tmp_path):
+    path = write(tmp_path)
+    result = floatpage("settle", str(path))
+    assert result.returncode == 0, result.stderr
+    page = load_project(path).pages[0]
+    photos = page.region("photos")
+    for item in page.items[:2]:
+        assert item.top >= photos.top and item.top + item.h <= photos.top + photos.h + 0.01
+    t1, t2 = page.item("t1"), page.item("t2")
+    assert (round(t2.x - t1.x, 2), round(t2.y - t1.y, 2)) == (0.0, 15.0)
+    assert "# photos keep to the top two-thirds" in path.read_text(encoding="utf-8")
+    settled = path.read_bytes()
+    assert floatpage("settle", str(path)).returncode == 0
+    assert path.read_bytes() == settled
+    check = floatpage("check", "--strict", str(path))
+    assert check.returncode == 0, check.stdout + check.stderr
+
+
+def test_check_names_an_item_outside_its_region(tmp_path):
+    result = floatpage("check", str(write(tmp_path)))
+    assert 'item "b1" is not wholly inside its region "photos"' in result.stdout
+
+
+GROUP_ANCHORED = ('text = "Title"\ngroup = "head"\n',
+                  'text = "Title"\ngroup = "head"\nanchor = {x = 60, y = 150}\n')
+
+
+@pytest.mark.parametrize("changes, at, words", [
+    ([('region = "photos"', 'region = "photo"')], 'region = "photo"',
+     'item "b1": is confined to region "photo", which page "p1" does not have (did you mean "photos"?)'),
+    ([("w = 148", "w = 200")], "[[pages.regions]]", 'region "photos": reaches outside the page'),
+    ([("w = 40\nh = 30\nregion", "w = 160\nh = 30\nregion")], 'region = "photos"',
+     'item "b1": is 160 x 30 mm, larger than its region "photos" (148 x 140 mm)'),
+    ([GROUP_ANCHORED, ('text = "Subtitle"\ngroup = "head"\n',
+                       'text = "Subtitle"\ngroup = "head"\nanchor = {x = 1, y = 1}\n')],
+     "anchor = {x = 1", 'item "t2": group "head" has a second anchor ("t1" has the first)'),
+    ([('text = "Subtitle"\ngroup = "head"\n',
+       'text = "Subtitle"\ngroup = "head"\nanchor = {to = "b3"}\n')],
+     'anchor = {to = "b3"}', 'item "t2": is in group "head" but follows "b3", outside it'),
+    ([('id = "photos"', 'id = "photos"\ncolour = "red"')], 'colour = "red"',
+     'region "photos": unknown key "colour"'),
+])
+def test_bad_regions_and_groups_are_refused_with_the_line_and_what_to_do(tmp_path, changes, at,
+                                                                        words):
+    text = PROJECT
+    for old, new in changes:
+        assert old in text
+        text = text.replace(old, new, 1)
+    line = next(number for number, written in enumerate(text.splitlines(), 1) if at in written)
+    path = write(tmp_path, text)
+    with pytest.raises(ProjectFileError) as caught:
+        load_project(path)
+    message = str(caught.value)
+    assert f"rg.toml:{line}: {words}" in message
+    result = floatpage("check", str(path))
+    assert result.returncode == 1 and "Traceback" not in result.stderr
+
+
+def test_a_region_added_in_code_is_saved_as_a_table(tmp_path):
+    path = write(tmp_path)
+    project = load_project(path)
+    project.pages[0].regions.append(Region("footer", 0.0, 180.0, 148.0, 30.0))
+    project.pages[0].items[2].region = "footer"
+    save_project(project)
+    again = load_project(path)
+    assert [region.id for region in again.pages[0].regions] == ["photos", "footer"]
+    assert again.pages[0].item("b3").region == "footer"
+    settle_project(again)
+    b3 = again.pages[0].item("b3")
+    assert b3.top >= 180.0 - 0.01

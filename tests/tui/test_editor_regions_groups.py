@@ -1,0 +1,89 @@
+"""Regions and groups in the editor (issue 16), driven through the real app with Pilot: a group
+is selected and moved as one, `G` puts an item in a group or takes it out, anchoring a member
+anchors the group, and the preview draws regions and the selected item's group."""
+
+from __future__ import annotations
+
+from floatpage.model import load_project, save_project
+from floatpage.model.document import BlockItem, Page, PointAnchor, Project, Region, TextItem
+from floatpage.tui.page_painter import GROUP, PAPER, REGION, mix
+from editor_helpers import editor, item, pixel, position, screen_of, type_text
+
+
+def select(app, item_id: str) -> None:
+    screen_of(app).selected_id = item_id  # as a click on the item does
+
+
+def grouped_page(path):
+    save_project(Project(pages=[Page(id="p", regions=[Region("top", 0.0, 0.0, 210.0, 140.0)],
+                                     items=[
+        TextItem(id="title", x=60.0, y=200.0, w=60.0, h=15.0, text="Title", group="head"),
+        TextItem(id="sub", x=60.0, y=220.0, w=60.0, h=10.0, text="Sub", group="head"),
+        BlockItem(id="box", x=150.0, y=60.0, w=40.0, h=30.0, region="top"),
+    ])]), path)
+    return path
+
+
+async def test_an_arrow_on_any_member_moves_the_whole_group(tmp_path):
+    path = grouped_page(tmp_path / "g.toml")
+    async with editor(path) as (app, pilot):
+        select(app, "sub")
+        before = {name: position(app, name) for name in ("title", "sub")}
+        for _ in range(5):
+            await pilot.press("right")
+        screen_of(app).release_held()
+        after = {name: position(app, name) for name in ("title", "sub")}
+        for name in ("title", "sub"):
+            assert after[name][0] - before[name][0] > 5.0
+        offset = (after["sub"][0] - after["title"][0], after["sub"][1] - after["title"][1])
+        assert offset == (before["sub"][0] - before["title"][0],
+                          before["sub"][1] - before["title"][1])
+
+
+async def test_G_puts_the_selected_item_in_a_group_and_empty_takes_it_out(tmp_path):
+    path = grouped_page(tmp_path / "g.toml")
+    async with editor(path) as (app, pilot):
+        select(app, "box")
+        await pilot.press("G")
+        await pilot.pause()
+        assert app.screen.id == "group-dialog"
+        await type_text(pilot, "head")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert item(app, "box").group == "head"
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert load_project(path).pages[0].item("box").group == "head"
+        await pilot.press("G")
+        await pilot.pause()
+        for _ in range(4):
+            await pilot.press("backspace")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert item(app, "box").group == ""
+
+
+async def test_anchoring_a_member_anchors_the_group_by_its_lead(tmp_path):
+    path = grouped_page(tmp_path / "g.toml")
+    async with editor(path) as (app, pilot):
+        select(app, "sub")
+        await pilot.press("a")
+        await pilot.pause()
+        page = app.session.page
+        assert isinstance(page.item("title").anchor, PointAnchor)
+        assert page.item("sub").anchor is None
+
+
+async def test_the_preview_frames_regions_and_the_selected_group(tmp_path):
+    path = grouped_page(tmp_path / "g.toml")
+    async with editor(path) as (app, pilot):
+        select(app, "title")
+        await pilot.pause()
+        preview = screen_of(app).preview
+        canvas = preview.canvas
+        colours = {tuple(int(v) for v in canvas.pixels[y, x])
+                   for y in range(canvas.pixels.shape[0]) for x in range(canvas.cols)}
+        assert mix(PAPER, REGION, 0.7) in colours
+        text = "\n".join(preview.text_lines())
+        assert "top" in text
+        assert GROUP in colours and "group head" in text
