@@ -24,7 +24,7 @@ from textual.app import ComposeResult
 from textual.reactive import reactive
 from textual.screen import ModalScreen, Screen
 from textual.timer import Timer
-from textual.widgets import Footer, Label
+from textual.widgets import Label
 
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
@@ -32,6 +32,7 @@ from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.frame_meter import FrameMeter
 from floatpage.tui.frame_pacer import FramePacer
+from floatpage.tui.key_bar import KeyBar
 from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank, in_footer
 from floatpage.tui.page_painter import PageView, shown_guides
 from floatpage.tui.page_preview import PagePreview
@@ -126,7 +127,7 @@ class EditorScreen(Screen):
         yield Label("", id="page-bar")
         yield PagePreview(id="preview")
         yield StatusLine("", id="status")
-        yield Footer()
+        yield KeyBar(id="footer")
 
     def on_mount(self) -> None:
         self.frame_timer = self.set_interval(FRAME_S, self.tick, pause=True)
@@ -368,8 +369,9 @@ class EditorScreen(Screen):
                 first_keys.setdefault(entry.binding.action, self.app.get_key_display(entry.binding))
             keys = sum(len(display) for display in first_keys.values())
             group = members[0][1].binding.group
-            cost = keys + (len(group.description) + 1 if group else
-                           len(members[0][1].binding.description) + 3)
+            # as tui.key_bar draws it: "keys description "
+            cost = keys + len(group.description if group else
+                              members[0][1].binding.description) + 2
             essential = any(entry.binding.action in ALWAYS_IN_FOOTER for _, entry in members)
             if not essential and used + cost > budget:
                 break  # in order of priority: nothing after the first that does not fit

@@ -30,12 +30,6 @@ async def editor(path: Path, size: tuple[int, int] = SIZE, *, autostart: bool = 
     app = make_app(path, autostart=autostart)
     async with app.run_test(size=size) as pilot:
         await pilot.pause()
-        # The footer composes its keys a refresh after the screen mounts; on a loaded machine
-        # one pause was not always enough, and a test read an empty footer.
-        for _ in range(100):
-            if app.editor.query("FooterKey"):
-                break
-            await pilot.pause(0.02)
         yield app, pilot
 
 
