@@ -125,12 +125,12 @@ class KeyBar(Widget):
         return Text.assemble(("▏ ", description_style), (f"{key} ", key_style),
                              (f"{PALETTE_LABEL} ", description_style))
 
-    def on_click(self, event: events.Click) -> None:
+    async def on_click(self, event: events.Click) -> None:
         for start, end, action in self.spans:
             if start <= event.x < end:
                 event.stop()
                 if action.startswith("app."):
-                    self.run_action(action)
+                    await self.run_action(action)
                 else:
-                    self.screen.run_action(action)
+                    await self.screen.run_action(action)
                 return

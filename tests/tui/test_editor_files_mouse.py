@@ -230,3 +230,13 @@ async def test_6_the_footer_is_there_from_the_first_frame_and_follows_a_key_at_o
         await pilot.press("tab")  # returns once the key is handled, before any later refresh
         assert bar.actions != before and "nudge(-2.0,0.0)" in bar.actions
         assert "Move" in bar.render().plain
+
+
+async def test_a_click_on_a_footer_key_runs_its_command(project_path):
+    async with editor(project_path) as (app, pilot):
+        bar = screen_of(app).query_one(KeyBar)
+        bar.render()
+        start, end, _ = next(span for span in bar.spans if span[2] == "help")
+        await pilot.click(KeyBar, offset=(start + 1, 0))
+        await pilot.pause()
+        assert app.screen.id == "help"
