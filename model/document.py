@@ -13,6 +13,7 @@ section 4 of the paper.
 
 from __future__ import annotations
 
+import calendar
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal, Union
@@ -28,6 +29,8 @@ FORMAT_VERSION = 1
 Orientation = Literal["portrait", "landscape"]
 FontFamily = Literal["serif", "sans", "display"]
 ITEM_KINDS = ("text", "picture", "block", "calendar")
+COLOUR_LABEL = "Colour (#rrggbb)"
+MONTH_CHOICES = tuple((calendar.month_name[number], number) for number in range(1, 13))
 
 
 def setting(name: str, kind: str = "number") -> Any:
@@ -42,7 +45,8 @@ class PointAnchor:
 
     x: float = field(metadata=spec("number", finite, required=True))
     y: float = field(metadata=spec("number", finite, required=True))
-    gamma: float = field(default=1.0, metadata=spec("number", between(0.0, 1.0)))
+    gamma: float = field(default=1.0, metadata=spec("number", between(0.0, 1.0),
+                                                    label="Anchor gamma: 0 loose … 1 rigid"))
     hard: bool = field(default=False, metadata=spec("bool"))
 
 
@@ -68,15 +72,18 @@ class ItemBase:
     w: float = field(metadata=spec("number", positive, required=True))
     h: float = field(metadata=spec("number", positive, required=True))
     z: int = field(default=0, metadata=spec("int"))
-    decorative: bool = field(default=False, metadata=spec("bool"))
+    decorative: bool = field(default=False, metadata=spec(
+        "bool", label="Decorative (behind, never pushed)"))
     # `floatpage merge`: a record whose value for any of this item's placeholders is empty
     # leaves the item out, instead of printing an empty box
     drop_if_empty: bool = field(default=False, metadata=spec("bool"))
     anchor: Anchor | None = field(default=None, metadata=spec("table"))
     # the page region (Page.regions) the item is confined to; "" for the whole page
-    region: str = field(default="", metadata=spec("str", name_or_empty))
+    region: str = field(default="", metadata=spec("str", name_or_empty,
+                                                 label="Keep inside region"))
     # items that share a group name move as one rigid body (see Page.group_lead)
-    group: str = field(default="", metadata=spec("str", name_or_empty))
+    group: str = field(default="", metadata=spec(
+        "str", name_or_empty, label="Group (items of one group move as one; empty: none)"))
 
     kind = "base"
 
@@ -93,11 +100,13 @@ class ItemBase:
 class TextItem(ItemBase):
     """A text box whose font size the typesetter fits to the rectangle."""
 
-    text: str = field(default="", metadata=spec("str", at_most_chars(MAX_TEXT_CHARS)))
-    font: FontFamily = field(default="serif", metadata=spec("str", one_of(*FONT_FAMILIES)))
-    color: str = field(default="#000000", metadata=spec("str", colour))
-    bold: bool = field(default=False, metadata=spec("bool"))
-    italic: bool = field(default=False, metadata=spec("bool"))
+    text: str = field(default="", metadata=spec("str", at_most_chars(MAX_TEXT_CHARS),
+                                                label="Text", form="text"))
+    font: FontFamily = field(default="serif", metadata=spec("str", one_of(*FONT_FAMILIES),
+                                                            label="Font"))
+    color: str = field(default="#000000", metadata=spec("str", colour, label=COLOUR_LABEL))
+    bold: bool = field(default=False, metadata=spec("bool", label="Bold"))
+    italic: bool = field(default=False, metadata=spec("bool", label="Italic"))
 
     kind = "text"
 
@@ -107,7 +116,8 @@ class PictureItem(ItemBase):
     """A picture scaled to its rectangle; `path` is relative to the project file."""
 
     path: str = field(default="", metadata=spec("str", required=True))
-    lock_aspect: bool = field(default=True, metadata=spec("bool"))
+    lock_aspect: bool = field(default=True, metadata=spec(
+        "bool", label="Keep the picture's aspect ratio"))
     # print: extend past the trim wherever the picture meets the page edge
     bleed: bool = field(default=False, metadata=spec("bool"))
 
@@ -118,8 +128,9 @@ class PictureItem(ItemBase):
 class BlockItem(ItemBase):
     """A rectangle of colour, for decoration or as a placeholder."""
 
-    color: str = field(default="#cccccc", metadata=spec("str", colour))
-    opacity: float = field(default=1.0, metadata=spec("number", between(0.0, 1.0)))
+    color: str = field(default="#cccccc", metadata=spec("str", colour, label=COLOUR_LABEL))
+    opacity: float = field(default=1.0, metadata=spec("number", between(0.0, 1.0),
+                                                      label="Opacity (0-1)"))
     # print: extend past the trim wherever the block meets the page edge
     bleed: bool = field(default=False, metadata=spec("bool"))
 
@@ -130,12 +141,17 @@ class BlockItem(ItemBase):
 class CalendarItem(ItemBase):
     """A month panel: a grid of the month's days with localised names."""
 
-    year: int = field(default=2027, metadata=spec("int", between(1, 9999)))
-    month: int = field(default=1, metadata=spec("int", between(1, 12)))
-    first_weekday: str = field(default="monday", metadata=spec("str", one_of(*WEEKDAYS)))
-    language: str = field(default="en", metadata=spec("str", one_of(*CALENDAR_LANGUAGES)))
-    font: FontFamily = field(default="sans", metadata=spec("str", one_of(*FONT_FAMILIES)))
-    color: str = field(default="#000000", metadata=spec("str", colour))
+    year: int = field(default=2027, metadata=spec("int", between(1, 9999), label="Year"))
+    month: int = field(default=1, metadata=spec("int", between(1, 12), label="Month",
+                                                choices=MONTH_CHOICES))
+    first_weekday: str = field(default="monday", metadata=spec(
+        "str", one_of(*WEEKDAYS), label="Weeks start on",
+        choices=tuple((day.capitalize(), day) for day in WEEKDAYS)))
+    language: str = field(default="en", metadata=spec("str", one_of(*CALENDAR_LANGUAGES),
+                                                      label="Language of the names"))
+    font: FontFamily = field(default="sans", metadata=spec("str", one_of(*FONT_FAMILIES),
+                                                           label="Font"))
+    color: str = field(default="#000000", metadata=spec("str", colour, label=COLOUR_LABEL))
 
     kind = "calendar"
 
@@ -153,7 +169,8 @@ ITEM_CLASSES: dict[str, type] = {
 class Background:
     """A page background: a colour, or a picture covering the page (bleeding to its edge)."""
 
-    color: str | None = field(default=None, metadata=spec("str", colour))
+    color: str | None = field(default=None, metadata=spec(
+        "str", colour, label="Background colour (#rrggbb)"))
     picture: str | None = field(default=None, metadata=spec("str"))
 
 
@@ -184,8 +201,10 @@ class Page:
     size: str = field(default="A4", metadata=spec("str"))
     orientation: Orientation = field(default="portrait",
                                      metadata=spec("str", one_of("portrait", "landscape")))
-    width_mm: float = field(default=210.0, metadata=spec("number", between(10.0, 5000.0)))
-    height_mm: float = field(default=297.0, metadata=spec("number", between(10.0, 5000.0)))
+    width_mm: float = field(default=210.0, metadata=spec("number", between(10.0, 5000.0),
+                                                         label="Width (mm)"))
+    height_mm: float = field(default=297.0, metadata=spec("number", between(10.0, 5000.0),
+                                                          label="Height (mm)"))
     background: Background | None = field(default=None, metadata=spec("table"))
     items: list[Item] = field(default_factory=list, metadata=spec("array"))
     regions: list[Region] = field(default_factory=list, metadata=spec("array"))

@@ -36,9 +36,17 @@ class Key:
     check: Check | None = None
 
 
-def spec(kind: str, check: Check | None = None, *, required: bool = False) -> dict:
-    """Field metadata: ``field(default=..., metadata=spec("number", positive))``."""
-    return {"key": (kind, check, required)}
+def spec(kind: str, check: Check | None = None, *, required: bool = False,
+         label: str | None = None, form: str | None = None,
+         choices: tuple[tuple[str, Any], ...] | None = None) -> dict:
+    """Field metadata: ``field(default=..., metadata=spec("number", positive))``.
+
+    ``label`` puts the field in the editor's forms (tui.item_forms reads them off the fields,
+    in field order), ``form`` names the widget when the kind alone does not say ("text": several
+    lines), and ``choices`` are (shown, value) pairs where the values are not what a person
+    reads (months by name); a ``one_of`` check gives its choices by itself."""
+    return {"key": (kind, check, required), "label": label, "form": form,
+            "choices": choices if choices is not None else getattr(check, "choices", None)}
 
 
 def keys_of(cls, *, skip: tuple[str, ...] = ()) -> list[Key]:
@@ -87,6 +95,7 @@ def between(low: float, high: float) -> Check:
 def one_of(*choices: str) -> Check:
     def check(value: str) -> str | None:
         return None if value in choices else "must be one of " + ", ".join(f'"{c}"' for c in choices)
+    check.choices = tuple((choice, choice) for choice in choices)  # type: ignore[attr-defined]
     return check
 
 

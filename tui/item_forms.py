@@ -1,31 +1,91 @@
-"""The forms for inserting and editing items: which fields each kind has, and how to read them.
+"""The forms for inserting and editing items, read off the model's own fields.
 
-Parsers turn what was typed into model values or raise ValueError with a
-sentence for the user (the form shows it and stays open). Values are checked
-by the model's own field checks (model/key_specs.py), so the editor accepts
-exactly what the loader accepts.
+Every field a form shows carries its label (and, where the values are not what a person
+reads, its choices) in its spec (model/key_specs.py, on model/document.py's dataclasses), and
+is checked by the field's own check, so the editor shows, offers and accepts exactly what the
+project file may hold, with the model's defaults.  Parsers turn what was typed into model
+values or raise ValueError with a sentence for the user (the form shows it and stays open).
 """
 
 from __future__ import annotations
 
-import calendar
+import dataclasses
 from typing import Any
 
 from floatpage.model.document import (
-    WEEKDAYS, Background, BlockItem, CalendarItem, Page, PictureItem, PointAnchor, TextItem,
+    ITEM_CLASSES, Background, BlockItem, CalendarItem, ItemBase, Page, PointAnchor, TextItem,
 )
+from floatpage.model.key_specs import HEX_COLOUR, colour as colour_check, keys_of
 from floatpage.model.page_sizes import PAGE_SIZES_MM
-from floatpage.model.key_specs import CALENDAR_LANGUAGES, FONT_FAMILIES, HEX_COLOUR, keys_of
 from floatpage.tui.dialogs.form import Field
 
-MONTHS = tuple((calendar.month_name[number], number) for number in range(1, 13))
-FONTS = tuple((name, name) for name in FONT_FAMILIES)
-WEEKDAY_CHOICES = tuple((day.capitalize(), day) for day in WEEKDAYS)
-LANGUAGES = tuple((code, code) for code in CALENDAR_LANGUAGES)
 INSERT_CHOICES = [("Text box", "text"), ("Picture…", "picture"), ("Colour block", "block"),
                   ("Calendar month", "calendar"), ("Background…", "background")]
 BACKGROUND_CHOICES = [("A colour…", "color"), ("A picture…", "picture"),
                       ("None (plain paper)", "none")]
+EDITED_CLASSES = (*ITEM_CLASSES.values(), PointAnchor)  # whose fields an edit form may hold
+
+
+def form_fields(owner: Any, names: tuple[str, ...] | None = None, *,
+                values: dict[str, Any] | None = None,
+                choices: dict[str, tuple[tuple[str, Any], ...]] | None = None) -> list[Field]:
+    """The form fields of ``owner`` (a model object, or a model class for its defaults): every
+    labelled field in field order, or ``names`` in that order.  ``values`` overrides a shown
+    value, ``choices`` gives the choices a field's spec cannot know (a page's regions); a
+    field with neither a value to show nor its choices (region, on a page without any) is left
+    out."""
+    cls = owner if isinstance(owner, type) else type(owner)
+    by_name = {f.name: f for f in dataclasses.fields(cls) if f.metadata.get("label")}
+    wanted = names if names is not None else tuple(by_name)
+    fields = []
+    for name in wanted:
+        f = by_name[name]
+        options = (choices or {}).get(name, f.metadata.get("choices"))
+        if name == "region" and not options:
+            continue
+        if values and name in values:
+            value = values[name]
+        elif isinstance(owner, type):
+            value = f.default
+        else:
+            value = getattr(owner, name)
+        kind = f.metadata["key"][0]
+        widget = f.metadata.get("form") or ("bool" if kind == "bool" else
+                                            "choice" if options else "line")
+        shown = value if widget != "line" else ("" if value is None else
+                                                f"{value:g}" if isinstance(value, float)
+                                                else str(value))
+        fields.append(Field(name, f.metadata["label"], widget, shown, tuple(options or ())))
+    return fields
+
+
+def field_words(cls: type, name: str) -> str:
+    """How a message names the field: "the opacity" for "Opacity (0-1)"."""
+    label = next(f.metadata["label"] for f in dataclasses.fields(cls) if f.name == name)
+    return "the " + label.split(" (")[0].split(":")[0].lower()
+
+
+def parse_form(owners: tuple[type, ...], values: dict[str, Any]) -> dict[str, Any]:
+    """Model values from what was typed, each by its field's spec (the first of ``owners``
+    that has it): numbers read and range-checked, colours written as the model writes them,
+    choices and yes/no as they are; every value through the field's own check."""
+    parsed = {}
+    for name, raw in values.items():
+        owner = next(cls for cls in owners if name in {f.name for f in dataclasses.fields(cls)})
+        key = next(key for key in keys_of(owner) if key.name == name)
+        words = field_words(owner, name)
+        if key.kind == "int":
+            value = whole(raw, words, owner, name)
+        elif key.kind == "number":
+            value = number(raw, words, owner, name)
+        elif key.check is colour_check:
+            value = colour(raw, words)
+        elif isinstance(raw, str) and key.kind == "str" and name != "text":
+            value = checked(owner, name, raw.strip(), words)
+        else:
+            value = checked(owner, name, raw, words)
+        parsed[name] = value
+    return parsed
 
 
 def colour(text: str, what: str = "colour") -> str:
@@ -67,43 +127,38 @@ def whole(text: str, what: str, owner: type, name: str) -> int:
 # -- inserting ------------------------------------------------------------------------------
 
 def new_text_fields() -> list[Field]:
-    return [Field("text", "Text", "text", "")]
+    return form_fields(TextItem, ("text",))
 
 
 def parse_new_text(values: dict[str, Any]) -> dict[str, Any]:
-    text = values["text"].strip()
-    if not text:
+    if not values["text"].strip():
         raise ValueError("type some text first")
-    return {"text": checked(TextItem, "text", text, "the text")}
+    return parse_form((TextItem,), {"text": values["text"].strip()})
 
 
 def new_block_fields() -> list[Field]:
-    return [Field("color", "Colour (#rrggbb)", "line", "#4c8ed9")]
+    return form_fields(BlockItem, ("color",))
 
 
 def parse_new_block(values: dict[str, Any]) -> dict[str, Any]:
-    return {"color": colour(values["color"])}
+    return parse_form((BlockItem,), values)
 
 
 def new_calendar_fields(year: int, month: int, language: str) -> list[Field]:
-    return [Field("year", "Year", "line", str(year)),
-            Field("month", "Month", "choice", month, MONTHS),
-            Field("first_weekday", "Weeks start on", "choice", "monday", WEEKDAY_CHOICES),
-            Field("language", "Language of the names", "choice", language, LANGUAGES)]
+    return form_fields(CalendarItem, ("year", "month", "first_weekday", "language"),
+                       values={"year": year, "month": month, "language": language})
 
 
 def parse_calendar(values: dict[str, Any]) -> dict[str, Any]:
-    parsed = dict(values)
-    parsed["year"] = whole(values["year"], "the year", CalendarItem, "year")
-    return parsed
+    return parse_form((CalendarItem,), values)
 
 
 def background_colour_fields(current: str | None) -> list[Field]:
-    return [Field("color", "Background colour (#rrggbb)", "line", current or "#fdf6e3")]
+    return form_fields(Background, ("color",), values={"color": current or "#ffffff"})
 
 
 def parse_background_colour(values: dict[str, Any]) -> Background:
-    return Background(color=colour(values["color"]))
+    return Background(**parse_form((Background,), values))
 
 
 PAGE_SIZE_CHOICES = [(f"{name}  ({w:g} × {h:g} mm)", name)
@@ -111,13 +166,12 @@ PAGE_SIZE_CHOICES = [(f"{name}  ({w:g} × {h:g} mm)", name)
 
 
 def custom_size_fields(width_mm: float, height_mm: float) -> list[Field]:
-    return [Field("width_mm", "Width (mm)", "line", f"{width_mm:g}"),
-            Field("height_mm", "Height (mm)", "line", f"{height_mm:g}")]
+    return form_fields(Page, ("width_mm", "height_mm"),
+                       values={"width_mm": width_mm, "height_mm": height_mm})
 
 
 def parse_custom_size(values: dict[str, Any]) -> dict[str, Any]:
-    return {"width_mm": number(values["width_mm"], "the width", Page, "width_mm"),
-            "height_mm": number(values["height_mm"], "the height", Page, "height_mm")}
+    return parse_form((Page,), values)
 
 
 # -- editing --------------------------------------------------------------------------------
@@ -125,36 +179,22 @@ def parse_custom_size(values: dict[str, Any]) -> dict[str, Any]:
 def edit_fields(item, regions: tuple[str, ...] = ()) -> list[Field]:
     """The item's editable properties, kind first, then how the physics treats it (its
     anchor's gamma, decorative, its group, and its region where the page has ``regions``)."""
-    fields: list[Field] = []
-    if isinstance(item, TextItem):
-        fields += [Field("text", "Text", "text", item.text),
-                   Field("font", "Font", "choice", item.font, FONTS),
-                   Field("color", "Colour (#rrggbb)", "line", item.color),
-                   Field("bold", "Bold", "bool", item.bold),
-                   Field("italic", "Italic", "bool", item.italic)]
-    elif isinstance(item, PictureItem):
-        fields += [Field("lock_aspect", "Keep the picture's aspect ratio", "bool",
-                         item.lock_aspect)]
-    elif isinstance(item, BlockItem):
-        fields += [Field("color", "Colour (#rrggbb)", "line", item.color),
-                   Field("opacity", "Opacity (0-1)", "line", f"{item.opacity:g}")]
-    elif isinstance(item, CalendarItem):
-        fields += new_calendar_fields(item.year, item.month, item.language)
-        fields[2] = Field("first_weekday", "Weeks start on", "choice", item.first_weekday,
-                          WEEKDAY_CHOICES)
-        fields += [Field("font", "Font", "choice", item.font, FONTS),
-                   Field("color", "Colour (#rrggbb)", "line", item.color)]
-    if isinstance(item.anchor, PointAnchor):
-        fields.append(Field("gamma", "Anchor gamma: 0 loose … 1 rigid", "line",
-                            f"{item.anchor.gamma:g}"))
-    fields.append(Field("decorative", "Decorative (behind, never pushed)", "bool",
-                        item.decorative))
-    fields.append(Field("group", "Group (items of one group move as one; empty: none)", "line",
-                        item.group))
-    if regions:
-        fields.append(Field("region", "Keep inside region", "choice", item.region,
-                            (("the whole page", ""),) + tuple((name, name) for name in regions)))
-    return fields
+    own = [f for f in form_fields(item) if f.name not in BASE_FIELDS]
+    anchor = form_fields(item.anchor) if isinstance(item.anchor, PointAnchor) else []
+    region_choices = (("the whole page", ""),) + tuple((name, name) for name in regions)
+    base = form_fields(item, BASE_FIELDS,
+                       choices={"region": region_choices} if regions else None)
+    return own + anchor + base
+
+
+BASE_FIELDS = tuple(f.name for f in dataclasses.fields(ItemBase)
+                    if f.metadata.get("label"))
+
+
+def parse_edit(values: dict[str, Any]) -> dict[str, Any]:
+    if "text" in values and not values["text"].strip():
+        raise ValueError("a text box needs some text (delete the item instead)")
+    return parse_form(EDITED_CLASSES, values)
 
 
 def group_fields(item, groups: tuple[str, ...]) -> list[Field]:
@@ -163,23 +203,4 @@ def group_fields(item, groups: tuple[str, ...]) -> list[Field]:
 
 
 def parse_group(values: dict[str, Any]) -> str:
-    return checked(TextItem, "group", values["group"].strip(), "a group name")
-
-
-def parse_edit(values: dict[str, Any]) -> dict[str, Any]:
-    parsed = dict(values)
-    if "color" in parsed:
-        parsed["color"] = colour(parsed["color"])
-    if "opacity" in parsed:
-        parsed["opacity"] = number(parsed["opacity"], "the opacity", BlockItem, "opacity")
-    if "gamma" in parsed:
-        parsed["gamma"] = number(parsed["gamma"], "gamma", PointAnchor, "gamma")
-    if "year" in parsed:
-        parsed["year"] = whole(parsed["year"], "the year", CalendarItem, "year")
-    if "group" in parsed:
-        parsed["group"] = checked(TextItem, "group", parsed["group"].strip(), "a group name")
-    if "text" in parsed:
-        if not parsed["text"].strip():
-            raise ValueError("a text box needs some text (delete the item instead)")
-        checked(TextItem, "text", parsed["text"], "the text")
-    return parsed
+    return parse_form((TextItem,), values)["group"]
