@@ -81,7 +81,9 @@ class Terminal:
         got, start = 0, time.monotonic()
         while time.monotonic() - start < limit_s:
             got += self.pump(0.05)
-            if time.monotonic() - self.last_byte_at >= quiet_s:
+            # quiet since the call began, too: measured from the last byte alone, a call right
+            # after a key returned at once if the answer took over 50 ms (it counted 0 bytes)
+            if time.monotonic() - max(self.last_byte_at, start) >= quiet_s:
                 break
         return got
 

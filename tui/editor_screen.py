@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import datetime
 import math
+import re
 import time
 from functools import partial
 from pathlib import Path
@@ -24,6 +25,7 @@ from textual.app import ComposeResult
 from textual.reactive import reactive
 from textual.screen import ModalScreen, Screen
 from textual.timer import Timer
+from rich.cells import cell_len
 from textual.widgets import Label
 
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
@@ -62,6 +64,7 @@ def describe_item(item) -> str:
 
 EXPORT_WARNINGS_SHOWN = 5
 ALWAYS_IN_FOOTER = frozenset({"help", "save", "export_pdf", "quit"})
+MARKUP_TAG = re.compile(r"(?<!\\)\[/?b\]")  # the only tags the top bar writes
 PALETTE_CELLS = 13  # the footer's "^p palette" at its right end
 
 
@@ -239,10 +242,15 @@ class EditorScreen(Screen):
             return "paused"
         return "settled" if self.session.engine.settled else "settling"
 
-    def redraw(self) -> None:
+    def redraw(self, measure: bool = True) -> None:
+        """Paint the preview, the status lines and the top bar.  ``measure=False`` (a key's
+        own answer, while the physics it woke runs) keeps the quality measured last: measuring
+        the page cost 2 ms of the answer, and the physics frame right after measures it."""
         self.preview.show(self.page_view())
         engine = self.session.engine
-        summary, words = self.quality_summary()
+        moving = self.running and not engine.settled
+        summary, words = self.quality_summary() if measure or not moving or not self._quality[0] \
+            else self._quality
         self.query_one(StatusLine).show(Status(
             state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
             steps_per_s=self.meter.steps_per_s, quality=summary,
@@ -298,10 +306,16 @@ class EditorScreen(Screen):
             parts.append((2, 6, f"at {x_mm:.0f}, {y_mm:.0f} mm"))
         width = max(self.size.width - 2, 20) if self.is_mounted else 200
         kept = sorted(parts)
-        while len(kept) > 1 and Text.from_markup(" · ".join(
-                text for _, _, text in sorted(kept, key=lambda p: p[1]))).cell_len > width:
+
+        def shown(kept_parts) -> str:
+            return " · ".join(text for _, _, text in sorted(kept_parts, key=lambda p: p[1]))
+
+        # measured on the text without its markup: parsing the markup on every key cost a
+        # millisecond of the key's answer
+        while len(kept) > 1 and cell_len(MARKUP_TAG.sub("", shown(kept)).replace(
+                "\\[", "[")) > width:
             kept.pop()
-        return " · ".join(text for _, _, text in sorted(kept, key=lambda part: part[1]))
+        return shown(kept)
 
     def notify(self, message: str, *, markup: bool = False, **kwargs) -> None:
         """Notifications quote file names, ids and errors: plain text, never Rich markup.
@@ -319,7 +333,7 @@ class EditorScreen(Screen):
         if self.running and not self.session.engine.settled and not self.pacer.may_draw():
             self.wake()
             return
-        self.redraw()
+        self.redraw(measure=False)
         self.wake()
 
     def ask(self, dialog: ModalScreen[Answer | None], then: Callable[[Answer], object]) -> None:

@@ -46,5 +46,6 @@ class StatusLine(Static):
         if text != getattr(self, "_shown", None):  # an unchanged line costs no bytes
             self._shown = text
             self.update(text, layout=False)  # two fixed lines: no layout pass, which cost ms
-        self.set_class(status.state == "settled", "-settled")
-        self.set_class(status.state == "paused", "-paused")
+        if status.state != getattr(self, "_state", None):  # a class change restyles: ~1 ms,
+            self._state = status.state                     # so one change, and only on a change
+            self.set_classes({"settled": "-settled", "paused": "-paused"}.get(status.state, ""))
