@@ -10,7 +10,8 @@ from __future__ import annotations
 import sys
 from importlib.abc import MetaPathFinder
 
-PARTS = frozenset({"physics", "model", "typeset", "tui", "cli", "starters", "latex_templates"})
+PARTS = frozenset({"physics", "model", "typeset", "tui", "cli", "starters", "latex_templates",
+                   "merge"})
 
 
 class BareNameGuard(MetaPathFinder):

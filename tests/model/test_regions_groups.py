@@ -7,10 +7,13 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from floatpage.model import load_project, save_project
-from floatpage.model.document import Region
+from floatpage.model.document import BlockItem, Page, Project, Region
 from floatpage.model.errors import ProjectFileError
 from floatpage.model.layout import settle_project
 
@@ -170,3 +173,41 @@ def test_a_region_added_in_code_is_saved_as_a_table(tmp_path):
     settle_project(again)
     b3 = again.pages[0].item("b3")
     assert b3.top >= 180.0 - 0.01
+
+
+@settings(max_examples=8, deadline=None, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(st.integers(0, 10_000), st.integers(3, 9))
+def test_a_settled_page_with_regions_and_groups_is_a_fixed_point(tmp_path, seed, count):
+    """Random blocks, some confined to a random region, some in a group of two: settle, save,
+    settle again: no byte changes, no item outside its region, the group's offset kept."""
+    rng = np.random.default_rng(seed)
+    left, top = float(rng.uniform(0, 60)), float(rng.uniform(0, 120))
+    region = Region("r", round(left, 1), round(top, 1), 140.0, 150.0)
+    items = []
+    for k in range(count):
+        w, h = (round(float(v), 1) for v in rng.uniform(8, 30, 2))
+        items.append(BlockItem(id=f"b{k}", x=round(float(rng.uniform(20, 190)), 1),
+                               y=round(float(rng.uniform(20, 277)), 1), w=w, h=h,
+                               region="r" if k % 3 == 0 else "",
+                               group="pair" if k in (1, 2) else ""))
+    path = tmp_path / f"fixed-{seed}-{count}.toml"
+    save_project(Project(pages=[Page(id="p", regions=[region], items=items)]), path)
+    project = load_project(path)
+    offset = (project.pages[0].item("b2").x - project.pages[0].item("b1").x,
+              project.pages[0].item("b2").y - project.pages[0].item("b1").y)
+    settle_project(project)
+    save_project(project)
+    once = path.read_bytes()
+    again = load_project(path)
+    settle_project(again)
+    save_project(again)
+    assert path.read_bytes() == once
+    page = again.pages[0]
+    box = region.box
+    for item in page.items:
+        if item.region:
+            assert box[0] - 0.01 <= item.left and item.left + item.w <= box[2] + 0.01
+            assert box[1] - 0.01 <= item.top and item.top + item.h <= box[3] + 0.01
+    moved = (page.item("b2").x - page.item("b1").x, page.item("b2").y - page.item("b1").y)
+    assert abs(moved[0] - offset[0]) < 0.02 and abs(moved[1] - offset[1]) < 0.02
