@@ -56,3 +56,13 @@ def test_the_installed_package_is_the_repo_folders() -> None:
     assert Path(floatpage.physics.__file__).resolve().parent == ROOT / "physics"
     assert Path(floatpage.tui.__file__).resolve().parent == ROOT / "tui"
     assert "physics" not in sys.modules and "tui" not in sys.modules
+
+
+def test_the_font_family_type_names_the_model_vocabulary():
+    """`FontFamily` is a Literal for type checkers; it must say what FONT_FAMILIES says."""
+    from typing import get_args
+
+    from floatpage.model.document import FontFamily
+    from floatpage.model.key_specs import FONT_FAMILIES
+
+    assert get_args(FontFamily) == FONT_FAMILIES

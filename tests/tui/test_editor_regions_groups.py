@@ -14,6 +14,12 @@ def select(app, item_id: str) -> None:
     screen_of(app).selected_id = item_id  # as a click on the item does
 
 
+async def keys(pilot, *names: str) -> None:
+    """Press the keys, then let the app handle them."""
+    await pilot.press(*names)
+    await pilot.pause()
+
+
 def grouped_page(path):
     save_project(Project(pages=[Page(id="p", regions=[Region("top", 0.0, 0.0, 210.0, 140.0)],
                                      items=[
@@ -44,22 +50,15 @@ async def test_G_puts_the_selected_item_in_a_group_and_empty_takes_it_out(tmp_pa
     path = grouped_page(tmp_path / "g.toml")
     async with editor(path) as (app, pilot):
         select(app, "box")
-        await pilot.press("G")
-        await pilot.pause()
+        await keys(pilot, "G")
         assert app.screen.id == "group-dialog"
         await type_text(pilot, "head")
-        await pilot.press("enter")
-        await pilot.pause()
+        await keys(pilot, "enter")
         assert item(app, "box").group == "head"
-        await pilot.press("ctrl+s")
-        await pilot.pause()
+        await keys(pilot, "ctrl+s")
         assert load_project(path).pages[0].item("box").group == "head"
-        await pilot.press("G")
-        await pilot.pause()
-        for _ in range(4):
-            await pilot.press("backspace")
-        await pilot.press("enter")
-        await pilot.pause()
+        await keys(pilot, "G")
+        await keys(pilot, "backspace", "backspace", "backspace", "backspace", "enter")
         assert item(app, "box").group == ""
 
 
@@ -67,8 +66,7 @@ async def test_anchoring_a_member_anchors_the_group_by_its_lead(tmp_path):
     path = grouped_page(tmp_path / "g.toml")
     async with editor(path) as (app, pilot):
         select(app, "sub")
-        await pilot.press("a")
-        await pilot.pause()
+        await keys(pilot, "a")
         page = app.session.page
         assert isinstance(page.item("title").anchor, PointAnchor)
         assert page.item("sub").anchor is None
