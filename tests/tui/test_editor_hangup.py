@@ -74,12 +74,19 @@ class Editor:
     def send(self, keys: bytes) -> None:
         os.write(self.fd, keys)
 
+    def cpu_seconds(self) -> float:
+        """CPU time the editor has used so far, all its threads (from /proc)."""
+        fields = Path(f"/proc/{self.pid}/stat").read_text().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
     def wait_exit(self, timeout: float) -> tuple[int | None, float]:
-        """(exit code, seconds taken), or (None, timeout) if it is still running."""
+        """(exit code, seconds taken), or (None, timeout) if it is still running; the CPU time
+        it used in all is kept in ``cpu_total``."""
         start = time.monotonic()
         while time.monotonic() - start < timeout:
-            pid, status = os.waitpid(self.pid, os.WNOHANG)
+            pid, status, usage = os.wait4(self.pid, os.WNOHANG)
             if pid:
+                self.cpu_total = usage.ru_utime + usage.ru_stime
                 return os.waitstatus_to_exitcode(status), time.monotonic() - start
             self.drain(0.01)  # a live terminal keeps reading what the editor writes
         return None, timeout
@@ -109,6 +116,7 @@ def test_losing_the_terminal_saves_the_edits_aside_and_leaves_within_a_second(tm
     editor = Editor(path)
     try:
         edit_something(editor)
+        cpu_before = editor.cpu_seconds()
         if how == "hang-up":
             os.close(editor.fd)  # the terminal goes away: the kernel sends SIGHUP
         else:
@@ -120,6 +128,8 @@ def test_losing_the_terminal_saves_the_edits_aside_and_leaves_within_a_second(tm
             os.close(editor.fd)
     assert code is not None, "the editor is still running"
     assert seconds <= 1.0, f"left after {seconds:.2f} s"
+    # on the way out it writes one small file: a spinning editor burnt 50-70 % of a core
+    assert editor.cpu_total - cpu_before <= 0.5, editor.cpu_total - cpu_before
     assert path.read_bytes() == before, "the project itself is never written on the way out"
     recovered = load_project(recovery_path(path))
     assert recovered.pages[0].item("block").x != 60.0, "the move is in the recovery file"
@@ -135,11 +145,13 @@ def test_a_hung_up_editor_does_not_spin(tmp_path):
         signal.signal(signal.SIGHUP, previous)
     try:
         edit_something(editor)
+        cpu_before = editor.cpu_seconds()
         os.close(editor.fd)
         code, seconds = editor.wait_exit(5.0)
     finally:
         editor.kill()
     assert code is not None and seconds <= 1.0
+    assert editor.cpu_total - cpu_before <= 0.5, editor.cpu_total - cpu_before
 
 
 def test_the_next_edit_offers_the_recovered_edits(tmp_path):
