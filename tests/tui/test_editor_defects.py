@@ -237,3 +237,26 @@ async def test_help_explains_every_mark_the_preview_draws(project_path):
         assert "Marks" in text and "on the page, in the preview" in text
         for mark, meaning in MARKS:
             assert meaning[:30] in text.replace("\n", " ") or mark in text
+
+
+async def test_a_smaller_page_size_ends_with_no_overlap_and_nothing_off_it(tmp_path):
+    """Issue 11, a fair start after layout changes: `S`, a smaller size, Enter; the items that
+    no longer fit are made smaller, spread and settle with no overlap and nothing off the
+    page."""
+    from floatpage.starters import create
+    from floatpage.tui.item_forms import PAGE_SIZE_CHOICES
+
+    path = tmp_path / "card.toml"
+    create("card", path)
+    target = [value for _, value in PAGE_SIZE_CHOICES].index("4x6in")
+    async with editor(path, autostart=True) as (app, pilot):
+        await pilot.press("S")
+        await pilot.pause()
+        assert app.screen.id == "page-size-dialog"
+        await pilot.press("home", *["down"] * target, "enter")
+        await pilot.pause()
+        assert app.session.page.size == "4x6in"
+        await settle_live(app, pilot)
+        quality = app.session.engine.quality()
+        assert app.session.engine.settled
+        assert quality.overlapping_pairs == () and quality.off_page == ()
