@@ -259,11 +259,6 @@ class Engine:
         self._bodies.regions[self._row(item_id)] = (left_mm, top_mm, right_mm, bottom_mm)
         self.reheat()
 
-    def unconfine(self, item_id: str) -> None:
-        """Let the item use the whole page again."""
-        self._bodies.regions[self._row(item_id)] = np.nan
-        self.reheat()
-
     def resize_page(self, page_w_mm: float, page_h_mm: float) -> None:
         _positive("page size", page_w_mm, page_h_mm)
         self.page_w_mm, self.page_h_mm = float(page_w_mm), float(page_h_mm)

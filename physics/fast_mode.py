@@ -18,7 +18,7 @@ from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
 from floatpage.physics.guides import guide_pulls
 from floatpage.physics.geometry import (
-    as_insets, clamp_to_page, confine_followers, group_extents, page_bounds,
+    as_insets, clamp_to_page, group_bounds,
 )
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
@@ -91,11 +91,8 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[roots], 1e-12), 0.0)
     near, far = bodies.insets(page_margin(params.margin_mm, page_w_mm, page_h_mm), page_w_mm,
                               page_h_mm)
-    low, high = group_extents(bodies, roots, root_offsets)
-    lowest, highest = page_bounds(free_rows, low, high, page_w_mm, page_h_mm, near[free_rows],
-                                  far[free_rows])
-    confine_followers(bodies, roots, root_offsets, free_rows, lowest, highest, near, far,
-                      page_w_mm, page_h_mm)
+    lowest, highest = group_bounds(bodies, free_rows, roots, root_offsets, near, far,
+                                   page_w_mm, page_h_mm)
     constrained = bool((bodies.held | bodies.hard | followers).any())
 
     gap = target_gap(bodies.sizes[active], page_w_mm, page_h_mm, params.gutter_mm)

@@ -27,9 +27,7 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import blocked_axes, candidate_pairs
-from floatpage.physics.geometry import (
-    clamp_to_page, confine_followers, group_extents, page_bounds,
-)
+from floatpage.physics.geometry import clamp_to_page, group_bounds
 
 MAX_ITERATIONS = 1000
 SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
@@ -116,12 +114,9 @@ class _Projection:
         movable = bodies.free[self.roots] & ~bodies.held & active
         self.inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[self.roots], 1e-12),
                                      0.0)
-        low, high = group_extents(bodies, self.roots, self.root_offsets)
         near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
-        self.bounds = page_bounds(self.free_rows, low, high, page_w_mm, page_h_mm,
-                                  near[self.free_rows], far[self.free_rows])
-        confine_followers(bodies, self.roots, self.root_offsets, self.free_rows, *self.bounds,
-                          near, far, page_w_mm, page_h_mm)
+        self.bounds = group_bounds(bodies, self.free_rows, self.roots, self.root_offsets,
+                                   near, far, page_w_mm, page_h_mm)
         # The arrangement with the widest clearance seen by any run so far, and that clearance
         # (a lower bound, exact below the clearance the run aimed at).
         self.widest, self.widest_state = -np.inf, bodies.centres.copy()

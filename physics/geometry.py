@@ -25,27 +25,27 @@ def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray
     return low, high
 
 
-def page_bounds(rows: np.ndarray, low: np.ndarray, high: np.ndarray, page_w_mm: float,
-                page_h_mm: float, margins: np.ndarray | float = 0.0,
-                far_margins: np.ndarray | float | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Lowest and highest centre, (len(rows), 2) each, that keeps each group inside the page,
-    ``margins`` from its left and top edges and ``far_margins`` (the same if not given) from
-    its right and bottom ones: a number, one per row, or (len(rows), 2) per row and axis (a
-    region's walls, Bodies.insets).
+def group_bounds(bodies: Bodies, rows: np.ndarray, roots: np.ndarray, root_offsets: np.ndarray,
+                 near: np.ndarray, far: np.ndarray, page_w_mm: float, page_h_mm: float
+                 ) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest centre, (len(rows), 2) each, that keeps the rigid group of each root
+    in ``rows`` inside its walls: ``near`` and ``far`` (n, 2) are where every row's walls stand
+    from the page's left/top and right/bottom edges (Bodies.insets: the print-safe margin, or a
+    region).  A group fits wherever its root's walls and every confined member's allow.
 
-    A group too large for the page (within its margins) on an axis gets one allowed value
-    there: centred between them.
+    A group too large for its walls on an axis gets one allowed value there: centred between
+    them.
     """
+    low, high = group_extents(bodies, roots, root_offsets)
     extent = np.array([page_w_mm, page_h_mm])
-    near = as_insets(margins)
-    far = near if far_margins is None else as_insets(far_margins)
-    lowest = -low[rows] + near
-    highest = extent - high[rows] - far
+    lowest = -low[rows] + near[rows]
+    highest = extent - high[rows] - far[rows]
     too_big = lowest > highest
-    middle = extent / 2 - (low[rows] + high[rows]) / 2
-    if far_margins is not None:
-        middle = middle + (near - far) / 2
-    return np.where(too_big, middle, lowest), np.where(too_big, middle, highest)
+    middle = extent / 2 - (low[rows] + high[rows]) / 2 + (near[rows] - far[rows]) / 2
+    lowest = np.where(too_big, middle, lowest)
+    highest = np.where(too_big, middle, highest)
+    confine_followers(bodies, roots, root_offsets, rows, lowest, highest, near, far, extent)
+    return lowest, highest
 
 
 def as_insets(margins: np.ndarray | float) -> np.ndarray | float:
@@ -56,17 +56,14 @@ def as_insets(margins: np.ndarray | float) -> np.ndarray | float:
 
 def confine_followers(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray,
                       rows: np.ndarray, lowest: np.ndarray, highest: np.ndarray,
-                      near: np.ndarray, far: np.ndarray, page_w_mm: float, page_h_mm: float
-                      ) -> None:
-    """Narrow the roots' bounds (from page_bounds, for ``rows``) in place so that followers
-    confined to a region keep inside it too: a rigid group fits wherever its every member's
-    walls allow.  Only followers with a region need this; the rest share their root's page
-    margins, which group_extents already counts."""
+                      near: np.ndarray, far: np.ndarray, extent: np.ndarray) -> None:
+    """Narrow the roots' bounds (for ``rows``) in place so that followers confined to a region
+    keep inside it too.  Only followers with a region need this; the rest share their root's
+    page margins, which group_extents already counts."""
     followers = np.flatnonzero(bodies.followers & ~np.isnan(bodies.regions[:, 0]))
     if not len(followers):
         return
     position = {int(row): k for k, row in enumerate(rows)}
-    extent = np.array([page_w_mm, page_h_mm])
     halves = bodies.sizes / 2
     for member in followers:
         k = position.get(int(roots[member]))
@@ -84,7 +81,7 @@ def confine_followers(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarra
 
 def clamp_to_page(centres: np.ndarray, velocities: np.ndarray, rows: np.ndarray,
                   lowest: np.ndarray, highest: np.ndarray) -> None:
-    """Hard walls, in place: keep each group's box inside the page (bounds from page_bounds).
+    """Hard walls, in place: keep each group's box inside the page (bounds from group_bounds).
     The velocity into a wall is dropped."""
     current = centres[rows]
     clamped = np.minimum(np.maximum(current, lowest), highest)
