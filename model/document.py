@@ -215,6 +215,19 @@ class Page:
                 return region
         raise KeyError(region_id)
 
+    def region_misfit(self, item: Item, region_id: str) -> str | None:
+        """Why ``item`` cannot be confined to ``region_id`` on this page (the page lacks it, or
+        the item is larger than it), in words after the item's name; None if it can.  The
+        loader and the editor both ask this."""
+        try:
+            region = self.region(region_id)
+        except KeyError:
+            return f'is confined to region "{region_id}", which page "{self.id}" does not have'
+        if item.w > region.w + 1e-9 or item.h > region.h + 1e-9:
+            return (f'is {item.w:g} x {item.h:g} mm, larger than its region "{region.id}" '
+                    f"({region.w:g} x {region.h:g} mm)")
+        return None
+
     def group_members(self, group: str) -> list[Item]:
         """The items of a group, in file order."""
         return [item for item in self.items if group and item.group == group]

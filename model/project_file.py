@@ -290,27 +290,26 @@ class _Reader:
 
     def check_regions(self, page: Page, page_index: int) -> None:
         """An item's region must be one of its page's, and the item must fit inside it."""
-        regions = {region.id: region for region in page.regions}
+        regions = [region.id for region in page.regions]
         for index, item in enumerate(page.items):
             if not item.region:
                 continue
             line = self.lines.key_line(self.lines.item_line(page_index, index), "region")
             where = f'item "{item.id}"'
-            region = regions.get(item.region)
-            if region is None and (page_index, item.region) in self.named_regions:
+            if item.region not in regions and (page_index, item.region) in self.named_regions:
                 continue  # the region itself was refused, with its own message
-            if region is None:
+            misfit = page.region_misfit(item, item.region)
+            if misfit is None:
+                continue
+            if item.region in regions:
+                hint = "make the item smaller or the region larger"
+            else:
                 close = difflib.get_close_matches(item.region, sorted(regions), n=1, cutoff=0.6)
                 hint = (f'did you mean "{close[0]}"?' if close else
                         "name one of the page's [[pages.regions]]" + (
                             ": " + ", ".join(f'"{name}"' for name in regions) if regions else
                             ", or add one with id, left, top, w and h"))
-                self.add(line, where, f'is confined to region "{item.region}", which page '
-                         f'"{page.id}" does not have', hint)
-            elif item.w > region.w + 1e-9 or item.h > region.h + 1e-9:
-                self.add(line, where, f"is {item.w:g} x {item.h:g} mm, larger than its region "
-                         f'"{region.id}" ({region.w:g} x {region.h:g} mm)',
-                         "make the item smaller or the region larger")
+            self.add(line, where, misfit, hint)
 
     def check_groups(self, page: Page, page_index: int) -> None:
         """A group moves as one body: it may hold one point anchor (the group's anchor), and

@@ -381,14 +381,9 @@ class EditSession:
         rules, model.project_file): a region the page lacks or the item does not fit, a group
         with two anchors, or a member that follows an item outside its group."""
         region_id = changes.get("region", item.region)
-        if region_id:
-            try:
-                region = self.page.region(region_id)
-            except KeyError:
-                raise EditError(f'this page has no region "{region_id}"') from None
-            if item.w > region.w or item.h > region.h:
-                raise EditError(f'"{item.id}" ({item.w:.0f} x {item.h:.0f} mm) does not fit in '
-                                f'region "{region_id}" ({region.w:.0f} x {region.h:.0f} mm)')
+        misfit = self.page.region_misfit(item, region_id) if region_id else None
+        if misfit:
+            raise EditError(f'"{item.id}" {misfit}')
         group = changes.get("group", item.group)
         if not group or group == item.group:
             return
