@@ -37,7 +37,7 @@ import numpy as np
 
 
 from floatpage.physics import Engine, Params, measure_quality
-from floatpage.physics.params import A4_W_MM
+from floatpage.physics.params import A4_W_MM, page_margin
 from seeded_scenes import Scene, big_item_scene, dropped_scene, load, mixed_scene
 
 FRAME_RATE = 30  # the editor's frames per second
@@ -58,6 +58,8 @@ class Run:
     min_gap: float
     evenness: float
     lost: int  # items whose centre is off the page
+    in_margin: int = 0  # items inside the print-safe margin
+    final_share: float = 0.0  # share of the time spent in the final pass (and the snap)
 
 
 def scenes() -> list[Scene]:
@@ -78,14 +80,40 @@ def measure(engine: Engine, seconds: float, steps: int, settled: bool) -> Run:
     lost = int((~((centres >= 0) & (centres <= [engine.page_w_mm, engine.page_h_mm]))
                 .all(axis=1)).sum())
     return Run(seconds, steps, settled, quality.overlap_fraction, len(quality.off_page),
-               quality.min_gap_mm, quality.gap_evenness, lost)
+               quality.min_gap_mm, quality.gap_evenness, lost, len(quality.in_margin))
 
 
-def run_fast(scene: Scene) -> Run:
-    engine = loaded(scene)
-    start = time.perf_counter()
-    report = engine.settle()
-    return measure(engine, time.perf_counter() - start, report.steps, report.settled)
+FINAL_PASS_SECONDS = [0.0]  # time spent in Engine.finalize during the current run_fast
+
+
+def timed_finalize(finalize):
+    """Engine.finalize, adding its time (the no-overlap pass and the snap) to the tally."""
+    def wrapper(self):
+        start = time.perf_counter()
+        try:
+            return finalize(self)
+        finally:
+            FINAL_PASS_SECONDS[0] += time.perf_counter() - start
+    return wrapper
+
+
+Engine.finalize = timed_finalize(Engine.finalize)
+
+
+def run_fast(scene: Scene, repeats: int = 3) -> Run:
+    """Best of ``repeats`` settles (the machine is shared: the least disturbed run is the
+    fairest figure, and d3 gets the same); the final pass's share is that run's."""
+    best = None
+    for _ in range(repeats):
+        engine = loaded(scene)
+        FINAL_PASS_SECONDS[0] = 0.0
+        start = time.perf_counter()
+        report = engine.settle()
+        run = measure(engine, time.perf_counter() - start, report.steps, report.settled)
+        run.final_share = FINAL_PASS_SECONDS[0] / run.seconds
+        if best is None or run.seconds < best.seconds:
+            best = run
+    return best
 
 
 PAPER_COOLING = (("1 %/step", 0.01), ("0.01 %/step", 0.0001), ("none", 0.0))
@@ -143,23 +171,29 @@ def d3_ready() -> None:
                        stdout=subprocess.DEVNULL)
 
 
-def run_d3(scene: Scene, ticks: int = 300, gutter_mm: float = 3.0) -> Run:
+def run_d3(scene: Scene, ticks: int = 300, gutter_mm: float = 3.0, repeats: int = 3) -> Run:
     """The real d3-force (npm d3-force 3.0.0, run by node; see benchmarks/d3/layout.mjs):
     forceManyBody, forceX/forceY to the page centre, a rectangle collide force keeping the
-    gutter, positions clamped to the page, 300 ticks.  The time is d3's own, measured in node
-    (node's start-up is left out)."""
+    gutter, positions clamped to the page inside floatpage's print-safe margin, 300 ticks.
+    The time is d3's own, measured in node (node's start-up is left out), best of
+    ``repeats`` runs as for floatpage."""
     d3_ready()
+    margin = page_margin(Params().margin_mm, scene.page_w_mm, scene.page_h_mm)
     request = {"page_w": scene.page_w_mm, "page_h": scene.page_h_mm, "gutter": gutter_mm,
-               "ticks": ticks, "items": np.column_stack([scene.centres, scene.sizes]).tolist()}
-    done = subprocess.run(["node", "layout.mjs"], cwd=D3_FOLDER, input=json.dumps(request),
-                          capture_output=True, text=True, check=True)
-    answer = json.loads(done.stdout)
+               "margin": margin, "ticks": ticks,
+               "items": np.column_stack([scene.centres, scene.sizes]).tolist()}
+    answers = [json.loads(subprocess.run(["node", "layout.mjs"], cwd=D3_FOLDER,
+                                         input=json.dumps(request), capture_output=True,
+                                         text=True, check=True).stdout)
+               for _ in range(repeats)]
+    answer = min(answers, key=lambda one: one["seconds"])
     centres, sizes = np.array(answer["positions"], float), scene.sizes
-    quality = measure_quality(scene.page_w_mm, scene.page_h_mm, centres, sizes, gutter_mm)
+    quality = measure_quality(scene.page_w_mm, scene.page_h_mm, centres, sizes, gutter_mm,
+                              margins=np.full(len(sizes), margin))
     lost = int((~((centres >= 0) & (centres <= [scene.page_w_mm, scene.page_h_mm]))
                 .all(axis=1)).sum())
     return Run(answer["seconds"], ticks, True, quality.overlap_fraction, len(quality.off_page),
-               quality.min_gap_mm, quality.gap_evenness, lost)
+               quality.min_gap_mm, quality.gap_evenness, lost, len(quality.in_margin))
 
 
 def live_editor(count: int = 50, edits: int = 5) -> dict[str, float]:
@@ -208,7 +242,8 @@ def times(ratio: float) -> str:
 def row(name: str, run: Run) -> str:
     gap = "—" if np.isinf(run.min_gap) else f"{run.min_gap:.2f}"
     return (f"| {name} | {run.seconds:.3f} | {run.steps} | {'yes' if run.settled else 'no'} | "
-            f"{run.overlap:.2%} | {run.off_page} | {run.lost} | {gap} | {run.evenness:.2f} |")
+            f"{run.overlap:.2%} | {run.off_page} | {run.in_margin} | {run.lost} | {gap} | "
+            f"{run.evenness:.2f} | {run.final_share:.0%} |")
 
 
 def main() -> None:
@@ -222,8 +257,9 @@ def main() -> None:
     parser.add_argument("--no-d3", action="store_true", help="skip the d3-force peer (needs node)")
     args = parser.parse_args()
 
-    print("| scene | mode | s | steps | settled | overlap | off page | lost | min gap mm | even |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("| scene | mode | s | steps | settled | overlap | off page | in margin | lost | "
+          "min gap mm | even | final pass |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for scene in scenes():
         if args.only not in scene.name:
             continue

@@ -138,13 +138,26 @@ def grid_pairs(c: np.ndarray, h: np.ndarray, order: np.ndarray, reach: float
 
 
 def blocked_axes(sizes: np.ndarray, i: np.ndarray, j: np.ndarray, page_w_mm: float,
-                 page_h_mm: float, gutter_mm: float) -> np.ndarray:
+                 page_h_mm: float, gutter_mm: float,
+                 insets: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """Per pair, (m, 2) bool: True on an axis along which the two items cannot sit apart on
-    this page (together wider, or taller, than the page).  Such a pair must separate on the
-    other axis, however deep it overlaps there; two wide text boxes stack, they never try to
-    stand side by side."""
+    this page (together wider, or taller, than the room their walls leave).  Such a pair must
+    separate on the other axis, however deep it overlaps there; two wide text boxes stack, they
+    never try to stand side by side.
+
+    ``insets`` (near, far), as Bodies.insets, are where each row's walls stand: with a 5 mm
+    margin, photos 95 and 105 mm wide do not fit side by side on A4 (200 mm between the
+    walls); judged against the bare page they jammed against the margins 0.13 mm apart instead
+    of stacking with the gutter between them.  A pair's room is the page less the walls of
+    whichever of the two stands on each side, in the order that leaves more."""
+    extent = np.array([page_w_mm, page_h_mm])
+    if insets is None:
+        room = extent
+    else:
+        near, far = (np.broadcast_to(np.asarray(side, float), sizes.shape) for side in insets)
+        room = extent - np.minimum(near[i] + far[j], near[j] + far[i])
     need = sizes[i] + sizes[j] + gutter_mm
-    blocked = need > np.array([page_w_mm, page_h_mm])
+    blocked = need > room
     both = blocked.all(axis=1)
     blocked[both] = False  # hopeless either way: let the cheaper axis decide
     return blocked

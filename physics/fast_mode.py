@@ -16,17 +16,18 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
-from floatpage.physics.guides import guide_pulls
+from floatpage.physics.guides import GUIDE_HEAT, HOLD_HEAT, guide_pulls
 from floatpage.physics.geometry import (
-    as_insets, clamp_to_page, group_bounds,
+    ROOMY_COVER, as_insets, clamp_to_page, group_bounds, grown_cover,
 )
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
 
 FRICTION = 0.4  # share of the velocity lost every step (d3-force's velocityDecay)
 SPEED_LIMIT_MM = 2.5  # per step on an A4 page: 25 mm per frame at most, easy to follow
-COOLING_ITEMS = 1.5  # fast mode cools at heat_decay * COOLING_ITEMS / sqrt(n) (see cooling_rate)
-COOLING_SHARE_RANGE = (0.05, 0.25)
+COOLING_ITEMS = 2.25  # fast mode cools at heat_decay * COOLING_ITEMS / sqrt(n) (see cooling_rate)
+COOLING_SHARE_RANGE = (0.075, 0.375)
+GUIDED_COOLING = 0.02  # heat lost per step once the page has spread out (see run_fast)
 
 
 def cooling_rate(heat_decay: float, count: int) -> float:
@@ -34,9 +35,10 @@ def cooling_rate(heat_decay: float, count: int) -> float:
 
     A fast step moves items much further than a paper step, yet a full page needs many steps
     at useful heat to unjam: a push has to travel across about sqrt(n) items to reach a
-    roomier part of the page.  So the fast mode cools at heat_decay times 1.5 / sqrt(n),
-    clipped to [0.05, 0.25] of it, which measured best (docs/benchmarks.md).  A run usually
-    ends on stillness long before the heat runs out.
+    roomier part of the page.  So the fast mode cools at heat_decay times 2.25 / sqrt(n),
+    clipped to [0.075, 0.375] of it (docs/benchmarks.md: 1.5 and [0.05, 0.25] took twice the
+    steps for the same layouts, within the quality goals).  A run usually ends on stillness
+    long before the heat runs out.
     """
     low, high = COOLING_SHARE_RANGE
     share = COOLING_ITEMS / np.sqrt(max(count, 1))
@@ -48,7 +50,8 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
                 inverse_mass: np.ndarray, gap: float, skin: float,
                 margins: np.ndarray | float = 0.0,
                 far_margins: np.ndarray | float | None = None) -> list[Force]:
-    """The forces the fast mode sums every step; a new force is one more entry here.
+    """The forces the fast mode sums every step; a new force is one more entry here (the
+    contacts come first: the step loop asks them whether any items still overlap).
     ``margins`` and ``far_margins`` are where the walls stand (Bodies.insets)."""
     halves = bodies.sizes / 2
     near = as_insets(margins)
@@ -58,7 +61,7 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
     forces: list[Force] = [
         ContactPushes(bodies, np.flatnonzero(bodies.active), roots, inverse_mass, movable, gap,
                       skin, (page_w_mm, page_h_mm), params.gutter_mm,
-                      page_scale(page_w_mm, page_h_mm), rng),
+                      page_scale(page_w_mm, page_h_mm), rng, (near, far)),
         WallPushes(rest_low, rest_high),
     ]
     anchored = ~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard
@@ -100,10 +103,20 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     still_speed = STILL_MM_PER_FRAME * scale / params.fast_steps_per_frame
     speed_limit = SPEED_LIMIT_MM * scale
     any_followers = bool(followers.any())
-    keep = 1.0 - cooling_rate(params.heat_decay, int(active.sum()))
+    cooling = cooling_rate(params.heat_decay, int(active.sum()))
+    keep = 1.0 - cooling
+    # Once the page is still, the spreading is over: rather than cool slowly on while nothing
+    # moves, the heat drops to where the alignment guides pull, and cools from there four times
+    # as fast, until the page is still on its lines below the heat at which the lines hold
+    # (without guides there is nothing more to wait for).
+    guides_on = params.guides > 0
+    guided_heat = GUIDE_HEAT * 0.9
+    settled_below = HOLD_HEAT if guides_on else np.inf
     count = bodies.count
     forces = fast_forces(bodies, page_w_mm, page_h_mm, params, rng, roots, movable,
                          inverse_mass, gap, skin, near, far)
+    contacts = forces[0]
+    roomy = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm) <= ROOMY_COVER
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))
         for force in forces:
@@ -122,6 +135,20 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
         if constrained:
             enforce_positions(bodies, roots, root_offsets)
         heat = max(heat * keep, params.heat_min)
-        if heat <= params.heat_min or top_speed < still_speed:
+        if top_speed >= still_speed and done % 10 == 0:
+            # An item pressed into a wall goes nowhere: judge the motion the walls leave.  On a
+            # roomy page the no-overlap pass clears what overlap is left at once; on a tight
+            # one a jam pressed into the walls keeps cooling, sliding slowly apart, unless
+            # nothing overlaps any more.
+            after = bodies.velocities[moving]
+            walled = np.sqrt((after * after).sum(axis=1).max())
+            if walled < still_speed and (roomy or not contacts.overlapping(bodies.centres)):
+                top_speed = walled
+        if top_speed < still_speed:
+            if heat <= settled_below:
+                return done, heat, True
+            heat = min(heat, guided_heat)  # spread out and still: on to where the guides pull
+            keep = min(keep, 1.0 - GUIDED_COOLING)
+        elif heat <= params.heat_min:
             return done, heat, True
     return steps, heat, False

@@ -34,6 +34,11 @@ SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
 ROUNDING_MM = 0.01  # positions are saved to 0.01 mm: keep this much beyond the gutter
 AIM_BEYOND_MM = 0.3  # pairs that break the gutter are pushed this far beyond it
 RELAXATION = 1.0
+# A run whose remaining violations have not shrunk by STALL_GAIN in STALL_ITERATIONS gives up:
+# on a page where the aim does not fit, the last hundreds of iterations of a 1,000-iteration
+# run only shuffled items (a failing pass was most of the settle time).
+STALL_ITERATIONS = 60
+STALL_GAIN = 0.01
 # When the gutter does not fit: at most this many bisection steps between the widest clearance
 # reached and the gutter, stopping once they are this close; each step aims only this far beyond
 # its clearance (near the limit, aiming further asks for room that is not there).
@@ -115,6 +120,7 @@ class _Projection:
         self.inverse_mass = np.where(movable, 1.0 / np.maximum(group_mass[self.roots], 1e-12),
                                      0.0)
         near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
+        self.insets = (near, far)
         self.bounds = group_bounds(bodies, self.free_rows, self.roots, self.root_offsets,
                                    near, far, page_w_mm, page_h_mm)
         # The arrangement with the widest clearance seen by any run so far, and that clearance
@@ -138,7 +144,8 @@ class _Projection:
     def pairs(self, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         i, j = candidate_pairs(self.bodies.centres, self.halves, self.rows_active, self.roots,
                                reach)
-        return i, j, blocked_axes(self.bodies.sizes, i, j, *self.page, self.gutter_mm)
+        return i, j, blocked_axes(self.bodies.sizes, i, j, *self.page, self.gutter_mm,
+                                  self.insets)
 
     def violations(self, clearance: float) -> int:
         i, j, blocked = self.pairs(clearance)
@@ -158,7 +165,8 @@ class _Projection:
         built_at = bodies.centres.copy()
         best, best_score = bodies.centres.copy(), np.inf
         hsum = self.halves[i] + self.halves[j]
-        for _ in range(iterations):
+        last_gain = 0
+        for iteration in range(iterations):
             if np.abs(bodies.centres - built_at).max() > skin / 2:
                 i, j, blocked = self.pairs(clearance + skin)
                 built_at = bodies.centres.copy()
@@ -176,7 +184,11 @@ class _Projection:
                                2 * np.minimum(self.halves[i], self.halves[j]))
             score = float((depth[:, 0] * depth[:, 1]).sum()) + np.abs(moves).sum()
             if score < best_score:
+                if score < best_score * (1.0 - STALL_GAIN):
+                    last_gain = iteration
                 best, best_score = bodies.centres.copy(), score
+            elif iteration - last_gain > STALL_ITERATIONS:
+                break  # neighbours only undo each other's moves: this aim is out of reach
             vi, vj, moves = i[violating], j[violating], moves[violating]
             inv = self.inverse_mass
             total = inv[vi] + inv[vj]

@@ -38,11 +38,12 @@ class ContactPushes:
     def __init__(self, bodies: Bodies, rows_active: np.ndarray, roots: np.ndarray,
                  inverse_mass: np.ndarray, movable: np.ndarray, gap: float, skin: float,
                  page: tuple[float, float], gutter_mm: float, scale: float,
-                 rng: np.random.Generator):
+                 rng: np.random.Generator,
+                 insets: tuple[np.ndarray, np.ndarray] | None = None):
         self.bodies, self.rows_active, self.roots = bodies, rows_active, roots
         self.inverse_mass, self.movable = inverse_mass, movable
         self.gap, self.skin, self.page, self.gutter_mm = gap, skin, page, gutter_mm
-        self.scale, self.rng = scale, rng
+        self.scale, self.rng, self.insets = scale, rng, insets
         self.halves = bodies.sizes / 2
         self.build()
 
@@ -56,7 +57,8 @@ class ContactPushes:
         total = np.where(total > 0, total, 1.0)
         self.i, self.j = i, j
         self.share_i, self.share_j = self.inverse_mass[i] / total, self.inverse_mass[j] / total
-        self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm)
+        self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm,
+                                    self.insets)
         self.built_at = bodies.centres.copy()
 
     def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
@@ -70,6 +72,13 @@ class ContactPushes:
             acc[:, axis] += (np.bincount(self.j, pushes[:, axis] * self.share_j, minlength=count)
                              - np.bincount(self.i, pushes[:, axis] * self.share_i,
                                            minlength=count))
+
+
+    def overlapping(self, centres: np.ndarray) -> bool:
+        """Whether any two items' rectangles (not their halos) overlap."""
+        d = np.abs(centres[self.j] - centres[self.i])
+        depth = self.halves[self.i] + self.halves[self.j] - d
+        return bool(((depth[:, 0] > 0) & (depth[:, 1] > 0)).any())
 
 
 class WallPushes:

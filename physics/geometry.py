@@ -8,8 +8,27 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 
+# A page whose items, grown by the gutter, cover at most this share of the room inside the
+# walls is roomy: its run stops once still, overlap or not (fast_mode.run_fast), and it is
+# worth aligning (Engine.finalize).  Fuller pages keep cooling and give alignment up.
+ROOMY_COVER = 0.75
 JITTER_MM = 0.5  # size of the seeded nudge that separates items on one point (A4)
 COINCIDENT_MM = 1e-6
+
+
+def grown_cover(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: float,
+                page_h_mm: float, gutter_mm: float) -> float:
+    """The share of the room inside the walls (``near``, ``far`` as Bodies.insets) that the
+    active items cover once each is grown by the gutter, the room grown by it too since items
+    may touch the walls: how tight a page is.  The room is the page less the widest walls, so
+    a region makes a page look fuller than it is, which errs on the side of care."""
+    active = bodies.active
+    if not active.any():
+        return 0.0
+    room = (np.array([page_w_mm, page_h_mm]) - np.max(near[active], axis=0)
+            - np.max(far[active], axis=0))
+    grown = float(((bodies.sizes[active] + gutter_mm).prod(axis=1)).sum())
+    return grown / max(float((np.maximum(room, 0.0) + gutter_mm).prod()), 1e-9)
 
 
 def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray

@@ -48,7 +48,7 @@ class RestCheck:
         total = np.where(total > 0, total, 1.0)
         self.i, self.j = i, j
         self.share_i, self.share_j = inverse[i] / total, inverse[j] / total
-        self.blocked = blocked_axes(bodies.sizes, i, j, *page, 0.0)
+        self.blocked = blocked_axes(bodies.sizes, i, j, *page, 0.0, insets)
         near, far = insets  # where each row's walls stand (Bodies.insets)
         self.rest_low, self.rest_high = wall_rest_box(self.halves, *page, gap / 2 + near,
                                                       gap / 2 + far)

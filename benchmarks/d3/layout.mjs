@@ -4,7 +4,8 @@
 // {positions, seconds}. The simulation is d3-force's own: forceManyBody and forceX/forceY to
 // the page centre at their defaults, plus a rectangle collide force (d3 ships only circles)
 // written the way d3's forceCollide is, over a d3-quadtree, keeping half the gutter around
-// each rectangle. After every tick, positions are clamped so each rectangle stays on the page.
+// each rectangle. After every tick, positions are clamped so each rectangle stays on the page,
+// inside the print-safe margin floatpage keeps (`margin`, mm; 0 if not given).
 import { forceManyBody, forceSimulation, forceX, forceY } from "d3-force";
 import { quadtree } from "d3-quadtree";
 
@@ -58,10 +59,11 @@ const input = JSON.parse(await new Promise((resolve) => {
   process.stdin.on("end", () => resolve(text));
 }));
 const { page_w: pageW, page_h: pageH, gutter, ticks } = input;
+const margin = input.margin ?? 0;
 const nodes = input.items.map(([x, y, w, h], index) => ({ index, x, y, w, h }));
 const clamp = () => {
   for (const d of nodes) {
-    const hw = Math.min(d.w / 2, pageW / 2), hh = Math.min(d.h / 2, pageH / 2);
+    const hw = Math.min(d.w / 2 + margin, pageW / 2), hh = Math.min(d.h / 2 + margin, pageH / 2);
     d.x = Math.min(Math.max(d.x, hw), pageW - hw);
     d.y = Math.min(Math.max(d.y, hh), pageH - hh);
   }

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from floatpage.physics.fast_mode import COOLING_SHARE_RANGE, cooling_rate
+from floatpage.physics.fast_mode import COOLING_ITEMS, COOLING_SHARE_RANGE, cooling_rate
 from seeded_scenes import big_item_scene, dropped_scene, mixed_scene
 
 
@@ -32,6 +32,6 @@ def test_dropped_and_big_item_scenes():
 def test_cooling_slows_with_the_square_root_of_the_item_count():
     low, high = COOLING_SHARE_RANGE
     assert cooling_rate(0.01, 4) == pytest.approx(0.01 * high)  # capped for small pages
-    assert cooling_rate(0.01, 100) == pytest.approx(0.01 * 0.15)
+    assert cooling_rate(0.01, 100) == pytest.approx(0.01 * COOLING_ITEMS / 10)
     assert cooling_rate(0.01, 100_000) == pytest.approx(0.01 * low)
     assert cooling_rate(0.0, 50) == 0.0
