@@ -88,10 +88,10 @@ FINAL_PASS_SECONDS = [0.0]  # time spent in Engine.finalize during the current r
 
 def timed_finalize(finalize):
     """Engine.finalize, adding its time (the no-overlap pass and the snap) to the tally."""
-    def wrapper(self):
+    def wrapper(self, **options):
         start = time.perf_counter()
         try:
-            return finalize(self)
+            return finalize(self, **options)
         finally:
             FINAL_PASS_SECONDS[0] += time.perf_counter() - start
     return wrapper

@@ -20,7 +20,7 @@ from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
 from floatpage.physics.finalize import ROUNDING_MM, remove_overlaps
 from floatpage.physics.geometry import ROOMY_COVER, grown_cover
-from floatpage.physics.packing import packed_layout
+from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
@@ -301,10 +301,13 @@ class Engine:
             total += self._run(min(chunk, limit - total))
         return total
 
-    def finalize(self) -> bool:
-        """The no-overlap pass; returns whether every pair now keeps the gutter."""
+    def finalize(self, *, fall_back: bool = True) -> bool:
+        """The no-overlap pass; returns whether every pair now keeps the gutter.  Without
+        ``fall_back`` a page that misses the gutter is left as the first attempt leaves it,
+        for a second start to try, instead of searching for the widest gap it can keep."""
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
-                               self.params.gutter_mm, margin_mm=self.margin_mm)
+                               self.params.gutter_mm, margin_mm=self.margin_mm,
+                               fall_back=fall_back)
         if fits and self._roomy():  # on a page too full for the gutter, or nearly, alignment
             snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)  # gives way
         self._bodies.velocities[:] = 0.0
@@ -323,9 +326,12 @@ class Engine:
         misses the gutter on a page where it fits, once more from a second start."""
         steps = self._run_until_settled(max_steps)
         energy = self.kinetic_energy
-        fits = self.finalize() if finalize else True
-        if not fits:
-            fits = self._settle_from_packing(max_steps)
+        fits = True
+        if finalize:
+            second_start = self._second_start_applies()
+            fits = self.finalize(fall_back=not second_start)
+            if not fits and second_start:
+                fits = self._settle_from_packing(max_steps)
         return SettleReport(steps=steps, energy=energy, settled=self._settled, fits=fits)
 
     def _run_until_settled(self, max_steps: int) -> int:
@@ -334,39 +340,46 @@ class Engine:
             steps += self._run(min(10_000, max_steps - steps))
         return steps
 
-    def _settle_from_packing(self, max_steps: int) -> bool:
-        """The second start (packing.packed_layout) for a page of free items whose gutter the
-        first run missed although it fits: settle from a packing spread over the page, and keep whichever
-        result has the wider smallest gap.  Pages with anchors, groups, held items or regions
-        keep the first run: their order is the user's."""
+    def _second_start_applies(self) -> bool:
+        """Whether a page that misses the gutter gets a second start: free items only (with
+        anchors, groups, held items or regions the order is the user's), that fit with the
+        gutter (each grown by it, at most GUTTER_FITS_COVER of the room), and few enough
+        for the packing (packing.MAX_ITEMS)."""
         bodies = self._bodies
         rows = np.flatnonzero(bodies.active)
-        gutter = self.params.gutter_mm
-        if len(rows) < 2 or self.params.mode != "fast" or not (
+        if not 2 <= len(rows) <= MAX_ITEMS or self.params.mode != "fast" or not (
                 bodies.free[rows].all() and np.isnan(bodies.anchors[rows, 0]).all()
                 and np.isnan(bodies.regions[rows, 0]).all() and not bodies.followers.any()):
             return False
         near, far = bodies.insets(self.margin_mm, self.page_w_mm, self.page_h_mm)
+        return grown_cover(bodies, near, far, self.page_w_mm, self.page_h_mm,
+                           self.params.gutter_mm) <= GUTTER_FITS_COVER
+
+    def _settle_from_packing(self, max_steps: int) -> bool:
+        """The second start: the items packed (packing.packed_layout) and settled gently from
+        there; if the physics jams again, the packing itself, which holds the gutter by
+        construction (less evenly spread than the physics would leave it).  Should neither
+        keep it, back to the first run, searching for the widest gap it can keep."""
+        bodies = self._bodies
+        rows = np.flatnonzero(bodies.active)
+        near, far = bodies.insets(self.margin_mm, self.page_w_mm, self.page_h_mm)
         low = near[rows].max(axis=0)
         high = np.array([self.page_w_mm, self.page_h_mm]) - far[rows].max(axis=0)
-        if grown_cover(bodies, near, far, self.page_w_mm, self.page_h_mm,
-                       gutter) > GUTTER_FITS_COVER:
-            return False
-        start = packed_layout(bodies.sizes[rows], low, high, gutter + 2 * ROUNDING_MM)
-        if start is None:
-            return False
-        first, first_gap = bodies.centres.copy(), self.quality().min_gap_mm
-        bodies.centres[rows] = start
+        packed = packed_layout(bodies.sizes[rows], low, high,
+                               self.params.gutter_mm + 2 * ROUNDING_MM)
+        if packed is None:
+            return self.finalize()
+        first = bodies.centres.copy()
+        start = first.copy()
+        start[rows] = packed
+        bodies.centres[:] = start
         bodies.velocities[:] = 0.0
         self.reheat(SECOND_START_HEAT)
         self._run_until_settled(max_steps)
-        if self.finalize():
+        if self.finalize(fall_back=False):
             return True
-        # The physics jammed again: keep the packing itself, which holds the gutter by
-        # construction (less evenly spread than the physics would leave it).
-        bodies.centres[rows] = start
-        if self.finalize():
+        bodies.centres[:] = start
+        if self.finalize(fall_back=False):
             return True
-        if self.quality().min_gap_mm < first_gap:
-            bodies.centres[:] = first
-        return False
+        bodies.centres[:] = first
+        return self.finalize()

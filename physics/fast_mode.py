@@ -26,7 +26,7 @@ from floatpage.physics.stillness import STILL_MM_PER_FRAME
 FRICTION = 0.4  # share of the velocity lost every step (d3-force's velocityDecay)
 SPEED_LIMIT_MM = 2.5  # per step on an A4 page: 25 mm per frame at most, easy to follow
 COOLING_ITEMS = 2.25  # fast mode cools at heat_decay * COOLING_ITEMS / sqrt(n) (see cooling_rate)
-COOLING_SHARE_RANGE = (0.075, 0.375)
+COOLING_SHARE_RANGE = (0.15, 0.375)
 GUIDED_COOLING = 0.02  # heat lost per step once the page has spread out (see run_fast)
 
 
@@ -36,9 +36,11 @@ def cooling_rate(heat_decay: float, count: int) -> float:
     A fast step moves items much further than a paper step, yet a full page needs many steps
     at useful heat to unjam: a push has to travel across about sqrt(n) items to reach a
     roomier part of the page.  So the fast mode cools at heat_decay times 2.25 / sqrt(n),
-    clipped to [0.075, 0.375] of it (docs/benchmarks.md: 1.5 and [0.05, 0.25] took twice the
-    steps for the same layouts, within the quality goals).  A run usually ends on stillness
-    long before the heat runs out.
+    clipped to [0.15, 0.375] of it.  (docs/benchmarks.md: 1.5 / sqrt(n) within [0.05, 0.25]
+    took twice the steps for layouts within the same goals; the higher floor halves the steps
+    of a 10,000-item page, whose tiny items need no long unjamming, for 0.06 mm of the
+    500-item page's smallest gap.)  A run usually ends on stillness long before the heat
+    runs out.
     """
     low, high = COOLING_SHARE_RANGE
     share = COOLING_ITEMS / np.sqrt(max(count, 1))

@@ -221,7 +221,8 @@ class _Projection:
 
 
 def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
-                    max_iterations: int = MAX_ITERATIONS, margin_mm: float = 0.0) -> bool:
+                    max_iterations: int = MAX_ITERATIONS, margin_mm: float = 0.0,
+                    fall_back: bool = True) -> bool:
     """Project positions in place until no two active items are closer than ``gutter_mm`` and
     every item keeps ``margin_mm`` from the page's edges (bleed items keep none).
 
@@ -229,10 +230,14 @@ def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_m
     True when the result keeps the gutter everywhere (and so has no overlap).  If the gutter
     cannot be reached, the pass keeps the widest clearance it can reach (see the module doc).
     On a page too full for even that within the margins, the margin gives way next, halved and
-    then dropped, and overlap last: the gutter, then the margin, then overlap.
+    then dropped, and overlap last: the gutter, then the margin, then overlap.  Without
+    ``fall_back`` it stops after the first attempt at the gutter (Engine.settle has a second
+    start to try first).
     """
-    fits = project_within(bodies, page_w_mm, page_h_mm, gutter_mm, max_iterations, margin_mm)
-    if fits or margin_mm <= 0 or not has_overlap(bodies, page_w_mm, page_h_mm, gutter_mm):
+    fits = project_within(bodies, page_w_mm, page_h_mm, gutter_mm, max_iterations, margin_mm,
+                          fall_back)
+    if fits or not fall_back or margin_mm <= 0 or not has_overlap(bodies, page_w_mm, page_h_mm,
+                                                                  gutter_mm):
         return fits
     for margin in (margin_mm / 2, 0.0):
         project_within(bodies, page_w_mm, page_h_mm, 0.0, max(max_iterations // 3, 1), margin)
@@ -247,13 +252,15 @@ def has_overlap(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: f
 
 
 def project_within(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
-                   max_iterations: int, margin_mm: float) -> bool:
+                   max_iterations: int, margin_mm: float, fall_back: bool = True) -> bool:
     projection = _Projection(bodies, page_w_mm, page_h_mm, gutter_mm, margin_mm)
     projection.clamp()
     if len(projection.rows_active) < 2 or len(projection.free_rows) == 0:
         return projection.violations(gutter_mm + ROUNDING_MM) == 0
     if projection.run(gutter_mm + ROUNDING_MM, max_iterations, aim=gutter_mm + AIM_BEYOND_MM):
         return True
+    if not fall_back:
+        return False
     iterations = max(max_iterations // 3, 1)
     if projection.widest < ROUNDING_MM:
         # No arrangement without overlap seen yet: first remove the overlaps.  If even that

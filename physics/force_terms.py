@@ -14,7 +14,7 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import (
-    RADIAL_SHARE, blocked_axes, candidate_pairs, contact_pushes, wall_pushes_in,
+    RADIAL_SHARE, blocked_axes, candidate_pairs, touching_pushes, wall_pushes_in,
 )
 from floatpage.physics.geometry import separate_coincident
 
@@ -59,20 +59,21 @@ class ContactPushes:
         self.share_i, self.share_j = self.inverse_mass[i] / total, self.inverse_mass[j] / total
         self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm,
                                     self.insets)
+        self.reach = self.halves[i] + self.halves[j] + self.gap
         self.built_at = bodies.centres.copy()
 
     def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
         if np.abs(centres - self.built_at).max(initial=0.0) > self.skin / 2:
             self.build()
-        pushes = K_CONTACT * contact_pushes(centres, self.halves, self.i, self.j, self.gap,
-                                            self.blocked,
-                                            RADIAL_SHARE * min(1.0, heat / RADIAL_FADE_HEAT))
+        touching, pushes = touching_pushes(centres, self.reach, self.i, self.j, self.blocked,
+                                           RADIAL_SHARE * min(1.0, heat / RADIAL_FADE_HEAT))
+        pushes *= K_CONTACT
+        i, j = self.i[touching], self.j[touching]
+        share_i, share_j = self.share_i[touching], self.share_j[touching]
         count = len(acc)
         for axis in (0, 1):
-            acc[:, axis] += (np.bincount(self.j, pushes[:, axis] * self.share_j, minlength=count)
-                             - np.bincount(self.i, pushes[:, axis] * self.share_i,
-                                           minlength=count))
-
+            acc[:, axis] += (np.bincount(j, pushes[:, axis] * share_j, minlength=count)
+                             - np.bincount(i, pushes[:, axis] * share_i, minlength=count))
 
     def overlapping(self, centres: np.ndarray) -> bool:
         """Whether any two items' rectangles (not their halos) overlap."""

@@ -172,10 +172,12 @@ class _Snapper:
         scores = misses_after(distance, same, shifts)
         now = float(scores[np.searchsorted(shifts, 0.0)])
         order = np.lexsort((np.abs(shifts), scores))
-        blockers = self.blockers(row, axis)
+        blockers = None  # found once a move is worth testing (most calls have none)
         for k in order[:MAX_TRIES]:
             if scores[k] >= now - TOLERANCE_MM:
                 break
+            if blockers is None:
+                blockers = self.blockers(row, axis)
             onto_line = bool((np.abs(distance[same] - shifts[k]) <= ALIGNED_MM).any())
             if self.allowed(row, axis, shifts[k], onto_line, blockers):
                 self.moved_from[row] = values
