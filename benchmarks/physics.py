@@ -100,12 +100,12 @@ def timed_finalize(finalize):
 Engine.finalize = timed_finalize(Engine.finalize)
 
 
-def run_fast(scene: Scene, repeats: int = 3) -> Run:
+def run_fast(scene: Scene, repeats: int = 3, params: Params = Params()) -> Run:
     """Best of ``repeats`` settles (the machine is shared: the least disturbed run is the
     fairest figure, and d3 gets the same); the final pass's share is that run's."""
     best = None
     for _ in range(repeats):
-        engine = loaded(scene)
+        engine = loaded(scene, params)
         FINAL_PASS_SECONDS[0] = 0.0
         start = time.perf_counter()
         report = engine.settle()
@@ -266,7 +266,8 @@ def main() -> None:
         print(row(f"{scene.name} ({scene.coverage:.0%}) | start",
                   measure(loaded(scene), 0.0, 0, False)))
         fast = run_fast(scene)
-        runs = [("fast", fast)]
+        runs = [("fast", fast), ("fast, guides off (the features d3 has)",
+                                 run_fast(scene, params=Params(guides=0.0)))]
         if not args.skip_paper:
             for name, decay in PAPER_COOLING:
                 runs.append((f"paper, cooling {name}", run_paper(scene, args.paper_cap, decay)))

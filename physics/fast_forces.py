@@ -151,10 +151,13 @@ def blocked_axes(sizes: np.ndarray, i: np.ndarray, j: np.ndarray, page_w_mm: flo
     of stacking with the gutter between them.  A pair's room is the page less the walls of
     whichever of the two stands on each side, in the order that leaves more."""
     extent = np.array([page_w_mm, page_h_mm])
-    if insets is None:
-        room = extent
+    if not len(i):
+        return np.zeros((0, 2), dtype=bool)
+    near, far = (np.zeros((1, 2)), np.zeros((1, 2))) if insets is None else (
+        np.broadcast_to(np.asarray(side, float), sizes.shape) for side in insets)
+    if (near == near[0]).all() and (far == far[0]).all():
+        room = extent - near[0] - far[0]  # one margin for all: no need to look pair by pair
     else:
-        near, far = (np.broadcast_to(np.asarray(side, float), sizes.shape) for side in insets)
         room = extent - np.minimum(near[i] + far[j], near[j] + far[i])
     need = sizes[i] + sizes[j] + gutter_mm
     blocked = need > room
