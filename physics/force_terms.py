@@ -22,7 +22,9 @@ K_CONTACT = 0.2  # fraction of a penetration turned into acceleration per step
 K_WALL = 0.2
 K_ANCHOR = 0.2  # anchor spring per step^2 at the default beta: as stiff as a contact
 BETA_DEFAULT = 1.0  # Params.beta at which a fast anchor is as stiff as a contact
-RADIAL_FADE_HEAT = 0.25  # below this heat the sliding (radial) push fades out
+RADIAL_FADE_HEAT = 0.25
+MIN_LIST_STEPS = 5  # a neighbour list rebuilt sooner than this doubles its skin
+MAX_SKIN_GROWTH = 4  # below this heat the sliding (radial) push fades out
 
 
 class Force(Protocol):
@@ -45,9 +47,19 @@ class ContactPushes:
         self.gap, self.skin, self.page, self.gutter_mm = gap, skin, page, gutter_mm
         self.scale, self.rng, self.insets = scale, rng, insets
         self.halves = bodies.sizes / 2
+        self.base_skin, self.steps_since_build = skin, 0
         self.build()
 
     def build(self) -> None:
+        # A list that lasts a few steps only costs more to rebuild than its pairs cost to
+        # visit: while the page is hot (items move up to the speed limit every step) the skin
+        # widens, and narrows back once lists last.
+        if self.steps_since_build:
+            if self.steps_since_build < MIN_LIST_STEPS:
+                self.skin = min(self.skin * 2, self.base_skin * MAX_SKIN_GROWTH)
+            elif self.steps_since_build > 4 * MIN_LIST_STEPS:
+                self.skin = max(self.skin / 2, self.base_skin)
+        self.steps_since_build = 0
         bodies, reach = self.bodies, self.gap + self.skin
         i, j = candidate_pairs(bodies.centres, self.halves, self.rows_active, self.roots, reach)
         if separate_coincident(bodies, i, j, self.movable, self.rng, self.scale):
@@ -63,6 +75,7 @@ class ContactPushes:
         self.built_at = bodies.centres.copy()
 
     def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
+        self.steps_since_build += 1
         if np.abs(centres - self.built_at).max(initial=0.0) > self.skin / 2:
             self.build()
         touching, pushes = touching_pushes(centres, self.reach, self.i, self.j, self.blocked,
