@@ -29,6 +29,8 @@ way first and the step does not run.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
 from floatpage.physics.alignment import NEAR_MM
@@ -129,7 +131,7 @@ class _Snapper:
     def mine(self, row: int, axis: int) -> tuple[np.ndarray, np.ndarray]:
         """The group's features on ``axis`` and their kinds (0 edge, 1 centre)."""
         lines = self.lines[axis][self.members[row]]
-        return lines.ravel(), np.tile([0.0, 1.0, 0.0], len(lines))
+        return lines.ravel(), feature_kinds(len(lines))
 
     def pool(self, row: int, axis: int, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Every other active item's features, and the page's lines, within the window of
@@ -140,7 +142,7 @@ class _Snapper:
         near[self.members[row]] = False
         theirs = lines[near]
         return (np.concatenate([theirs.ravel(), self.page_values[self.bleeds[row]][axis]]),
-                np.concatenate([np.tile([0.0, 1.0, 0.0], len(theirs)),
+                np.concatenate([feature_kinds(len(theirs)),
                                 self.page_kinds[self.bleeds[row]][axis]]))
 
     def near(self, moved: list[int], axis: int) -> np.ndarray:
@@ -234,6 +236,15 @@ class _Snapper:
         if abs(shift) <= NUDGE_MM:
             return True  # a nudge onto a line: forces change too little to disturb the rest
         return self.rest is None or self.rest.keeps_rest(members, axis, shift, onto_line)
+
+
+@lru_cache(maxsize=256)
+def feature_kinds(count: int) -> np.ndarray:
+    """0, 1, 0 (edge, centre, edge) for ``count`` items' features on one axis, kept once made
+    (read-only): np.tile's set-up cost a tenth of the snapping's time."""
+    kinds = np.tile([0.0, 1.0, 0.0], count)
+    kinds.flags.writeable = False
+    return kinds
 
 
 def candidate_shifts(distance: np.ndarray, reach: float) -> np.ndarray:
