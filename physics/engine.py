@@ -69,6 +69,7 @@ class Engine:
         self._rows: dict[str, int] = {}
         self._heat = 1.0
         self._settled = True
+        self._spread_out = False  # the fast mode's page has spread and cools onto its guides
         self._rng = np.random.default_rng(params.seed)
 
     # ----- reading -------------------------------------------------------------------------
@@ -142,6 +143,7 @@ class Engine:
         _positive("heat", heat)
         self._heat = min(float(heat), 1.0)
         self._settled = False
+        self._spread_out = False
 
     def mark_settled(self) -> None:
         """Declare the current layout at rest: velocities zero, nothing runs until an edit or
@@ -273,9 +275,14 @@ class Engine:
 
     # ----- running -------------------------------------------------------------------------
     def _run(self, steps: int) -> int:
-        runner = run_paper if self.params.mode == "paper" else run_fast
-        done, self._heat, self._settled = runner(self._bodies, self.page_w_mm, self.page_h_mm,
-                                                 self.params, self._heat, steps, self._rng)
+        if self.params.mode == "paper":
+            done, self._heat, self._settled = run_paper(
+                self._bodies, self.page_w_mm, self.page_h_mm, self.params, self._heat, steps,
+                self._rng)
+        else:
+            done, self._heat, self._settled, self._spread_out = run_fast(
+                self._bodies, self.page_w_mm, self.page_h_mm, self.params, self._heat, steps,
+                self._rng, self._spread_out)
         return done
 
     def advance(self, steps: int | None = None, *, budget_s: float | None = None,

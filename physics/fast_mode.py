@@ -75,15 +75,18 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
 
 
 def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params, heat: float,
-             steps: int, rng: np.random.Generator) -> tuple[int, float, bool]:
+             steps: int, rng: np.random.Generator, spread_out: bool = False
+             ) -> tuple[int, float, bool, bool]:
     """Advance up to ``steps`` steps in place; stop once the page is still.
 
     Each step: the forces' sum (fast_forces), semi-implicit Euler with friction and a speed
-    limit, hard walls, constraints, cooling. Returns (steps run, heat after them, settled).
+    limit, hard walls, constraints, cooling. Returns (steps run, heat after them, settled,
+    spread out: whether the page has spread and now cools onto its guides, which the caller
+    hands back to the next call, as the editor runs a page one frame at a time).
     """
     free = bodies.free
     if not free.any() or steps <= 0:
-        return 0, heat, not free.any()
+        return 0, heat, not free.any(), spread_out
     scale = page_scale(page_w_mm, page_h_mm)
     active = bodies.active
     free_rows = np.flatnonzero(free)
@@ -106,7 +109,7 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     speed_limit = SPEED_LIMIT_MM * scale
     any_followers = bool(followers.any())
     cooling = cooling_rate(params.heat_decay, int(active.sum()))
-    keep = 1.0 - cooling
+    keep = 1.0 - (max(cooling, GUIDED_COOLING) if spread_out else cooling)
     # Once the page is still, the spreading is over: rather than cool slowly on while nothing
     # moves, the heat drops to where the alignment guides pull, and cools from there four times
     # as fast, until the page is still on its lines below the heat at which the lines hold
@@ -148,9 +151,10 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
                 top_speed = walled
         if top_speed < still_speed:
             if heat <= settled_below:
-                return done, heat, True
+                return done, heat, True, spread_out
             heat = min(heat, guided_heat)  # spread out and still: on to where the guides pull
             keep = min(keep, 1.0 - GUIDED_COOLING)
+            spread_out = True
         elif heat <= params.heat_min:
-            return done, heat, True
-    return steps, heat, False
+            return done, heat, True, spread_out
+    return steps, heat, False, spread_out
