@@ -6,12 +6,13 @@ in another order and settles from there.
 """
 
 import numpy as np
+import pytest
 from hypothesis import given, settings, strategies as st
 
 from floatpage.physics import Engine
 from floatpage.physics.finalize import pair_clearances
 from floatpage.physics.geometry import grown_cover
-from floatpage.physics.packing import packed_layout, spread
+from floatpage.physics.packing import packed_layout, skyline_pack, spread
 from seeded_scenes import load, mixed_scene
 
 GUTTER = 3.0
@@ -38,13 +39,15 @@ def test_a_packing_keeps_the_gutter_inside_the_room(sizes):
 def test_spreading_a_packing_never_narrows_a_gap():
     rng = np.random.default_rng(3)
     sizes = rng.uniform(5, 40, (12, 2))
-    centres = packed_layout(sizes, np.zeros(2), np.array([200.0, 280.0]), GUTTER)
-    assert centres is not None
-    squeezed = centres * 0.9 + sizes / 2 * 0.1  # pulled towards the corner, still apart?
-    if clearances(squeezed, sizes).min() >= GUTTER:
-        widened = spread(squeezed, sizes, np.zeros(2), np.array([200.0, 280.0]))
-        assert (clearances(widened, sizes) >= clearances(squeezed, sizes) - 1e-9).all()
-    assert (centres + sizes / 2).max(axis=0)[0] > 190  # spread out to the room's far side
+    room = np.array([200.0, 280.0])
+    corners = skyline_pack(sizes + GUTTER, *(room + GUTTER))  # packed into the top-left corner
+    assert corners is not None
+    packed = corners + sizes / 2
+    widened = spread(packed, sizes, np.zeros(2), room)
+    assert (clearances(widened, sizes) >= clearances(packed, sizes) - 1e-9).all()
+    assert clearances(packed, sizes).min() >= GUTTER - 1e-9
+    assert (widened + sizes / 2).max(axis=0) == pytest.approx(room)  # out to the far walls
+    assert (widened - sizes / 2).min(axis=0) == pytest.approx([0.0, 0.0])
 
 
 def test_large_photos_stacked_in_the_margins_get_the_gutter():
