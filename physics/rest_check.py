@@ -19,7 +19,7 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import (
-    blocked_axes, candidate_pairs, contact_pushes, wall_pushes_in, wall_rest_box,
+    blocked_axes, candidate_pairs, touching_pushes, wall_pushes_in, wall_rest_box,
 )
 from floatpage.physics.force_terms import BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL
 
@@ -49,6 +49,7 @@ class RestCheck:
         self.i, self.j = i, j
         self.share_i, self.share_j = inverse[i] / total, inverse[j] / total
         self.blocked = blocked_axes(bodies.sizes, i, j, *page, 0.0, insets)
+        self.reach = self.halves[i] + self.halves[j] + gap  # each pair's, as the contacts keep it
         near, far = insets  # where each row's walls stand (Bodies.insets)
         self.rest_low, self.rest_high = wall_rest_box(self.halves, *page, gap / 2 + near,
                                                       gap / 2 + far)
@@ -70,8 +71,10 @@ class RestCheck:
         """Net acceleration (n, 2), right for ``rows`` (``pairs`` must hold every pair that
         touches them), with the items at ``centres``."""
         i, j = self.i[pairs], self.j[pairs]
-        pushes = K_CONTACT * contact_pushes(centres, self.halves, i, j, self.gap,
-                                            self.blocked[pairs], 0.0)
+        touching, pushes = touching_pushes(centres, self.reach[pairs], i, j,
+                                           self.blocked[pairs], 0.0)
+        pushes *= K_CONTACT
+        pairs, i, j = pairs[touching], i[touching], j[touching]
         count = self.bodies.count
         acc = np.empty((count, 2))
         for axis in (0, 1):
