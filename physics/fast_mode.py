@@ -69,8 +69,11 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
     anchored = ~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard
     if anchored.any():
         forces.append(AnchorPulls(bodies, anchored, params.beta))
-    forces += guide_pulls(bodies, roots, (page_w_mm, page_h_mm),
-                          page_margin(params.margin_mm, page_w_mm, page_h_mm), params.guides)
+    if grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm) <= ROOMY_COVER:
+        # On a fuller page alignment gives way (as the snap does, Engine.finalize): a pull
+        # against a pressed crowd only kept it creeping until the lines' hold stopped it.
+        forces += guide_pulls(bodies, roots, (page_w_mm, page_h_mm),
+                              page_margin(params.margin_mm, page_w_mm, page_h_mm), params.guides)
     return forces
 
 
@@ -114,14 +117,14 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     # moves, the heat drops to where the alignment guides pull, and cools from there four times
     # as fast, until the page is still on its lines below the heat at which the lines hold
     # (without guides there is nothing more to wait for).
-    guides_on = params.guides > 0
+    roomy = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm) <= ROOMY_COVER
+    guides_on = params.guides > 0 and roomy  # fast_forces leaves them out on a fuller page
     guided_heat = GUIDE_HEAT * 0.9
     settled_below = HOLD_HEAT if guides_on else np.inf
     count = bodies.count
     forces = fast_forces(bodies, page_w_mm, page_h_mm, params, rng, roots, movable,
                          inverse_mass, gap, skin, near, far)
     contacts = forces[0]
-    roomy = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm) <= ROOMY_COVER
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))
         for force in forces:

@@ -25,6 +25,8 @@ def grown_cover(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
     active = bodies.active
     if not active.any():
         return 0.0
+    near, far = (np.broadcast_to(np.asarray(side, float), bodies.sizes.shape)
+                 for side in (near, far))
     room = (np.array([page_w_mm, page_h_mm]) - np.max(near[active], axis=0)
             - np.max(far[active], axis=0))
     grown = float(((bodies.sizes[active] + gutter_mm).prod(axis=1)).sum())
