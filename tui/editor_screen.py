@@ -275,18 +275,19 @@ class EditorScreen(Screen):
 
     def redraw(self, measure: bool = True) -> None:
         """Paint the preview, the status lines and the top bar.  ``measure=False`` (a key's
-        own answer, while the physics it woke runs) keeps the quality measured last: measuring
-        the page cost 2 ms of the answer, and the physics frame right after measures it."""
+        own answer, while the physics it woke runs) leaves the status lines to the physics
+        frame right after: measuring the page cost 2 ms of the answer, and the lines' change
+        from "still" to "settling…" (a restyle and two rows to compose) 1-2 ms more."""
         self.preview.show(self.page_view())
         engine = self.session.engine
         moving = self.running and not engine.settled
-        summary, words = self.quality_summary() if measure or not moving or not self._quality[0] \
-            else self._quality
-        self.query_one(StatusLine).show(Status(
-            state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
-            steps_per_s=self.meter.steps_per_s, quality=summary,
-            frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
-            details=self.details))
+        if measure or not moving or not self._quality[0]:
+            summary, words = self.quality_summary()
+            self.query_one(StatusLine).show(Status(
+                state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
+                steps_per_s=self.meter.steps_per_s, quality=summary,
+                frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
+                details=self.details))
         bar = self.page_bar_text()
         if bar != self._page_bar:  # an unchanged bar costs no bytes
             self._page_bar = bar

@@ -92,9 +92,13 @@ class ShadowScreen:
         out: list[str] = []
         position = 0
         for match in TOKEN.finditer(text):
-            if match.start() > position:
-                self._text(out, text[position:match.start()])
-            self._token(out, match)
+            start = match.start()
+            if start > position:
+                self._text(out, text[position:start])
+            if match.group(4) == "m" and not match.group(1) and not match.group(3):
+                self._sgr(out, match.group(0), match.group(2))
+            else:
+                self._token(out, match)
             position = match.end()
         if position < len(text):
             self._text(out, text[position:])
@@ -173,7 +177,9 @@ class ShadowScreen:
                 self.style = None
                 return
         style = self.style
-        if style is not None and want.fg != style.fg and shown == " " * len(shown) \
+        if style is want:
+            return
+        if style is not None and want.fg != style.fg and not shown.strip(" ") \
                 and not (want.flags | style.flags) & SHOWN_ON_BLANKS:
             want = Style(want.flags, style.fg, want.bg)
         out.append(transition(style, want))
@@ -337,7 +343,8 @@ class ShadowScreen:
             if key is not None:
                 char = text[index]
                 shown = blank if char == " " else key
-                if chars[col + index] == char and keys[col + index] == shown:
+                known = keys[col + index]
+                if chars[col + index] == char and (known is shown or known == shown):
                     index += 1
                     continue
             start = index
@@ -346,7 +353,8 @@ class ShadowScreen:
                 if key is not None:
                     char = text[index]
                     shown = blank if char == " " else key
-                    if chars[col + index] == char and keys[col + index] == shown:
+                    known = keys[col + index]
+                    if chars[col + index] == char and (known is shown or known == shown):
                         break
                 index += 1
             run = text[start:index]
