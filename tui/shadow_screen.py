@@ -154,7 +154,7 @@ class ShadowScreen:
     # -- styles -----------------------------------------------------------------------------
 
     def _sgr(self, out: list[str], whole: str, params: str) -> None:
-        """Follow the style asked for; send it only before what shows it (as sgr_compactor)."""
+        """Follow the style asked for; `_settle` sends it only before what shows it."""
         wanted = apply_sgr(self.wanted, params)
         if wanted is None:  # a code not followed: pass it on as it came, over the style
             if self.wanted is not None:  # it was meant to change
