@@ -15,6 +15,7 @@ from __future__ import annotations
 import os
 import selectors
 import signal
+import threading
 from codecs import getincrementaldecoder
 
 from textual import events
@@ -57,18 +58,24 @@ class HangupAwareDriver(LinuxDriver):
         super().__init__(*args, **kwargs)
         self.shadow = ShadowScreen(80, 24)
         self._screen_stale = True  # resized (or not yet sized): the shadow starts again
+        # Textual writes from its input thread too (answers to its start-up queries turn on
+        # in-band resizes and pixel mouse reports): each write is rewritten against the shadow
+        # and queued in one piece, or the terminal would get them in another order than the
+        # shadow followed.
+        self._write_lock = threading.Lock()
         self.link = LinkMeter()
         self._file = MeteredFile(self._file, self.link)
 
     def write(self, data: str) -> None:
         """The same screen for fewer bytes (over SSH each byte counts, issue 11), and after a
         physics frame a query whose answer tells when the terminal has drawn it."""
-        if self._screen_stale:
-            self._screen_stale = False
-            self.shadow.reset(*self._get_terminal_size())
-        data = self.shadow.rewrite(data) + self.link.probe()
-        self.link.queued(len(data), len(data.encode("utf-8", "replace")))
-        super().write(data)
+        with self._write_lock:
+            if self._screen_stale:
+                self._screen_stale = False
+                self.shadow.reset(*self._get_terminal_size())
+            data = self.shadow.rewrite(data) + self.link.probe()
+            self.link.queued(len(data), len(data.encode("utf-8", "replace")))
+            super().write(data)
 
     def start_application_mode(self) -> None:
         """Textual's, and a resize makes the shadow screen start again: a terminal may reflow
