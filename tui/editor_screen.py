@@ -10,6 +10,7 @@ editor sends nothing over the wire.
 
 from __future__ import annotations
 
+import copy
 import datetime
 import math
 import re
@@ -18,6 +19,7 @@ from functools import partial
 from pathlib import Path
 from typing import Callable, TypeVar
 
+import numpy as np
 from rich.markup import escape
 from rich.text import Text
 from textual import work
@@ -125,6 +127,7 @@ class EditorScreen(Screen):
         self._page_bar = None
         self.labels = False  # `n`: every item's id on the preview, not only the selected one's
         self._quality_at = float("-inf")
+        self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
 
     def compose(self) -> ComposeResult:
         yield Label("", id="page-bar")
@@ -184,13 +187,36 @@ class EditorScreen(Screen):
     def finish_settling(self) -> None:
         """What `floatpage settle` does at the end, the editor does too: the no-overlap pass,
         when the physics came to rest with items overlapping or off the page (an inserted
-        picture stayed on top, "settled · 2 overlaps", defect 7; so did a turned page, 9)."""
+        picture stayed on top, "settled · 2 overlaps", defect 7; so did a turned page, 9).
+
+        The pass runs on a copy, in a thread: on a page too full for its gutter it took
+        0.5-0.9 s (the calendar after a held arrow), and run here it held back every key
+        pressed meanwhile; the calendar's keys answered in 42 or 131 ms, by whether they
+        came during it (issue 11)."""
         engine = self.session.engine
         if self.session.held_id is not None:
             return
         quality = engine.quality()
         if quality.overlapping_pairs or quality.off_page:
-            engine.finalize()
+            self.passes_running += 1
+            self.finalize_worker(engine, copy.deepcopy(engine), engine.bodies.centres.copy())
+
+    @work(thread=True, group="finalize")
+    def finalize_worker(self, engine, trial, centres: np.ndarray) -> None:
+        try:
+            trial.finalize()
+        finally:
+            self.app.call_from_thread(self.adopt_finalized, engine, trial, centres)
+
+    def adopt_finalized(self, engine, trial, centres: np.ndarray) -> None:
+        """Take the pass's result, if the page is still as it was when the pass began; else
+        an edit came first, and its own rest runs the pass again."""
+        self.passes_running -= 1
+        session = self.session
+        if session.engine is engine and session.held_id is None and engine.settled \
+                and np.array_equal(engine.bodies.centres, centres):
+            session.engine = trial
+        self.redraw()
 
     def wake(self) -> None:
         """Start the frame timer if the physics has something to do, a screen update later:
@@ -240,22 +266,28 @@ class EditorScreen(Screen):
             return self.export_state
         if not self.running:
             return "paused"
-        return "settled" if self.session.engine.settled else "settling"
+        return "settled" if self.at_rest else "settling"
+
+    @property
+    def at_rest(self) -> bool:
+        """Settled, and the no-overlap pass (if it was needed) done."""
+        return self.session.engine.settled and not self.passes_running
 
     def redraw(self, measure: bool = True) -> None:
         """Paint the preview, the status lines and the top bar.  ``measure=False`` (a key's
-        own answer, while the physics it woke runs) keeps the quality measured last: measuring
-        the page cost 2 ms of the answer, and the physics frame right after measures it."""
+        own answer, while the physics it woke runs) leaves the status lines to the physics
+        frame right after: measuring the page cost 2 ms of the answer, and the lines' change
+        from "still" to "settling…" (a restyle and two rows to compose) 1-2 ms more."""
         self.preview.show(self.page_view())
         engine = self.session.engine
         moving = self.running and not engine.settled
-        summary, words = self.quality_summary() if measure or not moving or not self._quality[0] \
-            else self._quality
-        self.query_one(StatusLine).show(Status(
-            state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
-            steps_per_s=self.meter.steps_per_s, quality=summary,
-            frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
-            details=self.details))
+        if measure or not moving or not self._quality[0]:
+            summary, words = self.quality_summary()
+            self.query_one(StatusLine).show(Status(
+                state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
+                steps_per_s=self.meter.steps_per_s, quality=summary,
+                frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
+                details=self.details))
         bar = self.page_bar_text()
         if bar != self._page_bar:  # an unchanged bar costs no bytes
             self._page_bar = bar
@@ -637,6 +669,8 @@ class EditorScreen(Screen):
     # -- files -------------------------------------------------------------------------------
 
     def action_save(self) -> None:
+        if self.passes_running:  # the file gets the pass's result, as the screen is about to
+            self.session.engine.finalize()
         try:
             path = self.session.save()
         except Exception as error:  # the work stays in the editor; say why and let them retry

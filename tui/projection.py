@@ -46,13 +46,17 @@ class Projection:
     def rect(self, x_mm: float, y_mm: float, w_mm: float, h_mm: float) -> tuple[int, int, int, int]:
         """Pixel box (x0, y0, x1, y1), end-exclusive, of a rectangle centred at (x, y).
 
-        At least one pixel each way, so the smallest item stays visible.
+        Its size in pixels depends on the rectangle's size alone, not on where it is: with
+        both edges rounded on their own, a moving picture grew and shrank by a pixel row, so
+        it was scaled again and every one of its cells resent (one arrow on the greeting card
+        drew its photo three times, 8 KB each over SSH; issue 11). At least one pixel each
+        way, so the smallest item stays visible.
         """
         fx0, fy0 = self.to_pixels(x_mm - w_mm / 2, y_mm - h_mm / 2)
-        fx1, fy1 = self.to_pixels(x_mm + w_mm / 2, y_mm + h_mm / 2)
         x0, y0 = round(fx0), round(fy0)
-        x1, y1 = max(round(fx1), x0 + 1), max(round(fy1), y0 + 1)
-        return x0, y0, x1, y1
+        width = max(round(w_mm * self.scale), 1)
+        height = max(round(h_mm * self.scale), 1)
+        return x0, y0, x0 + width, y0 + height
 
     def cell_of(self, x_mm: float, y_mm: float) -> tuple[int, int]:
         """(column, row) of the cell holding a page point."""

@@ -6,22 +6,15 @@ is half-block pixels, nearly every cell a style of its own, so in truecolour a c
 of them colour codes. Terminals keep the current style until told otherwise, so the stream
 only has to say what changes from one cell to the next (as curses and mosh do).
 
-`SgrCompactor.compact` rewrites the driver's output with the same meaning: it follows the
-style the original stream asks for, and just before anything that shows that style (text,
-a line feed, an erase, any sequence it does not know), it sends the change from the style the
-terminal has to the one asked for. Cursor movement sends nothing, since it paints nothing.
-A style code it cannot follow passes through unchanged, and the terminal's style counts as
-unknown until the next full reset. The compactor keeps the terminal's style between writes.
+This module follows styles: `apply_sgr` gives the style after a code, and `transition` the
+shortest code from the style the terminal has to the one wanted. `shadow_screen` uses them to
+send, just before a cell is written, only the change its style needs.
 """
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from functools import lru_cache
-
-# SGR (style) sequences, and cursor movement that paints nothing; everything else is output.
-TOKEN = re.compile(r"\x1b\[([0-9;:]*)m|\x1b\[[0-9;]*[HfABCDEFGd]")
 
 FLAG_ON = {"1": "bold", "2": "dim", "3": "italic", "4": "underline", "5": "blink",
            "6": "blink2", "7": "reverse", "8": "conceal", "9": "strike",
@@ -114,57 +107,3 @@ def transition(have: Style | None, want: Style) -> str:
     if len(diff) > len(";".join(full)):
         diff = ";".join(full)
     return f"\x1b[{diff}m"
-
-
-class SgrCompactor:
-    """Rewrites one terminal's output stream, write by write, to send only style changes."""
-
-    def __init__(self) -> None:
-        self.terminal: Style | None = None  # what the terminal has (None: unknown)
-        self.wanted: Style | None = DEFAULT  # what the stream has asked for so far
-        self.raw_pending = ""  # style codes passed on verbatim while the style is unknown
-
-    def _settle(self, out: list[str], shown: str = "x") -> None:
-        """Bring the terminal to the wanted style before `shown` is written. Blanks show no
-        foreground colour, so before spaces the terminal keeps its own (the page's surround
-        and blocks are runs of spaces)."""
-        wanted, terminal = self.wanted, self.terminal
-        if wanted is None:
-            if self.raw_pending:
-                out.append(self.raw_pending)
-                self.raw_pending = ""
-            self.terminal = None
-            return
-        if (terminal is not None and wanted.fg != terminal.fg and shown.strip(" ") == ""
-                and not (wanted.flags | terminal.flags) & SHOWN_ON_BLANKS):
-            wanted = Style(wanted.flags, terminal.fg, wanted.bg)
-        out.append(transition(terminal, wanted))
-        self.terminal = wanted
-
-    def compact(self, text: str) -> str:
-        out: list[str] = []
-        position = 0
-        for match in TOKEN.finditer(text):
-            if match.start() > position:
-                shown = text[position:match.start()]
-                self._settle(out, shown)
-                out.append(shown)
-            params = match.group(1)
-            if params is None:  # cursor movement: paints nothing, needs no style
-                out.append(match.group(0))
-            else:
-                wanted = apply_sgr(self.wanted, params)
-                if wanted is None:  # a code we do not follow: pass it on as it came,
-                    if self.wanted is not None:  # over the style it was meant to change
-                        self._settle(out)
-                    self.raw_pending += match.group(0)
-                elif self.wanted is None:  # a reset ends the unknown stretch
-                    self.raw_pending = ""
-                    self.terminal = None
-                self.wanted = wanted
-            position = match.end()
-        if position < len(text):
-            self._settle(out, text[position:])
-            out.append(text[position:])
-        self._settle(out)  # end every write in the style the stream left (usually reset)
-        return "".join(out)

@@ -1,7 +1,8 @@
 """Textual's Linux driver, with three changes: end of input is a hang-up, not a busy loop;
-the output sends colour codes only where the colour changes (`sgr_compactor`); and it
-measures its link for the frame pacer (`frame_pacer.LinkMeter`: cursor-position queries
-after physics frames, whose answers it takes out of the input, and output not yet flushed).
+the output sends only the cells the terminal does not already show, and colour codes only
+where the colour changes (`shadow_screen`); and it measures its link for the frame pacer
+(`frame_pacer.LinkMeter`: cursor-position queries after physics frames, whose answers it
+takes out of the input, and output not yet flushed).
 
 When the terminal goes away, Textual's input thread finds its file descriptor readable with
 nothing to read and goes round again at once, forever: the editor stayed alive at 50-70 % CPU
@@ -14,6 +15,7 @@ from __future__ import annotations
 import os
 import selectors
 import signal
+import threading
 from codecs import getincrementaldecoder
 
 from textual import events
@@ -22,7 +24,7 @@ from textual._xterm_parser import XTermParser
 from textual.drivers.linux_driver import LinuxDriver
 
 from floatpage.tui.frame_pacer import LinkMeter
-from floatpage.tui.sgr_compactor import SgrCompactor
+from floatpage.tui.shadow_screen import ShadowScreen
 
 
 class MeteredFile:
@@ -54,16 +56,45 @@ class MeteredFile:
 class HangupAwareDriver(LinuxDriver):
     def __init__(self, *args, **kwargs) -> None:
         super().__init__(*args, **kwargs)
-        self.compactor = SgrCompactor()
+        self.shadow = ShadowScreen(80, 24)
+        self._screen_stale = True  # resized (or not yet sized): the shadow starts again
+        # Textual writes from its input thread too (answers to its start-up queries turn on
+        # in-band resizes and pixel mouse reports): each write is rewritten against the shadow
+        # and queued in one piece, or the terminal would get them in another order than the
+        # shadow followed.
+        self._write_lock = threading.Lock()
         self.link = LinkMeter()
         self._file = MeteredFile(self._file, self.link)
 
     def write(self, data: str) -> None:
         """The same screen for fewer bytes (over SSH each byte counts, issue 11), and after a
         physics frame a query whose answer tells when the terminal has drawn it."""
-        data = self.compactor.compact(data) + self.link.probe()
-        self.link.queued(len(data), len(data.encode("utf-8", "replace")))
-        super().write(data)
+        with self._write_lock:
+            if self._screen_stale:
+                self._screen_stale = False
+                self.shadow.reset(*self._get_terminal_size())
+            data = self.shadow.rewrite(data) + self.link.probe()
+            self.link.queued(len(data), len(data.encode("utf-8", "replace")))
+            super().write(data)
+
+    def start_application_mode(self) -> None:
+        """Textual's, and a resize makes the shadow screen start again: a terminal may reflow
+        what it shows, and the cells it holds are no longer the ones remembered."""
+        super().start_application_mode()
+        textual_handler = signal.getsignal(signal.SIGWINCH)
+
+        def on_resize(signum, frame) -> None:
+            self._screen_stale = True
+            if callable(textual_handler):
+                textual_handler(signum, frame)
+
+        if callable(textual_handler):
+            signal.signal(signal.SIGWINCH, on_resize)
+
+    def process_message(self, message) -> None:
+        if isinstance(message, events.Resize):  # an in-band resize report
+            self._screen_stale = True
+        super().process_message(message)
 
     def run_input_thread(self) -> None:
         """Textual's loop (textual/drivers/linux_driver.py), stopping at end of input."""

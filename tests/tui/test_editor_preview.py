@@ -119,3 +119,15 @@ def test_thumbnails_are_cached_and_a_missing_file_is_none(tmp_path):
     assert first.shape == (6, 8, 3)
     assert thumbnail(path, 8, 6) is first
     assert thumbnail(tmp_path / "missing.png", 8, 6) is None
+
+
+def test_a_moving_item_keeps_its_size_in_pixels():
+    """Both edges rounded on their own made a moving picture a pixel taller or shorter now and
+    then, so it was scaled again and every one of its cells resent (issue 11). Anywhere on
+    the page, in steps of a twentieth of a millimetre, a 93 x 124 mm box is one size."""
+    p = Projection.fit(98, 27, 127.0, 178.0)
+    sizes = set()
+    for step in range(400):
+        x0, y0, x1, y1 = p.rect(50.0 + step / 20, 70.0 + step / 20, 93.0, 124.0)
+        sizes.add((x1 - x0, y1 - y0))
+    assert sizes == {(round(93.0 * p.scale), round(124.0 * p.scale))}
