@@ -20,7 +20,7 @@ import numpy as np
 
 FILL = 0.9  # halo-grown item area / page area that target_gap aims at
 RADIAL_SHARE = 0.5  # share of a push directed along the line between the centres
-# A push prefers the axis of least penetration by the 4th power of the depths (see contact_pushes).
+# A push prefers the axis of least penetration by the 4th power of the depths (see touching_pushes).
 
 
 def target_gap(sizes: np.ndarray, page_w_mm: float, page_h_mm: float, gutter_mm: float,

@@ -51,10 +51,13 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
                 rng: np.random.Generator, roots: np.ndarray, movable: np.ndarray,
                 inverse_mass: np.ndarray, gap: float, skin: float,
                 margins: np.ndarray | float = 0.0,
-                far_margins: np.ndarray | float | None = None) -> list[Force]:
+                far_margins: np.ndarray | float | None = None, align: bool = True) -> list[Force]:
     """The forces the fast mode sums every step; a new force is one more entry here (the
     contacts come first: the step loop asks them whether any items still overlap).
-    ``margins`` and ``far_margins`` are where the walls stand (Bodies.insets)."""
+    ``margins`` and ``far_margins`` are where the walls stand (Bodies.insets); ``align`` is
+    False on a page too full to line up (geometry.ROOMY_COVER), where alignment gives way (as
+    the snap does, Engine.finalize): a guide's pull against a pressed crowd only kept it
+    creeping until the lines' hold stopped it."""
     halves = bodies.sizes / 2
     near = as_insets(margins)
     far = near if far_margins is None else as_insets(far_margins)
@@ -69,9 +72,7 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
     anchored = ~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard
     if anchored.any():
         forces.append(AnchorPulls(bodies, anchored, params.beta))
-    if grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm) <= ROOMY_COVER:
-        # On a fuller page alignment gives way (as the snap does, Engine.finalize): a pull
-        # against a pressed crowd only kept it creeping until the lines' hold stopped it.
+    if align:
         forces += guide_pulls(bodies, roots, (page_w_mm, page_h_mm),
                               page_margin(params.margin_mm, page_w_mm, page_h_mm), params.guides)
     return forces
@@ -114,16 +115,16 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     cooling = cooling_rate(params.heat_decay, int(active.sum()))
     keep = 1.0 - (max(cooling, GUIDED_COOLING) if spread_out else cooling)
     # Once the page is still, the spreading is over: rather than cool slowly on while nothing
-    # moves, the heat drops to where the alignment guides pull, and cools from there four times
-    # as fast, until the page is still on its lines below the heat at which the lines hold
-    # (without guides there is nothing more to wait for).
+    # moves, the heat drops to where the alignment guides pull, and cools from there at
+    # GUIDED_COOLING a step, until the page is still on its lines below the heat at which the
+    # lines hold (without guides, or on a page too full to line up, nothing more to wait for).
     roomy = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm) <= ROOMY_COVER
-    guides_on = params.guides > 0 and roomy  # fast_forces leaves them out on a fuller page
+    guides_on = params.guides > 0 and roomy
     guided_heat = GUIDE_HEAT * 0.9
     settled_below = HOLD_HEAT if guides_on else np.inf
     count = bodies.count
     forces = fast_forces(bodies, page_w_mm, page_h_mm, params, rng, roots, movable,
-                         inverse_mass, gap, skin, near, far)
+                         inverse_mass, gap, skin, near, far, align=roomy)
     contacts = forces[0]
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))

@@ -22,9 +22,9 @@ K_CONTACT = 0.2  # fraction of a penetration turned into acceleration per step
 K_WALL = 0.2
 K_ANCHOR = 0.2  # anchor spring per step^2 at the default beta: as stiff as a contact
 BETA_DEFAULT = 1.0  # Params.beta at which a fast anchor is as stiff as a contact
-RADIAL_FADE_HEAT = 0.25
+RADIAL_FADE_HEAT = 0.25  # below this heat the sliding (radial) push fades out
 MIN_LIST_STEPS = 5  # a neighbour list rebuilt sooner than this doubles its skin
-MAX_SKIN_GROWTH = 4  # below this heat the sliding (radial) push fades out
+MAX_SKIN_GROWTH = 4  # ...up to this many times its size at the start
 
 
 class Force(Protocol):
@@ -33,7 +33,7 @@ class Force(Protocol):
 
 
 class ContactPushes:
-    """Items closer than the gap push apart along their contact (fast_forces.contact_pushes),
+    """Items closer than the gap push apart along their contact (fast_forces.touching_pushes),
     shared by inverse mass; pairs come from a Verlet list rebuilt when anything has moved
     half its skin."""
 
@@ -71,7 +71,8 @@ class ContactPushes:
         self.share_i, self.share_j = self.inverse_mass[i] / total, self.inverse_mass[j] / total
         self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm,
                                     self.insets)
-        self.reach = self.halves[i] + self.halves[j] + self.gap
+        self.touch_reach = self.halves[i] + self.halves[j]  # centre distance where they touch
+        self.reach = self.touch_reach + self.gap
         self.built_at = bodies.centres.copy()
 
     def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
@@ -90,8 +91,7 @@ class ContactPushes:
 
     def overlapping(self, centres: np.ndarray) -> bool:
         """Whether any two items' rectangles (not their halos) overlap."""
-        d = np.abs(centres[self.j] - centres[self.i])
-        depth = self.halves[self.i] + self.halves[self.j] - d
+        depth = self.touch_reach - np.abs(centres[self.j] - centres[self.i])
         return bool(((depth[:, 0] > 0) & (depth[:, 1] > 0)).any())
 
 
