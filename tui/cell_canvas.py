@@ -124,31 +124,45 @@ class CellCanvas:
             at += wide
 
 
-def changed_span(cached: tuple[bytes, tuple, Strip] | None, pair: np.ndarray, glyphs: tuple,
+def changed_span(cached: "CachedRow | None", pair: np.ndarray, glyphs: tuple,
                  cols: int) -> tuple[int, int]:
     """(first, end) columns of a row that differ from its cached version, one cell wider on
     each side for wide characters; the whole row when there is nothing to compare with."""
-    if cached is None or cached[2].cell_length != cols or len(cached[0]) != pair.nbytes:
+    if cached is None or cached.pair.shape != pair.shape:
         return 0, cols
-    old_pair = np.frombuffer(cached[0], dtype=pair.dtype).reshape(pair.shape)
-    columns = set(np.flatnonzero((old_pair != pair).any(axis=0)).tolist())
-    columns.update(col for col, _glyph in set(cached[1]) ^ set(glyphs))
+    columns = set(np.flatnonzero((cached.pair != pair).any(axis=0)).tolist())
+    columns.update(col for col, _glyph in set(cached.glyphs) ^ set(glyphs))
     if not columns:
         return 0, 0
     return max(min(columns) - 1, 0), min(max(columns) + 2, cols)
 
 
+@dataclass
+class CachedRow:
+    """One row as last painted: its pixel pair (2, cols), its glyphs by column, and its Strip,
+    built only when Textual asks for it (None until then)."""
+
+    pair: np.ndarray
+    glyphs: tuple[tuple[int, Glyph], ...]
+    strip: Strip | None = None
+
+
 class StripCache:
     """Turns a canvas into Strips, reusing styles and unchanged rows across frames.
 
-    `changed` tells, after each `strips` call, which cells of which rows differ from the last
-    frame, as {row: (first col, end col)}: the preview repaints only those, since a moving
-    item changes a few columns of its rows and the page's surround none (issue 11).
+    `update` tells which cells of which rows differ from the last frame, in `changed` as
+    {row: (first col, end col)}: the preview repaints only those, since a moving item changes
+    a few columns of its rows and the page's surround none (issue 11). A changed row's Strip
+    is built when it is asked for (`strip`): when the preview's cells go straight to the
+    terminal (`direct_paint`), only the changed columns are turned into segments
+    (`segments`), and building whole rows was 2 ms of a key's answer on the greeting card.
     """
 
     def __init__(self):
         self._styles: dict[tuple[int, int, bool], Style] = {}
-        self._rows: dict[int, tuple[bytes, tuple, Strip]] = {}
+        self._rows: dict[int, CachedRow] = {}
+        self.rows = 0
+        self.cols = 0
         self.changed: dict[int, tuple[int, int]] = {}
 
     def style(self, fg: int, bg: int, bold: bool = False) -> Style:
@@ -160,52 +174,73 @@ class StripCache:
             self._styles[key] = style
         return style
 
-    def strips(self, canvas: CellCanvas) -> list[Strip]:
+    def update(self, canvas: CellCanvas) -> None:
+        """Take a new frame: remember each changed row, and where it changed."""
         packed = ((canvas.pixels[..., 0].astype(np.int64) << 16)
                   | (canvas.pixels[..., 1].astype(np.int64) << 8)
                   | canvas.pixels[..., 2].astype(np.int64))
         glyph_rows: dict[int, list[tuple[int, Glyph]]] = {}
         for (row, col), glyph in canvas.glyphs.items():
             glyph_rows.setdefault(row, []).append((col, glyph))
-        strips = []
         self.changed = {}
+        if canvas.rows != self.rows or canvas.cols != self.cols:
+            self._rows = {}
+        self.rows, self.cols = canvas.rows, canvas.cols
         for row in range(canvas.rows):
             pair = packed[2 * row:2 * row + 2]
             glyphs = tuple(sorted(glyph_rows.get(row, ()), key=lambda entry: entry[0]))
-            key = pair.tobytes()
             cached = self._rows.get(row)
-            if cached is not None and cached[0] == key and cached[1] == glyphs \
-                    and cached[2].cell_length == canvas.cols:
-                strips.append(cached[2])
+            if cached is not None and cached.glyphs == glyphs \
+                    and np.array_equal(cached.pair, pair):
                 continue
-            strip = self._row_strip(pair, dict(glyphs))
             self.changed[row] = changed_span(cached, pair, glyphs, canvas.cols)
-            self._rows[row] = (key, glyphs, strip)
-            strips.append(strip)
-        return strips
+            self._rows[row] = CachedRow(pair, glyphs)
 
-    def _row_strip(self, pair: np.ndarray, glyphs: dict[int, Glyph]) -> Strip:
-        """One row's Strip. Cells between glyphs go by runs of equal pixels (numpy finds
-        where the pixels change), not one by one: building rows was most of a key's redraw."""
-        tops, bottoms = pair[0], pair[1]
-        cols = len(tops)
+    def strip(self, row: int) -> Strip:
+        """The row's Strip, built now if the row changed since it was last asked for."""
+        cached = self._rows[row]
+        if cached.strip is None:
+            cached.strip = Strip(self.segments(row, 0, self.cols)[1], self.cols)
+        return cached.strip
+
+    def strips(self, canvas: CellCanvas) -> list[Strip]:
+        """Take a new frame and return all its rows' Strips."""
+        self.update(canvas)
+        return [self.strip(row) for row in range(self.rows)]
+
+    def segments(self, row: int, first: int, end: int) -> tuple[int, list[Segment]]:
+        """Columns first to end of a row as Segments, and the column they start at. Cells
+        between glyphs go by runs of equal pixels (numpy finds where the pixels change), not
+        one by one: building rows was most of a key's redraw. A wide character's second cell
+        is drawn by its first: at `first`, it is left out and the segments start a column
+        later; at `end - 1`, the segments end a column after `end`."""
+        cached = self._rows[row]
+        glyphs = dict(cached.glyphs)
+        tops, bottoms = cached.pair[0, first:end], cached.pair[1, first:end]
+        cols = end - first
+        if cols <= 0:
+            return first, []
         starts = np.empty(cols, dtype=bool)
         starts[0] = True
         np.not_equal(tops[1:], tops[:-1], out=starts[1:])
         starts[1:] |= bottoms[1:] != bottoms[:-1]
         for col in glyphs:  # every glyph is a run of its own, and so is what follows it
-            starts[col] = True
-            if col + 1 < cols:
-                starts[col + 1] = True
-        bounds = np.flatnonzero(starts).tolist() + [cols]
-        top_at, bottom_at = tops.tolist(), bottoms.tolist()
+            if first <= col < end:
+                starts[col - first] = True
+            if first <= col + 1 < end:
+                starts[col + 1 - first] = True
+        bounds = (np.flatnonzero(starts) + first).tolist() + [end]
+        top_at, bottom_at = cached.pair[0].tolist(), cached.pair[1].tolist()
         segments: list[Segment] = []
         run_text: list[str] = []
         run_style: Style | None = None
-        for col, end in zip(bounds, bounds[1:]):
+        start = first
+        for col, run_end in zip(bounds, bounds[1:]):
             top, bottom = top_at[col], bottom_at[col]
             glyph = glyphs.get(col)
             if glyph is not None and glyph.char == "" and col > 0 and glyphs.get(col - 1) is not None:
+                if col == first:
+                    start = first + 1
                 continue  # the second cell of a wide character, drawn by the first
             if glyph is not None and glyph.char:
                 bg = pack(glyph.bg) if glyph.bg is not None else top
@@ -215,7 +250,7 @@ class StripCache:
                     text = " "  # its second cell was drawn over: keep the row's width
             else:
                 style = self.style(top, bottom)
-                text = (" " if top == bottom else UPPER_HALF) * (end - col)
+                text = (" " if top == bottom else UPPER_HALF) * (run_end - col)
             if style is run_style:
                 run_text.append(text)
             else:
@@ -224,4 +259,4 @@ class StripCache:
                 run_text, run_style = [text], style
         if run_text:
             segments.append(Segment("".join(run_text), run_style))
-        return Strip(segments, cols)
+        return start, segments

@@ -1,9 +1,10 @@
 """The page preview: a Line API widget over a cell grid rebuilt at most once per frame.
 
-The screen hands it a PageView with `show(view)`; the widget paints it into a
-grid, keeps the resulting Strips and refreshes once. `render_line` only reads
-the stored Strips. Mouse presses and drags go up as messages in millimetres,
-so the screen never deals in cells.
+The screen hands it a PageView with `show(view)`; the widget paints it into a grid and
+sends the changed cells to the terminal itself (`direct_paint`), or, when something else
+may be over them, refreshes the changed regions through Textual. `render_line` reads the
+rows' Strips, built when Textual asks for them. Mouse presses and drags go up as messages in
+millimetres, so the screen never deals in cells.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from textual.strip import Strip
 from textual.widget import Widget
 
 from floatpage.tui.cell_canvas import CellCanvas, StripCache
+from floatpage.tui.direct_paint import DirectPainter
 from floatpage.tui.page_painter import PagePainter, PageView
 from floatpage.tui.projection import Projection
 
@@ -57,8 +59,8 @@ class PagePreview(Widget, can_focus=True):
         self.view: PageView | None = None
         self.projection: Projection | None = None
         self.canvas: CellCanvas | None = None  # the last frame's grid, kept for hit tests and tests
-        self._strips: list[Strip] = []
         self._cache = StripCache()
+        self.direct = DirectPainter()
         self._drag: tuple[str, float, float] | None = None  # item id, grab offset x, y (mm)
         self.frames_drawn = 0
         self.unchanged_frames = 0  # frames in a row that changed no cell of the preview
@@ -81,18 +83,19 @@ class PagePreview(Widget, can_focus=True):
         self.projection = projection
         canvas = PagePainter(projection).paint(self.view)
         self.canvas = canvas
-        old, self._strips = self._strips, self._cache.strips(canvas)
+        shape = (self._cache.rows, self._cache.cols)
+        self._cache.update(canvas)
         self.frames_drawn += 1
         self.unchanged_frames = 0 if self._cache.changed else self.unchanged_frames + 1
-        self.refresh_changed_rows(old, self._strips)
+        if shape != (canvas.rows, canvas.cols):
+            self.refresh()
+        elif self._cache.changed and not self.direct.paint(self, self._cache):
+            self.refresh_changed_rows()
 
-    def refresh_changed_rows(self, old: list[Strip], new: list[Strip]) -> None:
+    def refresh_changed_rows(self) -> None:
         """Repaint only the cells that changed: a whole-preview refresh sent 13-19 KB a frame
         over SSH, although a moving item changes a few columns of a few rows (issue 11).
         Rows with the same changed columns go as one region."""
-        if len(old) != len(new):
-            self.refresh()
-            return
         run: tuple[int, int, int, int] | None = None  # first row, rows, first col, end col
         for row in sorted(self._cache.changed):
             first, end = self._cache.changed[row]
@@ -111,13 +114,17 @@ class PagePreview(Widget, can_focus=True):
         self.redraw()
 
     def render_line(self, y: int) -> Strip:
-        if 0 <= y < len(self._strips):
-            return self._strips[y]
+        if 0 <= y < self._cache.rows:
+            return self._cache.strip(y)
         return Strip.blank(self.size.width)
+
+    def strips(self) -> list[Strip]:
+        """The preview's rows as Textual renders them."""
+        return [self._cache.strip(row) for row in range(self._cache.rows)]
 
     def text_lines(self) -> list[str]:
         """The preview as plain text, row by row (for tests and for reading over SSH logs)."""
-        return [strip.text for strip in self._strips]
+        return [strip.text for strip in self.strips()]
 
     # -- hit testing and the mouse ---------------------------------------------------------
 

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from typing import Iterable
 
 from rich.cells import cell_len
 
@@ -106,6 +107,29 @@ class ShadowScreen:
         if self.col is not None:
             self._goto(out, self.row, self.col)
         self._settle(out, "x")
+        return "".join(out)
+
+    def can_paint(self) -> bool:
+        """The stream's cursor and style are known, so `paint` can put them back."""
+        return self.row is not None and self.col is not None and self.line_feeds is None \
+            and self.wanted is not None and not self.raw_pending
+
+    def paint(self, runs: Iterable[tuple[int, int, str, Style]]) -> str:
+        """Cells from outside the stream (`direct_paint`: the page preview's, which never go
+        through Textual): each run's text at (row, column) in its style, sent only where the
+        terminal shows something else. Then the terminal's cursor and style go back to where
+        the stream left them, so the stream goes on as if nothing had come between.
+        Needs `can_paint()`."""
+        out: list[str] = []
+        row, col, wanted = self.row, self.col, self.wanted
+        for run_row, run_col, text, style in runs:
+            if 0 <= run_row < self.rows and 0 <= run_col < self.cols:
+                self.row, self.col, self.wanted = run_row, run_col, style
+                self._text(out, text)
+        self.row, self.col, self.wanted = row, col, wanted
+        if out:
+            self._goto(out, row, col)
+            self._settle(out, "x")
         return "".join(out)
 
     def _token(self, out: list[str], match: re.Match) -> None:

@@ -77,6 +77,18 @@ class HangupAwareDriver(LinuxDriver):
             self.link.queued(len(data), len(data.encode("utf-8", "replace")))
             super().write(data)
 
+    def paint_cells(self, runs) -> bool:
+        """Cells that do not go through Textual (`direct_paint`), written in place against the
+        shadow; False, and nothing written, while the shadow does not follow the screen."""
+        with self._write_lock:
+            if self._screen_stale or self._writer_thread is None or not self.shadow.can_paint():
+                return False
+            data = self.shadow.paint(runs) + self.link.probe()
+            if data:
+                self.link.queued(len(data), len(data.encode("utf-8", "replace")))
+                super().write(data)
+        return True
+
     def start_application_mode(self) -> None:
         """Textual's, and a resize makes the shadow screen start again: a terminal may reflow
         what it shows, and the cells it holds are no longer the ones remembered."""

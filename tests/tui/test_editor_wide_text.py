@@ -31,4 +31,4 @@ async def test_the_preview_draws_cjk_and_hebrew_readably(tmp_path):
         text = "\n".join(preview.text_lines())
         assert "日本" in text and "こんにちは" in text and "?" not in text
         assert "םולש" in text
-        assert all(strip.cell_length == preview.size.width for strip in preview._strips)
+        assert all(strip.cell_length == preview.size.width for strip in preview.strips())

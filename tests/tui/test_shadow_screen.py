@@ -8,6 +8,7 @@ import pyte
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from floatpage.tui.sgr_compactor import DEFAULT, apply_sgr, transition
 from floatpage.tui.shadow_screen import ShadowScreen
 
 from editor_helpers import editor, screen_of
@@ -135,3 +136,40 @@ async def test_the_editors_real_frames_draw_the_same_screen(project_path):
             capture()
         sent = assert_same_screens(frames, columns, rows)
         assert sent < 0.5 * sum(len(frame.encode()) for frame in frames)
+
+
+# A whole write of Textual's: runs, then the cursor put where the app wants it.
+TEXTUAL_WRITES = st.tuples(
+    st.lists(FRAME_PIECES, min_size=1, max_size=6).map("".join),
+    st.integers(1, ROWS), st.integers(1, COLUMNS),
+).map(lambda write: f"{write[0]}\x1b[{write[1]};{write[2]}H")
+PAINT_RUNS = st.lists(st.tuples(
+    st.integers(0, ROWS - 1), st.integers(0, COLUMNS - 1), SGR_CODES,
+    st.text(alphabet="ab ▀", min_size=1, max_size=5) | st.just("日")), min_size=1, max_size=6)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.one_of(TEXTUAL_WRITES, PAINT_RUNS), min_size=2, max_size=8))
+def test_cells_painted_outside_the_stream_draw_the_same_screen(writes):
+    """`paint` (the preview's cells, past Textual) among Textual-like frames: the same cells
+    as writing each run in place and putting the cursor and style back (DECSC/DECRC), and
+    the stream goes on from where it was. (Textual ends each write with a cursor move, so
+    the cursor never waits to wrap when cells are painted.)"""
+    original, rewritten = Emulator(COLUMNS, ROWS), Emulator(COLUMNS, ROWS)
+    shadow = ShadowScreen(COLUMNS, ROWS)
+    for number, write in enumerate(writes):
+        if isinstance(write, str):
+            original.feed(write)
+            rewritten.feed(shadow.rewrite(write))
+        else:
+            runs = [(row, col, style, text[:COLUMNS - col - (text == "日")])
+                    for row, col, code, text in write
+                    if (style := apply_sgr(DEFAULT, code)) is not None]
+            runs = [(row, col, text, style) for row, col, style, text in runs if text]
+            if not shadow.can_paint():
+                continue  # the driver leaves these to Textual
+            original.feed("\x1b7" + "".join(f"\x1b[{row + 1};{col + 1}H{transition(None, style)}{text}"
+                                             for row, col, text, style in runs) + "\x1b8")
+            rewritten.feed(shadow.paint(runs))
+        assert rewritten.cells() == original.cells(), f"write {number}: {write!r}"
+        assert rewritten.cursor() == original.cursor(), f"write {number}: {write!r}"

@@ -1,0 +1,104 @@
+"""The preview's cells go straight to the terminal (`tui/direct_paint.py`), past Textual's
+compositor, only when nothing else can be on them; and the terminal then shows what Textual
+itself would have drawn.
+
+The screen check runs `floatpage edit` on the greeting card over a real pty, in truecolour,
+read by pyte: after keys that move the photo (one at a time and held) and toggle the labels,
+the screen is compared with Textual's own full repaint of the same state, which a resize
+forces (the driver forgets what the terminal shows, and Textual redraws every cell)."""
+
+from __future__ import annotations
+
+import fcntl
+import shutil
+import struct
+import sys
+import termios
+import time
+from pathlib import Path
+
+import pyte
+
+from floatpage.tui.direct_paint import DirectPainter
+from floatpage.tui.app import make_app
+
+from editor_helpers import screen_of
+from test_shadow_screen import seen
+from terminal_probe import DOWN, UP, Terminal, hold_arrow
+
+ROOT = Path(__file__).resolve().parents[2]
+CARD = ROOT / "sample_projects" / "greeting-card" / "greeting-card.toml"
+COLUMNS, ROWS = 100, 32
+
+
+def cells(screen: pyte.Screen) -> list[list[tuple]]:
+    """What each cell shows (a blank's foreground colour does not show)."""
+    return [[seen(screen.buffer[row][col]) for col in range(screen.columns)]
+            for row in range(screen.lines)]
+
+
+def resize(term: Terminal, columns: int, rows: int) -> None:
+    fcntl.ioctl(term.fd, termios.TIOCSWINSZ, struct.pack("HHHH", rows, columns, 0, 0))
+
+
+def test_the_screen_is_the_one_textual_draws_itself(tmp_path):
+    folder = tmp_path / "greeting-card"
+    shutil.copytree(CARD.parent, folder)
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "LANG": "C.UTF-8",
+           "TERM": "xterm-256color", "COLORTERM": "truecolor"}
+    term = Terminal([sys.executable, "-m", "floatpage.cli.main", "edit",
+                     str(folder / "greeting-card.toml")], str(folder), env, COLUMNS, ROWS)
+    screen = pyte.Screen(COLUMNS, ROWS)
+    stream = pyte.ByteStream(screen)
+
+    def read_until_quiet() -> None:
+        term.until_quiet(quiet_s=1.5)
+        stream.feed(bytes(term.seen))
+        term.seen.clear()
+
+    try:
+        deadline = time.monotonic() + 60
+        while b"items" not in term.seen:
+            assert time.monotonic() < deadline, bytes(term.seen[-400:])
+            term.pump(0.05)
+        read_until_quiet()
+        for keys in (b"\t", DOWN, UP, DOWN, b"n"):
+            term.send(keys)
+            read_until_quiet()
+        hold_arrow(term, 0.5, DOWN)
+        read_until_quiet()
+        drawn = cells(screen)
+        assert "front-picture" in screen.display[0], "\n".join(screen.display)
+
+        resize(term, COLUMNS - 10, ROWS - 4)
+        screen.resize(ROWS - 4, COLUMNS - 10)
+        read_until_quiet()
+        resize(term, COLUMNS, ROWS)
+        screen.resize(ROWS, COLUMNS)
+        read_until_quiet()
+    finally:
+        term.close()
+    repainted = cells(screen)
+    for row in range(ROWS):
+        assert drawn[row] == repainted[row], f"row {row}: {screen.display[row]!r}"
+
+
+async def test_cells_go_past_textual_only_when_nothing_else_is_on_them():
+    """On the editor screen the preview is its cells' sole owner; under a notification or a
+    dialog it is not, and Textual draws its changes."""
+    app = make_app(CARD, autostart=False)
+    async with app.run_test(size=(COLUMNS, ROWS), notifications=True) as pilot:
+        await pilot.pause()
+        preview = screen_of(app).preview
+        assert DirectPainter.sole_owner(preview, preview._cache)
+        app.editor.notify("a notice over the preview", timeout=30)
+        await pilot.pause()
+        await pilot.pause()
+        assert not DirectPainter.sole_owner(preview, preview._cache)
+        app.clear_notifications()
+        await pilot.pause()
+        await pilot.pause()
+        assert DirectPainter.sole_owner(preview, preview._cache)
+        await pilot.press("question_mark")  # help
+        await pilot.pause()
+        assert not DirectPainter.sole_owner(preview, preview._cache)

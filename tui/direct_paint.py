@@ -1,0 +1,103 @@
+"""The preview's changed cells straight to the terminal, past Textual's compositor.
+
+A key's answer on the greeting card took 14-19 ms from key to flush, against 2x a trivial
+Textual app's 5-6 ms over SSH (issue 11). Traced in the editor over a pty, most of it went
+into carrying the moved photo's cells through Textual: building whole-row Strips (2 ms),
+the compositor cutting and styling them (3 ms), rendering the segments to text (1 ms), and
+the shadow screen parsing that text back into cells (2 ms), all on top of the painting
+itself. The cells are known before any of that: the preview hands the changed columns of
+each row to the driver's shadow screen (`ShadowScreen.paint`), which sends the ones the
+terminal does not show, and Textual never hears of them.
+
+Only when nothing else can be on those cells: the editor screen is the one shown (no dialog,
+help or palette over it), no other widget overlaps the preview (a notification), the
+driver follows the screen (it has written a frame since the last resize), and the preview
+has the size Textual last laid out. Otherwise the preview asks Textual to refresh the
+changed regions, as before. Either way the preview's Strips stay the truth that Textual
+renders from whenever it repaints the preview itself (a dialog closing, a notification
+going, a resize): the painted rows are marked stale in the widget's line cache.
+
+The colours are turned into codes exactly as Textual's own `Strip.render` would, for the
+terminal's colour system (truecolour, 256 colours), so the screen is the same either way
+(tests/tui/test_editor_direct_paint.py compares it with Textual's own full repaint).
+"""
+
+from __future__ import annotations
+
+from rich.cells import cell_len
+from rich.style import Style as RichStyle
+from textual.geometry import Region
+from textual.strip import Strip
+from textual.widget import Widget
+
+from floatpage.tui.cell_canvas import StripCache
+from floatpage.tui.sgr_compactor import DEFAULT, Style, apply_sgr
+
+Run = tuple[int, int, str, Style]  # screen row, screen column, text, style
+
+
+class DirectPainter:
+    """Paints one widget's changed cells through the driver, when nothing else is on them."""
+
+    def __init__(self):
+        self._styles: dict[RichStyle, Style | None] = {}
+        self.frames_painted = 0  # frames that went straight to the terminal (for tests)
+
+    def paint(self, widget: Widget, cache: StripCache) -> bool:
+        """Send `cache.changed` to the terminal; False (nothing sent) when it cannot be."""
+        app = widget.app
+        driver = app._driver
+        paint_cells = getattr(driver, "paint_cells", None)
+        if paint_cells is None or app.is_headless or not self.sole_owner(widget, cache):
+            return False
+        color_system = app.console._color_system
+        if color_system is None:
+            return False
+        region = widget.content_region
+        runs: list[Run] = []
+        for row, (first, end) in sorted(cache.changed.items()):
+            col, segments = cache.segments(row, first, end)
+            for segment in segments:
+                style = self.terminal_style(segment.style, color_system)
+                if style is None:
+                    return False
+                runs.append((region.y + row, region.x + col, segment.text, style))
+                col += cell_len(segment.text)
+        if not paint_cells(runs):
+            return False
+        offset = widget.content_offset
+        for row, (first, end) in cache.changed.items():
+            # what Textual cached of these lines is stale: rendered again when next asked
+            widget._styles_cache.set_dirty(Region(offset.x, offset.y + row, widget.size.width, 1))
+        self.frames_painted += 1
+        return True
+
+    @staticmethod
+    def sole_owner(widget: Widget, cache: StripCache) -> bool:
+        """The widget's cells are its own on the terminal: its screen is shown, laid out at
+        the canvas's size, and no other widget overlaps it."""
+        screen = widget.screen
+        if screen is not widget.app.screen or not screen.is_current:
+            return False
+        if screen._layout_required or screen._repaint_required:
+            return False  # Textual is about to repaint (or move) it anyway
+        region = widget.content_region
+        if (region.width, region.height) != (cache.cols, cache.rows) \
+                or not screen.region.contains_region(region):
+            return False
+        ancestors = set(widget.ancestors_with_self)
+        for other in screen._compositor.visible_widgets:
+            if other not in ancestors and other.region.overlaps(region):
+                return False
+        return True
+
+    def terminal_style(self, style: RichStyle | None, color_system) -> Style | None:
+        """The terminal style Textual's output gives these cells (None: not followed)."""
+        if style is None:
+            return DEFAULT
+        try:
+            return self._styles[style]
+        except KeyError:
+            known = self._styles[style] = apply_sgr(DEFAULT,
+                                                    Strip.render_ansi(style, color_system))
+            return known
