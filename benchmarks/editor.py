@@ -5,6 +5,11 @@ Textual app over the same link in the same run.
     .venv/bin/python benchmarks/editor.py link --link pty   # the same over a bare pty (no sshd)
     .venv/bin/python benchmarks/editor.py frames            # headless frame time at N = 50 and 200
     .venv/bin/python benchmarks/editor.py hangup            # kill the ssh client / the tmux session
+    .venv/bin/python benchmarks/editor.py link --baseline /tmp/base   # and another commit's editor
+
+`--baseline DIR` adds rows for the editor of another checkout (e.g. `git archive COMMIT | tar
+-x -C DIR`), run with this checkout's venv, in the same run: a before and after that share
+the machine's load, which on a shared machine varies more than the change being measured.
 
 `link` starts its own sshd on 127.0.0.1 (benchmarks/loopback_sshd.py: a throwaway host key and
 client key in a temporary folder; it is stopped at the end, also on failure), then for each
@@ -75,7 +80,22 @@ def open_terminal(link: str, sshd: LoopbackSshd | None, argv: list[str], cwd: Pa
     return Terminal(sshd.ssh_argv(command), str(cwd), local, *size)
 
 
-def sessions(scratch: Path) -> list[tuple[str, list[str], Path, bytes, bool]]:
+PACKAGE_DIRS = ("physics", "model", "typeset", "tui", "cli", "latex_templates", "starters", "merge")
+
+
+def baseline_package(checkout: Path, scratch: Path) -> Path:
+    """A folder to put first on PYTHONPATH so that `floatpage` is imported from `checkout`:
+    floatpage/<package> links to each of its top-level package folders (pyproject.toml's
+    package-dir), as the editable install does for this checkout."""
+    root = scratch / "baseline-package"
+    (root / "floatpage").mkdir(parents=True)
+    for name in PACKAGE_DIRS:
+        (root / "floatpage" / name).symlink_to(checkout.resolve() / name)
+    return root
+
+
+def sessions(scratch: Path, baseline: Path | None = None
+             ) -> list[tuple[str, list[str], Path, bytes, bool]]:
     """(name, argv, folder, text that shows it is up, select an item first) for each app."""
     trivial = scratch / "trivial.py"
     trivial.write_text(TRIVIAL_APP)
@@ -87,6 +107,15 @@ def sessions(scratch: Path) -> list[tuple[str, list[str], Path, bytes, bool]]:
         shutil.copytree(ROOT / "sample_projects" / sample, folder)
         toml = next(folder.glob("*.toml"))
         rows.append((sample, [editor, "edit", str(toml)], folder, b"items", True))
+    if baseline is not None:
+        package = baseline_package(baseline, scratch)
+        for sample in SAMPLES:
+            folder = scratch / f"baseline-{sample}"
+            shutil.copytree(baseline / "sample_projects" / sample, folder)
+            toml = next(folder.glob("*.toml"))
+            argv = ["env", f"PYTHONPATH={package}", sys.executable, "-m", "floatpage.cli.main",
+                    "edit", str(toml)]
+            rows.append((f"{sample}, baseline", argv, folder, b"items", True))
     return rows
 
 
@@ -100,7 +129,7 @@ def run_link(args: argparse.Namespace) -> None:
             for size in sizes:  # fresh copies: a killed session leaves a recovery file behind
                 scratch = Path(folder) / f"{size[0]}x{size[1]}"
                 scratch.mkdir()
-                apps = sessions(scratch)
+                apps = sessions(scratch, args.baseline)
                 results: list[tuple[str, SessionFigures]] = []
                 for name, argv, cwd, ready, select_first in apps:
                     term = open_terminal(args.link, sshd, argv, cwd, size, args.colors)
@@ -147,6 +176,8 @@ def main() -> None:
         target.add_argument("--size", nargs="*", default=["100x32", "80x24"],
                             help="COLUMNSxROWS, one or more")
         target.add_argument("--colors", choices=["truecolor", "256"], default="truecolor")
+        target.add_argument("--baseline", type=Path, default=None,
+                            help="another checkout whose editor gets rows of its own")
     editor_frames.add_arguments(parts.add_parser("frames", help="headless frame time"))
     editor_hangup.add_arguments(parts.add_parser("hangup", help="hang-up over ssh and tmux"))
     args = parser.parse_args()

@@ -17,12 +17,22 @@ changed regions, as before. Either way the preview's Strips stay the truth that 
 renders from whenever it repaints the preview itself (a dialog closing, a notification
 going, a resize): the painted rows are marked stale in the widget's line cache.
 
+Textual's compositor asks every widget for all its lines whenever it draws anything (a
+widget's clip region is its parent's, so each overlaps any update): for the top bar's one
+line it re-rendered the preview's stale rows, 3-5 ms, and threw them away. The editor
+screen's update (`EditorScreen._on_timer_update`) hides them from Textual while it draws
+only other widgets' cells (`stale_lines_hidden`), and they stay stale for the next update
+that draws the preview.
+
 The colours are turned into codes exactly as Textual's own `Strip.render` would, for the
 terminal's colour system (truecolour, 256 colours), so the screen is the same either way
 (tests/tui/test_editor_direct_paint.py compares it with Textual's own full repaint).
 """
 
 from __future__ import annotations
+
+from contextlib import contextmanager
+from typing import Iterator
 
 from rich.cells import cell_len
 from rich.style import Style as RichStyle
@@ -101,3 +111,29 @@ class DirectPainter:
             known = self._styles[style] = apply_sgr(DEFAULT,
                                                     Strip.render_ansi(style, color_system))
             return known
+
+
+def draws_none_of(screen, widget: Widget) -> bool:
+    """True when the screen's next update draws none of `widget`'s cells: nothing pending that
+    repaints the whole screen (layout, scroll, repaint, recompose), and no widget to draw
+    overlaps it, nor is it, nor contains it."""
+    if screen._layout_required or screen._scroll_required or screen._repaint_required \
+            or screen._recompose_required:
+        return False
+    region = widget.region
+    return all(dirty is not widget and dirty is not screen and not dirty.region.overlaps(region)
+               for dirty in screen._dirty_widgets)
+
+
+@contextmanager
+def stale_lines_hidden(widget: Widget) -> Iterator[None]:
+    """While Textual draws only other widgets' cells, it takes the widget's lines as it last
+    rendered them (stale where painted directly, and never shown): rendering them again is
+    the work of the update that draws them."""
+    dirty_lines = widget._styles_cache._dirty_lines
+    held = set(dirty_lines)
+    dirty_lines.clear()
+    try:
+        yield
+    finally:
+        dirty_lines.update(held)
