@@ -161,6 +161,7 @@ class StripCache:
     def __init__(self):
         self._styles: dict[tuple[int, int, bool], Style] = {}
         self._rows: dict[int, CachedRow] = {}
+        self._packed: np.ndarray | None = None  # the last frame's pixels, packed (2 x rows, cols)
         self.rows = 0
         self.cols = 0
         self.changed: dict[int, tuple[int, int]] = {}
@@ -185,13 +186,19 @@ class StripCache:
         self.changed = {}
         if canvas.rows != self.rows or canvas.cols != self.cols:
             self._rows = {}
+            self._packed = None
         self.rows, self.cols = canvas.rows, canvas.cols
+        # which rows' pixels changed, in one comparison (row by row it was 0.3 ms a frame)
+        if self._packed is None:
+            pixels_changed = [True] * canvas.rows
+        else:
+            pixels_changed = (packed != self._packed).reshape(canvas.rows, -1).any(axis=1).tolist()
+        self._packed = packed
         for row in range(canvas.rows):
             pair = packed[2 * row:2 * row + 2]
             glyphs = tuple(sorted(glyph_rows.get(row, ()), key=lambda entry: entry[0]))
             cached = self._rows.get(row)
-            if cached is not None and cached.glyphs == glyphs \
-                    and np.array_equal(cached.pair, pair):
+            if cached is not None and cached.glyphs == glyphs and not pixels_changed[row]:
                 continue
             self.changed[row] = changed_span(cached, pair, glyphs, canvas.cols)
             self._rows[row] = CachedRow(pair, glyphs)
