@@ -237,13 +237,13 @@ class StripCache:
             if first <= col + 1 < end:
                 starts[col + 1 - first] = True
         bounds = (np.flatnonzero(starts) + first).tolist() + [end]
-        top_at, bottom_at = cached.pair[0].tolist(), cached.pair[1].tolist()
+        top_at, bottom_at = tops.tolist(), bottoms.tolist()  # from column `first`
         segments: list[Segment] = []
         run_text: list[str] = []
         run_style: Style | None = None
         start = first
         for col, run_end in zip(bounds, bounds[1:]):
-            top, bottom = top_at[col], bottom_at[col]
+            top, bottom = top_at[col - first], bottom_at[col - first]
             glyph = glyphs.get(col)
             if glyph is not None and glyph.char == "" and col > 0 and glyphs.get(col - 1) is not None:
                 if col == first:

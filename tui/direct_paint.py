@@ -41,7 +41,7 @@ from textual.strip import Strip
 from textual.widget import Widget
 
 from floatpage.tui.cell_canvas import StripCache
-from floatpage.tui.sgr_compactor import DEFAULT, Style, apply_sgr
+from floatpage.tui.sgr_compactor import DEFAULT, SHOWN_ON_BLANKS, Style, apply_sgr
 
 Run = tuple[int, int, str, Style]  # screen row, screen column, text, style
 
@@ -71,7 +71,7 @@ class DirectPainter:
                 style = self.terminal_style(segment.style, color_system)
                 if style is None:
                     return False
-                runs.append((region.y + row, region.x + col, segment.text, style))
+                add_run(runs, region.y + row, region.x + col, segment.text, style)
                 col += cell_len(segment.text)
         if not paint_cells(runs):
             return False
@@ -137,3 +137,22 @@ def stale_lines_hidden(widget: Widget) -> Iterator[None]:
         yield
     finally:
         dirty_lines.update(held)
+
+
+def add_run(runs: list[Run], row: int, col: int, text: str, style: Style) -> None:
+    """Append a run, or extend the last one when the terminal cannot tell the difference:
+    blanks show only their background, so blanks next to text on the same background go in
+    the text's style. A calendar's digits alternate with blank pixel cells, a run per cell,
+    and each run costs the shadow screen as much as a dozen cells within one."""
+    if runs:
+        last_row, last_col, last_text, last_style = runs[-1]
+        if last_row == row and last_col + cell_len(last_text) == col \
+                and last_style.bg == style.bg \
+                and not (last_style.flags | style.flags) & SHOWN_ON_BLANKS:
+            if not text.strip(" ") and not last_style.flags ^ style.flags:
+                runs[-1] = (row, last_col, last_text + text, last_style)
+                return
+            if not last_text.strip(" ") and not last_style.flags ^ style.flags:
+                runs[-1] = (row, last_col, last_text + text, style)
+                return
+    runs.append((row, col, text, style))

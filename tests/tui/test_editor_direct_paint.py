@@ -2,7 +2,8 @@
 compositor, only when nothing else can be on them; and the terminal then shows what Textual
 itself would have drawn.
 
-The screen check runs `floatpage edit` on the greeting card over a real pty, in truecolour,
+The screen check runs `floatpage edit` on the greeting card (a photo) and the calendar (text
+among blank cells, which go in the text's style) over a real pty, in truecolour,
 read by pyte: after keys that move the photo (one at a time and held) and toggle the labels,
 the screen is compared with Textual's own full repaint of the same state, which a resize
 forces (the driver forgets what the terminal shows, and Textual redraws every cell)."""
@@ -18,6 +19,7 @@ import time
 from pathlib import Path
 
 import pyte
+import pytest
 
 from floatpage.tui.direct_paint import DirectPainter
 from floatpage.tui.app import make_app
@@ -41,13 +43,14 @@ def resize(term: Terminal, columns: int, rows: int) -> None:
     fcntl.ioctl(term.fd, termios.TIOCSWINSZ, struct.pack("HHHH", rows, columns, 0, 0))
 
 
-def test_the_screen_is_the_one_textual_draws_itself(tmp_path):
-    folder = tmp_path / "greeting-card"
-    shutil.copytree(CARD.parent, folder)
+@pytest.mark.parametrize("sample", ["greeting-card", "calendar-2027"])
+def test_the_screen_is_the_one_textual_draws_itself(tmp_path, sample):
+    folder = tmp_path / sample
+    shutil.copytree(ROOT / "sample_projects" / sample, folder)
     env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "LANG": "C.UTF-8",
            "TERM": "xterm-256color", "COLORTERM": "truecolor"}
     term = Terminal([sys.executable, "-m", "floatpage.cli.main", "edit",
-                     str(folder / "greeting-card.toml")], str(folder), env, COLUMNS, ROWS)
+                     str(folder / f"{sample}.toml")], str(folder), env, COLUMNS, ROWS)
     screen = pyte.Screen(COLUMNS, ROWS)
     stream = pyte.ByteStream(screen)
 
@@ -68,7 +71,7 @@ def test_the_screen_is_the_one_textual_draws_itself(tmp_path):
         hold_arrow(term, 0.5, DOWN)
         read_until_quiet()
         drawn = cells(screen)
-        assert "front-picture" in screen.display[0], "\n".join(screen.display)
+        assert " mm" in screen.display[0], "\n".join(screen.display)  # an item selected
 
         resize(term, COLUMNS - 10, ROWS - 4)
         screen.resize(ROWS - 4, COLUMNS - 10)
