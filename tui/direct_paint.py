@@ -51,7 +51,6 @@ class DirectPainter:
 
     def __init__(self):
         self._styles: dict[RichStyle, Style | None] = {}
-        self.frames_painted = 0  # frames that went straight to the terminal (for tests)
 
     def paint(self, widget: Widget, cache: StripCache) -> bool:
         """Send `cache.changed` to the terminal; False (nothing sent) when it cannot be."""
@@ -60,6 +59,8 @@ class DirectPainter:
         paint_cells = getattr(driver, "paint_cells", None)
         if paint_cells is None or app.is_headless or not self.sole_owner(widget, cache):
             return False
+        if not app._running or app._closed:  # as Textual's own `_display` checks: the writer
+            return False                      # thread may be gone (its queue would fill up)
         color_system = app.console._color_system
         if color_system is None:
             return False
@@ -79,7 +80,6 @@ class DirectPainter:
         for row, (first, end) in cache.changed.items():
             # what Textual cached of these lines is stale: rendered again when next asked
             widget._styles_cache.set_dirty(Region(offset.x, offset.y + row, widget.size.width, 1))
-        self.frames_painted += 1
         return True
 
     @staticmethod
