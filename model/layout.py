@@ -23,6 +23,9 @@ POSITION_DECIMALS = 2  # positions are written back to 0.01 mm
 FIXED_POINT_ROUNDS = 20  # probes before giving up on a fixed point (most pages need 1-3)
 PROBE_HEAT = 0.02  # the heat of the gentle run that tells whether a layout is at rest
 AT_REST_MM = 0.25  # a layout that settling moves no further than this is at rest (below what print shows)
+PROBE_ALIGNS_WITHIN = 4  # a probe whose run moves an item further than 4 snap ranges (16 mm on
+# A4) found the page far from rest: it skips the alignment snap (Engine.settle); a later probe,
+# nearer rest, snaps
 STUCK_ROUNDS = 3  # probes without gain that prove a too-full page stuck
 
 
@@ -236,10 +239,12 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
 
 def proves_stuck(first: "Probe", settings: PhysicsSettings, max_steps: int) -> bool:
     """Whether the page that ``first`` probed is *stuck* (see ``settle_page``): the
-    ``STUCK_ROUNDS`` probes that follow neither reach rest nor improve on it."""
+    ``STUCK_ROUNDS`` probes that follow neither reach rest nor improve on it.  They leave
+    out the alignment snap: a stuck page is kept as it was, so their layouts serve only this
+    test, and a page too full for its gutter is not lined up anyway (Engine.finalize)."""
     trial = first.trial
     for _ in range(STUCK_ROUNDS):
-        probe = probe_rest(trial, settings, max_steps)
+        probe = probe_rest(trial, settings, max_steps, lines_up=False)
         if probe.at_rest or probe.score < first.score:
             return False
         trial = probe.trial
@@ -256,13 +261,16 @@ class Probe:
     score: tuple[int, int, int, float, float]  # lower is better (see layout_score)
 
 
-def probe_rest(page: Page, settings: PhysicsSettings, max_steps: int) -> Probe:
-    """A gentle run from the page as it is, then the no-overlap pass and the rounding of a
-    save: what settling would make of the page if it were nearly at rest."""
+def probe_rest(page: Page, settings: PhysicsSettings, max_steps: int, *,
+               lines_up: bool = True) -> Probe:
+    """A gentle run from the page as it is, then the no-overlap pass, the alignment snap and
+    the rounding of a save: what settling would make of the page if it were nearly at rest.
+    The snap is left out if the run found the page far from rest, or if not ``lines_up``."""
     engine = engine_for_page(page, settings)
     before = engine.quality()
     engine.reheat(PROBE_HEAT)
-    report = engine.settle(max_steps)
+    within = PROBE_ALIGNS_WITHIN * engine.snap_range_mm if lines_up else -1.0  # -1: never
+    report = engine.settle(max_steps, align_within_mm=within)
     trial = copy_of(page)
     moved = write_back(trial, engine)
     at_rest = moved <= AT_REST_MM and keeps_guarantees(before, engine.quality())
