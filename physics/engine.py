@@ -19,7 +19,7 @@ from floatpage.physics.bodies import NO_TARGET, Bodies
 from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
 from floatpage.physics.finalize import ROUNDING_MM, remove_overlaps
-from floatpage.physics.geometry import ROOMY_COVER, grown_cover
+from floatpage.physics.geometry import grown_cover, lines_up
 from floatpage.physics.guides import snap_range
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
@@ -322,16 +322,17 @@ class Engine:
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
                                self.params.gutter_mm, margin_mm=self.margin_mm,
                                fall_back=fall_back)
-        if fits and align and self._roomy():  # on a page too full for the gutter, or nearly,
+        if fits and align and self.lines_up:  # on a page too full for the gutter, or nearly,
             snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)  # it gives way
         self._bodies.velocities[:] = 0.0
         return fits
 
-    def _roomy(self) -> bool:
-        """Whether the page has room to line items up (geometry.ROOMY_COVER): on a fuller one
+    @property
+    def lines_up(self) -> bool:
+        """Whether the page has room to line items up (geometry.lines_up): on a fuller one
         the snap found little (200 items covering half of A4 with the gutter kept: 18.5 near
         misses an item before it, 17.3 after) at the cost of two thirds of the settle."""
-        return self._grown_cover() <= ROOMY_COVER
+        return lines_up(self._grown_cover(), int(self._bodies.active.sum()))
 
     def _grown_cover(self) -> float:
         """How tight the page is (geometry.grown_cover) within its walls."""
@@ -345,10 +346,10 @@ class Engine:
         misses the gutter on a page where it fits, once more from a second start.
 
         The alignment snap runs only if the run moved no item further than
-        ``align_within_mm`` (a negative limit: never).  A settle that asks whether a page is
-        at rest (model.layout's probes) need not line up a page it finds far from rest: it
-        does not keep that layout as it is, and a later probe lines it up.  On a scattered
-        page those snaps were half the settle's time."""
+        ``align_within_mm``.  A settle that asks whether a page is at rest (model.layout's
+        probes) need not line up a page it finds far from rest: it does not keep that layout
+        as it is, and a later probe lines it up.  On a scattered page those snaps were half
+        the settle's time."""
         start = self._bodies.centres.copy()
         steps = self._run_until_settled(max_steps)
         energy = self.kinetic_energy

@@ -12,6 +12,10 @@ from floatpage.physics.bodies import Bodies
 # walls is roomy: its run stops once still, overlap or not (fast_mode.run_fast), and it is
 # worth aligning (Engine.finalize).  Fuller pages keep cooling and give alignment up.
 ROOMY_COVER = 0.75
+# Alignment gives way on a fuller page, unless it has few items: the snap's cost grows with
+# the items, and a calendar month of 4 items covering 76 % lines up as well as one at 70 %.
+FEW_ITEMS = 12
+FEW_ITEMS_COVER = 0.85  # and their gutter fits (Engine's second start uses the same bound)
 JITTER_MM = 0.5  # size of the seeded nudge that separates items on one point (A4)
 COINCIDENT_MM = 1e-6
 
@@ -31,6 +35,12 @@ def grown_cover(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
             - np.max(far[active], axis=0))
     grown = float(((bodies.sizes[active] + gutter_mm).prod(axis=1)).sum())
     return grown / max(float((np.maximum(room, 0.0) + gutter_mm).prod()), 1e-9)
+
+
+def lines_up(cover: float, count: int) -> bool:
+    """Whether a page of ``count`` active items whose grown cover (``grown_cover``) is
+    ``cover`` is worth aligning: the guide force pulls and the snap runs."""
+    return cover <= ROOMY_COVER or (count <= FEW_ITEMS and cover <= FEW_ITEMS_COVER)
 
 
 def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray
