@@ -176,12 +176,11 @@ class _Snapper:
             return False  # too large to move within its margins on this axis
         values, kinds = self.mine(row, axis)
         pool, pool_kinds = self.pool(row, axis, values)
-        distance = pool[None, :] - values[:, None]
-        same = kinds[:, None] == pool_kinds[None, :]
-        shifts = candidate_shifts(distance[same], self.reach, self.farthest)
+        distance = (pool[None, :] - values[:, None])[kinds[:, None] == pool_kinds[None, :]]
+        shifts = candidate_shifts(distance, self.reach, self.farthest)
         if len(shifts) > MAX_CANDIDATES:  # a crowded page: the nearest lines only
             shifts = np.sort(shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]])
-        scores = misses_after(distance, same, shifts)
+        scores = misses_after(distance, shifts)
         now = float(scores[np.searchsorted(shifts, 0.0)])
         order = np.lexsort((np.abs(shifts), scores))
         order = order[scores[order] < now - TOLERANCE_MM][:MAX_TRIES]
@@ -189,7 +188,7 @@ class _Snapper:
             return False  # most calls: no move would help
         order = order[self.fits(row, axis, shifts[order], self.blockers(row, axis))]
         for k in order:
-            onto_line = bool((np.abs(distance[same] - shifts[k]) <= ALIGNED_MM).any())
+            onto_line = bool((np.abs(distance - shifts[k]) <= ALIGNED_MM).any())
             if abs(shifts[k]) <= NUDGE_MM or self.rest is None \
                     or self.rest.keeps_rest(members, axis, shifts[k], onto_line):
                 self.moved_from[row] = values
@@ -262,10 +261,11 @@ def candidate_shifts(distance: np.ndarray, reach: float, farthest: float) -> np.
     return sorted_unique(np.concatenate([onto, away, [0.0]]))
 
 
-def misses_after(distance: np.ndarray, same: np.ndarray, shifts: np.ndarray) -> np.ndarray:
-    """For each shift, the near misses between features and pool lines of the same kind at
-    ``distance`` (features, pool), less ``ALIGN_GAIN`` per exact alignment; (len(shifts),)."""
-    gaps = np.abs(distance[None, :, :] - shifts[:, None, None])
-    near = (gaps > ALIGNED_MM) & (gaps < NEAR_MM) & same[None]
-    aligned = (gaps <= ALIGNED_MM) & same[None]
-    return near.sum(axis=(1, 2)) - ALIGN_GAIN * aligned.sum(axis=(1, 2))
+def misses_after(distance: np.ndarray, shifts: np.ndarray) -> np.ndarray:
+    """For each shift, the near misses between a group's features and the lines of the same
+    kind at ``distance`` from them (one entry per pair), less ``ALIGN_GAIN`` per exact
+    alignment; (len(shifts),)."""
+    gaps = np.abs(distance[None, :] - shifts[:, None])
+    aligned = np.count_nonzero(gaps <= ALIGNED_MM, axis=1)
+    near = np.count_nonzero(gaps < NEAR_MM, axis=1) - aligned
+    return near - ALIGN_GAIN * aligned
