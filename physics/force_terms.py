@@ -71,7 +71,8 @@ class ContactPushes:
         self.share_i, self.share_j = self.inverse_mass[i] / total, self.inverse_mass[j] / total
         self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm,
                                     self.insets)
-        self.touch_reach = self.halves[i] + self.halves[j]  # centre distance where they touch
+        # centre distance where they touch
+        self.touch_reach = self.halves.take(i, axis=0) + self.halves.take(j, axis=0)
         self.reach = self.touch_reach + self.gap
         self.built_at = bodies.centres.copy()
 
@@ -91,7 +92,8 @@ class ContactPushes:
 
     def overlapping(self, centres: np.ndarray) -> bool:
         """Whether any two items' rectangles (not their halos) overlap."""
-        depth = self.touch_reach - np.abs(centres[self.j] - centres[self.i])
+        depth = self.touch_reach - np.abs(centres.take(self.j, axis=0)
+                                          - centres.take(self.i, axis=0))
         return bool(((depth[:, 0] > 0) & (depth[:, 1] > 0)).any())
 
 

@@ -118,7 +118,9 @@ def separate_coincident(bodies: Bodies, i: np.ndarray, j: np.ndarray, movable: n
 
     Returns whether anything moved.  Deterministic for a given generator state.
     """
-    same = (np.abs(bodies.centres[j] - bodies.centres[i]) < COINCIDENT_MM).all(axis=1)
+    centres = bodies.centres  # take, not [j]: see fast_forces' module doc
+    offsets = centres.take(j, axis=0) - centres.take(i, axis=0)
+    same = (np.abs(offsets) < COINCIDENT_MM).all(axis=1)
     if not same.any():
         return False
     rows = np.where(movable[j[same]], j[same], i[same])
