@@ -111,6 +111,9 @@ class _Projection:
         active = bodies.active
         self.rows_active = np.flatnonzero(active)
         self.free_rows = np.flatnonzero(bodies.free)
+        # A plain slice when every item is free: indexing by an array of all rows copies and,
+        # for (n, 2) arrays, is slow (see fast_forces' module doc).
+        self.moving = slice(None) if bodies.free.all() else self.free_rows
         self.roots, self.root_offsets = bodies.group_roots()
         self.followers = bodies.followers
         self.halves = bodies.sizes / 2
@@ -138,7 +141,7 @@ class _Projection:
         self.clamp()
 
     def clamp(self) -> None:
-        clamp_to_page(self.bodies.centres, self.bodies.velocities, self.free_rows, *self.bounds)
+        clamp_to_page(self.bodies.centres, self.bodies.velocities, self.moving, *self.bounds)
         enforce_positions(self.bodies, self.roots, self.root_offsets)
 
     def pairs(self, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -146,6 +149,13 @@ class _Projection:
                                reach)
         return i, j, blocked_axes(self.bodies.sizes, i, j, *self.page, self.gutter_mm,
                                   self.insets)
+
+    def pair_halves(self, i: np.ndarray, j: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Per pair, the two half sizes summed (the centre distance at which they touch) and
+        twice the smaller (the deepest an overlap can be), (m, 2) each: fixed while the list
+        lasts, so worked out once per list rather than every iteration."""
+        halves_i, halves_j = self.halves.take(i, axis=0), self.halves.take(j, axis=0)
+        return halves_i + halves_j, 2 * np.minimum(halves_i, halves_j)
 
     def violations(self, clearance: float) -> int:
         i, j, blocked = self.pairs(clearance)
@@ -164,15 +174,15 @@ class _Projection:
         i, j, blocked = self.pairs(clearance + skin)
         built_at = bodies.centres.copy()
         best, best_score = bodies.centres.copy(), np.inf
-        hsum = self.halves[i] + self.halves[j]
+        hsum, deepest = self.pair_halves(i, j)
         last_gain = 0
         for iteration in range(iterations):
             if np.abs(bodies.centres - built_at).max() > skin / 2:
                 i, j, blocked = self.pairs(clearance + skin)
                 built_at = bodies.centres.copy()
-                hsum = self.halves[i] + self.halves[j]
+                hsum, deepest = self.pair_halves(i, j)
             # One pass over the pairs' geometry serves every test of this iteration.
-            d = bodies.centres[j] - bodies.centres[i]
+            d = bodies.centres.take(j, axis=0) - bodies.centres.take(i, axis=0)
             gaps = np.abs(d) - hsum  # edge-to-edge gap along x and y; negative inside
             reached = gaps.max(axis=1) if len(i) else np.empty(0)
             self.note_reached(clearance if len(i) == 0 else min(float(reached.min()), clearance))
@@ -180,8 +190,7 @@ class _Projection:
                 return True
             moves = moves_from_gaps(d, gaps, aim, blocked)
             violating = (moves != 0).any(axis=1)
-            depth = np.minimum(np.clip(-gaps, 0.0, None),
-                               2 * np.minimum(self.halves[i], self.halves[j]))
+            depth = np.minimum(np.clip(-gaps, 0.0, None), deepest)
             score = float((depth[:, 0] * depth[:, 1]).sum()) + np.abs(moves).sum()
             if score < best_score:
                 if score < best_score * (1.0 - STALL_GAIN):
@@ -189,7 +198,7 @@ class _Projection:
                 best, best_score = bodies.centres.copy(), score
             elif iteration - last_gain > STALL_ITERATIONS:
                 break  # neighbours only undo each other's moves: this aim is out of reach
-            vi, vj, moves = i[violating], j[violating], moves[violating]
+            vi, vj, moves = i[violating], j[violating], moves.compress(violating, axis=0)
             inv = self.inverse_mass
             total = inv[vi] + inv[vj]
             total = np.where(total > 0, total, 1.0)
@@ -202,7 +211,7 @@ class _Projection:
             # their number: plain sums overshoot in stacks, plain averages crawl.
             touches = np.bincount(vi, minlength=count) + np.bincount(vj, minlength=count)
             shift *= RELAXATION / np.sqrt(np.maximum(touches, 1))[:, None]
-            bodies.centres[self.free_rows] += shift[self.free_rows]
+            bodies.centres[self.moving] += shift[self.moving]
             self.clamp()
         if self.violations(clearance) == 0:
             self.note_reached(clearance)
