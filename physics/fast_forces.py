@@ -24,6 +24,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from floatpage.physics.geometry import squared_norms, sum_xy
+
 FILL = 0.9  # halo-grown item area / page area that target_gap aims at
 RADIAL_SHARE = 0.5  # share of a push directed along the line between the centres
 # A push prefers the axis of least penetration by the 4th power of the depths (see touching_pushes).
@@ -210,7 +212,7 @@ def touching_pushes(centres: np.ndarray, reach: np.ndarray, i: np.ndarray, j: np
     penetration = reach - np.abs(d)
     # Only touching pairs push: the rest of the arithmetic runs on them alone (in a crowd of
     # 10,000 items this was most of a step), element for element as on all pairs.
-    touching = np.flatnonzero((penetration[:, 0] > 0) & (penetration[:, 1] > 0))
+    touching = (np.minimum(penetration[:, 0], penetration[:, 1]) > 0).nonzero()[0]
     if not len(touching):
         return touching, np.zeros((0, 2))
     d, penetration = d.take(touching, axis=0), penetration.take(touching, axis=0)
@@ -223,7 +225,7 @@ def touching_pushes(centres: np.ndarray, reach: np.ndarray, i: np.ndarray, j: np
     if blocked is not None:
         sharp = np.where(blocked[:, ::-1], 0.0, sharp)  # a blocked axis gets no share
         sharp = np.where(blocked, sharp + 1.0, sharp)  # ...and leaves it all to the other
-    total = sharp[:, 0] + sharp[:, 1]
+    total = sum_xy(sharp)
     total[total == 0] = 1.0
     weights = sharp[:, ::-1] / total[:, None]  # x takes the y share and vice versa
     ahead = d >= 0
@@ -235,15 +237,14 @@ def touching_pushes(centres: np.ndarray, reach: np.ndarray, i: np.ndarray, j: np
     # up or down into a roomier row; pure axis pushes would keep the row jammed.  It is not
     # the gradient of any energy (it makes touching items slide along each other), so the
     # fast mode fades it out as the page cools.
-    dx, dy = d[:, 0], d[:, 1]
-    length = np.sqrt(dx * dx + dy * dy)
+    length = np.sqrt(squared_norms(d))
     length[length == 0] = 1.0
-    px, py = pushes[:, 0], pushes[:, 1]
-    depth = np.sqrt(px * px + py * py)
+    depth = np.sqrt(squared_norms(pushes))
     radial = (radial_share * depth / length)[:, None] * d
     if blocked is not None:
         radial[blocked] = 0.0
-    return touching, pushes + radial
+    pushes += radial
+    return touching, pushes
 
 
 def wall_rest_box(halves: np.ndarray, page_w_mm: float, page_h_mm: float, margin,

@@ -27,7 +27,7 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import blocked_axes, candidate_pairs
-from floatpage.physics.geometry import clamp_to_page, group_bounds
+from floatpage.physics.geometry import AXES, any_xy, clamp_to_page, group_bounds, max_xy
 
 MAX_ITERATIONS = 1000
 SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
@@ -60,7 +60,7 @@ def pair_clearances(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: n
     """Clearance of each pair (i, j): the larger of its edge-to-edge gaps along x and along y,
     negative when the two overlap.  A pair keeps a clearance c when this is at least c."""
     gaps = np.abs(centres[j] - centres[i]) - halves[i] - halves[j]
-    return gaps.max(axis=1)
+    return max_xy(gaps)
 
 
 def separation_moves(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray,
@@ -116,6 +116,9 @@ class _Projection:
         self.moving = slice(None) if bodies.free.all() else self.free_rows
         self.roots, self.root_offsets = bodies.group_roots()
         self.followers = bodies.followers
+        # Without held items, hard anchors or followers, enforce_positions (some ten NumPy
+        # calls every iteration) would only stop the decorations again.
+        self.constrained = bool((bodies.held | bodies.hard | self.followers).any())
         self.halves = bodies.sizes / 2
         charges = np.where(active, bodies.charges, 0.0)
         group_mass = np.bincount(self.roots, weights=charges, minlength=bodies.count)
@@ -142,7 +145,10 @@ class _Projection:
 
     def clamp(self) -> None:
         clamp_to_page(self.bodies.centres, self.bodies.velocities, self.moving, *self.bounds)
-        enforce_positions(self.bodies, self.roots, self.root_offsets)
+        if self.constrained:
+            enforce_positions(self.bodies, self.roots, self.root_offsets)
+        else:
+            self.bodies.velocities[self.bodies.decorative] = 0.0
 
     def pairs(self, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         i, j = candidate_pairs(self.bodies.centres, self.halves, self.rows_active, self.roots,
@@ -160,7 +166,7 @@ class _Projection:
     def violations(self, clearance: float) -> int:
         i, j, blocked = self.pairs(clearance)
         moves = separation_moves(self.bodies.centres, self.halves, i, j, clearance, blocked)
-        return int((moves != 0).any(axis=1).sum())
+        return int(any_xy(moves != 0).sum())
 
     def run(self, clearance: float, iterations: int, aim: float | None = None) -> bool:
         """Jacobi projection in place; True once no pair is closer than ``clearance``.
@@ -184,13 +190,13 @@ class _Projection:
             # One pass over the pairs' geometry serves every test of this iteration.
             d = bodies.centres.take(j, axis=0) - bodies.centres.take(i, axis=0)
             gaps = np.abs(d) - hsum  # edge-to-edge gap along x and y; negative inside
-            reached = gaps.max(axis=1) if len(i) else np.empty(0)
-            self.note_reached(clearance if len(i) == 0 else min(float(reached.min()), clearance))
-            if not (reached < clearance).any():
+            closest = float(max_xy(gaps).min()) if len(i) else clearance
+            self.note_reached(min(closest, clearance))
+            if closest >= clearance:
                 return True
             moves = moves_from_gaps(d, gaps, aim, blocked)
-            violating = (moves != 0).any(axis=1)
-            depth = np.minimum(np.clip(-gaps, 0.0, None), deepest)
+            violating = any_xy(moves != 0)
+            depth = np.minimum(np.maximum(-gaps, 0.0), deepest)
             score = float((depth[:, 0] * depth[:, 1]).sum()) + np.abs(moves).sum()
             if score < best_score:
                 if score < best_score * (1.0 - STALL_GAIN):
@@ -202,10 +208,14 @@ class _Projection:
             inv = self.inverse_mass
             total = inv[vi] + inv[vj]
             total = np.where(total > 0, total, 1.0)
-            shift = np.empty((count, 2))
-            for axis in (0, 1):
-                shift[:, axis] = (np.bincount(vj, moves[:, axis] * inv[vj] / total, count)
-                                  - np.bincount(vi, moves[:, axis] * inv[vi] / total, count))
+            # both axes in one bincount each (slot 2 r + axis, as ContactPushes.add_to)
+            total = total[:, None]
+            slots = 2 * count
+            shift = (np.bincount((2 * vj[:, None] + AXES).ravel(),
+                                 (moves * inv[vj][:, None] / total).ravel(), slots)
+                     - np.bincount((2 * vi[:, None] + AXES).ravel(),
+                                   (moves * inv[vi][:, None] / total).ravel(), slots)
+                     ).reshape(count, 2)
             hand_forces_to_roots(shift, self.roots, self.followers)
             # An item asked to move by several pairs takes their sum over the square root of
             # their number: plain sums overshoot in stacks, plain averages crawl.
