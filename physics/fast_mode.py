@@ -10,6 +10,8 @@ Verlet neighbour list).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from floatpage.physics.bodies import Bodies
@@ -18,7 +20,7 @@ from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
 from floatpage.physics.guides import GUIDE_HEAT, HOLD_HEAT, guide_pulls
 from floatpage.physics.geometry import (
-    ROOMY_COVER, as_insets, clamp_to_page, group_bounds, grown_cover, lines_up,
+    ROOMY_COVER, as_insets, clamp_to_page, group_bounds, grown_cover, lines_up, squared_norms,
 )
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
@@ -135,9 +137,12 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
         if any_followers:
             hand_forces_to_roots(acc, roots, followers)
         velocities = (bodies.velocities[moving] + heat * acc[moving]) * (1.0 - FRICTION)
-        speeds = np.sqrt(velocities[:, 0] * velocities[:, 0] + velocities[:, 1] * velocities[:, 1])
-        top_speed = speeds.max()
+        # The top speed is the root of the largest square (the root is monotonic): the speeds
+        # themselves are only needed on a step that has to slow something down.
+        squares = squared_norms(velocities)
+        top_speed = math.sqrt(squares.max())
         if top_speed > speed_limit:
+            speeds = np.sqrt(squares)
             too_fast = speeds > speed_limit
             velocities[too_fast] *= (speed_limit / speeds[too_fast])[:, None]
         bodies.velocities[moving] = velocities
@@ -152,7 +157,7 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
             # one a jam pressed into the walls keeps cooling, sliding slowly apart, unless
             # nothing overlaps any more.
             after = bodies.velocities[moving]
-            walled = np.sqrt((after * after).sum(axis=1).max())
+            walled = np.sqrt(squared_norms(after).max())
             if walled < still_speed and (roomy or not contacts.overlapping(bodies.centres)):
                 top_speed = walled
         if top_speed < still_speed:

@@ -18,6 +18,34 @@ FEW_ITEMS = 12
 FEW_ITEMS_COVER = 0.85  # and their gutter fits (Engine's second start uses the same bound)
 JITTER_MM = 0.5  # size of the seeded nudge that separates items on one point (A4)
 COINCIDENT_MM = 1e-6
+# x, y: in a flattened (n, 2) array row r's value on axis a sits at 2 r + a, so one bincount
+# over these slots sums both axes of per-pair pushes at once
+AXES = np.arange(2)
+
+
+def sum_xy(values: np.ndarray) -> np.ndarray:
+    """x + y of each row of an (m, 2) array, shape (m,).
+
+    The row helpers here work column by column: a NumPy reduction along an axis of length 2
+    (``values.sum(axis=1)``) pays its loop set-up once per row, 1.7 ms for 75,000 rows against
+    0.16 ms for the columns, the same values (two numbers are added, or compared, one way)."""
+    return values[:, 0] + values[:, 1]
+
+
+def squared_norms(values: np.ndarray) -> np.ndarray:
+    """x^2 + y^2 of each row of an (m, 2) array (see sum_xy)."""
+    x, y = values[:, 0], values[:, 1]
+    return x * x + y * y
+
+
+def max_xy(values: np.ndarray) -> np.ndarray:
+    """The larger of x and y in each row of an (m, 2) array (see sum_xy)."""
+    return np.maximum(values[:, 0], values[:, 1])
+
+
+def any_xy(flags: np.ndarray) -> np.ndarray:
+    """Whether x or y is set in each row of an (m, 2) bool array (see sum_xy)."""
+    return flags[:, 0] | flags[:, 1]
 
 
 def grown_cover(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: float,
@@ -128,7 +156,10 @@ def separate_coincident(bodies: Bodies, i: np.ndarray, j: np.ndarray, movable: n
 
     Returns whether anything moved.  Deterministic for a given generator state.
     """
-    same = (np.abs(bodies.centres[j] - bodies.centres[i]) < COINCIDENT_MM).all(axis=1)
+    centres = bodies.centres  # take, not [j]: see fast_forces' module doc
+    offsets = centres.take(j, axis=0) - centres.take(i, axis=0)
+    close = np.abs(offsets) < COINCIDENT_MM
+    same = close[:, 0] & close[:, 1]
     if not same.any():
         return False
     rows = np.where(movable[j[same]], j[same], i[same])
