@@ -74,14 +74,13 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
     of moves made.  ``clearance_mm`` is the gap every pair must keep (the gutter plus the
     rounding slack), ``margin_mm`` the page's print-safe margin; strength 0 does nothing.
 
-    The first sweep tries every free item on both axes; a later one mostly the items with a
-    feature near one that moved on that axis, and the last sweep every item again."""
+    The first sweep tries every free item on both axes; a later one only the items with a
+    feature near one that moved on that axis (nothing else can have a better move now)."""
     if strength <= 0:
         return 0
     snapper = _Snapper(bodies, (page_w_mm, page_h_mm), clearance_mm, margin_mm, rest)
     moves = 0
     todo = [snapper.movers, snapper.movers]
-    everyone = True
     for _ in range(MAX_SWEEPS):
         moved_any = False
         for axis in (0, 1):
@@ -90,14 +89,7 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
             moves += len(moved)
             moved_any = moved_any or bool(moved)
         if not moved_any:
-            if everyone:
-                break
-            # A move can free an item it does not share a line with (a neighbour across the
-            # axis that blocked it, or held it at rest): the sweeps end only after a full one
-            # finds nothing.  Ended sooner, the next settle's snap made 40-80 more moves
-            # on a 50-item page, and settle_page needed a probe more to find it at rest.
-            todo = [snapper.movers, snapper.movers]
-        everyone = not moved_any
+            break
     return moves
 
 
