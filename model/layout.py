@@ -14,6 +14,7 @@ import numpy as np
 
 from floatpage.physics import Engine, Params, Quality, SettleReport
 from floatpage.physics.finalize import ROUNDING_MM
+from floatpage.physics.snapping import ESCAPE_REACH
 from floatpage.model.errors import FloatpageError
 from floatpage.model.document import (
     Item, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
@@ -23,6 +24,9 @@ POSITION_DECIMALS = 2  # positions are written back to 0.01 mm
 FIXED_POINT_ROUNDS = 20  # probes before giving up on a fixed point (most pages need 1-3)
 PROBE_HEAT = 0.02  # the heat of the gentle run that tells whether a layout is at rest
 AT_REST_MM = 0.25  # a layout that settling moves no further than this is at rest (below what print shows)
+PROBE_ALIGNS_WITHIN = 4  # a probe whose run moves an item further than 4 snap ranges (16 mm on
+# A4) found the page far from rest: it skips the alignment snap (Engine.settle); a later probe,
+# nearer rest, snaps
 STUCK_ROUNDS = 3  # probes without gain that prove a too-full page stuck
 
 
@@ -202,9 +206,14 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
       one's result, never reach rest and never improve on it (``layout_score``: fewer overlaps,
       fewer items off the page, a wider smallest gap, or a probe that moves items less).
 
-    Otherwise one full run, then probes, each adopting its own result, until one finds the
-    layout at rest, or the best layout of the sequence proves stuck.  Both tests are repeated
-    by a later settle on the same numbers and find the same, so it changes no byte.
+    Otherwise a layout *near rest* (it keeps every guarantee, and so does its probe, which
+    moves no item further than the alignment snap's longest move, ``ESCAPE_REACH`` snap
+    ranges, on a page roomy enough to be lined up) keeps its probe's result: a settled file
+    whose lines the snap can improve, or a file moved a little by hand, stays the layout it
+    was instead of being laid out anew.  Any other layout gets one full run.  Then probes,
+    each adopting its own result, until one finds the layout at rest, or the best layout of
+    the sequence proves stuck.  Both tests are repeated by a later settle on the same numbers
+    and find the same, so it changes no byte.
     """
     refuse_piled_up(page)
     first = probe_rest(page, settings, max_steps)
@@ -212,10 +221,13 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
         return replace(first.report, fixed_point=True)
     if proves_stuck(first, settings, max_steps):
         return replace(first.report, fixed_point=True)
-    engine = engine_for_page(page, settings)
-    engine.reheat()
-    report = engine.settle(max_steps)
-    write_back(page, engine)
+    if first.near_rest:
+        page.items, report = first.trial.items, first.report
+    else:
+        engine = engine_for_page(page, settings)
+        engine.reheat()
+        report = engine.settle(max_steps)
+        write_back(page, engine)
     best: tuple[list, tuple, SettleReport] | None = None  # items, score, report
     rounds_without_gain = 0
     for _ in range(max_rounds):
@@ -253,20 +265,26 @@ class Probe:
     report: SettleReport
     trial: Page  # the page the probe leaves, positions rounded as a save would write them
     at_rest: bool
+    near_rest: bool
     score: tuple[int, int, int, float, float]  # lower is better (see layout_score)
 
 
 def probe_rest(page: Page, settings: PhysicsSettings, max_steps: int) -> Probe:
-    """A gentle run from the page as it is, then the no-overlap pass and the rounding of a
-    save: what settling would make of the page if it were nearly at rest."""
+    """A gentle run from the page as it is, then the no-overlap pass, the alignment snap and
+    the rounding of a save: what settling would make of the page if it were nearly at rest.
+    The snap is left out if the run found the page far from rest."""
     engine = engine_for_page(page, settings)
     before = engine.quality()
     engine.reheat(PROBE_HEAT)
-    report = engine.settle(max_steps)
+    report = engine.settle(max_steps,
+                           align_within_mm=PROBE_ALIGNS_WITHIN * engine.snap_range_mm)
     trial = copy_of(page)
     moved = write_back(trial, engine)
-    at_rest = moved <= AT_REST_MM and keeps_guarantees(before, engine.quality())
-    return Probe(report, trial, at_rest, layout_score(before, moved))
+    sound = keeps_guarantees(before, engine.quality())
+    at_rest = moved <= AT_REST_MM and sound
+    near_rest = (engine.lines_up and sound and report.fits and before.overlap_count == 0
+                 and not before.off_page and moved <= ESCAPE_REACH * engine.snap_range_mm)
+    return Probe(report, trial, at_rest, near_rest, layout_score(before, moved))
 
 
 def layout_score(quality: Quality, probe_moved_mm: float) -> tuple[int, int, int, float, float]:

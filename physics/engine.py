@@ -19,7 +19,8 @@ from floatpage.physics.bodies import NO_TARGET, Bodies
 from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
 from floatpage.physics.finalize import ROUNDING_MM, remove_overlaps
-from floatpage.physics.geometry import ROOMY_COVER, grown_cover
+from floatpage.physics.geometry import grown_cover, lines_up
+from floatpage.physics.guides import snap_range
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.params import Params, page_margin
@@ -103,6 +104,11 @@ class Engine:
     def sizes(self) -> dict[str, tuple[float, float]]:
         return {item_id: (float(w), float(h))
                 for item_id, (w, h) in zip(self._ids, self._bodies.sizes)}
+
+    @property
+    def snap_range_mm(self) -> float:
+        """How near a feature must come to a guide line to be pulled onto it (4 mm on A4)."""
+        return snap_range(self.page_w_mm, self.page_h_mm)
 
     def quality(self) -> Quality:
         return measure_quality(self.page_w_mm, self.page_h_mm, self._bodies.centres,
@@ -308,23 +314,25 @@ class Engine:
             total += self._run(min(chunk, limit - total))
         return total
 
-    def finalize(self, *, fall_back: bool = True) -> bool:
-        """The no-overlap pass; returns whether every pair now keeps the gutter.  Without
-        ``fall_back`` a page that misses the gutter is left as the first attempt leaves it,
-        for a second start to try, instead of searching for the widest gap it can keep."""
+    def finalize(self, *, fall_back: bool = True, align: bool = True) -> bool:
+        """The no-overlap pass, then the alignment snap unless not ``align``; returns whether
+        every pair now keeps the gutter.  Without ``fall_back`` a page that misses the gutter
+        is left as the first attempt leaves it, for a second start to try, instead of
+        searching for the widest gap it can keep."""
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
                                self.params.gutter_mm, margin_mm=self.margin_mm,
                                fall_back=fall_back)
-        if fits and self._roomy():  # on a page too full for the gutter, or nearly, alignment
-            snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)  # gives way
+        if fits and align and self.lines_up:  # on a page too full for the gutter, or nearly,
+            snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)  # it gives way
         self._bodies.velocities[:] = 0.0
         return fits
 
-    def _roomy(self) -> bool:
-        """Whether the page has room to line items up (geometry.ROOMY_COVER): on a fuller one
+    @property
+    def lines_up(self) -> bool:
+        """Whether the page has room to line items up (geometry.lines_up): on a fuller one
         the snap found little (200 items covering half of A4 with the gutter kept: 18.5 near
         misses an item before it, 17.3 after) at the cost of two thirds of the settle."""
-        return self._grown_cover() <= ROOMY_COVER
+        return lines_up(self._grown_cover(), int(self._bodies.active.sum()))
 
     def _grown_cover(self) -> float:
         """How tight the page is (geometry.grown_cover) within its walls."""
@@ -332,18 +340,34 @@ class Engine:
         return grown_cover(self._bodies, near, far, self.page_w_mm, self.page_h_mm,
                            self.params.gutter_mm)
 
-    def settle(self, max_steps: int = 200_000, *, finalize: bool = True) -> SettleReport:
+    def settle(self, max_steps: int = 200_000, *, finalize: bool = True,
+               align_within_mm: float = math.inf) -> SettleReport:
         """Headless: run until settled (or ``max_steps``), then the no-overlap pass; if that
-        misses the gutter on a page where it fits, once more from a second start."""
+        misses the gutter on a page where it fits, once more from a second start.
+
+        The alignment snap runs only if the run moved no item further than
+        ``align_within_mm``.  A settle that asks whether a page is at rest (model.layout's
+        probes) need not line up a page it finds far from rest: it does not keep that layout
+        as it is, and a later probe lines it up.  On a scattered page those snaps were half
+        the settle's time."""
+        start = self._bodies.centres.copy()
         steps = self._run_until_settled(max_steps)
         energy = self.kinetic_energy
         fits = True
         if finalize:
             second_start = self._second_start_applies()
-            fits = self.finalize(fall_back=not second_start)
+            align = self._moved_at_most(start, align_within_mm)
+            fits = self.finalize(fall_back=not second_start, align=align)
             if not fits and second_start:
-                fits = self._settle_from_packing(max_steps)
+                fits = self._settle_from_packing(max_steps, align)
         return SettleReport(steps=steps, energy=energy, settled=self._settled, fits=fits)
+
+    def _moved_at_most(self, start: np.ndarray, limit_mm: float) -> bool:
+        if limit_mm == math.inf:
+            return True
+        active = self._bodies.active
+        return bool(np.abs(self._bodies.centres[active] - start[active]).max(initial=0.0)
+                    <= limit_mm)
 
     def _run_until_settled(self, max_steps: int) -> int:
         steps = 0
@@ -364,7 +388,7 @@ class Engine:
             return False
         return self._grown_cover() <= GUTTER_FITS_COVER
 
-    def _settle_from_packing(self, max_steps: int) -> bool:
+    def _settle_from_packing(self, max_steps: int, align: bool = True) -> bool:
         """The second start: the items packed (packing.packed_layout) and settled gently from
         there; if the physics jams again, the packing itself, which holds the gutter by
         construction (less evenly spread than the physics would leave it).  Should neither
@@ -377,7 +401,7 @@ class Engine:
         packed = packed_layout(bodies.sizes[rows], low, high,
                                self.params.gutter_mm + 2 * ROUNDING_MM)
         if packed is None:
-            return self.finalize()
+            return self.finalize(align=align)
         first = bodies.centres.copy()
         start = first.copy()
         start[rows] = packed
@@ -385,10 +409,10 @@ class Engine:
         bodies.velocities[:] = 0.0
         self.reheat(SECOND_START_HEAT)
         self._run_until_settled(max_steps)
-        if self.finalize(fall_back=False):
+        if self.finalize(fall_back=False, align=align):
             return True
         bodies.centres[:] = start
-        if self.finalize(fall_back=False):
+        if self.finalize(fall_back=False, align=align):
             return True
         bodies.centres[:] = first
-        return self.finalize()
+        return self.finalize(align=align)

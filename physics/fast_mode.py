@@ -10,6 +10,8 @@ Verlet neighbour list).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from floatpage.physics.bodies import Bodies
@@ -18,7 +20,7 @@ from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
 from floatpage.physics.guides import GUIDE_HEAT, HOLD_HEAT, guide_pulls
 from floatpage.physics.geometry import (
-    ROOMY_COVER, as_insets, clamp_to_page, group_bounds, grown_cover,
+    ROOMY_COVER, as_insets, clamp_to_page, group_bounds, grown_cover, lines_up, squared_norms,
 )
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.stillness import STILL_MM_PER_FRAME
@@ -55,7 +57,7 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
     """The forces the fast mode sums every step; a new force is one more entry here (the
     contacts come first: the step loop asks them whether any items still overlap).
     ``margins`` and ``far_margins`` are where the walls stand (Bodies.insets); ``align`` is
-    False on a page too full to line up (geometry.ROOMY_COVER), where alignment gives way (as
+    False on a page too full to line up (geometry.lines_up), where alignment gives way (as
     the snap does, Engine.finalize): a guide's pull against a pressed crowd only kept it
     creeping until the lines' hold stopped it."""
     halves = bodies.sizes / 2
@@ -118,13 +120,15 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     # moves, the heat drops to where the alignment guides pull, and cools from there at
     # GUIDED_COOLING a step, until the page is still on its lines below the heat at which the
     # lines hold (without guides, or on a page too full to line up, nothing more to wait for).
-    roomy = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm) <= ROOMY_COVER
-    guides_on = params.guides > 0 and roomy
+    cover = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm)
+    roomy = cover <= ROOMY_COVER
+    aligns = lines_up(cover, int(active.sum()))
+    guides_on = params.guides > 0 and aligns
     guided_heat = GUIDE_HEAT * 0.9
     settled_below = HOLD_HEAT if guides_on else np.inf
     count = bodies.count
     forces = fast_forces(bodies, page_w_mm, page_h_mm, params, rng, roots, movable,
-                         inverse_mass, gap, skin, near, far, align=roomy)
+                         inverse_mass, gap, skin, near, far, align=aligns)
     contacts = forces[0]
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))
@@ -133,9 +137,12 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
         if any_followers:
             hand_forces_to_roots(acc, roots, followers)
         velocities = (bodies.velocities[moving] + heat * acc[moving]) * (1.0 - FRICTION)
-        speeds = np.sqrt(velocities[:, 0] * velocities[:, 0] + velocities[:, 1] * velocities[:, 1])
-        top_speed = speeds.max()
+        # The top speed is the root of the largest square (the root is monotonic): the speeds
+        # themselves are only needed on a step that has to slow something down.
+        squares = squared_norms(velocities)
+        top_speed = math.sqrt(squares.max())
         if top_speed > speed_limit:
+            speeds = np.sqrt(squares)
             too_fast = speeds > speed_limit
             velocities[too_fast] *= (speed_limit / speeds[too_fast])[:, None]
         bodies.velocities[moving] = velocities
@@ -150,7 +157,7 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
             # one a jam pressed into the walls keeps cooling, sliding slowly apart, unless
             # nothing overlaps any more.
             after = bodies.velocities[moving]
-            walled = np.sqrt((after * after).sum(axis=1).max())
+            walled = np.sqrt(squared_norms(after).max())
             if walled < still_speed and (roomy or not contacts.overlapping(bodies.centres)):
                 top_speed = walled
         if top_speed < still_speed:

@@ -27,7 +27,7 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import blocked_axes, candidate_pairs
-from floatpage.physics.geometry import clamp_to_page, group_bounds
+from floatpage.physics.geometry import AXES, any_xy, clamp_to_page, group_bounds, max_xy
 
 MAX_ITERATIONS = 1000
 SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
@@ -60,7 +60,7 @@ def pair_clearances(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: n
     """Clearance of each pair (i, j): the larger of its edge-to-edge gaps along x and along y,
     negative when the two overlap.  A pair keeps a clearance c when this is at least c."""
     gaps = np.abs(centres[j] - centres[i]) - halves[i] - halves[j]
-    return gaps.max(axis=1)
+    return max_xy(gaps)
 
 
 def separation_moves(centres: np.ndarray, halves: np.ndarray, i: np.ndarray, j: np.ndarray,
@@ -111,8 +111,14 @@ class _Projection:
         active = bodies.active
         self.rows_active = np.flatnonzero(active)
         self.free_rows = np.flatnonzero(bodies.free)
+        # A plain slice when every item is free: indexing by an array of all rows copies and,
+        # for (n, 2) arrays, is slow (see fast_forces' module doc).
+        self.moving = slice(None) if bodies.free.all() else self.free_rows
         self.roots, self.root_offsets = bodies.group_roots()
         self.followers = bodies.followers
+        # Without held items, hard anchors or followers, enforce_positions (some ten NumPy
+        # calls every iteration) would only stop the decorations again.
+        self.constrained = bool((bodies.held | bodies.hard | self.followers).any())
         self.halves = bodies.sizes / 2
         charges = np.where(active, bodies.charges, 0.0)
         group_mass = np.bincount(self.roots, weights=charges, minlength=bodies.count)
@@ -138,8 +144,11 @@ class _Projection:
         self.clamp()
 
     def clamp(self) -> None:
-        clamp_to_page(self.bodies.centres, self.bodies.velocities, self.free_rows, *self.bounds)
-        enforce_positions(self.bodies, self.roots, self.root_offsets)
+        clamp_to_page(self.bodies.centres, self.bodies.velocities, self.moving, *self.bounds)
+        if self.constrained:
+            enforce_positions(self.bodies, self.roots, self.root_offsets)
+        else:
+            self.bodies.velocities[self.bodies.decorative] = 0.0
 
     def pairs(self, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         i, j = candidate_pairs(self.bodies.centres, self.halves, self.rows_active, self.roots,
@@ -147,10 +156,17 @@ class _Projection:
         return i, j, blocked_axes(self.bodies.sizes, i, j, *self.page, self.gutter_mm,
                                   self.insets)
 
+    def pair_halves(self, i: np.ndarray, j: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Per pair, the two half sizes summed (the centre distance at which they touch) and
+        twice the smaller (the deepest an overlap can be), (m, 2) each: fixed while the list
+        lasts, so worked out once per list rather than every iteration."""
+        halves_i, halves_j = self.halves.take(i, axis=0), self.halves.take(j, axis=0)
+        return halves_i + halves_j, 2 * np.minimum(halves_i, halves_j)
+
     def violations(self, clearance: float) -> int:
         i, j, blocked = self.pairs(clearance)
         moves = separation_moves(self.bodies.centres, self.halves, i, j, clearance, blocked)
-        return int((moves != 0).any(axis=1).sum())
+        return int(any_xy(moves != 0).sum())
 
     def run(self, clearance: float, iterations: int, aim: float | None = None) -> bool:
         """Jacobi projection in place; True once no pair is closer than ``clearance``.
@@ -164,24 +180,23 @@ class _Projection:
         i, j, blocked = self.pairs(clearance + skin)
         built_at = bodies.centres.copy()
         best, best_score = bodies.centres.copy(), np.inf
-        hsum = self.halves[i] + self.halves[j]
+        hsum, deepest = self.pair_halves(i, j)
         last_gain = 0
         for iteration in range(iterations):
             if np.abs(bodies.centres - built_at).max() > skin / 2:
                 i, j, blocked = self.pairs(clearance + skin)
                 built_at = bodies.centres.copy()
-                hsum = self.halves[i] + self.halves[j]
+                hsum, deepest = self.pair_halves(i, j)
             # One pass over the pairs' geometry serves every test of this iteration.
-            d = bodies.centres[j] - bodies.centres[i]
+            d = bodies.centres.take(j, axis=0) - bodies.centres.take(i, axis=0)
             gaps = np.abs(d) - hsum  # edge-to-edge gap along x and y; negative inside
-            reached = gaps.max(axis=1) if len(i) else np.empty(0)
-            self.note_reached(clearance if len(i) == 0 else min(float(reached.min()), clearance))
-            if not (reached < clearance).any():
+            closest = float(max_xy(gaps).min()) if len(i) else clearance
+            self.note_reached(min(closest, clearance))
+            if closest >= clearance:
                 return True
             moves = moves_from_gaps(d, gaps, aim, blocked)
-            violating = (moves != 0).any(axis=1)
-            depth = np.minimum(np.clip(-gaps, 0.0, None),
-                               2 * np.minimum(self.halves[i], self.halves[j]))
+            violating = any_xy(moves != 0)
+            depth = np.minimum(np.maximum(-gaps, 0.0), deepest)
             score = float((depth[:, 0] * depth[:, 1]).sum()) + np.abs(moves).sum()
             if score < best_score:
                 if score < best_score * (1.0 - STALL_GAIN):
@@ -189,20 +204,24 @@ class _Projection:
                 best, best_score = bodies.centres.copy(), score
             elif iteration - last_gain > STALL_ITERATIONS:
                 break  # neighbours only undo each other's moves: this aim is out of reach
-            vi, vj, moves = i[violating], j[violating], moves[violating]
+            vi, vj, moves = i[violating], j[violating], moves.compress(violating, axis=0)
             inv = self.inverse_mass
             total = inv[vi] + inv[vj]
             total = np.where(total > 0, total, 1.0)
-            shift = np.empty((count, 2))
-            for axis in (0, 1):
-                shift[:, axis] = (np.bincount(vj, moves[:, axis] * inv[vj] / total, count)
-                                  - np.bincount(vi, moves[:, axis] * inv[vi] / total, count))
+            # both axes in one bincount each (slot 2 r + axis, as ContactPushes.add_to)
+            total = total[:, None]
+            slots = 2 * count
+            shift = (np.bincount((2 * vj[:, None] + AXES).ravel(),
+                                 (moves * inv[vj][:, None] / total).ravel(), slots)
+                     - np.bincount((2 * vi[:, None] + AXES).ravel(),
+                                   (moves * inv[vi][:, None] / total).ravel(), slots)
+                     ).reshape(count, 2)
             hand_forces_to_roots(shift, self.roots, self.followers)
             # An item asked to move by several pairs takes their sum over the square root of
             # their number: plain sums overshoot in stacks, plain averages crawl.
             touches = np.bincount(vi, minlength=count) + np.bincount(vj, minlength=count)
             shift *= RELAXATION / np.sqrt(np.maximum(touches, 1))[:, None]
-            bodies.centres[self.free_rows] += shift[self.free_rows]
+            bodies.centres[self.moving] += shift[self.moving]
             self.clamp()
         if self.violations(clearance) == 0:
             self.note_reached(clearance)

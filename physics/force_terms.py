@@ -16,7 +16,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import (
     RADIAL_SHARE, blocked_axes, candidate_pairs, touching_pushes, wall_pushes_in,
 )
-from floatpage.physics.geometry import separate_coincident
+from floatpage.physics.geometry import AXES, separate_coincident
 
 K_CONTACT = 0.2  # fraction of a penetration turned into acceleration per step
 K_WALL = 0.2
@@ -69,9 +69,13 @@ class ContactPushes:
         total = np.where(total > 0, total, 1.0)
         self.i, self.j = i, j
         self.share_i, self.share_j = self.inverse_mass[i] / total, self.inverse_mass[j] / total
+        # Where each pair's push lands in the flattened (n, 2) acceleration: one bincount adds
+        # both axes (each slot's terms in the same order as one bincount per axis).
+        self.slots_i, self.slots_j = 2 * i[:, None] + AXES, 2 * j[:, None] + AXES
         self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm,
                                     self.insets)
-        self.touch_reach = self.halves[i] + self.halves[j]  # centre distance where they touch
+        # centre distance where they touch
+        self.touch_reach = self.halves.take(i, axis=0) + self.halves.take(j, axis=0)
         self.reach = self.touch_reach + self.gap
         self.built_at = bodies.centres.copy()
 
@@ -82,16 +86,17 @@ class ContactPushes:
         touching, pushes = touching_pushes(centres, self.reach, self.i, self.j, self.blocked,
                                            RADIAL_SHARE * min(1.0, heat / RADIAL_FADE_HEAT))
         pushes *= K_CONTACT
-        i, j = self.i[touching], self.j[touching]
-        share_i, share_j = self.share_i[touching], self.share_j[touching]
-        count = len(acc)
-        for axis in (0, 1):
-            acc[:, axis] += (np.bincount(j, pushes[:, axis] * share_j, minlength=count)
-                             - np.bincount(i, pushes[:, axis] * share_i, minlength=count))
+        on_j = pushes * self.share_j.take(touching)[:, None]
+        on_i = pushes * self.share_i.take(touching)[:, None]
+        slots = acc.size
+        acc += (np.bincount(self.slots_j.take(touching, axis=0).ravel(), on_j.ravel(), slots)
+                - np.bincount(self.slots_i.take(touching, axis=0).ravel(), on_i.ravel(), slots)
+                ).reshape(acc.shape)
 
     def overlapping(self, centres: np.ndarray) -> bool:
         """Whether any two items' rectangles (not their halos) overlap."""
-        depth = self.touch_reach - np.abs(centres[self.j] - centres[self.i])
+        depth = self.touch_reach - np.abs(centres.take(self.j, axis=0)
+                                          - centres.take(self.i, axis=0))
         return bool(((depth[:, 0] > 0) & (depth[:, 1] > 0)).any())
 
 

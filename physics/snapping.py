@@ -48,7 +48,8 @@ ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
 ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
 NUDGE_MM = 0.5  # moves this small need no rest check: pairs this close count as aligned anyway
 MAX_SWEEPS = 50
-MAX_CANDIDATES = 32  # moves scored per item and axis: on a crowded page, the 32 shortest
+ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm on A4)
+MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 32 shortest
 MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
 TOLERANCE_MM = 1e-9
 
@@ -109,7 +110,8 @@ class _Snapper:
         groups = group_members(self.roots, self.active)
         self.members = {int(row): groups[row] for row in self.movers}
         self.reach = snap_range(*page)
-        self.window = max(self.reach, NEAR_MM) + NEAR_MM  # further apart cannot matter
+        self.farthest = ESCAPE_REACH * self.reach  # the longest move
+        self.window = max(self.farthest, NEAR_MM) + NEAR_MM  # further apart cannot matter
         extent = np.array(page)
         near, far = bodies.insets(margin_mm, *page)
         self.lowest = self.halves + near
@@ -166,22 +168,21 @@ class _Snapper:
             return False  # too large to move within its margins on this axis
         values, kinds = self.mine(row, axis)
         pool, pool_kinds = self.pool(row, axis, values)
-        distance = pool[None, :] - values[:, None]
-        same = kinds[:, None] == pool_kinds[None, :]
-        shifts = candidate_shifts(distance[same], self.reach)
+        distance = (pool[None, :] - values[:, None])[kinds[:, None] == pool_kinds[None, :]]
+        shifts = candidate_shifts(distance, self.reach, self.farthest)
         if len(shifts) > MAX_CANDIDATES:  # a crowded page: the nearest lines only
             shifts = np.sort(shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]])
-        scores = misses_after(distance, same, shifts)
+        scores = misses_after(distance, shifts)
         now = float(scores[np.searchsorted(shifts, 0.0)])
         order = np.lexsort((np.abs(shifts), scores))
-        blockers = None  # found once a move is worth testing (most calls have none)
-        for k in order[:MAX_TRIES]:
-            if scores[k] >= now - TOLERANCE_MM:
-                break
-            if blockers is None:
-                blockers = self.blockers(row, axis)
-            onto_line = bool((np.abs(distance[same] - shifts[k]) <= ALIGNED_MM).any())
-            if self.allowed(row, axis, shifts[k], onto_line, blockers):
+        order = order[scores[order] < now - TOLERANCE_MM][:MAX_TRIES]
+        if len(order) == 0:
+            return False  # most calls: no move would help
+        order = order[self.fits(row, axis, shifts[order], self.blockers(row, axis))]
+        for k in order:
+            onto_line = bool((np.abs(distance - shifts[k]) <= ALIGNED_MM).any())
+            if abs(shifts[k]) <= NUDGE_MM or self.rest is None \
+                    or self.rest.keeps_rest(members, axis, shifts[k], onto_line):
                 self.moved_from[row] = values
                 self.bodies.centres[members, axis] += shifts[k]
                 self.lines[axis][members] += shifts[k]
@@ -201,41 +202,33 @@ class _Snapper:
                       - halves[others, across][None, :] - halves[members, across][:, None])
         gap_along = (np.abs(centres[others, axis][None, :] - centres[members, axis][:, None])
                      - halves[others, axis][None, :] - halves[members, axis][:, None])
-        near = ((gap_across < self.clearance) & (gap_along < self.clearance + self.reach)).any(axis=0)
+        near = ((gap_across < self.clearance) & (gap_along < self.clearance + self.farthest)).any(axis=0)
         return others[near]
 
-    def allowed(self, row: int, axis: int, shift: float, onto_line: bool = False,
-                others: np.ndarray | None = None) -> bool:
-        """Whether ``row``'s group may move by ``shift`` along ``axis``: every member inside
-        its margins (or no further out than it is), no pair closer than the clearance (or
-        than it is now), and, unless the move is a nudge of at most ``NUDGE_MM``, the page
-        left at rest (RestCheck; a move ``onto_line`` leaves the group on a guide, whose hold
-        on a cold page takes up part of its push).  ``others``: the items to test the
-        clearance against (``blockers``); every other active item if None."""
+    def fits(self, row: int, axis: int, shifts: np.ndarray, others: np.ndarray) -> np.ndarray:
+        """For each of ``shifts``, whether ``row``'s group may move by it along ``axis`` as
+        far as the page and its neighbours go: every member inside its margins (or no
+        further out than it is), and no pair with ``others`` (``blockers``) closer than the
+        clearance (or than it is now).  All the shifts at once: tested one by one, in
+        Python, this was a third of the snapping's time.  The rest check comes after."""
         members = self.members[row]
         centres, halves = self.bodies.centres, self.halves
         current = centres[members, axis]
         low = np.minimum(self.lowest[members, axis], current)
         high = np.maximum(self.highest[members, axis], current)
-        moved = current + shift
-        if ((moved < low - TOLERANCE_MM) | (moved > high + TOLERANCE_MM)).any():
-            return False
-        if others is None:
-            others = np.flatnonzero(self.active & (self.roots != self.roots[row]))
-        if len(others):
-            across = 1 - axis
-            gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
-                          - halves[others, across][None, :] - halves[members, across][:, None])
-            reach = halves[others, axis][None, :] + halves[members, axis][:, None]
-            gap_now = np.abs(centres[others, axis][None, :] - current[:, None]) - reach
-            gap_new = np.abs(centres[others, axis][None, :] - moved[:, None]) - reach
-            before = np.maximum(gap_now, gap_across)
-            after = np.maximum(gap_new, gap_across)
-            if not (after >= np.minimum(before, self.clearance) - TOLERANCE_MM).all():
-                return False
-        if abs(shift) <= NUDGE_MM:
-            return True  # a nudge onto a line: forces change too little to disturb the rest
-        return self.rest is None or self.rest.keeps_rest(members, axis, shift, onto_line)
+        moved = current[None, :] + shifts[:, None]  # (shifts, members)
+        ok = ((moved >= low - TOLERANCE_MM) & (moved <= high + TOLERANCE_MM)).all(axis=1)
+        if len(others) == 0:
+            return ok
+        across = 1 - axis
+        gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
+                      - halves[others, across][None, :] - halves[members, across][:, None])
+        reach = halves[others, axis][None, :] + halves[members, axis][:, None]
+        theirs = centres[others, axis][None, :]
+        gap_now = np.abs(theirs - current[:, None]) - reach
+        needed = np.minimum(np.maximum(gap_now, gap_across), self.clearance) - TOLERANCE_MM
+        gap_new = np.abs(theirs[None] - moved[:, :, None]) - reach[None]  # (shifts, m, o)
+        return ok & (np.maximum(gap_new, gap_across[None]) >= needed[None]).all(axis=(1, 2))
 
 
 @lru_cache(maxsize=256)
@@ -247,20 +240,24 @@ def feature_kinds(count: int) -> np.ndarray:
     return kinds
 
 
-def candidate_shifts(distance: np.ndarray, reach: float) -> np.ndarray:
-    """Shifts within ``reach`` that put a feature on a line at ``distance`` from it, or open
-    a near miss with one to ``ESCAPE_MM``; sorted, with 0 (staying) among them."""
+def candidate_shifts(distance: np.ndarray, reach: float, farthest: float) -> np.ndarray:
+    """Shifts that put a feature on a line at ``distance`` from it within ``reach``, or put
+    it just out of a near miss with one (``ESCAPE_MM``) within ``farthest``; sorted, with 0
+    (staying) among them.  The way out of a near miss may be long: two items of nearly the
+    same width cannot line up both edges and centre, and one 1 mm from the other stays in
+    near misses until it has moved 4-5 mm."""
     onto = distance[np.abs(distance) <= reach]
-    near = distance[(np.abs(distance) > ALIGNED_MM) & (np.abs(distance) < NEAR_MM)]
-    away = near - np.sign(near) * ESCAPE_MM
-    away = away[np.abs(away) <= reach]
+    near = distance[np.abs(distance) < farthest + ESCAPE_MM]
+    away = np.concatenate([near - ESCAPE_MM, near + ESCAPE_MM])
+    away = away[np.abs(away) <= farthest]
     return sorted_unique(np.concatenate([onto, away, [0.0]]))
 
 
-def misses_after(distance: np.ndarray, same: np.ndarray, shifts: np.ndarray) -> np.ndarray:
-    """For each shift, the near misses between features and pool lines of the same kind at
-    ``distance`` (features, pool), less ``ALIGN_GAIN`` per exact alignment; (len(shifts),)."""
-    gaps = np.abs(distance[None, :, :] - shifts[:, None, None])
-    near = (gaps > ALIGNED_MM) & (gaps < NEAR_MM) & same[None]
-    aligned = (gaps <= ALIGNED_MM) & same[None]
-    return near.sum(axis=(1, 2)) - ALIGN_GAIN * aligned.sum(axis=(1, 2))
+def misses_after(distance: np.ndarray, shifts: np.ndarray) -> np.ndarray:
+    """For each shift, the near misses between a group's features and the lines of the same
+    kind at ``distance`` from them (one entry per pair), less ``ALIGN_GAIN`` per exact
+    alignment; (len(shifts),)."""
+    gaps = np.abs(distance[None, :] - shifts[:, None])
+    aligned = np.count_nonzero(gaps <= ALIGNED_MM, axis=1)
+    near = np.count_nonzero(gaps < NEAR_MM, axis=1) - aligned
+    return near - ALIGN_GAIN * aligned

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
 
 from floatpage.model import dump_project, load_project
 from floatpage.model.document import CalendarItem, PictureItem
+from floatpage.model.layout import settle_project
 from starter_pdf_checks import assert_page_sizes, check_month, day_marks
 
 SAMPLES_DIR = Path(__file__).resolve().parents[2] / "sample_projects"
@@ -33,6 +35,19 @@ def test_the_samples_exist_and_nothing_else_is_in_their_folders():
     for name in SAMPLE_NAMES:
         folder = SAMPLES_DIR / name
         assert sorted(p.name for p in folder.iterdir()) == sorted([f"{name}.toml", "pictures"])
+
+
+@pytest.mark.parametrize("name", SAMPLE_NAMES + ("merge-offers",))
+def test_every_sample_is_a_settled_file(name, tmp_path):
+    """`floatpage settle` on a shipped sample changes no byte (issue 10): the file is the
+    layout the editor opens and render prints.  When the physics changes, settle the samples
+    again (`floatpage settle FILE`); this test is what says so."""
+    folder = shutil.copytree(SAMPLES_DIR / name, tmp_path / name)
+    path = next(folder.glob("*.toml"))
+    project = load_project(path)
+    settle_project(project)
+    assert dump_project(project) == path.read_text(encoding="utf-8"), \
+        f"{name}: settling the sample moved items; settle it again and commit the result"
 
 
 @pytest.mark.parametrize("name", SAMPLE_NAMES)
