@@ -19,7 +19,7 @@ from floatpage.physics.bodies import NO_TARGET, Bodies
 from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
 from floatpage.physics.finalize import ROUNDING_MM, remove_overlaps
-from floatpage.physics.geometry import grown_cover, lines_up
+from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover, lines_up
 from floatpage.physics.guides import snap_range
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
@@ -28,10 +28,6 @@ from floatpage.physics.quality import Quality, measure_quality
 from floatpage.physics.snapping import snap_page
 
 BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the clock
-# Issue 10's promise: the gutter is kept wherever the items, each grown by it, cover at most
-# this share of the room inside the walls; below it a page the physics jammed gets a second
-# start (packing.packed_layout).
-GUTTER_FITS_COVER = 0.85
 SECOND_START_HEAT = 0.1  # the second start is spread already: the physics only evens it out
 
 

@@ -27,7 +27,9 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import blocked_axes, candidate_pairs
-from floatpage.physics.geometry import AXES, any_xy, clamp_to_page, group_bounds, max_xy
+from floatpage.physics.geometry import (
+    any_xy, clamp_to_page, group_bounds, max_xy, pair_sums, xy_slots,
+)
 
 MAX_ITERATIONS = 1000
 SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
@@ -207,15 +209,9 @@ class _Projection:
             vi, vj, moves = i[violating], j[violating], moves.compress(violating, axis=0)
             inv = self.inverse_mass
             total = inv[vi] + inv[vj]
-            total = np.where(total > 0, total, 1.0)
-            # both axes in one bincount each (slot 2 r + axis, as ContactPushes.add_to)
-            total = total[:, None]
-            slots = 2 * count
-            shift = (np.bincount((2 * vj[:, None] + AXES).ravel(),
-                                 (moves * inv[vj][:, None] / total).ravel(), slots)
-                     - np.bincount((2 * vi[:, None] + AXES).ravel(),
-                                   (moves * inv[vi][:, None] / total).ravel(), slots)
-                     ).reshape(count, 2)
+            total = np.where(total > 0, total, 1.0)[:, None]
+            shift = pair_sums(count, xy_slots(vi), xy_slots(vj), moves * inv[vi][:, None] / total,
+                              moves * inv[vj][:, None] / total)
             hand_forces_to_roots(shift, self.roots, self.followers)
             # An item asked to move by several pairs takes their sum over the square root of
             # their number: plain sums overshoot in stacks, plain averages crawl.

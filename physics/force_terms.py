@@ -16,7 +16,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import (
     RADIAL_SHARE, blocked_axes, candidate_pairs, touching_pushes, wall_pushes_in,
 )
-from floatpage.physics.geometry import AXES, separate_coincident
+from floatpage.physics.geometry import pair_sums, separate_coincident, xy_slots
 
 K_CONTACT = 0.2  # fraction of a penetration turned into acceleration per step
 K_WALL = 0.2
@@ -69,9 +69,7 @@ class ContactPushes:
         total = np.where(total > 0, total, 1.0)
         self.i, self.j = i, j
         self.share_i, self.share_j = self.inverse_mass[i] / total, self.inverse_mass[j] / total
-        # Where each pair's push lands in the flattened (n, 2) acceleration: one bincount adds
-        # both axes (each slot's terms in the same order as one bincount per axis).
-        self.slots_i, self.slots_j = 2 * i[:, None] + AXES, 2 * j[:, None] + AXES
+        self.slots_i, self.slots_j = xy_slots(i), xy_slots(j)  # where the pushes land
         self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm,
                                     self.insets)
         # centre distance where they touch
@@ -88,10 +86,8 @@ class ContactPushes:
         pushes *= K_CONTACT
         on_j = pushes * self.share_j.take(touching)[:, None]
         on_i = pushes * self.share_i.take(touching)[:, None]
-        slots = acc.size
-        acc += (np.bincount(self.slots_j.take(touching, axis=0).ravel(), on_j.ravel(), slots)
-                - np.bincount(self.slots_i.take(touching, axis=0).ravel(), on_i.ravel(), slots)
-                ).reshape(acc.shape)
+        acc += pair_sums(len(acc), self.slots_i.take(touching, axis=0),
+                         self.slots_j.take(touching, axis=0), on_i, on_j)
 
     def overlapping(self, centres: np.ndarray) -> bool:
         """Whether any two items' rectangles (not their halos) overlap."""

@@ -12,15 +12,34 @@ from floatpage.physics.bodies import Bodies
 # walls is roomy: its run stops once still, overlap or not (fast_mode.run_fast), and it is
 # worth aligning (Engine.finalize).  Fuller pages keep cooling and give alignment up.
 ROOMY_COVER = 0.75
-# Alignment gives way on a fuller page, unless it has few items: the snap's cost grows with
-# the items, and a calendar month of 4 items covering 76 % lines up as well as one at 70 %.
+# Issue 10's promise: the gutter is kept wherever the items, each grown by it, cover at most
+# this share of the room inside the walls; below it a page the physics jammed gets a second
+# start (Engine, packing.packed_layout).
+GUTTER_FITS_COVER = 0.85
+# Alignment gives way on a fuller page than ROOMY_COVER, unless it has few items and its gutter
+# fits: the snap's cost grows with the items, and a calendar month of 4 items covering 76 %
+# lines up as well as one at 70 %.
 FEW_ITEMS = 12
-FEW_ITEMS_COVER = 0.85  # and their gutter fits (Engine's second start uses the same bound)
 JITTER_MM = 0.5  # size of the seeded nudge that separates items on one point (A4)
 COINCIDENT_MM = 1e-6
-# x, y: in a flattened (n, 2) array row r's value on axis a sits at 2 r + a, so one bincount
-# over these slots sums both axes of per-pair pushes at once
-AXES = np.arange(2)
+AXES = np.arange(2)  # x, y (see xy_slots)
+
+
+def xy_slots(rows: np.ndarray) -> np.ndarray:
+    """Where rows' x and y sit in a flattened (n, 2) array, 2 r + axis, shape (m, 2): one
+    bincount over these slots sums both axes of per-pair terms at once, each slot's terms in
+    the same order as one bincount per axis (so the same sums, bit for bit)."""
+    return 2 * rows[:, None] + AXES
+
+
+def pair_sums(count: int, slots_i: np.ndarray, slots_j: np.ndarray, on_i: np.ndarray,
+              on_j: np.ndarray) -> np.ndarray:
+    """Per row (count, 2): the terms ``on_j`` of the pairs it is the j of, less the terms
+    ``on_i`` of the pairs it is the i of (each (m, 2); slots from ``xy_slots``)."""
+    size = 2 * count  # float even with no pairs (bincount of nothing counts in integers)
+    return np.subtract(np.bincount(slots_j.ravel(), on_j.ravel(), size),
+                       np.bincount(slots_i.ravel(), on_i.ravel(), size),
+                       dtype=float).reshape(count, 2)
 
 
 def sum_xy(values: np.ndarray) -> np.ndarray:
@@ -68,7 +87,7 @@ def grown_cover(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
 def lines_up(cover: float, count: int) -> bool:
     """Whether a page of ``count`` active items whose grown cover (``grown_cover``) is
     ``cover`` is worth aligning: the guide force pulls and the snap runs."""
-    return cover <= ROOMY_COVER or (count <= FEW_ITEMS and cover <= FEW_ITEMS_COVER)
+    return cover <= ROOMY_COVER or (count <= FEW_ITEMS and cover <= GUTTER_FITS_COVER)
 
 
 def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray

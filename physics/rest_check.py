@@ -22,6 +22,7 @@ from floatpage.physics.fast_forces import (
     blocked_axes, candidate_pairs, touching_pushes, wall_pushes_in, wall_rest_box,
 )
 from floatpage.physics.force_terms import BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL
+from floatpage.physics.geometry import pair_sums, xy_slots
 
 REST_ACC = 0.8  # mm per step^2 on A4: a cold page's run (heat 0.02) moves such an item
 # about 0.006 mm a step, below the stillness threshold
@@ -75,11 +76,8 @@ class RestCheck:
                                            self.blocked[pairs], 0.0)
         pushes *= K_CONTACT
         pairs, i, j = pairs[touching], i[touching], j[touching]
-        count = self.bodies.count
-        acc = np.empty((count, 2))
-        for axis in (0, 1):
-            acc[:, axis] = (np.bincount(j, pushes[:, axis] * self.share_j[pairs], count)
-                            - np.bincount(i, pushes[:, axis] * self.share_i[pairs], count))
+        acc = pair_sums(self.bodies.count, xy_slots(i), xy_slots(j),
+                        pushes * self.share_i[pairs][:, None], pushes * self.share_j[pairs][:, None])
         acc[rows] += K_WALL * wall_pushes_in(centres[rows], self.rest_low[rows],
                                              self.rest_high[rows])
         acc[rows] += self.anchor_k[rows, None] * (self.anchors[rows] - centres[rows])

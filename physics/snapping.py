@@ -49,7 +49,7 @@ ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
 NUDGE_MM = 0.5  # moves this small need no rest check: pairs this close count as aligned anyway
 MAX_SWEEPS = 50
 ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm on A4)
-MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 32 shortest
+MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
 MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
 TOLERANCE_MM = 1e-9
 
@@ -178,7 +178,7 @@ class _Snapper:
         order = order[scores[order] < now - TOLERANCE_MM][:MAX_TRIES]
         if len(order) == 0:
             return False  # most calls: no move would help
-        order = order[self.fits(row, axis, shifts[order], self.blockers(row, axis))]
+        order = order[self.fits(row, axis, shifts[order])]
         for k in order:
             onto_line = bool((np.abs(distance - shifts[k]) <= ALIGNED_MM).any())
             if abs(shifts[k]) <= NUDGE_MM or self.rest is None \
@@ -189,28 +189,16 @@ class _Snapper:
                 return True
         return False
 
-    def blockers(self, row: int, axis: int) -> np.ndarray:
-        """The other active items a move of ``row``'s group along ``axis`` could come closer
-        than the clearance to: those within the clearance of a member across the axis, and
-        within the snap range of one along it (found once per item and axis, not per move:
-        on a 600-item page the test against every item was two thirds of the time)."""
-        members = self.members[row]
-        centres, halves = self.bodies.centres, self.halves
-        others = np.flatnonzero(self.active & (self.roots != self.roots[row]))
-        across = 1 - axis
-        gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
-                      - halves[others, across][None, :] - halves[members, across][:, None])
-        gap_along = (np.abs(centres[others, axis][None, :] - centres[members, axis][:, None])
-                     - halves[others, axis][None, :] - halves[members, axis][:, None])
-        near = ((gap_across < self.clearance) & (gap_along < self.clearance + self.farthest)).any(axis=0)
-        return others[near]
-
-    def fits(self, row: int, axis: int, shifts: np.ndarray, others: np.ndarray) -> np.ndarray:
+    def fits(self, row: int, axis: int, shifts: np.ndarray) -> np.ndarray:
         """For each of ``shifts``, whether ``row``'s group may move by it along ``axis`` as
         far as the page and its neighbours go: every member inside its margins (or no
-        further out than it is), and no pair with ``others`` (``blockers``) closer than the
-        clearance (or than it is now).  All the shifts at once: tested one by one, in
-        Python, this was a third of the snapping's time.  The rest check comes after."""
+        further out than it is), and no pair closer than the clearance (or than it is now).
+        All the shifts at once: tested one by one, in Python, this was a third of the
+        snapping's time.  The rest check comes after.
+
+        Only the items a move could bring within the clearance are tested: within it of a
+        member across the axis, and within it and the longest move along it (on a 600-item
+        page the test against every item was two thirds of the snapping's time)."""
         members = self.members[row]
         centres, halves = self.bodies.centres, self.halves
         current = centres[members, axis]
@@ -218,14 +206,19 @@ class _Snapper:
         high = np.maximum(self.highest[members, axis], current)
         moved = current[None, :] + shifts[:, None]  # (shifts, members)
         ok = ((moved >= low - TOLERANCE_MM) & (moved <= high + TOLERANCE_MM)).all(axis=1)
-        if len(others) == 0:
-            return ok
+        others = np.flatnonzero(self.active & (self.roots != self.roots[row]))
         across = 1 - axis
         gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
                       - halves[others, across][None, :] - halves[members, across][:, None])
         reach = halves[others, axis][None, :] + halves[members, axis][:, None]
         theirs = centres[others, axis][None, :]
         gap_now = np.abs(theirs - current[:, None]) - reach
+        near = ((gap_across < self.clearance)
+                & (gap_now < self.clearance + self.farthest)).any(axis=0)
+        if not near.any():
+            return ok
+        gap_across, reach, theirs, gap_now = (part[:, near]
+                                              for part in (gap_across, reach, theirs, gap_now))
         needed = np.minimum(np.maximum(gap_now, gap_across), self.clearance) - TOLERANCE_MM
         gap_new = np.abs(theirs[None] - moved[:, :, None]) - reach[None]  # (shifts, m, o)
         return ok & (np.maximum(gap_new, gap_across[None]) >= needed[None]).all(axis=(1, 2))

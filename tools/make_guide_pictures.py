@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import dataclasses
 import shutil
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -21,11 +20,10 @@ from PIL import Image, ImageDraw, ImageFont
 
 from floatpage.model import load_project, save_project
 from floatpage.model.layout import settle_project
-from floatpage.typeset import render_pdf
+from make_samples import render_png
 
 ROOT = Path(__file__).resolve().parent.parent
 IMAGES_DIR = ROOT / "docs" / "images"
-DPI = "50"
 LABEL_FONT = "/usr/share/fonts/truetype/noto/NotoSans-Regular.ttf"
 # sample folder -> (README picture, page shown there, before/after pictures: name -> page)
 PICTURES = {
@@ -37,12 +35,10 @@ PICTURES = {
 
 
 def page_png(project_path: Path, page: int, scratch: Path, stem: str) -> Image.Image:
-    """One page of the project, typeset as saved (no settle), at the README's resolution."""
-    pdf = scratch / f"{stem}.pdf"
-    render_pdf(load_project(project_path), pdf)
-    subprocess.run(["pdftoppm", "-png", "-r", DPI, "-f", str(page), "-l", str(page),
-                    "-singlefile", str(pdf), str(scratch / stem)], check=True)
-    return Image.open(scratch / f"{stem}.png").convert("RGB")
+    """One page of the project, typeset as saved, as the README shows the samples."""
+    png = scratch / f"{stem}.png"
+    render_png(project_path, page, png)
+    return Image.open(png).convert("RGB")
 
 
 def without_guides(sample: Path, scratch: Path) -> Path:
@@ -76,8 +72,7 @@ def main() -> int:
             sample = ROOT / "sample_projects" / name
             copy = shutil.copytree(sample, scratch / name)  # renders never write beside samples
             as_is = next(copy.glob("*.toml"))
-            page_png(as_is, readme_page, scratch, f"{name}-readme").save(
-                IMAGES_DIR / readme_png, optimize=True)
+            render_png(as_is, readme_page, IMAGES_DIR / readme_png)
             print(f"wrote docs/images/{readme_png}")
             plain = without_guides(sample, scratch)
             for picture, page in pairs.items():
