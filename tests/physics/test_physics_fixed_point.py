@@ -17,7 +17,7 @@ from floatpage.model import load_project, save_project
 from floatpage.model.document import (
     BlockItem, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project, TextItem,
 )
-from floatpage.model.layout import engine_for_page, safe_round, settle_project
+from floatpage.model.layout import engine_for_page, safe_round, settle_page, settle_project
 
 FEW = settings(max_examples=10, deadline=None, derandomize=True, database=None, print_blob=True,
                phases=[Phase.explicit, Phase.generate],
@@ -108,3 +108,22 @@ def test_rounding_keeps_an_item_flush_with_an_edge_inside():
     centre = safe_round(100.005 - 15.0, 15.0, 100.005)
     assert centre + 15.0 <= 100.005
     assert safe_round(14.996, 15.0, 100.0) >= 15.0  # the left edge would be at -0.004
+
+
+ALBUM = Path(__file__).resolve().parents[2] / "sample_projects" / "photo-album" / "photo-album.toml"
+
+
+def test_a_settled_page_nudged_by_hand_stays_the_layout_it_was():
+    """A settled file with one photo moved 2 mm by hand, still sound: settle keeps the layout
+    near where it was (model.layout's near-rest path) rather than laying the page out anew,
+    which moved photos 12-25 mm on this page."""
+    project = load_project(ALBUM)
+    page = project.pages[0]
+    before = {item.id: (item.x, item.y) for item in page.items}
+    nudged = next(item for item in page.items if item.id == "p1-photo-3")
+    nudged.x += 2.0
+    report = settle_page(page, project.physics)
+    assert report.fixed_point and report.fits
+    moved = max(abs(item.x - before[item.id][0]) + abs(item.y - before[item.id][1])
+                for item in page.items)
+    assert moved <= 4.0, f"settle moved an item {moved:.2f} mm after a 2 mm nudge"
