@@ -84,11 +84,12 @@ class RestCheck:
         return acc
 
     def keeps_rest(self, members: np.ndarray, axis: int, shift: float, onto_line: bool) -> bool:
-        """Whether moving the rigid group ``members`` by ``shift`` along ``axis`` leaves it and
+        """Whether moving the rigid body ``members`` by ``shift`` along ``axis`` leaves it and
         every group it touches with a net acceleration within the limit, or no larger than
         it was (a group's acceleration is the sum of its members', as the fast mode hands a
         follower's forces to its root).  A move ``onto_line`` leaves the group on a guide,
-        whose hold takes up to ``hold`` of its push along ``axis``."""
+        whose hold takes up to ``hold`` of its push along ``axis`` (``members`` may be several
+        groups lined up, moved as one: each is held on the line by the others)."""
         touching = np.concatenate([self.pairs_of[m] for m in members])
         touched = np.concatenate([members, self.i[touching], self.j[touching]])
         groups = sorted_unique(self.roots[touched])
@@ -103,7 +104,7 @@ class RestCheck:
         before = np.abs(self.group_net(rows, pairs, centres, groups)).max(axis=1)
         after = np.abs(self.group_net(rows, pairs, trial, groups))
         if onto_line:
-            moved = groups == self.roots[members[0]]
+            moved = np.isin(groups, self.roots[members])
             after[moved, axis] = np.maximum(after[moved, axis] - self.hold, 0.0)
         return bool((after.max(axis=1) <= np.maximum(before, self.limit) + 1e-9).all())
 

@@ -8,9 +8,10 @@ item (with the items that follow it, as one rigid group) in turn tries, on each 
 that would put one of its features exactly on a guide line within the snap range (another
 item's edge or centre, a margin line, or for a bleed item the page's edge, the page's middle),
 and the moves that would open a near miss it cannot close to just beyond what the eye reads as
-one (``ESCAPE_MM``).  It takes the move that leaves it the fewest near misses with the rest of
-the page (each exact alignment counting as half a miss less), the smallest such move first,
-and only if the move
+one (``ESCAPE_MM``).  It may also move as its *line*, with every group lined up with it on
+that axis (a column of pictures reaches a band's edge only as a column).  It takes the move
+that leaves it the fewest near misses with the rest of the page (each exact alignment
+counting as half a miss less), the smallest such move first, and only if the move
 
 - keeps every pair at least the gutter apart (or, where the pass could not reach the gutter,
   no closer than it left them): never an overlap, never a narrower gap;
@@ -30,6 +31,7 @@ way first and the step does not run.
 from __future__ import annotations
 
 from functools import lru_cache
+from typing import NamedTuple
 
 import numpy as np
 
@@ -84,7 +86,7 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
     for _ in range(MAX_SWEEPS):
         moved_any = False
         for axis in (0, 1):
-            moved = [row for row in todo[axis] if snapper.improve(int(row), axis)]
+            moved = [root for row in todo[axis] for root in snapper.improve(int(row), axis)]
             todo[axis] = snapper.near(moved, axis)
             moves += len(moved)
             moved_any = moved_any or bool(moved)
@@ -132,20 +134,23 @@ class _Snapper:
 
     def mine(self, row: int, axis: int) -> tuple[np.ndarray, np.ndarray]:
         """The group's features on ``axis`` and their kinds (0 edge, 1 centre)."""
-        lines = self.lines[axis][self.members[row]]
+        return self.features_of(self.members[row], axis)
+
+    def features_of(self, members: np.ndarray, axis: int) -> tuple[np.ndarray, np.ndarray]:
+        lines = self.lines[axis][members]
         return lines.ravel(), feature_kinds(len(lines))
 
-    def pool(self, row: int, axis: int, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def pool(self, members: np.ndarray, bleed: bool, axis: int,
+             values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Every other active item's features, and the page's lines, within the window of
         ``values``, with their kinds."""
         lines = self.lines[axis]
         near = (self.active & (lines[:, LOW] < values.max() + self.window)
                 & (lines[:, HIGH] > values.min() - self.window))
-        near[self.members[row]] = False
+        near[members] = False
         theirs = lines[near]
-        return (np.concatenate([theirs.ravel(), self.page_values[self.bleeds[row]][axis]]),
-                np.concatenate([feature_kinds(len(theirs)),
-                                self.page_kinds[self.bleeds[row]][axis]]))
+        return (np.concatenate([theirs.ravel(), self.page_values[bleed][axis]]),
+                np.concatenate([feature_kinds(len(theirs)), self.page_kinds[bleed][axis]]))
 
     def near(self, moved: list[int], axis: int) -> np.ndarray:
         """Movers with a feature within the window of a moved group's features, before or
@@ -161,52 +166,103 @@ class _Snapper:
         touched = np.isin(self.roots, np.flatnonzero(touched)) | touched
         return self.movers[touched[self.movers]]
 
-    def improve(self, row: int, axis: int) -> bool:
-        """Make the best allowed move of ``row``'s group along ``axis``; whether it moved."""
-        members = self.members[row]
+    def improve(self, row: int, axis: int) -> list[int]:
+        """Make the best allowed move along ``axis`` of ``row``'s group, or of its *line*: the
+        group and every group lined up with it on this axis, moved as one, whichever gains
+        more.  A column of pictures whose left edges line up, 3 mm off the band below them,
+        reaches the band only as a column: one picture alone would leave the others, a near
+        miss for a near miss, or step out of them all and break the column.  Returns the
+        groups moved (their roots), none if nothing moved."""
+        alone = self.options([row], axis)
+        choices = [alone]
+        if alone.missing:  # a group on no near miss gains nothing from its line's move
+            line = self.line_of(row, axis)
+            if len(line) > 1:
+                together = self.options(line, axis)
+                if together.gain > alone.gain:
+                    choices = [together, alone]
+                else:
+                    choices.append(together)
+        for choice in choices:
+            if self.attempt(choice, axis):
+                return choice.roots
+        return []
+
+    def line_of(self, row: int, axis: int) -> list[int]:
+        """``row`` and the movers with a feature on one of its group's lines on ``axis`` (an
+        edge on an edge, a centre on a centre)."""
+        lines = self.lines[axis]
+        own = lines[self.members[row]]
+        edges, middles = np.concatenate([own[:, LOW], own[:, HIGH]]), own[:, CENTRE]
+
+        def on(column: np.ndarray, values: np.ndarray) -> np.ndarray:
+            return (np.abs(column[:, None] - values[None, :]) <= ALIGNED_MM).any(axis=1)
+
+        hit = self.active & (on(lines[:, LOW], edges) | on(lines[:, HIGH], edges)
+                             | on(lines[:, CENTRE], middles))
+        roots = np.unique(self.roots[hit])
+        return [row] + [int(root) for root in roots if root != row and int(root) in self.members]
+
+    def options(self, roots: list[int], axis: int) -> "Moves":
+        """The moves along ``axis`` that would lower the near misses of the groups of
+        ``roots``, moved as one rigid body, best first (at most ``MAX_TRIES``)."""
+        members = np.concatenate([self.members[root] for root in roots])
         if (self.lowest[members, axis] > self.highest[members, axis]).any():
-            return False  # too large to move within its margins on this axis
-        values, kinds = self.mine(row, axis)
-        pool, pool_kinds = self.pool(row, axis, values)
+            return Moves(roots, members, np.zeros(0), np.zeros(0), 0.0, False)  # too large
+        values, kinds = self.features_of(members, axis)
+        bleed = all(self.bleeds[root] for root in roots)
+        pool, pool_kinds = self.pool(members, bleed, axis, values)
         distance = (pool[None, :] - values[:, None])[kinds[:, None] == pool_kinds[None, :]]
         shifts = candidate_shifts(distance, self.reach, self.farthest)
         if len(shifts) > MAX_CANDIDATES:  # a crowded page: the nearest lines only
             shifts = np.sort(shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]])
         scores = misses_after(distance, shifts)
         now = float(scores[np.searchsorted(shifts, 0.0)])
+        gaps = np.abs(distance)
+        missing = bool(((gaps > ALIGNED_MM) & (gaps < NEAR_MM)).any())
         order = np.lexsort((np.abs(shifts), scores))
         order = order[scores[order] < now - TOLERANCE_MM][:MAX_TRIES]
-        if len(order) == 0:
+        gain = now - float(scores[order[0]]) if len(order) else 0.0
+        return Moves(roots, members, shifts[order], distance, gain, missing)
+
+    def attempt(self, moves: "Moves", axis: int) -> bool:
+        """Make the first of ``moves`` that fits and keeps the page at rest; whether one did."""
+        if len(moves.shifts) == 0:
             return False  # most calls: no move would help
-        order = order[self.fits(row, axis, shifts[order])]
-        for k in order:
-            onto_line = bool((np.abs(distance - shifts[k]) <= ALIGNED_MM).any())
-            if abs(shifts[k]) <= NUDGE_MM or self.rest is None \
-                    or self.rest.keeps_rest(members, axis, shifts[k], onto_line):
-                self.moved_from[row] = values
-                self.bodies.centres[members, axis] += shifts[k]
-                self.lines[axis][members] += shifts[k]
+        members, line = moves.members, len(moves.roots) > 1
+        for shift in moves.shifts[self.fits(members, axis, moves.shifts)]:
+            # a line moved as one stays on itself, each group held there by the others
+            onto_line = line or bool((np.abs(moves.distance - shift) <= ALIGNED_MM).any())
+            if abs(shift) <= NUDGE_MM or self.rest is None \
+                    or self.rest.keeps_rest(members, axis, shift, onto_line):
+                for root in moves.roots:
+                    self.moved_from[root] = self.mine(root, axis)[0]
+                self.bodies.centres[members, axis] += shift
+                self.lines[axis][members] += shift
                 return True
         return False
 
-    def fits(self, row: int, axis: int, shifts: np.ndarray) -> np.ndarray:
-        """For each of ``shifts``, whether ``row``'s group may move by it along ``axis`` as
-        far as the page and its neighbours go: every member inside its margins (or no
-        further out than it is), and no pair closer than the clearance (or than it is now).
+    def fits(self, members: np.ndarray, axis: int, shifts: np.ndarray) -> np.ndarray:
+        """For each of ``shifts``, whether the rigid body ``members`` may move by it along
+        ``axis`` as far as the page and its neighbours go: every member inside its margins (or
+        no further out than it is), and no pair closer than the clearance (or than it is now).
         All the shifts at once: tested one by one, in Python, this was a third of the
         snapping's time.  The rest check comes after.
 
         Only the items a move could bring within the clearance are tested: within it of a
         member across the axis, and within it and the longest move along it (on a 600-item
         page the test against every item was two thirds of the snapping's time)."""
-        members = self.members[row]
         centres, halves = self.bodies.centres, self.halves
         current = centres[members, axis]
         low = np.minimum(self.lowest[members, axis], current)
         high = np.maximum(self.highest[members, axis], current)
         moved = current[None, :] + shifts[:, None]  # (shifts, members)
         ok = ((moved >= low - TOLERANCE_MM) & (moved <= high + TOLERANCE_MM)).all(axis=1)
-        others = np.flatnonzero(self.active & (self.roots != self.roots[row]))
+        groups = self.roots[members]
+        outside = self.active & (self.roots != groups[0])
+        if (groups != groups[0]).any():
+            outside &= ~np.isin(self.roots, groups)
+        others = np.flatnonzero(outside)
         across = 1 - axis
         gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
                       - halves[others, across][None, :] - halves[members, across][:, None])
@@ -222,6 +278,17 @@ class _Snapper:
         needed = np.minimum(np.maximum(gap_now, gap_across), self.clearance) - TOLERANCE_MM
         gap_new = np.abs(theirs[None] - moved[:, :, None]) - reach[None]  # (shifts, m, o)
         return ok & (np.maximum(gap_new, gap_across[None]) >= needed[None]).all(axis=(1, 2))
+
+
+class Moves(NamedTuple):
+    """The candidate moves of one rigid body of groups along one axis (_Snapper.options)."""
+
+    roots: list[int]  # the groups moved together
+    members: np.ndarray  # their rows
+    shifts: np.ndarray  # the moves that lower their near misses, best first
+    distance: np.ndarray  # from their features to the lines of the same kind near them
+    gain: float  # what the best of them would lower the page's score by
+    missing: bool  # whether they miss a line now
 
 
 @lru_cache(maxsize=256)

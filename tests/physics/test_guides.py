@@ -101,6 +101,18 @@ def test_a_group_moves_as_one():
     assert tuple(bodies.centres[2] - bodies.centres[1]) == (0.0, 23.0)
 
 
+def test_a_column_moves_onto_a_line_as_one():
+    # Two pictures whose left edges line up, 3 mm left of a held band's edge.  One alone can
+    # only trade its near miss with the band for one with the other picture, or step 4 mm
+    # out of both and break the column; moved as one line, both meet the band's edge.
+    bodies = bodies_of((32, 60, 40, 40), (32, 120, 40, 40), (105, 250, 180, 20))
+    bodies.held[2] = True
+    snap(bodies)
+    left = bodies.centres[:, 0] - bodies.sizes[:, 0] / 2
+    assert tuple(left) == (15.0, 15.0, 15.0)
+    assert tuple(bodies.centres[:, 1]) == (60, 120, 250)
+
+
 def test_strength_zero_leaves_the_no_overlap_pass_alone():
     scene = mixed_scene(20, 0.5, seed=3)
     results = []
