@@ -17,7 +17,7 @@ from floatpage.starters.words import phrase, readable
 
 PAGE_SIZE = "A4"
 MAX_PER_PAGE = 6
-MIN_LONG_SIDE_MM = 75.0  # a photo in an album should be at least this long on its long side
+MIN_LONG_SIDE_MM = 72.0  # a photo in an album should be at least this long on its long side
 MARGIN_MM = 14.0
 CAPTION_H_MM = 8.0
 CAPTION_GAP_MM = 4.5  # between a photo's lower edge and its caption: past the 4 mm an eye
@@ -43,8 +43,9 @@ def photo_region(width: float, height: float, with_title: bool) -> Region:
 
 
 def photo_rects(region: Region, pictures: list[Picture]) -> list:
+    """Each row's photos at one height (placement.one_height_per_row)."""
     return grid(region, [p.aspect for p in pictures], fill=0.96, gap=8.0,
-                below=CAPTION_GAP_MM + CAPTION_H_MM)
+                below=CAPTION_GAP_MM + CAPTION_H_MM, rows_of_one_height=True)
 
 
 def paginate(pictures: list[Picture], width: float, height: float) -> list[list[Picture]]:

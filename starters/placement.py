@@ -14,6 +14,7 @@ from floatpage.model.document import Page
 from floatpage.model.page_sizes import page_dimensions
 
 Rect = tuple[float, float, float, float]
+ONE_HEIGHT_WITHIN = 0.15  # a row's boxes share a height if they differ by at most 15 %
 
 
 @dataclass(frozen=True)
@@ -52,13 +53,15 @@ def fit(aspect: float, max_w: float, max_h: float) -> tuple[float, float]:
 
 
 def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float = 6.0,
-         below: float = 0.0, stagger: float = 0.0) -> list[Rect]:
+         below: float = 0.0, stagger: float = 0.0, rows_of_one_height: bool = False) -> list[Rect]:
     """Place len(aspects) boxes of those shapes in a grid over `region`, biggest total area.
 
     Every column count is tried; each cell holds one box scaled to `fill` of the cell, leaving
     the physics room to move. `below` reserves that many mm under each box (for a caption).
     When the best grid is a single column, `stagger` (0..1) shifts the boxes alternately left
     and right by that share of their spare width, so a stack reads as a lively zigzag.
+    With `rows_of_one_height`, each row's boxes share a height (see one_height_per_row), and
+    the grid is chosen by the area they keep.
     """
     n = len(aspects)
     if n == 0:
@@ -81,6 +84,8 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
                 x += (-1) ** (index + 1) * stagger * (cell_w - w) / 2
             y = region.top + row * (cell_h + gap) + (cell_h - below) / 2
             rects.append((x, y, w, h))
+        if rows_of_one_height:
+            rects = one_height_per_row(rects, aspects)
         area = sum(w * h for _, _, w, h in rects)
         if best is None or area > best[0] + 1e-9:
             best = (area, rects)
@@ -88,3 +93,20 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
         raise ValueError(f"region {region} is too small for {n} boxes")
     return best[1]
 
+
+def one_height_per_row(rects: list[Rect], aspects: list[float]) -> list[Rect]:
+    """``rects`` from ``grid``, each row's boxes cut to one height (the lowest in the row), as
+    an album lays them out.  Boxes of two shapes side by side (a 4:3 photo beside a 3:2), each
+    as big as its cell, have edges and middles 2-4 mm apart: a near miss the eye reads as a
+    mistake (physics.alignment), and no move can close it.  At one height they line up along
+    the row, and in a column the narrower one sits centred, its edges well clear of the wider
+    one's.  A row whose heights differ by more than ``ONE_HEIGHT_WITHIN`` (a tall photo beside
+    wide ones) keeps them: cut to one height, the tall one would shrink to a stamp, and edges
+    that far apart are no near miss."""
+    lowest: dict[float, float] = {}
+    highest: dict[float, float] = {}
+    for _, y, _, h in rects:
+        lowest[y], highest[y] = min(h, lowest.get(y, h)), max(h, highest.get(y, h))
+    return [(x, y, aspect * lowest[y], lowest[y])
+            if lowest[y] >= (1 - ONE_HEIGHT_WITHIN) * highest[y] else (x, y, w, h)
+            for aspect, (x, y, w, h) in zip(aspects, rects)]

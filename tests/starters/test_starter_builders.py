@@ -147,3 +147,27 @@ def test_each_month_panel_is_the_right_month():
     project = starters.build("calendar", Options(year=2100), [Picture("pictures/a.jpg", 4, 3)])
     panels = [i for p in project.pages for i in p.items if isinstance(i, CalendarItem)]
     assert [(p.year, p.month) for p in panels] == [(2100, m) for m in range(1, 13)]
+
+
+def test_album_rows_of_near_shapes_share_one_height_and_line_up():
+    """A 3:2 photo beside a 4:3 one would keep edges 2-4 mm apart, a near miss no move can
+    close; the album cuts such a row to one height.  A tall photo beside a wide one keeps its
+    size instead of shrinking to a stamp."""
+    def rows(pictures):
+        page = starters.build("album", Options(year=2027), pictures).pages[0]
+        by_row: dict[float, list[PictureItem]] = {}
+        for photo in (i for i in page.items if isinstance(i, PictureItem)):
+            by_row.setdefault(photo.y, []).append(photo)
+        return list(by_row.values())
+
+    shapes = [(3, 2), (4, 3), (4, 3), (3, 2)]
+    near = rows([Picture(f"pictures/{n}.jpg", w, h) for n, (w, h) in enumerate(shapes)])
+    assert [len(row) for row in near] == [2, 2]
+    for row in near:
+        assert row[0].h == row[1].h
+        assert sorted(p.w / p.h for p in row) == pytest.approx([4 / 3, 1.5])
+    shapes = [(3, 2), (3, 4), (3, 4), (3, 2)]
+    apart = rows([Picture(f"pictures/{n}.jpg", w, h) for n, (w, h) in enumerate(shapes)])
+    assert [len(row) for row in apart] == [2, 2]
+    for row in apart:
+        assert max(p.h for p in row) > 1.2 * min(p.h for p in row)
