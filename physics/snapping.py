@@ -316,8 +316,11 @@ def candidate_shifts(distance: np.ndarray, reach: float, farthest: float) -> np.
 def misses_after(distance: np.ndarray, shifts: np.ndarray) -> np.ndarray:
     """For each shift, the near misses between a group's features and the lines of the same
     kind at ``distance`` from them (one entry per pair), less ``ALIGN_GAIN`` per exact
-    alignment; (len(shifts),)."""
-    gaps = np.abs(distance[None, :] - shifts[:, None])
-    aligned = np.count_nonzero(gaps <= ALIGNED_MM, axis=1)
-    near = np.count_nonzero(gaps < NEAR_MM, axis=1) - aligned
-    return near - ALIGN_GAIN * aligned
+    alignment; (len(shifts),).  Counted by bisection in the sorted distances: the
+    (shifts, distances) table of gaps it replaces was a fifth of the snapping's time."""
+    ordered = np.sort(distance)
+    within_near = (np.searchsorted(ordered, shifts + NEAR_MM, "left")
+                   - np.searchsorted(ordered, shifts - NEAR_MM, "right"))
+    aligned = (np.searchsorted(ordered, shifts + ALIGNED_MM, "right")
+               - np.searchsorted(ordered, shifts - ALIGNED_MM, "left"))
+    return (within_near - aligned) - ALIGN_GAIN * aligned
