@@ -131,6 +131,9 @@ class _Snapper:
                                    for edges, middles in pairs] for bleed, pairs in lines.items()}
         self.lines = [features(bodies.centres, self.halves, axis) for axis in (0, 1)]
         self.moved_from: dict[int, np.ndarray] = {}
+        # Lines (roots, axis) whose move as one failed since the last move on the page: each of
+        # their groups would try the same move of the same line again, to the same end.
+        self.stuck_lines: set[tuple[tuple[int, ...], int]] = set()
 
     def mine(self, row: int, axis: int) -> tuple[np.ndarray, np.ndarray]:
         """The group's features on ``axis`` and their kinds (0 edge, 1 centre)."""
@@ -177,7 +180,7 @@ class _Snapper:
         choices = [alone]
         if alone.missing:  # a group on no near miss gains nothing from its line's move
             line = self.line_of(row, axis)
-            if len(line) > 1:
+            if len(line) > 1 and (tuple(sorted(line)), axis) not in self.stuck_lines:
                 together = self.options(line, axis)
                 if together.gain > alone.gain:
                     choices = [together, alone]
@@ -185,7 +188,10 @@ class _Snapper:
                     choices.append(together)
         for choice in choices:
             if self.attempt(choice, axis):
+                self.stuck_lines.clear()
                 return choice.roots
+            if len(choice.roots) > 1:
+                self.stuck_lines.add((tuple(sorted(choice.roots)), axis))
         return []
 
     def line_of(self, row: int, axis: int) -> list[int]:
