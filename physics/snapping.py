@@ -198,15 +198,10 @@ class _Snapper:
         """``row`` and the movers with a feature on one of its group's lines on ``axis`` (an
         edge on an edge, a centre on a centre)."""
         lines = self.lines[axis]
-        own = lines[self.members[row]]
-        edges, middles = np.concatenate([own[:, LOW], own[:, HIGH]]), own[:, CENTRE]
-
-        def on(column: np.ndarray, values: np.ndarray) -> np.ndarray:
-            return (np.abs(column[:, None] - values[None, :]) <= ALIGNED_MM).any(axis=1)
-
-        hit = self.active & (on(lines[:, LOW], edges) | on(lines[:, HIGH], edges)
-                             | on(lines[:, CENTRE], middles))
-        roots = np.unique(self.roots[hit])
+        values, kinds = self.mine(row, axis)
+        same_kind = feature_kinds(1)[:, None] == kinds[None, :]  # (3 features, values)
+        on = (np.abs(lines[:, :, None] - values[None, None, :]) <= ALIGNED_MM) & same_kind
+        roots = np.unique(self.roots[self.active & on.any(axis=(1, 2))])
         return [row] + [int(root) for root in roots if root != row and int(root) in self.members]
 
     def options(self, roots: list[int], axis: int) -> "Moves":
@@ -312,11 +307,11 @@ def candidate_shifts(distance: np.ndarray, reach: float, farthest: float) -> np.
     (staying) among them.  The way out of a near miss may be long: two items of nearly the
     same width cannot line up both edges and centre, and one 1 mm from the other stays in
     near misses until it has moved 4-5 mm."""
-    onto = distance[np.abs(distance) <= reach]
-    near = distance[np.abs(distance) < farthest + ESCAPE_MM]
+    size = np.abs(distance)
+    near = distance[size < farthest + ESCAPE_MM]
     away = np.concatenate([near - ESCAPE_MM, near + ESCAPE_MM])
-    away = away[np.abs(away) <= farthest]
-    return sorted_unique(np.concatenate([onto, away, [0.0]]))
+    return sorted_unique(np.concatenate([distance[size <= reach], away[np.abs(away) <= farthest],
+                                         [0.0]]))
 
 
 def misses_after(distance: np.ndarray, shifts: np.ndarray) -> np.ndarray:
