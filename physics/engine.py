@@ -404,6 +404,7 @@ class Engine:
         bodies.centres[:] = start
         bodies.velocities[:] = 0.0
         self.reheat(SECOND_START_HEAT)
+        self._spread_out = True  # spread already: it cools onto its guides (fast_mode.run_fast)
         self._run_until_settled(max_steps)
         if self.finalize(fall_back=False, align=align):
             return True
