@@ -229,8 +229,9 @@ def touching_pushes(centres: np.ndarray, reach: np.ndarray, i: np.ndarray, j: np
     total = sum_xy(sharp)
     total[total == 0] = 1.0
     weights = sharp[:, ::-1] / total[:, None]  # x takes the y share and vice versa
-    ahead = d >= 0
-    pushes = np.where(ahead, penetration, -penetration)  # +-1 times it, exactly
+    # +-1 times it, exactly, by the sign of d: as where(d >= 0, p, -p) but in one call (they
+    # differ at d = -0.0 only, which needs a centre at -0.0: the walls keep them inside)
+    pushes = np.copysign(penetration, d)
     pushes *= weights
     if radial_share == 0:
         return touching, pushes
