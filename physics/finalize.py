@@ -308,11 +308,12 @@ def cannot_fit(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance: fl
     each item grown by the clearance (and cut to the room, which an item larger than the page
     spans at most) needs more than the room, grown by it too, holds.  The room is the page
     less the narrowest walls, so the answer is never wrong, only sometimes "maybe" on a page
-    with regions or bleed.  On the over-full page (40 items covering 90 % of A4) the attempt
-    at the gutter was 60 to 80 projection rounds that could not succeed.  Rigid groups are
-    left to the projection (a group too large for its walls need not stay inside them)."""
+    with bleed items.  On the over-full page (40 items covering 90 % of A4) the attempt at the
+    gutter was 60 to 80 projection rounds that could not succeed.  Rigid groups and regions
+    are left to the projection (a group, or an item, larger than its walls need not stay
+    inside the room: a region near the page's edge can hold an item off centre)."""
     active = bodies.active
-    if active.sum() < 2 or bodies.followers.any():
+    if active.sum() < 2 or bodies.followers.any() or not np.isnan(bodies.regions[:, 0]).all():
         return False
     near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
     room = np.maximum(np.array([page_w_mm, page_h_mm]) - near[active].min(axis=0)

@@ -164,3 +164,5 @@ def test_cannot_fit_is_an_area_bound():
     assert not cannot_fit(bodies, 100.0, 100.0, 3.0, 0.0)  # without margins there is room
     engine.insert("huge", 50, 50, 300, 10)  # larger than the page: counts as the room's width
     assert cannot_fit(engine.bodies, 100.0, 100.0, 0.01, 5.0)
+    engine.confine("huge", 0, 0, 100, 20)  # with a region the bound says nothing
+    assert not cannot_fit(engine.bodies, 100.0, 100.0, 0.01, 5.0)
