@@ -215,11 +215,12 @@ def touching_pushes(centres: np.ndarray, reach: np.ndarray, i: np.ndarray, j: np
     touching = (np.minimum(penetration[:, 0], penetration[:, 1]) > 0).nonzero()[0]
     if not len(touching):
         return touching, np.zeros((0, 2))
-    d, penetration = d.take(touching, axis=0), penetration.take(touching, axis=0)
-    if blocked is not None:
-        blocked = blocked.take(touching, axis=0)
-        if not blocked.any():
-            blocked = None
+    if len(touching) < len(d):  # all of them touch on most steps of a small page: no gather
+        d, penetration = d.take(touching, axis=0), penetration.take(touching, axis=0)
+        if blocked is not None:
+            blocked = blocked.take(touching, axis=0)
+    if blocked is not None and not blocked.any():
+        blocked = None
     squared = penetration * penetration
     sharp = squared * squared  # AXIS_SHARPNESS = 4
     if blocked is not None:
@@ -228,8 +229,9 @@ def touching_pushes(centres: np.ndarray, reach: np.ndarray, i: np.ndarray, j: np
     total = sum_xy(sharp)
     total[total == 0] = 1.0
     weights = sharp[:, ::-1] / total[:, None]  # x takes the y share and vice versa
-    ahead = d >= 0
-    pushes = np.where(ahead, penetration, -penetration)  # +-1 times it, exactly
+    # +-1 times it, exactly, by the sign of d: as where(d >= 0, p, -p) but in one call (they
+    # differ at d = -0.0 only, which needs a centre at -0.0: the walls keep them inside)
+    pushes = np.copysign(penetration, d)
     pushes *= weights
     if radial_share == 0:
         return touching, pushes
@@ -272,7 +274,9 @@ def wall_rest_box(halves: np.ndarray, page_w_mm: float, page_h_mm: float, margin
 
 def wall_pushes_in(centres: np.ndarray, lowest: np.ndarray, highest: np.ndarray) -> np.ndarray:
     """Springs back into the rest box from wall_rest_box, shape (n, 2)."""
-    return np.maximum(lowest - centres, 0.0) - np.maximum(centres - highest, 0.0)
+    # The same numbers as max(lowest - c, 0) - max(c - highest, 0) (lowest <= highest, and a
+    # difference negated is exact), in three NumPy calls instead of five.
+    return np.minimum(np.maximum(centres, lowest), highest) - centres
 
 
 def wall_pushes(centres: np.ndarray, halves: np.ndarray, page_w_mm: float, page_h_mm: float,

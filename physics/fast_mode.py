@@ -117,14 +117,17 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     cooling = cooling_rate(params.heat_decay, int(active.sum()))
     keep = 1.0 - (max(cooling, GUIDED_COOLING) if spread_out else cooling)
     # Once the page is still, the spreading is over: rather than cool slowly on while nothing
-    # moves, the heat drops to where the alignment guides pull, and cools from there at
-    # GUIDED_COOLING a step, until the page is still on its lines below the heat at which the
-    # lines hold (without guides, or on a page too full to line up, nothing more to wait for).
+    # moves, the heat drops to where the alignment guides pull in full (GUIDE_HEAT / 2), and
+    # cools from there at GUIDED_COOLING a step, until the page is still on its lines below the
+    # heat at which the lines hold (without guides, or on a page too full to line up, nothing
+    # more to wait for).  From 0.9 GUIDE_HEAT, where the pull is a fifth of its strength, that
+    # took at least 83 steps; from the half, at least 49, with the same near misses on every
+    # page of benchmarks/alignment.py --quick (the snap lines up what the pull leaves).
     cover = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm)
     roomy = cover <= ROOMY_COVER
     aligns = lines_up(cover, int(active.sum()))
     guides_on = params.guides > 0 and aligns
-    guided_heat = GUIDE_HEAT * 0.9
+    guided_heat = GUIDE_HEAT / 2
     settled_below = HOLD_HEAT if guides_on else np.inf
     count = bodies.count
     forces = fast_forces(bodies, page_w_mm, page_h_mm, params, rng, roots, movable,

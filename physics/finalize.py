@@ -41,6 +41,10 @@ RELAXATION = 1.0
 # run only shuffled items (a failing pass was most of the settle time).
 STALL_ITERATIONS = 60
 STALL_GAIN = 0.01
+# ...or in this many, on a first attempt that has a second start to fall back on (Engine.settle:
+# the packing holds the gutter by construction).  The 5-item page's first run was jammed from
+# its 3rd round on (its score did not change in the 16th digit) and ran 60 more.
+FIRST_ATTEMPT_STALL = 15
 # When the gutter does not fit: at most this many bisection steps between the widest clearance
 # reached and the gutter, stopping once they are this close; each step aims only this far beyond
 # its clearance (near the limit, aiming further asks for room that is not there).
@@ -131,6 +135,11 @@ class _Projection:
         self.insets = (near, far)
         self.bounds = group_bounds(bodies, self.free_rows, self.roots, self.root_offsets,
                                    near, far, page_w_mm, page_h_mm)
+        # The same bounds for every row (none for rows that do not move), to tell which
+        # groups stand against a wall (see wall_shares).
+        self.lowest = np.full((bodies.count, 2), -np.inf)
+        self.highest = np.full((bodies.count, 2), np.inf)
+        self.lowest[self.free_rows], self.highest[self.free_rows] = self.bounds
         # The arrangement with the widest clearance seen by any run so far, and that clearance
         # (a lower bound, exact below the clearance the run aimed at).
         self.widest, self.widest_state = -np.inf, bodies.centres.copy()
@@ -170,7 +179,8 @@ class _Projection:
         moves = separation_moves(self.bodies.centres, self.halves, i, j, clearance, blocked)
         return int(any_xy(moves != 0).sum())
 
-    def run(self, clearance: float, iterations: int, aim: float | None = None) -> bool:
+    def run(self, clearance: float, iterations: int, aim: float | None = None,
+            stall: int = STALL_ITERATIONS) -> bool:
         """Jacobi projection in place; True once no pair is closer than ``clearance``.
 
         Pairs are pushed to ``aim`` (>= clearance): aiming a little beyond what is needed ends
@@ -204,14 +214,12 @@ class _Projection:
                 if score < best_score * (1.0 - STALL_GAIN):
                     last_gain = iteration
                 best, best_score = bodies.centres.copy(), score
-            elif iteration - last_gain > STALL_ITERATIONS:
+            elif iteration - last_gain > stall:
                 break  # neighbours only undo each other's moves: this aim is out of reach
             vi, vj, moves = i[violating], j[violating], moves.compress(violating, axis=0)
-            inv = self.inverse_mass
-            total = inv[vi] + inv[vj]
-            total = np.where(total > 0, total, 1.0)[:, None]
-            shift = pair_sums(count, xy_slots(vi), xy_slots(vj), moves * inv[vi][:, None] / total,
-                              moves * inv[vj][:, None] / total)
+            share_i, share_j = self.wall_shares(vi, vj, moves)
+            shift = pair_sums(count, xy_slots(vi), xy_slots(vj), moves * share_i,
+                              moves * share_j)
             hand_forces_to_roots(shift, self.roots, self.followers)
             # An item asked to move by several pairs takes their sum over the square root of
             # their number: plain sums overshoot in stacks, plain averages crawl.
@@ -228,6 +236,34 @@ class _Projection:
             self.note_reached(clearance)
             return True
         return False
+
+    def wall_shares(self, i: np.ndarray, j: np.ndarray, moves: np.ndarray
+                    ) -> tuple[np.ndarray, np.ndarray]:
+        """Each pair's share of its move, (m, 1) for i and for j: by inverse mass, except that
+        a group standing against a wall in the direction it would be moved takes none, and the
+        other the whole move (a wall is an infinite mass).  Shared by mass alone, a small item
+        pressed into the margin by a large one took the larger share, the clamp undid it, and
+        the pair parted by the large one's share a round: the page with one item larger than
+        half of it needed 96 rounds to open one gap by 3.6 mm, 3 % a round."""
+        inv, roots = self.inverse_mass, self.roots
+        centres = self.bodies.centres
+        at_low, at_high = centres <= self.lowest, centres >= self.highest
+        if not (at_low.any() or at_high.any()):
+            inv_i, inv_j = inv.take(i), inv.take(j)
+        else:
+            ahead = moves > 0  # j is moved forward on this axis, i back
+            behind = moves < 0
+            root_i, root_j = roots.take(i), roots.take(j)
+            low_i, high_i = at_low.take(root_i, axis=0), at_high.take(root_i, axis=0)
+            low_j, high_j = at_low.take(root_j, axis=0), at_high.take(root_j, axis=0)
+            stuck_i = any_xy(ahead & low_i | behind & high_i)
+            stuck_j = any_xy(ahead & high_j | behind & low_j)
+            both = stuck_i & stuck_j  # jammed between walls: nothing helps, share as before
+            inv_i = np.where(stuck_i & ~both, 0.0, inv.take(i))
+            inv_j = np.where(stuck_j & ~both, 0.0, inv.take(j))
+        total = inv_i + inv_j
+        total = np.where(total > 0, total, 1.0)
+        return (inv_i / total)[:, None], (inv_j / total)[:, None]
 
     def note_reached(self, clearance: float) -> None:
         """The current arrangement keeps ``clearance``: remember it if that is the widest yet."""
@@ -266,13 +302,36 @@ def has_overlap(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: f
     return projection.violations(0.0) > 0
 
 
+def cannot_fit(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance: float,
+               margin_mm: float) -> bool:
+    """Whether no arrangement can keep ``clearance`` between every two active items, by area:
+    each item grown by the clearance (and cut to the room, which an item larger than the page
+    spans at most) needs more than the room, grown by it too, holds.  The room is the page
+    less the narrowest walls, so the answer is never wrong, only sometimes "maybe" on a page
+    with bleed items.  On the over-full page (40 items covering 90 % of A4) the attempt at the
+    gutter was 60 to 80 projection rounds that could not succeed.  Rigid groups and regions
+    are left to the projection (a group, or an item, larger than its walls need not stay
+    inside the room: a region near the page's edge can hold an item off centre)."""
+    active = bodies.active
+    if active.sum() < 2 or bodies.followers.any() or not np.isnan(bodies.regions[:, 0]).all():
+        return False
+    near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
+    room = np.maximum(np.array([page_w_mm, page_h_mm]) - near[active].min(axis=0)
+                      - far[active].min(axis=0), 0.0)
+    grown = np.minimum(bodies.sizes[active], room) + clearance
+    return float((grown[:, 0] * grown[:, 1]).sum()) > float(((room + clearance)).prod())
+
+
 def project_within(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                    max_iterations: int, margin_mm: float, fall_back: bool = True) -> bool:
     projection = _Projection(bodies, page_w_mm, page_h_mm, gutter_mm, margin_mm)
     projection.clamp()
     if len(projection.rows_active) < 2 or len(projection.free_rows) == 0:
         return projection.violations(gutter_mm + ROUNDING_MM) == 0
-    if projection.run(gutter_mm + ROUNDING_MM, max_iterations, aim=gutter_mm + AIM_BEYOND_MM):
+    hopeless = cannot_fit(bodies, page_w_mm, page_h_mm, gutter_mm + ROUNDING_MM, margin_mm)
+    stall = STALL_ITERATIONS if fall_back else FIRST_ATTEMPT_STALL
+    if not hopeless and projection.run(gutter_mm + ROUNDING_MM, max_iterations,
+                                       aim=gutter_mm + AIM_BEYOND_MM, stall=stall):
         return True
     if not fall_back:
         return False
@@ -280,7 +339,10 @@ def project_within(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm
     if projection.widest < ROUNDING_MM:
         # No arrangement without overlap seen yet: first remove the overlaps.  If even that
         # fails the page is over-full, and the run left the arrangement with least overlap.
-        if not projection.run(ROUNDING_MM, iterations, aim=AIM_BEYOND_MM):
+        # Without a gutter, the run just made was this one: once more from its best
+        # arrangement found no less overlap on 36 over-full pages, in 60 to 80 more rounds.
+        if gutter_mm == 0 and not hopeless or not projection.run(ROUNDING_MM, iterations,
+                                                                 aim=AIM_BEYOND_MM):
             return False
     low, high = projection.widest, gutter_mm + ROUNDING_MM
     for _ in range(FALLBACK_ATTEMPTS):

@@ -68,10 +68,12 @@ class ContactPushes:
         total = self.inverse_mass[i] + self.inverse_mass[j]
         total = np.where(total > 0, total, 1.0)
         self.i, self.j = i, j
-        self.share_i, self.share_j = self.inverse_mass[i] / total, self.inverse_mass[j] / total
+        # (m, 1): ready to scale the pushes, (m, 2)
+        self.share_i = (self.inverse_mass[i] / total)[:, None]
+        self.share_j = (self.inverse_mass[j] / total)[:, None]
         self.slots_i, self.slots_j = xy_slots(i), xy_slots(j)  # where the pushes land
-        self.blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm,
-                                    self.insets)
+        blocked = blocked_axes(bodies.sizes, i, j, *self.page, self.gutter_mm, self.insets)
+        self.blocked = blocked if blocked.any() else None  # None: two calls less a step
         # centre distance where they touch
         self.touch_reach = self.halves.take(i, axis=0) + self.halves.take(j, axis=0)
         self.reach = self.touch_reach + self.gap
@@ -84,10 +86,11 @@ class ContactPushes:
         touching, pushes = touching_pushes(centres, self.reach, self.i, self.j, self.blocked,
                                            RADIAL_SHARE * min(1.0, heat / RADIAL_FADE_HEAT))
         pushes *= K_CONTACT
-        on_j = pushes * self.share_j.take(touching)[:, None]
-        on_i = pushes * self.share_i.take(touching)[:, None]
-        acc += pair_sums(len(acc), self.slots_i.take(touching, axis=0),
-                         self.slots_j.take(touching, axis=0), on_i, on_j)
+        share_i, share_j, slots_i, slots_j = self.share_i, self.share_j, self.slots_i, self.slots_j
+        if len(touching) < len(self.i):  # on a small page every listed pair mostly touches
+            share_i, share_j = share_i.take(touching, axis=0), share_j.take(touching, axis=0)
+            slots_i, slots_j = slots_i.take(touching, axis=0), slots_j.take(touching, axis=0)
+        acc += pair_sums(len(acc), slots_i, slots_j, pushes * share_i, pushes * share_j)
 
     def overlapping(self, centres: np.ndarray) -> bool:
         """Whether any two items' rectangles (not their halos) overlap."""

@@ -118,7 +118,8 @@ class GuidePulls:
         self.roots = np.arange(len(centres)) if roots is None else roots
         self.grouped = bool((self.roots != np.arange(len(centres))).any())
         self.hold = hold_strength(page, strength)
-        self.holding = [np.zeros(0, dtype=int), np.zeros(0, dtype=int)]
+        self.on_line = np.zeros(0, dtype=int)  # flat slots on their line at the last pull
+        self.holding: list[np.ndarray] | None = None  # from on_line when first needed
         self.guides = np.flatnonzero(active)  # rows whose features are guides
         self.pulled = np.flatnonzero(pulled & active)  # rows the force moves
         self.page, self.margin_mm, self.regions = page, margin_mm, regions
@@ -178,7 +179,7 @@ class GuidePulls:
         self.steps += 1
         if self.steps % PULL_EVERY == 0 or self.refreshed_at is None:
             self.pull(acc, centres, heat)
-        if heat < HOLD_HEAT and (len(self.holding[0]) or len(self.holding[1])):
+        if heat < HOLD_HEAT and len(self.on_line):
             self.hold_on_lines(acc)
 
     def pull(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
@@ -193,18 +194,21 @@ class GuidePulls:
         pull = distance * np.maximum(1.0 - np.abs(distance) / self.reach, 0.0)
         share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT))
         acc.ravel()[self.own] += PULL_EVERY * self.k * share * pull
-        on_line = self.own[np.abs(distance) <= ON_LINE_MM]
-        rows, axes = on_line // 2, on_line % 2
-        # the roots to hold on each axis (one entry per root)
-        self.holding = [np.flatnonzero(np.bincount(self.roots[rows[axes == axis]],
-                                                   minlength=len(centres)))
-                        for axis in (0, 1)]
+        # Which groups to hold is worked out only on a cold page (hold_on_lines): while the
+        # page spreads it was a dozen NumPy calls a pull for nothing.
+        self.on_line, self.holding = self.own[np.abs(distance) <= ON_LINE_MM], None
 
     def hold_on_lines(self, acc: np.ndarray) -> None:
         """Static friction at a line: a group with a feature on its guide keeps its place on
         that axis unless the other forces on it (summed over the group, as the integrator
         hands a follower's forces to its root) exceed ``hold``; then only the excess moves it."""
         count = len(acc)
+        if self.holding is None:
+            rows, axes = self.on_line // 2, self.on_line % 2
+            # the roots to hold on each axis (one entry per root)
+            self.holding = [np.flatnonzero(np.bincount(self.roots[rows[axes == axis]],
+                                                       minlength=count))
+                            for axis in (0, 1)]
         for axis, roots in enumerate(self.holding):
             if len(roots) == 0:
                 continue

@@ -124,3 +124,45 @@ def test_a_page_too_full_for_the_margin_gives_up_the_gutter_then_the_margin_neve
     quality = engine.quality()
     assert not quality.overlapping_pairs and not quality.off_page
     assert quality.in_margin, "the margin gave way, and check can say which items"
+
+
+def test_an_item_pressed_into_the_margin_leaves_the_whole_move_to_the_other():
+    """A wall is an infinite mass: a small item against the left margin and a large one
+    overlapping it part in one round, the large one taking the whole move (shared by mass, the
+    small one took nearly all of it, the clamp undid it, and the pair crept apart 3 % a round)."""
+    from floatpage.physics import finalize
+
+    engine = Engine(*A4, Params(gutter_mm=3.0, guides=0.0))
+    engine.insert("small", 15, 100, 20, 20)  # its left edge on the 5 mm margin
+    engine.insert("large", 70, 105, 100, 100)
+    rounds = []
+    real = finalize.moves_from_gaps
+
+    def counted(*args):
+        rounds.append(1)
+        return real(*args)
+
+    finalize.moves_from_gaps = counted
+    try:
+        assert engine.finalize()
+    finally:
+        finalize.moves_from_gaps = real
+    assert engine.positions()["small"] == (15.0, 100.0)
+    assert 3.0 < engine.positions()["large"][0] - 50 - 25 < 3.5
+    assert len(rounds) <= 2
+
+
+def test_cannot_fit_is_an_area_bound():
+    from floatpage.physics.finalize import cannot_fit
+
+    engine = Engine(100.0, 100.0)
+    for k in range(4):  # four 44 mm squares in a 90 mm room: fit with no gap, not with 3 mm
+        engine.insert(f"s{k}", 50, 50, 44, 44)
+    bodies = engine.bodies
+    assert not cannot_fit(bodies, 100.0, 100.0, 0.01, 5.0)
+    assert cannot_fit(bodies, 100.0, 100.0, 3.0, 5.0)
+    assert not cannot_fit(bodies, 100.0, 100.0, 3.0, 0.0)  # without margins there is room
+    engine.insert("huge", 50, 50, 300, 10)  # larger than the page: counts as the room's width
+    assert cannot_fit(engine.bodies, 100.0, 100.0, 0.01, 5.0)
+    engine.confine("huge", 0, 0, 100, 20)  # with a region the bound says nothing
+    assert not cannot_fit(engine.bodies, 100.0, 100.0, 0.01, 5.0)
