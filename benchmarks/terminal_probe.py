@@ -5,7 +5,7 @@ The program under test runs on the pty's slave side (for the SSH link, that prog
 `ssh -tt` client, so every byte has crossed sshd and back). `measure_session` types what a
 user types and counts what the terminal receives: bytes per key, per held second, while
 idle, how long motion lasts after the last key, and the delay from a key to the first byte
-of its answer.
+of its answer and to its last (`answer_times`).
 """
 
 from __future__ import annotations
@@ -25,6 +25,9 @@ CURSOR_QUERY, CURSOR_ANSWER = b"\x1b[6n", b"\x1b[1;1R"
 QUIET_S = 2.0  # "visibly still": nothing written for this long
 UP, DOWN = b"\x1b[A", b"\x1b[B"
 KEY_REPEAT_HZ = 30  # a terminal's key repeat while an arrow is held
+FIRST_BYTE_LIMIT_S = 5.0  # a key not answered within this long is not counted
+ANSWER_WINDOW_S = 1.0  # a key's answer ends this long after its first byte at the latest,
+ANSWER_QUIET_S = 0.1  # ... or before this long without a byte
 
 
 class Terminal:
@@ -118,6 +121,8 @@ class SessionFigures:
     idle_b_s: float  # bytes a second with nothing pressed
     latency_ms: float  # median, key to the first byte of the answer, from rest
     latency_p90_ms: float
+    whole_ms: float  # median, key to the last byte of the answer (`answer_times`)
+    whole_p90_ms: float
 
 
 def hold_arrow(term: Terminal, seconds: float, key: bytes) -> tuple[int, float]:
@@ -127,6 +132,53 @@ def hold_arrow(term: Terminal, seconds: float, key: bytes) -> tuple[int, float]:
         term.send(key)
         got += term.pump(start + (press + 1) / KEY_REPEAT_HZ - time.monotonic())
     return got, time.monotonic() - start
+
+
+def answer_times(term: Terminal, sent: float) -> tuple[float, float] | None:
+    """(first, last) byte of the answer to a key sent at `sent`, in seconds after it; None
+    when nothing came within FIRST_BYTE_LIMIT_S.
+
+    The answer is every read up to the physics frame the key sets off: the editor follows
+    each drawn physics frame with a cursor-position query (tui/frame_pacer.py) and a key's
+    own answer with none, so the answer ends before the first read that carries a query, or
+    with it when that read is the first (the answer and the frame came in one read: counted
+    to the frame's end, never shorter than the answer). An app that sends no queries (the
+    trivial one) has answered when nothing more comes for ANSWER_QUIET_S; nothing is counted
+    later than ANSWER_WINDOW_S after the first byte. Each read is timed as select reports it,
+    as the first byte always was."""
+    reads: list[float] = []
+    while True:
+        now = time.monotonic()
+        if reads:
+            wait = min(reads[0] + ANSWER_WINDOW_S, reads[-1] + ANSWER_QUIET_S) - now
+        else:
+            wait = sent + FIRST_BYTE_LIMIT_S - now
+        if wait <= 0:
+            break
+        ready, _, _ = select.select([term.fd], [], [], wait)
+        if not ready:
+            break
+        at = time.monotonic()
+        before = len(term.seen)
+        try:
+            data = os.read(term.fd, 1 << 16)
+        except OSError:
+            break
+        if not data:
+            break
+        term.total += len(data)
+        term.seen += data
+        term.answer_queries(data)
+        term.last_byte_at = at
+        query = CURSOR_QUERY in term.seen[max(before - len(CURSOR_QUERY) + 1, 0):]
+        if query and reads:
+            break
+        reads.append(at)
+        if query:
+            break
+    if not reads:
+        return None
+    return reads[0] - sent, reads[-1] - sent
 
 
 def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
@@ -145,18 +197,25 @@ def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
     still_after = max(term.last_byte_at - last_key, 0.0)
     idle_s = 3.0
     idle = term.pump(idle_s)
-    latencies = []
-    for press in range(presses):  # from rest each time: the page is still when the key goes
-        term.until_quiet(quiet_s=QUIET_S / 2)
+    firsts, lasts = [], []
+    for press in range(presses):
+        # from rest each time: QUIET_S of quiet, as "still" is counted above (with 1 s, a late
+        # write of the last key's rest now and then came right after the next key, and was
+        # counted as its answer: 1-4 of 21 answers quicker than any key could be answered)
+        term.until_quiet(quiet_s=QUIET_S)
         term.send(DOWN if press % 2 else UP)
-        sent = time.monotonic()
-        ready_fds, _, _ = select.select([term.fd], [], [], 5.0)
-        if ready_fds:
-            latencies.append(time.monotonic() - sent)
+        times = answer_times(term, time.monotonic())
+        if times is not None:
+            firsts.append(1000 * times[0])
+            lasts.append(1000 * times[1])
     term.until_quiet(quiet_s=QUIET_S / 2)
-    latencies_ms = sorted(1000 * seconds for seconds in latencies) or [float("nan")]
+
+    def median_p90(values: list[float]) -> tuple[float, float]:
+        ordered = sorted(values) or [float("nan")]
+        return statistics.median(ordered), ordered[int(0.9 * (len(ordered) - 1))]
+
+    (first, first_p90), (whole, whole_p90) = median_p90(firsts), median_p90(lasts)
     return SessionFigures(
         one_key_kb=one_key / 1024, held_kb=(held + after) / 1024,
         steady_kb_s=held / 1024 / held_s, still_after_s=still_after, idle_b_s=idle / idle_s,
-        latency_ms=statistics.median(latencies_ms),
-        latency_p90_ms=latencies_ms[int(0.9 * (len(latencies_ms) - 1))])
+        latency_ms=first, latency_p90_ms=first_p90, whole_ms=whole, whole_p90_ms=whole_p90)

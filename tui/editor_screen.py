@@ -289,21 +289,29 @@ class EditorScreen(Screen):
         """Paint the preview, the status lines and the top bar.  ``measure=False`` (a key's
         own answer, while the physics it woke runs) leaves the status lines to the physics
         frame right after: measuring the page cost 2 ms of the answer, and the lines' change
-        from "still" to "settling…" (a restyle and two rows to compose) 1-2 ms more."""
-        self.preview.show(self.page_view())
-        engine = self.session.engine
-        moving = self.running and not engine.settled
-        if measure or not moving or not self._quality[0]:
-            summary, words = self.quality_summary()
-            self.query_one(StatusLine).show(Status(
-                state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
-                steps_per_s=self.meter.steps_per_s, quality=summary,
-                frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
-                details=self.details))
-        bar = self.page_bar_text()
-        if bar != self._page_bar:  # an unchanged bar costs no bytes
-            self._page_bar = bar
-            self.query_one("#page-bar", Label).update(bar, layout=False)  # one fixed line
+        from "still" to "settling…" (a restyle and two rows to compose) 1-2 ms more.
+
+        The preview's changed cells and the top bar go to the terminal together, in one
+        write (`DirectPainter.answer`): a key's answer came in two, the top bar 3-4 ms after
+        the moved item, through Textual's next screen update (issue 11: key to screen)."""
+        preview = self.preview
+        with preview.direct.answer(self.app):
+            preview.show(self.page_view())
+            engine = self.session.engine
+            moving = self.running and not engine.settled
+            if measure or not moving or not self._quality[0]:
+                summary, words = self.quality_summary()
+                self.query_one(StatusLine).show(Status(
+                    state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
+                    steps_per_s=self.meter.steps_per_s, quality=summary,
+                    frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
+                    details=self.details))
+            bar = self.page_bar_text()
+            if bar != self._page_bar:  # an unchanged bar costs no bytes
+                self._page_bar = bar
+                label = self.query_one("#page-bar", Label)
+                label.update(bar, layout=False)  # one fixed line
+                preview.direct.paint_lines(label)
 
     def quality_summary(self) -> tuple[str, str]:
         """The layout's quality, as numbers and in words; exact when idle, refreshed a few

@@ -93,15 +93,15 @@ async def test_cells_go_past_textual_only_when_nothing_else_is_on_them():
     async with app.run_test(size=(COLUMNS, ROWS), notifications=True) as pilot:
         await pilot.pause()
         preview = screen_of(app).preview
-        assert DirectPainter.sole_owner(preview, preview._cache)
+        assert DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
         app.editor.notify("a notice over the preview", timeout=30)
         await pilot.pause()
         await pilot.pause()
-        assert not DirectPainter.sole_owner(preview, preview._cache)
+        assert not DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
         app.clear_notifications()
         await pilot.pause()
         await pilot.pause()
-        assert DirectPainter.sole_owner(preview, preview._cache)
+        assert DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
         await pilot.press("question_mark")  # help
         await pilot.pause()
-        assert not DirectPainter.sole_owner(preview, preview._cache)
+        assert not DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
