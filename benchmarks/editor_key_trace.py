@@ -80,6 +80,15 @@ def run_traced(project: str, log_path: str) -> int:
         if characters:  # an empty write (all its cells already shown) reaches no terminal
             mark("flushed")
     terminal_driver.MeteredFile.flush = flushed
+    write_prompt = getattr(driver, "write_prompt", None)
+    if write_prompt is not None:  # written at once from the app's thread (the rest queued)
+        def written_now(self, data: str) -> None:
+            handed = self._handed
+            write_prompt(self, data)
+            if self._handed == handed:  # all of it written now; else the queued rest's
+                mark("flushed")           # flush is marked when it comes
+                mark("written at once")
+        driver.write_prompt = written_now
     for owner, attribute, name in (
             (session.EditSession, "nudge", "the move (session)"),
             (editor_screen.EditorScreen, "page_view", "page view, guides"),
@@ -146,12 +155,14 @@ def stage_times(log: Path, presses: int) -> dict[str, list[float]]:
     times: dict[str, list[float]] = defaultdict(list)
     for index in keys:
         key_at = events[index][0]
-        opened, flushes = {}, []
+        opened, flushes, at_once = {}, [], 0
         for when, name in events[index + 1:]:
             if name in ("key", "tick+") or when - key_at > KEY_WINDOW_S:
                 break
             if name == "flushed":
                 flushes.append(1000 * (when - key_at))
+            elif name == "written at once":
+                at_once += 1
             elif name.endswith("+"):
                 opened[name[:-1]] = when
             elif name[:-1] in opened:
@@ -161,6 +172,7 @@ def stage_times(log: Path, presses: int) -> dict[str, list[float]]:
             times["key to the first write flushed"].append(flushes[0])
             times["key to the last write flushed"].append(flushes[-1])
             times["writes flushed (count)"].append(len(flushes))
+            times["of which written at once (count)"].append(at_once)
     return times
 
 
