@@ -31,7 +31,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from terminal_probe import DOWN, QUIET_S, UP, Terminal, answer_times  # noqa: E402
+from terminal_probe import DOWN, QUIET_S, UP, Screen, Terminal, answer_times  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 KEY_WINDOW_S = 0.1
@@ -130,7 +130,9 @@ def open_editor(args: argparse.Namespace, folder: Path, log: Path):
 
 def type_keys(term: Terminal, presses: int) -> list[tuple[float, float]]:
     """Select the first item, then arrows from rest (2 s quiet, as benchmarks/editor.py);
-    the ms to the first and the last byte of each answer (`terminal_probe.answer_times`)."""
+    the ms to the first byte of each answer and to the whole of it on the screen
+    (`terminal_probe.answer_times`)."""
+    screen = Screen(term, term.columns, term.rows)
     term.until_seen(b"items")
     term.until_quiet(1.0)
     term.send(b"\t")
@@ -138,8 +140,9 @@ def type_keys(term: Terminal, presses: int) -> list[tuple[float, float]]:
     latencies = []
     for press in range(presses):
         term.until_quiet(QUIET_S)
+        screen.catch_up()
         term.send(DOWN if press % 2 else UP)
-        times = answer_times(term, time.monotonic())
+        times = answer_times(term, time.monotonic(), screen)
         if times is not None:
             latencies.append((1000 * times[0], 1000 * times[1]))
     term.until_quiet(1.0)
@@ -199,8 +202,8 @@ def main() -> None:
         times = stage_times(log, args.presses)
     print(f"{args.sample}, {args.size}, {args.link}: {len(latencies)} arrows from rest, medians")
     print(f"  key sent to the first byte back: "
-          f"{statistics.median(first for first, _ in latencies):.1f} ms, to the last byte of "
-          f"the answer: {statistics.median(last for _, last in latencies):.1f} ms")
+          f"{statistics.median(first for first, _ in latencies):.1f} ms, to the whole answer "
+          f"on the screen: {statistics.median(last for _, last in latencies):.1f} ms")
     print(f"  {'stage':36s} {'in it':>8s} {'ended, after the key':>22s}")
     for name, values in times.items():
         if name.endswith("@"):

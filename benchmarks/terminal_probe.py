@@ -26,14 +26,15 @@ QUIET_S = 2.0  # "visibly still": nothing written for this long
 UP, DOWN = b"\x1b[A", b"\x1b[B"
 KEY_REPEAT_HZ = 30  # a terminal's key repeat while an arrow is held
 FIRST_BYTE_LIMIT_S = 5.0  # a key not answered within this long is not counted
-ANSWER_WINDOW_S = 1.0  # a key's answer ends this long after its first byte at the latest,
-ANSWER_QUIET_S = 0.1  # ... or before this long without a byte
+ANSWER_WINDOW_S = 0.5  # a key's whole answer is looked for this long after the key,
+ANSWER_QUIET_S = 0.1  # ... or until this long without a byte
 
 
 class Terminal:
     """A pty of `columns` x `rows` running `argv`; reads everything it is sent."""
 
     def __init__(self, argv: list[str], cwd: str, env: dict[str, str], columns: int, rows: int):
+        self.columns, self.rows = columns, rows
         self.pid, self.fd = pty.fork()
         if self.pid == 0:  # the child: set the size before anything reads it, then run
             try:
@@ -45,6 +46,7 @@ class Terminal:
         self.total = 0
         self.last_byte_at = time.monotonic()
         self.seen = bytearray()  # everything received since the last until_seen
+        self.received = bytearray()  # everything received (`Screen` reads it when asked)
         self._carry = b""  # the end of the last read, for a query split between reads
 
     def pump(self, seconds: float) -> int:
@@ -65,6 +67,7 @@ class Terminal:
                     break
                 got += len(data)
                 self.seen += data
+                self.received += data
                 self.answer_queries(data)
                 self.last_byte_at = time.monotonic()
         self.total += got
@@ -121,7 +124,7 @@ class SessionFigures:
     idle_b_s: float  # bytes a second with nothing pressed
     latency_ms: float  # median, key to the first byte of the answer, from rest
     latency_p90_ms: float
-    whole_ms: float  # median, key to the last byte of the answer (`answer_times`)
+    whole_ms: float  # median, key to the whole answer on the screen (`answer_times`)
     whole_p90_ms: float
 
 
@@ -134,23 +137,48 @@ def hold_arrow(term: Terminal, seconds: float, key: bytes) -> tuple[int, float]:
     return got, time.monotonic() - start
 
 
-def answer_times(term: Terminal, sent: float) -> tuple[float, float] | None:
-    """(first, last) byte of the answer to a key sent at `sent`, in seconds after it; None
-    when nothing came within FIRST_BYTE_LIMIT_S.
+class Screen:
+    """What the terminal shows, read by pyte from everything received, when asked: reading it
+    as the bytes come (pure Python, milliseconds a frame) would delay the answers to the
+    editor's cursor queries, and so its frame pacing and its bytes."""
 
-    The answer is every read up to the physics frame the key sets off: the editor follows
-    each drawn physics frame with a cursor-position query (tui/frame_pacer.py) and a key's
-    own answer with none, so the answer ends before the first read that carries a query, or
-    with it when that read is the first (the answer and the frame came in one read: counted
-    to the frame's end, never shorter than the answer). An app that sends no queries (the
-    trivial one) has answered when nothing more comes for ANSWER_QUIET_S; nothing is counted
-    later than ANSWER_WINDOW_S after the first byte. Each read is timed as select reports it,
-    as the first byte always was."""
-    reads: list[float] = []
+    def __init__(self, term: Terminal, columns: int, rows: int):
+        import pyte
+
+        self.term = term
+        self.screen = pyte.Screen(columns, rows)
+        self.stream = pyte.ByteStream(self.screen)
+        self.read_up_to = 0
+
+    def catch_up(self) -> None:
+        self.stream.feed(bytes(self.term.received[self.read_up_to:]))
+        self.read_up_to = len(self.term.received)
+
+    def top_line(self) -> str:
+        return self.screen.display[0]
+
+
+def answer_times(term: Terminal, sent: float, screen: Screen) -> tuple[float, float] | None:
+    """(first byte, whole answer) for a key sent at `sent`, in seconds after it; None when
+    nothing came within FIRST_BYTE_LIMIT_S. `screen` has caught up with all before the key.
+
+    The whole answer is on the screen once its top line has changed too: both apps show a
+    key's effect there (the trivial app's label, the editor's top bar with the selected
+    item's position, "at 96, 175 mm", which every arrow changes), and the editor's other
+    part of the answer, the moved item's cells, comes before it or in the same write. So:
+    the later of the first byte and the last read that changed the top line within
+    ANSWER_WINDOW_S of the key (a line half drawn by one read and finished by the next counts
+    to the next; the first byte alone when the line never changes, as when an item cannot
+    move).
+    The reads are timed as select reports them, as the first byte always was, and read by
+    pyte only after the answer's time is over (ANSWER_WINDOW_S, or ANSWER_QUIET_S without a
+    byte), so that reading them costs no time in the figure."""
+    before = screen.top_line()
+    reads: list[tuple[float, int]] = []  # (when, end of the read in term.received)
     while True:
         now = time.monotonic()
         if reads:
-            wait = min(reads[0] + ANSWER_WINDOW_S, reads[-1] + ANSWER_QUIET_S) - now
+            wait = min(sent + ANSWER_WINDOW_S, reads[-1][0] + ANSWER_QUIET_S) - now
         else:
             wait = sent + FIRST_BYTE_LIMIT_S - now
         if wait <= 0:
@@ -159,7 +187,6 @@ def answer_times(term: Terminal, sent: float) -> tuple[float, float] | None:
         if not ready:
             break
         at = time.monotonic()
-        before = len(term.seen)
         try:
             data = os.read(term.fd, 1 << 16)
         except OSError:
@@ -168,22 +195,26 @@ def answer_times(term: Terminal, sent: float) -> tuple[float, float] | None:
             break
         term.total += len(data)
         term.seen += data
+        term.received += data
         term.answer_queries(data)
         term.last_byte_at = at
-        query = CURSOR_QUERY in term.seen[max(before - len(CURSOR_QUERY) + 1, 0):]
-        if query and reads:
-            break
-        reads.append(at)
-        if query:
-            break
+        reads.append((at, len(term.received)))
     if not reads:
         return None
-    return reads[0] - sent, reads[-1] - sent
+    whole, shown = reads[0][0], before
+    for at, end in reads:  # the top line's last change in the window
+        screen.stream.feed(bytes(term.received[screen.read_up_to:end]))
+        screen.read_up_to = end
+        if screen.top_line() != shown:
+            whole, shown = at, screen.top_line()
+    screen.catch_up()
+    return reads[0][0] - sent, whole - sent
 
 
 def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
                     presses: int = 21) -> SessionFigures:
     """The user's session: wait for `ready` on the screen, select an item, then the measures."""
+    screen = Screen(term, term.columns, term.rows)
     term.until_seen(ready)
     term.until_quiet()
     if select_first:
@@ -203,8 +234,9 @@ def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
         # write of the last key's rest now and then came right after the next key, and was
         # counted as its answer: 1-4 of 21 answers quicker than any key could be answered)
         term.until_quiet(quiet_s=QUIET_S)
+        screen.catch_up()
         term.send(DOWN if press % 2 else UP)
-        times = answer_times(term, time.monotonic())
+        times = answer_times(term, time.monotonic(), screen)
         if times is not None:
             firsts.append(1000 * times[0])
             lasts.append(1000 * times[1])
