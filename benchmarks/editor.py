@@ -17,9 +17,11 @@ terminal size runs, through `ssh -tt` on a pty of that size, a trivial Textual a
 showing the last key) and `floatpage edit` on each sample. Per session it counts (see
 benchmarks/terminal_probe.py): one arrow press from rest, a 1 s held arrow (30 presses),
 bytes a second while it is held, the seconds from the last key until nothing more is written
-(2 s quiet), idle bytes, and the median time from a key to the first byte of its answer, from
-rest. The remote end gets TERM=xterm-256color and COLORTERM=truecolor: every colour is sent in
-full, the costliest case (`--colors 256` for a link that does not pass COLORTERM). The goals
+(2 s quiet), idle bytes, and the median time from a key to the first byte of its answer
+and to the whole answer on the screen (the top line changed too: `terminal_probe.
+answer_times`), each from 2 s of rest. The latency goal is checked on the whole answer. The
+remote end gets TERM=xterm-256color and COLORTERM=truecolor: every colour is sent in full,
+the costliest case (`--colors 256` for a link that does not pass COLORTERM). The goals
 are issue 11's, at 100x32. Compare within one run; the machine is shared.
 """
 
@@ -147,23 +149,26 @@ def run_link(args: argparse.Namespace) -> None:
 
 def print_table(args: argparse.Namespace, size: tuple[int, int],
                 results: list[tuple[str, SessionFigures]]) -> None:
-    floor = results[0][1].latency_ms
+    """One row per app; the latency goal is checked on the whole answer."""
+    floor, whole_floor = results[0][1].latency_ms, results[0][1].whole_ms
     print(f"\n{args.link} link, {size[0]}x{size[1]}, {args.colors} colours "
           f"(goals at 100x32; ✗ marks a miss)\n")
     print("| app | one arrow from rest | 1 s held arrow | steady motion | still after release "
-          "| idle | key to screen, median (p90) |")
-    print("|---|---|---|---|---|---|---|")
+          "| idle | key to first byte, median (p90) | key to whole answer, median (p90) |")
+    print("|---|---|---|---|---|---|---|---|")
     for name, m in results:
+        is_editor = name != results[0][0]
+
         def mark(key: str) -> str:
-            is_editor = name != results[0][0]
             return " ✗" if is_editor and getattr(m, key) > GOALS[key] else ""
-        ratio = m.latency_ms / floor
-        late = " ✗" if name != results[0][0] and ratio > LATENCY_GOAL else ""
+        ratio, whole_ratio = m.latency_ms / floor, m.whole_ms / whole_floor
+        late = " ✗" if is_editor and whole_ratio > LATENCY_GOAL else ""
         print(f"| {name} | {m.one_key_kb:.1f} KB{mark('one_key_kb')} "
               f"| {m.held_kb:.1f} KB{mark('held_kb')} | {m.steady_kb_s:.1f} KB/s"
               f"{mark('steady_kb_s')} | {m.still_after_s:.2f} s{mark('still_after_s')} "
               f"| {m.idle_b_s:.0f} B/s{mark('idle_b_s')} | {m.latency_ms:.1f} ms "
-              f"({m.latency_p90_ms:.1f}) = {ratio:.1f}x{late} |")
+              f"({m.latency_p90_ms:.1f}) = {ratio:.1f}x | {m.whole_ms:.1f} ms "
+              f"({m.whole_p90_ms:.1f}) = {whole_ratio:.1f}x{late} |")
     sys.stdout.flush()
 
 

@@ -10,7 +10,8 @@ benchmarks/terminal_probe.py does and reads the log afterwards. Per stage it pri
 median time in the stage and when it ended, counted from the key's arrival in the driver;
 then the median time from the key to the first write flushed to the terminal (the preview,
 painted past Textual since this session) and to the last before the physics frame it wakes
-(the top bar, through Textual). The wrappers cost a few microseconds each; the machine is
+(the top bar, through Textual, until this session sent it with the preview). Only
+flushes that carry bytes count. The wrappers cost a few microseconds each; the machine is
 shared, so compare stages within one run.
 """
 
@@ -19,7 +20,6 @@ from __future__ import annotations
 import argparse
 import functools
 import os
-import select
 import shutil
 import shlex
 import statistics
@@ -31,7 +31,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from terminal_probe import DOWN, UP, Terminal  # noqa: E402
+from terminal_probe import DOWN, QUIET_S, UP, Screen, Terminal, answer_times  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 KEY_WINDOW_S = 0.1
@@ -75,9 +75,20 @@ def run_traced(project: str, log_path: str) -> int:
     flush = terminal_driver.MeteredFile.flush
 
     def flushed(self) -> None:
+        characters = self._unflushed
         flush(self)
-        mark("flushed")
+        if characters:  # an empty write (all its cells already shown) reaches no terminal
+            mark("flushed")
     terminal_driver.MeteredFile.flush = flushed
+    write_prompt = getattr(driver, "write_prompt", None)
+    if write_prompt is not None:  # written at once from the app's thread (the rest queued)
+        def written_now(self, data: str) -> None:
+            handed = self._handed
+            write_prompt(self, data)
+            if self._handed == handed:  # all of it written now; else the queued rest's
+                mark("flushed")           # flush is marked when it comes
+                mark("written at once")
+        driver.write_prompt = written_now
     for owner, attribute, name in (
             (session.EditSession, "nudge", "the move (session)"),
             (editor_screen.EditorScreen, "page_view", "page view, guides"),
@@ -117,20 +128,23 @@ def open_editor(args: argparse.Namespace, folder: Path, log: Path):
     return term, sshd
 
 
-def type_keys(term: Terminal, presses: int) -> list[float]:
-    """Select the first item, then arrows from rest; the ms to the first byte of each answer."""
+def type_keys(term: Terminal, presses: int) -> list[tuple[float, float]]:
+    """Select the first item, then arrows from rest (2 s quiet, as benchmarks/editor.py);
+    the ms to the first byte of each answer and to the whole of it on the screen
+    (`terminal_probe.answer_times`)."""
+    screen = Screen(term, term.columns, term.rows)
     term.until_seen(b"items")
     term.until_quiet(1.0)
     term.send(b"\t")
     term.until_quiet(1.0)
     latencies = []
     for press in range(presses):
-        term.until_quiet(1.0)
+        term.until_quiet(QUIET_S)
+        screen.catch_up()
         term.send(DOWN if press % 2 else UP)
-        sent = time.monotonic()
-        ready, _, _ = select.select([term.fd], [], [], 5.0)
-        if ready:
-            latencies.append(1000 * (time.monotonic() - sent))
+        times = answer_times(term, time.monotonic(), screen)
+        if times is not None:
+            latencies.append((1000 * times[0], 1000 * times[1]))
     term.until_quiet(1.0)
     return latencies
 
@@ -144,12 +158,14 @@ def stage_times(log: Path, presses: int) -> dict[str, list[float]]:
     times: dict[str, list[float]] = defaultdict(list)
     for index in keys:
         key_at = events[index][0]
-        opened, flushes = {}, []
+        opened, flushes, at_once = {}, [], 0
         for when, name in events[index + 1:]:
             if name in ("key", "tick+") or when - key_at > KEY_WINDOW_S:
                 break
             if name == "flushed":
                 flushes.append(1000 * (when - key_at))
+            elif name == "written at once":
+                at_once += 1
             elif name.endswith("+"):
                 opened[name[:-1]] = when
             elif name[:-1] in opened:
@@ -158,6 +174,8 @@ def stage_times(log: Path, presses: int) -> dict[str, list[float]]:
         if flushes:
             times["key to the first write flushed"].append(flushes[0])
             times["key to the last write flushed"].append(flushes[-1])
+            times["writes flushed (count)"].append(len(flushes))
+            times["of which written at once (count)"].append(at_once)
     return times
 
 
@@ -183,13 +201,16 @@ def main() -> None:
                 sshd.stop()
         times = stage_times(log, args.presses)
     print(f"{args.sample}, {args.size}, {args.link}: {len(latencies)} arrows from rest, medians")
-    print(f"  key sent to the first byte back: {statistics.median(latencies):.1f} ms")
+    print(f"  key sent to the first byte back: "
+          f"{statistics.median(first for first, _ in latencies):.1f} ms, to the whole answer "
+          f"on the screen: {statistics.median(last for _, last in latencies):.1f} ms")
     print(f"  {'stage':36s} {'in it':>8s} {'ended, after the key':>22s}")
     for name, values in times.items():
         if name.endswith("@"):
             continue
         ended = times.get(name + "@")
-        print(f"  {name:36s} {statistics.median(values):6.2f} ms"
+        unit = "" if name.endswith("(count)") else " ms"
+        print(f"  {name:36s} {statistics.median(values):6.2f}{unit}"
               + (f" {statistics.median(ended):17.2f} ms" if ended else ""))
 
 

@@ -5,7 +5,7 @@ The program under test runs on the pty's slave side (for the SSH link, that prog
 `ssh -tt` client, so every byte has crossed sshd and back). `measure_session` types what a
 user types and counts what the terminal receives: bytes per key, per held second, while
 idle, how long motion lasts after the last key, and the delay from a key to the first byte
-of its answer.
+of its answer and to its last (`answer_times`).
 """
 
 from __future__ import annotations
@@ -25,12 +25,16 @@ CURSOR_QUERY, CURSOR_ANSWER = b"\x1b[6n", b"\x1b[1;1R"
 QUIET_S = 2.0  # "visibly still": nothing written for this long
 UP, DOWN = b"\x1b[A", b"\x1b[B"
 KEY_REPEAT_HZ = 30  # a terminal's key repeat while an arrow is held
+FIRST_BYTE_LIMIT_S = 5.0  # a key not answered within this long is not counted
+ANSWER_WINDOW_S = 0.5  # a key's whole answer is looked for this long after the key,
+ANSWER_QUIET_S = 0.1  # ... or until this long without a byte
 
 
 class Terminal:
     """A pty of `columns` x `rows` running `argv`; reads everything it is sent."""
 
     def __init__(self, argv: list[str], cwd: str, env: dict[str, str], columns: int, rows: int):
+        self.columns, self.rows = columns, rows
         self.pid, self.fd = pty.fork()
         if self.pid == 0:  # the child: set the size before anything reads it, then run
             try:
@@ -42,6 +46,7 @@ class Terminal:
         self.total = 0
         self.last_byte_at = time.monotonic()
         self.seen = bytearray()  # everything received since the last until_seen
+        self.received = bytearray()  # everything received (`Screen` reads it when asked)
         self._carry = b""  # the end of the last read, for a query split between reads
 
     def pump(self, seconds: float) -> int:
@@ -62,6 +67,7 @@ class Terminal:
                     break
                 got += len(data)
                 self.seen += data
+                self.received += data
                 self.answer_queries(data)
                 self.last_byte_at = time.monotonic()
         self.total += got
@@ -118,6 +124,8 @@ class SessionFigures:
     idle_b_s: float  # bytes a second with nothing pressed
     latency_ms: float  # median, key to the first byte of the answer, from rest
     latency_p90_ms: float
+    whole_ms: float  # median, key to the whole answer on the screen (`answer_times`)
+    whole_p90_ms: float
 
 
 def hold_arrow(term: Terminal, seconds: float, key: bytes) -> tuple[int, float]:
@@ -129,9 +137,84 @@ def hold_arrow(term: Terminal, seconds: float, key: bytes) -> tuple[int, float]:
     return got, time.monotonic() - start
 
 
+class Screen:
+    """What the terminal shows, read by pyte from everything received, when asked: reading it
+    as the bytes come (pure Python, milliseconds a frame) would delay the answers to the
+    editor's cursor queries, and so its frame pacing and its bytes."""
+
+    def __init__(self, term: Terminal, columns: int, rows: int):
+        import pyte
+
+        self.term = term
+        self.screen = pyte.Screen(columns, rows)
+        self.stream = pyte.ByteStream(self.screen)
+        self.read_up_to = 0
+
+    def catch_up(self) -> None:
+        self.stream.feed(bytes(self.term.received[self.read_up_to:]))
+        self.read_up_to = len(self.term.received)
+
+    def top_line(self) -> str:
+        return self.screen.display[0]
+
+
+def answer_times(term: Terminal, sent: float, screen: Screen) -> tuple[float, float] | None:
+    """(first byte, whole answer) for a key sent at `sent`, in seconds after it; None when
+    nothing came within FIRST_BYTE_LIMIT_S. `screen` has caught up with all before the key.
+
+    The whole answer is on the screen once its top line has changed too: both apps show a
+    key's effect there (the trivial app's label, the editor's top bar with the selected
+    item's position, "at 96, 175 mm", which every arrow changes), and the editor's other
+    part of the answer, the moved item's cells, comes before it or in the same write. So:
+    the later of the first byte and the last read that changed the top line within
+    ANSWER_WINDOW_S of the key (a line half drawn by one read and finished by the next counts
+    to the next; the first byte alone when the line never changes, as when an item cannot
+    move).
+    The reads are timed as select reports them, as the first byte always was, and read by
+    pyte only after the answer's time is over (ANSWER_WINDOW_S, or ANSWER_QUIET_S without a
+    byte), so that reading them costs no time in the figure."""
+    before = screen.top_line()
+    reads: list[tuple[float, int]] = []  # (when, end of the read in term.received)
+    while True:
+        now = time.monotonic()
+        if reads:
+            wait = min(sent + ANSWER_WINDOW_S, reads[-1][0] + ANSWER_QUIET_S) - now
+        else:
+            wait = sent + FIRST_BYTE_LIMIT_S - now
+        if wait <= 0:
+            break
+        ready, _, _ = select.select([term.fd], [], [], wait)
+        if not ready:
+            break
+        at = time.monotonic()
+        try:
+            data = os.read(term.fd, 1 << 16)
+        except OSError:
+            break
+        if not data:
+            break
+        term.total += len(data)
+        term.seen += data
+        term.received += data
+        term.answer_queries(data)
+        term.last_byte_at = at
+        reads.append((at, len(term.received)))
+    if not reads:
+        return None
+    whole, shown = reads[0][0], before
+    for at, end in reads:  # the top line's last change in the window
+        screen.stream.feed(bytes(term.received[screen.read_up_to:end]))
+        screen.read_up_to = end
+        if screen.top_line() != shown:
+            whole, shown = at, screen.top_line()
+    screen.catch_up()
+    return reads[0][0] - sent, whole - sent
+
+
 def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
                     presses: int = 21) -> SessionFigures:
     """The user's session: wait for `ready` on the screen, select an item, then the measures."""
+    screen = Screen(term, term.columns, term.rows)
     term.until_seen(ready)
     term.until_quiet()
     if select_first:
@@ -145,18 +228,26 @@ def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
     still_after = max(term.last_byte_at - last_key, 0.0)
     idle_s = 3.0
     idle = term.pump(idle_s)
-    latencies = []
-    for press in range(presses):  # from rest each time: the page is still when the key goes
-        term.until_quiet(quiet_s=QUIET_S / 2)
+    firsts, lasts = [], []
+    for press in range(presses):
+        # from rest each time: QUIET_S of quiet, as "still" is counted above (with 1 s, a late
+        # write of the last key's rest now and then came right after the next key, and was
+        # counted as its answer: 1-4 of 21 answers quicker than any key could be answered)
+        term.until_quiet(quiet_s=QUIET_S)
+        screen.catch_up()
         term.send(DOWN if press % 2 else UP)
-        sent = time.monotonic()
-        ready_fds, _, _ = select.select([term.fd], [], [], 5.0)
-        if ready_fds:
-            latencies.append(time.monotonic() - sent)
+        times = answer_times(term, time.monotonic(), screen)
+        if times is not None:
+            firsts.append(1000 * times[0])
+            lasts.append(1000 * times[1])
     term.until_quiet(quiet_s=QUIET_S / 2)
-    latencies_ms = sorted(1000 * seconds for seconds in latencies) or [float("nan")]
+
+    def median_p90(values: list[float]) -> tuple[float, float]:
+        ordered = sorted(values) or [float("nan")]
+        return statistics.median(ordered), ordered[int(0.9 * (len(ordered) - 1))]
+
+    (first, first_p90), (whole, whole_p90) = median_p90(firsts), median_p90(lasts)
     return SessionFigures(
         one_key_kb=one_key / 1024, held_kb=(held + after) / 1024,
         steady_kb_s=held / 1024 / held_s, still_after_s=still_after, idle_b_s=idle / idle_s,
-        latency_ms=statistics.median(latencies_ms),
-        latency_p90_ms=latencies_ms[int(0.9 * (len(latencies_ms) - 1))])
+        latency_ms=first, latency_p90_ms=first_p90, whole_ms=whole, whole_p90_ms=whole_p90)

@@ -32,7 +32,7 @@ terminal's colour system (truecolour, 256 colours), so the screen is the same ei
 from __future__ import annotations
 
 from contextlib import contextmanager
-from typing import Iterator
+from typing import Callable, Iterator
 
 from rich.cells import cell_len
 from rich.style import Style as RichStyle
@@ -47,23 +47,24 @@ Run = tuple[int, int, str, Style]  # screen row, screen column, text, style
 
 
 class DirectPainter:
-    """Paints one widget's changed cells through the driver, when nothing else is on them."""
+    """Paints widgets' changed cells through the driver, when nothing else is on them.
+
+    Inside `answer()` the cells of every widget painted go out together, in one write when
+    the block ends: a key's answer (the moved item, then the top bar's "at 96, 175 mm") came
+    in two writes 3-4 ms apart, the second through Textual's next screen update."""
 
     def __init__(self):
         self._styles: dict[RichStyle, Style | None] = {}
+        self._batch: list[tuple[list[Run], Callable[[], None], Callable[[], None]]] | None = None
+        self._batch_app = None
 
     def paint(self, widget: Widget, cache: StripCache) -> bool:
-        """Send `cache.changed` to the terminal; False (nothing sent) when it cannot be."""
-        app = widget.app
-        driver = app._driver
-        paint_cells = getattr(driver, "paint_cells", None)
-        if paint_cells is None or app.is_headless or not self.sole_owner(widget, cache):
+        """Send `cache.changed` to the terminal; False (nothing sent) when it cannot be. Inside
+        `answer()`, True means "to be sent", and Textual refreshes the rows should the block's
+        write fail."""
+        if not self.may_paint(widget, cache.cols, cache.rows):
             return False
-        if not app._running or app._closed:  # as Textual's own `_display` checks: the writer
-            return False                      # thread may be gone (its queue would fill up)
-        color_system = app.console._color_system
-        if color_system is None:
-            return False
+        color_system = widget.app.console._color_system
         region = widget.content_region
         runs: list[Run] = []
         for row, (first, end) in sorted(cache.changed.items()):
@@ -74,25 +75,92 @@ class DirectPainter:
                     return False
                 add_run(runs, region.y + row, region.x + col, segment.text, style)
                 col += cell_len(segment.text)
-        if not paint_cells(runs):
+        offset, width = widget.content_offset, widget.size.width
+        rows = list(cache.changed)
+
+        def sent() -> None:
+            for row in rows:  # what Textual cached of these lines is stale: rendered again
+                widget._styles_cache.set_dirty(Region(offset.x, offset.y + row, width, 1))
+
+        refresh = getattr(widget, "refresh_changed_rows", widget.refresh)
+        return self._send(widget.app, runs, sent, refresh)
+
+    def paint_lines(self, widget: Widget) -> bool:
+        """The widget's lines as Textual renders them (`Widget.render_lines`, which caches
+        them for Textual's own update), sent ahead of Textual's own update of them: that update
+        then finds the cells on the terminal already (the shadow screen sends none of them)
+        and writes nothing. For a line of text, the top bar; False when it cannot be sent."""
+        region = widget.region
+        if not self.may_paint(widget, region.width, region.height, content=False):
             return False
-        offset = widget.content_offset
-        for row, (first, end) in cache.changed.items():
-            # what Textual cached of these lines is stale: rendered again when next asked
-            widget._styles_cache.set_dirty(Region(offset.x, offset.y + row, widget.size.width, 1))
+        color_system = widget.app.console._color_system
+        runs: list[Run] = []
+        for row, strip in enumerate(widget.render_lines(Region(0, 0, *region.size))):
+            col = region.x
+            for segment in strip:
+                if segment.control:
+                    return False
+                style = self.terminal_style(segment.style, color_system)
+                if style is None:
+                    return False
+                add_run(runs, region.y + row, col, segment.text, style)
+                col += cell_len(segment.text)
+        return self._send(widget.app, runs, lambda: None, lambda: None)
+
+    def may_paint(self, widget: Widget, cols: int, rows: int, content: bool = True) -> bool:
+        """A terminal to paint on, whose cells of the widget are the widget's alone."""
+        app = widget.app
+        if getattr(app._driver, "paint_cells", None) is None or app.is_headless:
+            return False
+        if not app._running or app._closed:  # as Textual's own `_display` checks: the writer
+            return False                      # thread may be gone (its queue would fill up)
+        if app.console._color_system is None:
+            return False
+        return self.sole_owner(widget, cols, rows, content)
+
+    def _send(self, app, runs: list[Run], sent: Callable[[], None],
+              failed: Callable[[], None]) -> bool:
+        if self._batch is not None and self._batch_app is app:
+            self._batch.append((runs, sent, failed))
+            return True
+        if not app._driver.paint_cells(runs):
+            return False
+        sent()
         return True
 
+    @contextmanager
+    def answer(self, app) -> Iterator[None]:
+        """Gather what is painted in the block, and send it in one write at its end; if the
+        write cannot be made (the shadow screen lost track meanwhile), Textual draws it all."""
+        if self._batch is not None:  # already gathering: the outer block sends
+            yield
+            return
+        self._batch, self._batch_app = [], app
+        try:
+            yield
+        finally:
+            batch, self._batch, self._batch_app = self._batch, None, None
+        if not batch:
+            return
+        driver = app._driver
+        runs = [run for part, _, _ in batch for run in part]
+        written = app._running and not app._closed and driver is not None \
+            and driver.paint_cells(runs)
+        for _, sent, failed in batch:
+            (sent if written else failed)()
+
     @staticmethod
-    def sole_owner(widget: Widget, cache: StripCache) -> bool:
+    def sole_owner(widget: Widget, cols: int, rows: int, content: bool = True) -> bool:
         """The widget's cells are its own on the terminal: its screen is shown, laid out at
-        the canvas's size, and no other widget overlaps it."""
+        `cols` x `rows` (its content region's, or with `content=False` its whole region's),
+        and no other widget overlaps it."""
         screen = widget.screen
         if screen is not widget.app.screen or not screen.is_current:
             return False
         if screen._layout_required or screen._repaint_required:
             return False  # Textual is about to repaint (or move) it anyway
-        region = widget.content_region
-        if (region.width, region.height) != (cache.cols, cache.rows) \
+        region = widget.content_region if content else widget.region
+        if (region.width, region.height) != (cols, rows) \
                 or not screen.region.contains_region(region):
             return False
         ancestors = set(widget.ancestors_with_self)

@@ -13,14 +13,12 @@ from __future__ import annotations
 import copy
 import datetime
 import math
-import re
 import time
 from functools import partial
 from pathlib import Path
 from typing import Callable, TypeVar
 
 import numpy as np
-from rich.markup import escape
 from rich.text import Text
 from textual import work
 from textual.app import ComposeResult
@@ -28,7 +26,6 @@ from textual.reactive import reactive
 from textual.screen import ModalScreen, Screen
 from textual.timer import Timer
 from rich.cells import cell_len
-from textual.widgets import Label
 
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
@@ -39,6 +36,7 @@ from floatpage.tui.frame_meter import FrameMeter
 from floatpage.tui.frame_pacer import FramePacer
 from floatpage.tui.key_bar import KeyBar
 from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank, in_footer
+from floatpage.tui.page_bar import PageBar
 from floatpage.tui.page_painter import PageView, shown_guides
 from floatpage.tui.page_preview import PagePreview
 from floatpage.tui.session import EditError, EditSession
@@ -67,7 +65,6 @@ def describe_item(item) -> str:
 
 EXPORT_WARNINGS_SHOWN = 5
 ALWAYS_IN_FOOTER = frozenset({"help", "save", "export_pdf", "quit"})
-MARKUP_TAG = re.compile(r"(?<!\\)\[/?b\]")  # the only tags the top bar writes
 PALETTE_CELLS = 13  # the footer's "^p palette" at its right end
 
 
@@ -125,13 +122,12 @@ class EditorScreen(Screen):
         self.pacer = FramePacer(None)  # on_mount gives it the terminal's link, if there is one
         self._quality = ("", "")
         self.details = False  # `v`: the status line shows its numbers
-        self._page_bar = None
         self.labels = False  # `n`: every item's id on the preview, not only the selected one's
         self._quality_at = float("-inf")
         self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
 
     def compose(self) -> ComposeResult:
-        yield Label("", id="page-bar")
+        yield PageBar(id="page-bar")
         yield PagePreview(id="preview")
         yield StatusLine("", id="status")
         yield KeyBar(id="footer")
@@ -289,21 +285,26 @@ class EditorScreen(Screen):
         """Paint the preview, the status lines and the top bar.  ``measure=False`` (a key's
         own answer, while the physics it woke runs) leaves the status lines to the physics
         frame right after: measuring the page cost 2 ms of the answer, and the lines' change
-        from "still" to "settling…" (a restyle and two rows to compose) 1-2 ms more."""
-        self.preview.show(self.page_view())
-        engine = self.session.engine
-        moving = self.running and not engine.settled
-        if measure or not moving or not self._quality[0]:
-            summary, words = self.quality_summary()
-            self.query_one(StatusLine).show(Status(
-                state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
-                steps_per_s=self.meter.steps_per_s, quality=summary,
-                frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
-                details=self.details))
-        bar = self.page_bar_text()
-        if bar != self._page_bar:  # an unchanged bar costs no bytes
-            self._page_bar = bar
-            self.query_one("#page-bar", Label).update(bar, layout=False)  # one fixed line
+        from "still" to "settling…" (a restyle and two rows to compose) 1-2 ms more.
+
+        The preview's changed cells and the top bar go to the terminal together, in one
+        write (`DirectPainter.answer`): a key's answer came in two, the top bar 3-4 ms after
+        the moved item, through Textual's next screen update (issue 11: key to screen)."""
+        preview = self.preview
+        with preview.direct.answer(self.app):
+            preview.show(self.page_view())
+            engine = self.session.engine
+            moving = self.running and not engine.settled
+            if measure or not moving or not self._quality[0]:
+                summary, words = self.quality_summary()
+                self.query_one(StatusLine).show(Status(
+                    state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
+                    steps_per_s=self.meter.steps_per_s, quality=summary,
+                    frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
+                    details=self.details))
+            bar = self.query_one(PageBar)
+            if bar.show(self.page_bar_runs()):  # an unchanged bar costs no bytes
+                preview.direct.paint_lines(bar)
 
     def quality_summary(self) -> tuple[str, str]:
         """The layout's quality, as numbers and in words; exact when idle, refreshed a few
@@ -325,39 +326,42 @@ class EditorScreen(Screen):
         self.details = not self.details
         self.redraw()
 
-    def page_bar_text(self) -> str:
-        """The top bar, built to fit its width by priority: the unsaved mark first and always,
-        then the selected item and its anchor, the page, the title, then size and count (at 80
-        columns the unsaved mark and the anchor state used to be cut off, defect 5)."""
+    def page_bar_runs(self) -> tuple[tuple[str, bool], ...]:
+        """The top bar, as runs of (text, bold), built to fit its width by priority: the unsaved
+        mark first and always, then the selected item and its anchor, the page, the title,
+        then size and count (at 80 columns the unsaved mark and the anchor state used to be
+        cut off, defect 5)."""
         session = self.session
         page = session.page
         selected = session.selected_item
-        parts = []  # (priority: lower is kept longer, position, text)
+        parts = []  # (priority: lower is kept longer, position, runs)
         if session.unsaved:
-            parts.append((0, 0, "[b]● unsaved[/b]"))
+            parts.append((0, 0, (("● unsaved", True),)))
         title = session.project.title or (session.project.path.stem if session.project.path else "")
         if title:
-            parts.append((3, 1, f"[b]{escape(title)}[/b]"))
-        parts.append((2, 2, f"page {session.page_index + 1}/{len(session.project.pages)} "
-                            f"[b]{escape(page.id)}[/b]"))
-        parts.append((5, 3, f"{page.size} {page.orientation}"))
-        parts.append((4, 4, f"{len(page.items)} items"))
+            parts.append((3, 1, ((title, True),)))
+        parts.append((2, 2, ((f"page {session.page_index + 1}/{len(session.project.pages)} ",
+                              False), (page.id, True))))
+        parts.append((5, 3, ((f"{page.size} {page.orientation}", False),)))
+        parts.append((4, 4, ((f"{len(page.items)} items", False),)))
         if selected:
-            parts.append((1, 5, f"[b]{escape(selected.id)}[/b] ({describe_item(selected)})"))
+            parts.append((1, 5, ((selected.id, True), (f" ({describe_item(selected)})", False))))
             # where it is: an arrow moves it 2 mm, often less than a cell of the preview, and
             # the key would have shown nothing at all (issue 11: key to screen)
             x_mm, y_mm = session.engine.positions().get(selected.id, (selected.x, selected.y))
-            parts.append((2, 6, f"at {x_mm:.0f}, {y_mm:.0f} mm"))
+            parts.append((2, 6, ((f"at {x_mm:.0f}, {y_mm:.0f} mm", False),)))
         width = max(self.size.width - 2, 20) if self.is_mounted else 200
         kept = sorted(parts)
 
-        def shown(kept_parts) -> str:
-            return " · ".join(text for _, _, text in sorted(kept_parts, key=lambda p: p[1]))
+        def shown(kept_parts) -> tuple[tuple[str, bool], ...]:
+            runs: list[tuple[str, bool]] = []
+            for _, _, part in sorted(kept_parts, key=lambda p: p[1]):
+                if runs:
+                    runs.append((" · ", False))
+                runs.extend(part)
+            return tuple(runs)
 
-        # measured on the text without its markup: parsing the markup on every key cost a
-        # millisecond of the key's answer
-        while len(kept) > 1 and cell_len(MARKUP_TAG.sub("", shown(kept)).replace(
-                "\\[", "[")) > width:
+        while len(kept) > 1 and cell_len("".join(text for text, _ in shown(kept))) > width:
             kept.pop()
         return shown(kept)
 

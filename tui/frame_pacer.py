@@ -101,8 +101,11 @@ class LinkMeter:
     # -- output the writer thread holds ---------------------------------------------------
 
     def queued(self, characters: int, size_bytes: int = 0) -> None:
+        """`characters` handed to the writer thread (0: `size_bytes` written at once)."""
         with self._lock:
             self.bytes_written += size_bytes
+            if not characters:
+                return
             if self.pending == 0:
                 self._pending_since = self.clock()
             self.pending += characters

@@ -49,10 +49,15 @@ def _move(keys: str, dx: int, dy: int, step: float, name: str) -> Command:
     first = keys.split(",")[0]
     large = first.startswith("shift+")
     display = "\u21e7" + format_key(first[6:]) if large else format_key(first)
+    # priority: the App runs the binding as the key arrives, instead of handing the key to
+    # the focused preview, which passes it up to the screen and the screen to the App, a turn
+    # of the event loop each (about 1 ms of a key's answer, issue 11). Nothing on the editor
+    # screen takes arrows itself; dialogs are screens of their own, whose keys these never
+    # see; with nothing selected the binding is disabled and the key goes the usual way.
     return Command(keys, f"nudge({dx * step},{dy * step})", f"Move {name}",
                    f"Move the selected item {name} by {step:g} mm; the others make way",
                    "Move and resize", footer="item", rank=16 if large else 2, needs_item=True,
-                   key_display=display)
+                   priority=True, key_display=display)
 
 
 def _resize(keys: str, fx: float, fy: float, label: str, how: str) -> Command:

@@ -1,8 +1,10 @@
-"""Textual's Linux driver, with three changes: end of input is a hang-up, not a busy loop;
+"""Textual's Linux driver, with four changes: end of input is a hang-up, not a busy loop;
 the output sends only the cells the terminal does not already show, and colour codes only
-where the colour changes (`shadow_screen`); and it measures its link for the frame pacer
+where the colour changes (`shadow_screen`); it measures its link for the frame pacer
 (`frame_pacer.LinkMeter`: cursor-position queries after physics frames, whose answers it
-takes out of the input, and output not yet flushed).
+takes out of the input, and output not yet flushed); and cells painted past Textual (a key's
+answer) are written at once from the app's thread when the terminal takes them without
+waiting (`write_prompt`).
 
 When the terminal goes away, Textual's input thread finds its file descriptor readable with
 nothing to read and goes round again at once, forever: the editor stayed alive at 50-70 % CPU
@@ -33,15 +35,23 @@ class MeteredFile:
 
     def __init__(self, file, link: LinkMeter):
         self._file, self._link, self._unflushed = file, link, 0
+        self.writes = self.flushed_writes = 0  # writes taken from the thread's queue, flushed
 
-    def write(self, text: str) -> int:
+    def write(self, text: str | bytes) -> int:
+        """Text, or the bytes a prompt write (`HangupAwareDriver.write_prompt`) left over."""
+        self.writes += 1
         self._unflushed += len(text)
+        if isinstance(text, bytes):
+            self._file.flush()  # what the text layer holds goes first
+            return self._file.buffer.write(text)
         return self._file.write(text)
 
     def flush(self) -> None:
+        writes = self.writes
         self._file.flush()
         flushed, self._unflushed = self._unflushed, 0
         self._link.flushed(flushed)
+        self.flushed_writes = writes
 
     def fileno(self) -> int:
         return self._file.fileno()
@@ -65,6 +75,8 @@ class HangupAwareDriver(LinuxDriver):
         self._write_lock = threading.Lock()
         self.link = LinkMeter()
         self._file = MeteredFile(self._file, self.link)
+        self._handed = 0  # writes handed to the writer thread
+        self._prompt_fd: int | None = None  # the terminal, opened again without blocking
 
     def write(self, data: str) -> None:
         """The same screen for fewer bytes (over SSH each byte counts, issue 11), and after a
@@ -75,6 +87,7 @@ class HangupAwareDriver(LinuxDriver):
                 self.shadow.reset(*self._get_terminal_size())
             data = self.shadow.rewrite(data) + self.link.probe()
             self.link.queued(len(data), len(data.encode("utf-8", "replace")))
+            self._handed += 1
             super().write(data)
 
     def paint_cells(self, runs) -> bool:
@@ -85,14 +98,59 @@ class HangupAwareDriver(LinuxDriver):
                 return False
             data = self.shadow.paint(runs) + self.link.probe()
             if data:
-                self.link.queued(len(data), len(data.encode("utf-8", "replace")))
-                super().write(data)
+                self.write_prompt(data)
         return True
+
+    def write_prompt(self, data: str) -> None:
+        """Write now, from this thread, what the terminal takes without waiting; the rest goes
+        to the writer thread. Only while that thread has nothing of its own to write, so the
+        order stays. A key's answer waited 1-4 ms in the writer thread's queue: the thread
+        gets the interpreter lock only once the app's loop, busy with Textual's update after
+        the key, hands it over (every millisecond at best, `sys.setswitchinterval`).
+        Needs `_write_lock`."""
+        encoded = data.encode("utf-8", "replace")
+        written = 0
+        if self._prompt_fd is not None and self._file.flushed_writes == self._handed:
+            try:
+                written = os.write(self._prompt_fd, encoded)
+            except OSError:  # full (BlockingIOError), or gone: the writer thread finds out
+                written = 0
+        self.link.queued(0, written)
+        if written < len(encoded):
+            rest = encoded[written:]
+            self.link.queued(len(rest), len(rest))
+            self._handed += 1
+            super().write(rest)
+
+    def open_prompt_fd(self) -> None:
+        """The terminal opened a second time, without blocking: a write through it never holds
+        up the app's loop (the writer thread's own file blocks, on a terminal that does not
+        read). A new open file description, so the input side's stays as Textual set it."""
+        self.close_prompt_fd()
+        try:
+            if os.isatty(self._file.fileno()):
+                self._prompt_fd = os.open(os.ttyname(self._file.fileno()),
+                                          os.O_WRONLY | os.O_NONBLOCK | os.O_NOCTTY)
+        except OSError:
+            self._prompt_fd = None
+
+    def close_prompt_fd(self) -> None:
+        if self._prompt_fd is not None:
+            try:
+                os.close(self._prompt_fd)
+            except OSError:
+                pass
+            self._prompt_fd = None
+
+    def stop_application_mode(self) -> None:
+        self.close_prompt_fd()
+        super().stop_application_mode()
 
     def start_application_mode(self) -> None:
         """Textual's, and a resize makes the shadow screen start again: a terminal may reflow
         what it shows, and the cells it holds are no longer the ones remembered."""
         super().start_application_mode()
+        self.open_prompt_fd()
         textual_handler = signal.getsignal(signal.SIGWINCH)
 
         def on_resize(signum, frame) -> None:

@@ -24,6 +24,7 @@ import pytest
 from floatpage.tui.direct_paint import DirectPainter
 from floatpage.tui.app import make_app
 
+import editor_key_trace
 from editor_helpers import screen_of
 from test_shadow_screen import seen
 from terminal_probe import DOWN, UP, Terminal, hold_arrow
@@ -93,15 +94,42 @@ async def test_cells_go_past_textual_only_when_nothing_else_is_on_them():
     async with app.run_test(size=(COLUMNS, ROWS), notifications=True) as pilot:
         await pilot.pause()
         preview = screen_of(app).preview
-        assert DirectPainter.sole_owner(preview, preview._cache)
+        assert DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
         app.editor.notify("a notice over the preview", timeout=30)
         await pilot.pause()
         await pilot.pause()
-        assert not DirectPainter.sole_owner(preview, preview._cache)
+        assert not DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
         app.clear_notifications()
         await pilot.pause()
         await pilot.pause()
-        assert DirectPainter.sole_owner(preview, preview._cache)
+        assert DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
         await pilot.press("question_mark")  # help
         await pilot.pause()
-        assert not DirectPainter.sole_owner(preview, preview._cache)
+        assert not DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
+
+
+def test_a_keys_whole_answer_is_one_write(tmp_path):
+    """An arrow's answer, the moved photo and the top bar's new position ("at 96, 175 mm"),
+    reaches the terminal in one write, written at once: the top bar used to follow 3-4 ms later
+    in a write of its own, through Textual's next screen update. The editor runs over a real pty in the
+    key trace's child (benchmarks/editor_key_trace.py), which logs every write that carries
+    bytes; each key is counted until the physics frame it wakes."""
+    folder = tmp_path / "greeting-card"
+    shutil.copytree(ROOT / "sample_projects" / "greeting-card", folder)
+    log = tmp_path / "trace.log"
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "LANG": "C.UTF-8",
+           "TERM": "xterm-256color", "COLORTERM": "truecolor"}
+    term = Terminal([sys.executable, str(ROOT / "benchmarks" / "editor_key_trace.py"),
+                     "--traced", str(folder / "greeting-card.toml"), str(log)], str(folder), env,
+                    COLUMNS, ROWS)
+    presses = 4
+    try:
+        answers = editor_key_trace.type_keys(term, presses)
+    finally:
+        term.close()
+    assert len(answers) == presses
+    times = editor_key_trace.stage_times(log, presses)
+    assert times["writes flushed (count)"] == [1] * presses
+    # and written at once from the app's thread, the terminal taking it all: through the
+    # writer thread it waited for the interpreter lock, 1-4 ms after the key's work was done
+    assert times["of which written at once (count)"] == [1] * presses
