@@ -189,6 +189,16 @@ class Engine:
         if target != NO_TARGET:
             self._bodies.offsets[row] = self._bodies.centres[row] - self._bodies.centres[target]
         self._carry_followers(row)
+        self._reheat_for(row)
+
+    def _reheat_for(self, row: int) -> None:
+        """Reheat after an edit of ``row``, unless it is a decoration nothing follows: it
+        takes no part in the forces, so the layout has nothing to answer.  Nudging the flyer's
+        header band re-spread the whole page at full heat, its products 10 mm (issue 11: one
+        arrow sent 20 KB)."""
+        bodies = self._bodies
+        if bodies.decorative[row] and not (bodies.targets == row).any():
+            return
         self.reheat()
 
     def _carry_followers(self, row: int) -> None:
@@ -206,16 +216,18 @@ class Engine:
         row = self._row(item_id)
         self._bodies.held[row] = True
         self._bodies.velocities[row] = 0.0
-        self.reheat()
+        self._reheat_for(row)
 
     def release(self, item_id: str) -> None:
-        self._bodies.held[self._row(item_id)] = False
-        self.reheat()
+        row = self._row(item_id)
+        self._bodies.held[row] = False
+        self._reheat_for(row)
 
     def resize(self, item_id: str, w_mm: float, h_mm: float) -> None:
         _positive("size", w_mm, h_mm)
-        self._bodies.sizes[self._row(item_id)] = (w_mm, h_mm)
-        self.reheat()
+        row = self._row(item_id)
+        self._bodies.sizes[row] = (w_mm, h_mm)
+        self._reheat_for(row)
 
     def anchor_point(self, item_id: str, ax_mm: float, ay_mm: float, gamma: float = 1.0,
                      hard: bool = False) -> None:

@@ -262,3 +262,28 @@ def test_moving_a_follower_keeps_it_where_it_was_put(mode):
     engine.advance(200)
     (px, py), (cx, cy) = engine.positions()["photo"], engine.positions()["caption"]
     assert (cx - px, cy - py) == pytest.approx((0.0, -30.0))
+
+
+def test_editing_a_decoration_leaves_a_settled_page_at_rest():
+    # A decoration takes no part in the forces: moving, holding, releasing or resizing it gives
+    # the layout nothing to answer, where a full reheat re-spread the whole page (the flyer's
+    # header band, nudged, moved its products 10 mm).  One with a follower still reheats.
+    engine = Engine(210, 297, Params())
+    engine.insert("band", 105, 20, 210, 40, decorative=True)
+    engine.insert("a", 60, 150, 50, 40)
+    engine.insert("b", 150, 150, 50, 40)
+    engine.settle()
+    before = engine.positions()
+    engine.move("band", 105, 22)
+    engine.hold("band")
+    engine.release("band")
+    engine.resize("band", 200, 38)
+    assert engine.settled
+    assert engine.advance(100) == 0
+    after = engine.positions()
+    assert {k: after[k] for k in "ab"} == {k: before[k] for k in "ab"}
+    engine.insert("caption", 105, 45, 40, 8)
+    engine.anchor_to("caption", "band", 0, 23)
+    engine.settle()
+    engine.move("band", 105, 24)
+    assert not engine.settled
