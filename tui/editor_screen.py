@@ -124,6 +124,7 @@ class EditorScreen(Screen):
         self.details = False  # `v`: the status line shows its numbers
         self.labels = False  # `n`: every item's id on the preview, not only the selected one's
         self._quality_at = float("-inf")
+        self._quality_key: bytes | None = None  # what the figures were measured on, at rest
         self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
 
     def compose(self) -> ComposeResult:
@@ -310,12 +311,17 @@ class EditorScreen(Screen):
         """The layout's quality, as numbers and in words; exact when idle, refreshed a few
         times a second while moving."""
         now = time.perf_counter()
-        moving = self.running and not self.session.engine.settled
-        if not moving or now - self._quality_at >= QUALITY_EVERY_S:
-            quality = self.session.engine.quality()
-            summary = f"{quality.summary()} · {self.session.engine.alignment().short()}"
+        engine = self.session.engine
+        moving = self.running and not engine.settled
+        if moving and now - self._quality_at < QUALITY_EVERY_S:
+            return self._quality
+        key = None if moving else engine.quality_key()
+        if key is None or key != self._quality_key:  # at rest, measured once per layout:
+            quality = engine.quality()  # a decoration nudged on a still page changes nothing
+            summary = f"{quality.summary()} · {engine.alignment().short()}"  # they count
             self._quality = (summary, quality_in_words(quality))
-            self._quality_at = now
+            self._quality_key = key
+        self._quality_at = now
         return self._quality
 
     def action_toggle_labels(self) -> None:

@@ -287,3 +287,22 @@ def test_editing_a_decoration_leaves_a_settled_page_at_rest():
     engine.settle()
     engine.move("band", 105, 24)
     assert not engine.settled
+
+
+def test_the_quality_key_ignores_decorations_only():
+    # The editor measures a still page's quality once per quality_key: moving a decoration
+    # must keep it, anything the measures read must change it.
+    engine = Engine(210, 297, Params())
+    engine.insert("band", 105, 20, 210, 40, decorative=True)
+    engine.insert("a", 60, 150, 50, 40)
+    key = engine.quality_key()
+    engine.move("band", 105, 30)
+    assert engine.quality_key() == key
+    engine.move("a", 61, 150)
+    assert engine.quality_key() != key
+    key = engine.quality_key()
+    engine.resize("a", 50, 41)
+    assert engine.quality_key() != key
+    key = engine.quality_key()
+    engine.resize_page(200, 297)
+    assert engine.quality_key() != key
