@@ -1,7 +1,9 @@
 """One page's physics behind the API the editor and the CLI share.
 
 Every user operation (insert, delete, move, hold, release, resize, anchor, page resize) reheats
-the page, as section 4.7 asks: alpha and beta go back to full strength.  ``advance`` runs a
+the page, as section 4.7 asks: alpha and beta go back to full strength; but moving, holding,
+releasing or resizing a decoration nothing follows does not, since it takes no part in the
+forces.  ``advance`` runs a
 number of steps (one drawn frame by default), cut short by an optional time budget measured
 by a clock the caller passes in; the engine itself never reads a clock.
 """
