@@ -180,7 +180,8 @@ class _Snapper:
         choices = [alone]
         if alone.missing:  # a group on no near miss gains nothing from its line's move
             line = self.line_of(row, axis)
-            if len(line) > 1 and (tuple(sorted(line)), axis) not in self.stuck_lines:
+            line_key = (tuple(sorted(line)), axis)
+            if len(line) > 1 and line_key not in self.stuck_lines:
                 together = self.options(line, axis)
                 if together.gain > alone.gain:
                     choices = [together, alone]
@@ -191,7 +192,7 @@ class _Snapper:
                 self.stuck_lines.clear()
                 return choice.roots
             if len(choice.roots) > 1:
-                self.stuck_lines.add((tuple(sorted(choice.roots)), axis))
+                self.stuck_lines.add(line_key)
         return []
 
     def line_of(self, row: int, axis: int) -> list[int]:
