@@ -15,6 +15,7 @@ import numpy as np
 from floatpage.physics import Engine, Params, Quality, SettleReport
 from floatpage.physics.finalize import ROUNDING_MM
 from floatpage.physics.snapping import ESCAPE_REACH
+from floatpage.physics.stillness import PROBE_HEAT
 from floatpage.model.errors import FloatpageError
 from floatpage.model.document import (
     Item, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project,
@@ -22,7 +23,6 @@ from floatpage.model.document import (
 
 POSITION_DECIMALS = 2  # positions are written back to 0.01 mm
 FIXED_POINT_ROUNDS = 20  # probes before giving up on a fixed point (most pages need 1-3)
-PROBE_HEAT = 0.02  # the heat of the gentle run that tells whether a layout is at rest
 AT_REST_MM = 0.25  # a layout that settling moves no further than this is at rest (below what print shows)
 PROBE_ALIGNS_WITHIN = 4  # a probe whose run moves an item further than 4 snap ranges (16 mm on
 # A4) found the page far from rest: it skips the alignment snap (Engine.settle); a later probe,

@@ -37,7 +37,7 @@ from floatpage.physics.params import page_scale
 SNAP_MM = 4.0  # snap range on an A4 page; smaller pages scale it down with their linear size
 K_GUIDE = 0.03  # pull per step^2 per mm at strength 1 (about a seventh of a contact's stiffness)
 GUIDE_HEAT = 0.3  # the guides pull below this heat, in full below half of it
-K_HOLD = 1.0  # a line's hold on a cold page, mm per step^2 on A4: about 5 mm of contact
+K_HOLD = 2.0  # a line's hold on a cold page, mm per step^2 on A4: about 10 mm of contact
 HOLD_HEAT = 0.05  # the hold acts below this heat: a probe's cold run, not the spreading
 ON_LINE_MM = 0.05  # a feature this close to its guide is on it (and held)
 PULL_EVERY = 4  # the pull comes as one push every 4th step, four times as strong

@@ -8,9 +8,15 @@ fixed point (model.layout.settle_page).  So the snapping step asks this check be
 after the move, the net acceleration of the moved item and of every item it touches must stay
 within ``REST_ACC`` (or within what it already was).
 
-The forces are the fast mode's own (fast_forces, force_terms) at a cold page: contact pushes
-without the sliding share, walls at the target gap, soft anchor springs.  The guide pull is
-left out: it is zero on a guide line.
+The forces are the fast mode's own (fast_forces, force_terms) at the probe's heat: contact
+pushes with what is left of their sliding share there, walls at the target gap, soft anchor
+springs.  The guide pull is
+left out: it is zero on a guide line.  A group with a feature on a guide line is *held* there
+(physics.guides: a static friction of up to ``hold`` on that axis), so what must stay within
+the limit is the push the hold leaves, before the move and after it alike.  (Comparing a held
+push after the move with the bare push before it let a line of items be pressed harder move
+by move: the hold's allowance was counted again at every move, and the page drifted
+millimetres in the next probe.)
 """
 
 from __future__ import annotations
@@ -19,13 +25,18 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import (
-    blocked_axes, candidate_pairs, touching_pushes, wall_pushes_in, wall_rest_box,
+    RADIAL_SHARE, blocked_axes, candidate_pairs, touching_pushes, wall_pushes_in, wall_rest_box,
 )
-from floatpage.physics.force_terms import BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL
+from floatpage.physics.force_terms import (
+    BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
+)
 from floatpage.physics.geometry import pair_sums, xy_slots
+from floatpage.physics.guides import ON_LINE_MM
+from floatpage.physics.stillness import PROBE_HEAT
 
-REST_ACC = 0.8  # mm per step^2 on A4: a cold page's run (heat 0.02) moves such an item
-# about 0.006 mm a step, below the stillness threshold
+REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
+# such an item 0.0096 mm, below the stillness threshold of 0.01 mm a step
+PROBE_RADIAL = RADIAL_SHARE * min(1.0, PROBE_HEAT / RADIAL_FADE_HEAT)  # the pushes' sliding share
 
 
 class RestCheck:
@@ -33,7 +44,8 @@ class RestCheck:
 
     def __init__(self, bodies: Bodies, page: tuple[float, float], gap: float,
                  insets: tuple[np.ndarray, np.ndarray], beta: float, reach: float, scale: float,
-                 hold: float = 0.0):
+                 hold: float = 0.0,
+                 lines: list[tuple[np.ndarray, np.ndarray]] | None = None):
         self.bodies, self.page, self.gap = bodies, page, gap
         self.halves = bodies.sizes / 2
         active = bodies.active
@@ -60,6 +72,9 @@ class RestCheck:
         self.movable = bodies.free & active  # roots of groups the integrator moves
         self.limit = REST_ACC * scale
         self.hold = hold  # a line's hold on a group with a feature on it (physics.guides)
+        # the page's own guide lines per axis, (edges, centres): guides.page_lines
+        self.page_lines = lines or [(np.zeros(0), np.zeros(0))] * 2
+        self.active_rows = np.flatnonzero(active)
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
@@ -73,7 +88,7 @@ class RestCheck:
         touches them), with the items at ``centres``."""
         i, j = self.i[pairs], self.j[pairs]
         touching, pushes = touching_pushes(centres, self.reach[pairs], i, j,
-                                           self.blocked[pairs], 0.0)
+                                           self.blocked[pairs], PROBE_RADIAL)
         pushes *= K_CONTACT
         pairs, i, j = pairs[touching], i[touching], j[touching]
         acc = pair_sums(self.bodies.count, xy_slots(i), xy_slots(j),
@@ -83,13 +98,13 @@ class RestCheck:
         acc[rows] += self.anchor_k[rows, None] * (self.anchors[rows] - centres[rows])
         return acc
 
-    def keeps_rest(self, members: np.ndarray, axis: int, shift: float, onto_line: bool) -> bool:
+    def keeps_rest(self, members: np.ndarray, axis: int, shift: float) -> bool:
         """Whether moving the rigid body ``members`` by ``shift`` along ``axis`` leaves it and
         every group it touches with a net acceleration within the limit, or no larger than
         it was (a group's acceleration is the sum of its members', as the fast mode hands a
-        follower's forces to its root).  A move ``onto_line`` leaves the group on a guide,
-        whose hold takes up to ``hold`` of its push along ``axis`` (``members`` may be several
-        groups lined up, moved as one: each is held on the line by the others)."""
+        follower's forces to its root; on an axis where the group is on a guide line, less
+        the line's hold, before and after the move alike).  ``members`` may be several groups
+        lined up, moved as one: each is held on the line by the others."""
         touching = np.concatenate([self.pairs_of[m] for m in members])
         touched = np.concatenate([members, self.i[touching], self.j[touching]])
         groups = sorted_unique(self.roots[touched])
@@ -101,12 +116,44 @@ class RestCheck:
         centres = self.bodies.centres
         trial = centres.copy()
         trial[members, axis] += shift
-        before = np.abs(self.group_net(rows, pairs, centres, groups)).max(axis=1)
-        after = np.abs(self.group_net(rows, pairs, trial, groups))
-        if onto_line:
-            moved = np.isin(groups, self.roots[members])
-            after[moved, axis] = np.maximum(after[moved, axis] - self.hold, 0.0)
-        return bool((after.max(axis=1) <= np.maximum(before, self.limit) + 1e-9).all())
+        before = self.unheld(self.group_net(rows, pairs, centres, groups), groups, centres)
+        after = self.unheld(self.group_net(rows, pairs, trial, groups), groups, trial)
+        return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
+
+    def unheld(self, acc: np.ndarray, groups: np.ndarray, centres: np.ndarray) -> np.ndarray:
+        """Each group's largest push the lines' hold leaves, (len(groups),)."""
+        size = np.abs(acc)
+        if self.hold <= 0:
+            return size.max(axis=1)
+        held = self.on_lines(groups, centres)
+        return np.where(held, np.maximum(size - self.hold, 0.0), size).max(axis=1)
+
+    def on_lines(self, groups: np.ndarray, centres: np.ndarray) -> np.ndarray:
+        """(len(groups), 2): whether each group, with the items at ``centres``, has a feature
+        on a guide line on each axis, as the guides' hold finds it: an edge on another group's
+        edge or on a margin or region line, a centre on another group's centre or on the
+        page's middle (within ``ON_LINE_MM``)."""
+        sizes = [len(self.group_rows[g]) for g in groups]
+        rows = np.concatenate([self.group_rows[g] for g in groups])
+        owner = np.repeat(np.arange(len(groups)), sizes)
+        others = self.active_rows
+        mine_roots, their_roots = self.roots[rows], self.roots[others]
+        held = np.zeros((len(groups), 2), dtype=bool)
+        for axis in (0, 1):
+            page_edges, page_middles = self.page_lines[axis]
+            at, half = centres[:, axis], self.halves[:, axis]
+            edges = np.concatenate([at[others] - half[others], at[others] + half[others],
+                                    page_edges])
+            edge_roots = np.concatenate([their_roots, their_roots, np.full(len(page_edges), -1)])
+            middles = np.concatenate([at[others], page_middles])
+            middle_roots = np.concatenate([their_roots, np.full(len(page_middles), -1)])
+            mine = np.column_stack([at[rows] - half[rows], at[rows] + half[rows]])
+            on_edge = ((np.abs(mine[:, :, None] - edges[None, None, :]) <= ON_LINE_MM)
+                       & (edge_roots[None, None, :] != mine_roots[:, None, None])).any(axis=(1, 2))
+            on_middle = ((np.abs(at[rows][:, None] - middles[None, :]) <= ON_LINE_MM)
+                         & (middle_roots[None, :] != mine_roots[:, None])).any(axis=1)
+            held[:, axis] = np.bincount(owner, on_edge | on_middle, len(groups)) > 0
+        return held
 
     def group_net(self, rows: np.ndarray, pairs: np.ndarray, centres: np.ndarray,
                   groups: np.ndarray) -> np.ndarray:

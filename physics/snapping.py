@@ -65,7 +65,8 @@ def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
     page = (page_w_mm, page_h_mm)
     gap = target_gap(bodies.sizes[bodies.active], page_w_mm, page_h_mm, params.gutter_mm)
     rest = RestCheck(bodies, page, gap, bodies.insets(margin, *page), params.beta, snap_range(*page),
-                     page_scale(*page), hold_strength(page, params.guides))
+                     page_scale(*page), hold_strength(page, params.guides),
+                     [page_lines(*page, margin, axis, bodies.regions) for axis in (0, 1)])
     return snap_to_guides(bodies, page_w_mm, page_h_mm, params.gutter_mm + ROUNDING_MM, margin,
                           params.guides, rest)
 
@@ -231,12 +232,10 @@ class _Snapper:
         """Make the first of ``moves`` that fits and keeps the page at rest; whether one did."""
         if len(moves.shifts) == 0:
             return False  # most calls: no move would help
-        members, line = moves.members, len(moves.roots) > 1
+        members = moves.members
         for shift in moves.shifts[self.fits(members, axis, moves.shifts)]:
-            # a line moved as one stays on itself, each group held there by the others
-            onto_line = line or bool((np.abs(moves.distance - shift) <= ALIGNED_MM).any())
             if abs(shift) <= NUDGE_MM or self.rest is None \
-                    or self.rest.keeps_rest(members, axis, shift, onto_line):
+                    or self.rest.keeps_rest(members, axis, shift):
                 for root in moves.roots:
                     self.moved_from[root] = self.mine(root, axis)[0]
                 self.bodies.centres[members, axis] += shift
