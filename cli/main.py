@@ -100,15 +100,17 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
 
 
 def cmd_settle(args: argparse.Namespace) -> int:
-    from floatpage.model import load_project, save_project
+    from floatpage.model import load_project
+    from floatpage.model.position_patch import Positions, save_settled
     from floatpage.model.project_lock import ProjectLock
 
     if args.dry_run:
         return settle_and_report(load_project(args.path, allow_outside_files=args.allow_outside_files), args)
     with ProjectLock(args.path, purpose="floatpage settle"):
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
+        read = Positions.of(project)
         settle_and_report(project, args)
-        save_project(project)
+        save_settled(project, read)
     print(f"wrote positions to {printable(str(project.path))}")
     return EXIT_OK
 

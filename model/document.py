@@ -18,6 +18,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal, Union
 
+import tomlkit
+
 from floatpage.model.key_specs import (
     CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, WEEKDAYS, at_most_chars, between, colour,
     finite, item_id, name_or_empty, one_of, positive, spec,
@@ -292,9 +294,27 @@ class Project:
     # `[files] allow_outside` or --allow-outside-files: pictures may lie outside the folder.
     allow_outside_files: bool = False
     utf8_bom: bool = field(default=False, compare=False)  # kept on save, as the user wrote it
-    # The parsed tomlkit document the project was read from; saving edits it in place so
-    # the user's comments and key order survive.
-    source_document: Any = field(default=None, repr=False, compare=False)
+    # The text the project was read from.  Saving edits its tomlkit document in place, so the
+    # user's comments and key order survive; the document is parsed when first asked for
+    # (``source_document``): tomlkit took 10 s over a 2,000-item file, and check and render
+    # never save.
+    source_text: str | None = field(default=None, repr=False, compare=False)
+    parsed_source: Any = field(default=None, repr=False, compare=False)
+
+    @property
+    def source_document(self) -> Any:
+        """The tomlkit document of the file read (None for a new project); may raise
+        RecursionError on nesting too deep for tomlkit."""
+        if self.parsed_source is None and self.source_text is not None:
+            self.parsed_source = tomlkit.parse(self.source_text)
+        return self.parsed_source
+
+    @source_document.setter
+    def source_document(self, document: Any) -> None:
+        """A document to save into; None to write the file afresh, as a new project."""
+        self.parsed_source = document
+        if document is None:
+            self.source_text = None
 
     @property
     def base_dir(self) -> Path:

@@ -317,7 +317,12 @@ def save_project(project: Project, path: str | Path | None = None) -> Path:
             + (f" and {len(broken) - 1} more values" if len(broken) > 1 else "")
             + " would be written as inf or NaN (the file on disk is unchanged; "
             "lower [physics] alpha or dt, or report this as a bug)")
-    doc = to_document(project)
+    try:
+        doc = to_document(project)
+    except RecursionError:
+        raise FloatpageError(f"{target}: not saved: the file read nests tables or arrays too "
+                             "deeply to edit in place (the file on disk is unchanged); "
+                             "remove the deep nesting") from None
     data = tomlkit.dumps(doc).encode("utf-8")
     if project.utf8_bom:
         data = UTF8_BOM + data

@@ -267,18 +267,30 @@ class Engine:
         """
         _finite("offset", dx_mm, dy_mm)
         row, target = self._row(item_id), self._row(target_id)
-        current = target
-        for _ in range(len(self._ids) + 1):
-            if current == row:
-                raise ValueError(f"anchoring {item_id!r} to {target_id!r} makes a cycle")
-            current = int(self._bodies.targets[current])
-            if current == NO_TARGET:
-                break
+        if self._leads_back(target, row):
+            raise ValueError(f"anchoring {item_id!r} to {target_id!r} makes a cycle")
         self.unanchor(item_id)
         self._bodies.targets[row] = target
         self._bodies.offsets[row] = (dx_mm, dy_mm)
         self._bodies.centres[row] = self._bodies.centres[target] + (dx_mm, dy_mm)
         self.reheat()
+
+    def _leads_back(self, target: int, row: int) -> bool:
+        """Whether the chain of anchors from ``target`` reaches ``row``.  Only an item that
+        others follow can be reached (through one of them), so the walk is skipped for the
+        rest: a file anchoring 2,000 items one to the next walked 2 million links as it
+        loaded."""
+        targets = self._bodies.targets
+        if target != row and not (targets == row).any():
+            return False
+        current = target
+        for _ in range(len(self._ids) + 1):
+            if current == row:
+                return True
+            current = int(targets[current])
+            if current == NO_TARGET:
+                return False
+        return False
 
     def unanchor(self, item_id: str) -> None:
         row = self._row(item_id)
