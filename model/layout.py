@@ -44,9 +44,10 @@ def engine_for_page(page: Page, settings: PhysicsSettings) -> Engine:
     position its item, since the anchor is what the user asked for.
     """
     engine = Engine(page.width_mm, page.height_mm, params_from_settings(settings))
-    for item in page.items:
-        engine.insert(item.id, item.x, item.y, item.w, item.h, decorative=item.decorative,
-                      bleed=bool(getattr(item, "bleed", False)))
+    engine.insert_all([item.id for item in page.items],
+                      [(item.x, item.y, item.w, item.h) for item in page.items],
+                      [item.decorative for item in page.items],
+                      [bool(getattr(item, "bleed", False)) for item in page.items])
     for item in page.items:
         anchor = item.anchor
         if isinstance(anchor, PointAnchor):

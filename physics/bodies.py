@@ -104,18 +104,26 @@ class Bodies:
 
     def append(self, centre, size, *, decorative: bool, bleed: bool = False) -> None:
         """Add one unanchored item at rest."""
-        self.centres = np.vstack([self.centres, np.asarray(centre, float)[None]])
-        self.sizes = np.vstack([self.sizes, np.asarray(size, float)[None]])
-        self.velocities = np.vstack([self.velocities, np.zeros((1, 2))])
-        self.decorative = np.append(self.decorative, decorative)
-        self.held = np.append(self.held, False)
-        self.anchors = np.vstack([self.anchors, np.full((1, 2), np.nan)])
-        self.gammas = np.append(self.gammas, 0.0)
-        self.hard = np.append(self.hard, False)
-        self.targets = np.append(self.targets, NO_TARGET).astype(np.int64)
-        self.offsets = np.vstack([self.offsets, np.zeros((1, 2))])
-        self.bleed = np.append(self.bleed, bleed)
-        self.regions = np.vstack([self.regions, np.full((1, 4), np.nan)])
+        self.extend(np.asarray(centre, float)[None], np.asarray(size, float)[None],
+                    np.array([decorative]), np.array([bleed]))
+
+    def extend(self, centres: np.ndarray, sizes: np.ndarray, decorative: np.ndarray,
+               bleed: np.ndarray) -> None:
+        """Add unanchored items at rest, (k, 2) centres and sizes: one copy of every array,
+        where adding them one by one copied them all k times (0.5 s for a file of 2,000)."""
+        count = len(centres)
+        self.centres = np.vstack([self.centres, centres])
+        self.sizes = np.vstack([self.sizes, sizes])
+        self.velocities = np.vstack([self.velocities, np.zeros((count, 2))])
+        self.decorative = np.append(self.decorative, decorative.astype(bool))
+        self.held = np.append(self.held, np.zeros(count, bool))
+        self.anchors = np.vstack([self.anchors, np.full((count, 2), np.nan)])
+        self.gammas = np.append(self.gammas, np.zeros(count))
+        self.hard = np.append(self.hard, np.zeros(count, bool))
+        self.targets = np.append(self.targets, np.full(count, NO_TARGET)).astype(np.int64)
+        self.offsets = np.vstack([self.offsets, np.zeros((count, 2))])
+        self.bleed = np.append(self.bleed, bleed.astype(bool))
+        self.regions = np.vstack([self.regions, np.full((count, 4), np.nan)])
 
     def remove(self, row: int) -> None:
         """Drop one row; followers of it become free, later target rows shift down by one."""

@@ -172,13 +172,27 @@ class Engine:
 
     def insert(self, item_id: str, x_mm: float, y_mm: float, w_mm: float, h_mm: float, *,
                decorative: bool = False, bleed: bool = False) -> None:
-        if item_id in self._rows:
-            raise ValueError(f"item {item_id!r} is already on this page")
-        _finite("position", x_mm, y_mm)
-        _positive("size", w_mm, h_mm)
-        self._bodies.append((x_mm, y_mm), (w_mm, h_mm), decorative=decorative, bleed=bleed)
-        self._rows[item_id] = len(self._ids)
-        self._ids.append(item_id)
+        self.insert_all([item_id], [(x_mm, y_mm, w_mm, h_mm)], [decorative], [bleed])
+
+    def insert_all(self, item_ids: list[str], boxes: list[tuple[float, float, float, float]],
+                   decorative: list[bool], bleed: list[bool]) -> None:
+        """Insert several items at once, each (x, y, w, h) in mm: a page read from a file (one
+        by one, every array was copied once an item)."""
+        seen: set[str] = set()
+        for item_id, (x_mm, y_mm, w_mm, h_mm) in zip(item_ids, boxes):
+            if item_id in self._rows or item_id in seen:
+                raise ValueError(f"item {item_id!r} is already on this page")
+            seen.add(item_id)
+            _finite("position", x_mm, y_mm)
+            _positive("size", w_mm, h_mm)
+        if not item_ids:
+            return
+        for item_id in item_ids:  # every item checked first: a refusal leaves the page as it was
+            self._rows[item_id] = len(self._ids)
+            self._ids.append(item_id)
+        values = np.array(boxes, dtype=float).reshape(-1, 4)
+        self._bodies.extend(values[:, :2], values[:, 2:], np.array(decorative),
+                            np.array(bleed))
         self.reheat()
 
     def delete(self, item_id: str) -> None:

@@ -65,33 +65,37 @@ def pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
     n = len(centres)
     total, hits, count = 0.0, [], 0
     nearest = np.full(n, np.inf)
-    columns = np.arange(n)[None, :]
     for start in range(0, n, PAIR_BLOCK):
+        # Each block of rows against itself and the rows after it: every pair once (the pairs
+        # before it were columns of an earlier block), half the work of all against all.
         stop = min(start + PAIR_BLOCK, n)
         block_c, block_h = centres[start:stop], halves[start:stop]
-        clear = (np.abs(block_c[:, None, :] - centres[None, :, :])
-                 - block_h[:, None, :] - halves[None, :, :])
+        later_c, later_h = centres[start:], halves[start:]
+        clear = (np.abs(block_c[:, None, :] - later_c[None, :, :])
+                 - (block_h[:, None, :] + later_h[None, :, :]))
         depth = np.minimum(np.clip(-clear, 0.0, None),
-                           2 * np.minimum(block_h[:, None, :], halves[None, :, :]))
+                           2 * np.minimum(block_h[:, None, :], later_h[None, :, :]))
         overlap = depth[..., 0] * depth[..., 1]
-        own = np.arange(start, stop)[:, None]
+        own = np.arange(stop - start)[:, None]
+        columns = np.arange(n - start)[None, :]
         upper = columns > own
         excluded = columns == own
         if group is not None:
-            same = group[start:stop, None] == group[None, :]
+            same = group[start:stop, None] == group[None, start:]
             upper &= ~same
             excluded |= same
         total += float(overlap[upper].sum())
         overlapping = upper & (overlap > 0)
         count += int(np.count_nonzero(overlapping))
         if len(hits) < PAIRS_LISTED:
-            hits += [(int(start + a), int(b))
+            hits += [(int(start + a), int(start + b))
                      for a, b in np.argwhere(overlapping)[:PAIRS_LISTED - len(hits)]]
         both = (clear > 0).all(axis=-1)
         corner = np.sqrt((np.clip(clear, 0.0, None) ** 2).sum(axis=-1))
         gaps = np.where(both, corner, clear.max(axis=-1))
         gaps[excluded] = np.inf
-        nearest[start:stop] = gaps.min(axis=1)
+        nearest[start:stop] = np.minimum(nearest[start:stop], gaps.min(axis=1))
+        nearest[start:] = np.minimum(nearest[start:], gaps.min(axis=0))
     return total, hits, count, nearest
 
 
