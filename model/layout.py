@@ -316,9 +316,10 @@ def soundness(page: Page, settings: PhysicsSettings) -> tuple:
 
 
 def copy_of(page: Page) -> Page:
-    """A page whose items can be moved without touching ``page``'s."""
+    """A page whose items can be moved without touching ``page``'s: a copy of each item,
+    sharing what no settle changes (a deep copy of 2,000 items took half a second a probe)."""
     return Page(id=page.id, width_mm=page.width_mm, height_mm=page.height_mm,
-                items=copy.deepcopy(page.items), regions=page.regions)
+                items=[copy.copy(item) for item in page.items], regions=page.regions)
 
 
 def keeps_guarantees(layout: Quality, settled: Quality) -> bool:

@@ -26,6 +26,7 @@ from floatpage.model.locate import LineFinder
 from floatpage.model.save import UTF8_BOM, mm, non_finite_numbers, same, save_project, \
     unchanged_on_disk
 
+PLAIN_NUMBER = re.compile(r"[+-]?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?")
 VALUE = re.compile(r"^(?P<key>\s*(?P<name>[xy])\s*=\s*)(?P<value>[^\s#]+)(?P<rest>\s*(?:#.*)?)$")
 
 
@@ -93,6 +94,8 @@ def rewritten(line: str, name: str, old: float, new: float) -> str | None:
 
 def holds(token: str, value: float) -> bool:
     """Whether the TOML number ``token`` is ``value``: the line found is the key's own."""
+    if PLAIN_NUMBER.fullmatch(token):  # as floatpage writes them: no parser needed
+        return float(token) == float(value)
     try:
         parsed = tomllib.loads(f"v = {token}")["v"]
     except tomllib.TOMLDecodeError:

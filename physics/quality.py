@@ -55,10 +55,105 @@ PAIR_BLOCK = 256  # rows compared with all others at once: memory stays O(PAIR_B
 PAIRS_LISTED = 1_000
 
 
+SWEPT_PAIRS = 2_000_000  # a page whose sweep would meet more candidates is measured block by block
+
+
 def pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
              ) -> tuple[float, list[tuple[int, int]], int, np.ndarray]:
     """Total overlap area, the first PAIRS_LISTED overlapping pairs (i < j), how many there
-    are, and each item's nearest edge gap,
+    are, and each item's nearest edge gap.
+
+    On a page of many items that are not piled up, only the pairs within a neighbour's reach
+    are measured (``near_pairwise``: the same figures, in O(n log n) and the pairs found);
+    otherwise every pair (``all_pairwise``)."""
+    count = len(centres)
+    if count > PAIR_BLOCK:
+        reach = neighbour_reach(centres, count)
+        if sweep_candidates(centres, halves, reach) <= SWEPT_PAIRS:  # not piled up
+            return near_pairwise(centres, halves, group, reach)
+    return all_pairwise(centres, halves, group)
+
+
+def neighbour_reach(centres: np.ndarray, count: int) -> float:
+    """Twice the spacing the items would have if spread evenly over their bounding box: most
+    items have their nearest neighbour within it."""
+    extent = np.ptp(centres, axis=0) if count else np.zeros(2)
+    return max(2.0 * math.sqrt(max(float(extent[0] * extent[1]), 1.0) / max(count, 1)), 1.0)
+
+
+def sweep_candidates(centres: np.ndarray, halves: np.ndarray, reach: float) -> int:
+    """About how many candidate pairs the neighbour search within ``reach`` would make, without
+    making them: a pile of 10,000 items on one spot would make 50 million.  The sweep along x
+    (below GRID_FROM_ITEMS items) meets the items that start before each item's right edge plus
+    ``reach``; the grid beyond that, the items in the cells each item's box covers."""
+    from floatpage.physics.fast_forces import GRID_FROM_ITEMS
+
+    if len(centres) < GRID_FROM_ITEMS:
+        left = np.sort(centres[:, 0] - halves[:, 0])
+        right = np.sort(centres[:, 0] + halves[:, 0])
+        return int(np.maximum(np.searchsorted(left, right + reach, "left")
+                              - np.arange(1, len(left) + 1), 0).sum())
+    cell = max(reach, float(np.median(halves)) * 2)
+    low = np.floor((centres - halves) / cell).astype(np.int64)
+    high = np.floor((centres + halves + reach) / cell).astype(np.int64)
+    spans = (high - low + 1).prod(axis=1)  # cells each item's grown box covers
+    per_cell = len(centres) * float(spans.mean()) / max(len(np.unique(
+        low[:, 0] * 1_000_003 + low[:, 1])), 1)
+    return int(len(centres) * spans.mean() * per_cell)
+
+
+def pair_gaps(clear: np.ndarray) -> np.ndarray:
+    """Edge-to-edge gap of pairs from their per-axis clearances (..., 2): the corner distance
+    where they are apart on both axes, else the larger clearance (negative: overlapping)."""
+    both = (clear > 0).all(axis=-1)
+    corner = np.sqrt((np.clip(clear, 0.0, None) ** 2).sum(axis=-1))
+    return np.where(both, corner, clear.max(axis=-1))
+
+
+def near_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None,
+                  reach: float) -> tuple[float, list[tuple[int, int]], int, np.ndarray]:
+    """``pairwise`` from the pairs within ``reach`` (physics.fast_forces.candidate_pairs: every
+    pair closer than ``reach`` is among them, so an item's nearest gap found below ``reach`` is
+    exact); items with no neighbour that near are measured against every item."""
+    from floatpage.physics.fast_forces import candidate_pairs
+
+    count = len(centres)
+    rows = np.arange(count)
+    groups = rows if group is None else np.asarray(group)
+    a, b = candidate_pairs(centres, halves, rows, groups, reach)
+    i, j = np.minimum(a, b), np.maximum(a, b)
+    clear = np.abs(centres[i] - centres[j]) - (halves[i] + halves[j])
+    depth = np.minimum(np.clip(-clear, 0.0, None), 2 * np.minimum(halves[i], halves[j]))
+    overlap = depth[:, 0] * depth[:, 1]
+    overlapping = overlap > 0
+    listed = np.lexsort((j[overlapping], i[overlapping]))[:PAIRS_LISTED]
+    hits = [(int(first), int(second)) for first, second
+            in zip(i[overlapping][listed], j[overlapping][listed])]
+    gaps = pair_gaps(clear)
+    nearest = np.full(count, np.inf)
+    np.minimum.at(nearest, i, gaps)
+    np.minimum.at(nearest, j, gaps)
+    far = np.flatnonzero(nearest >= reach)
+    far = far[np.argsort(groups[far], kind="stable")]  # a block of one group skips its own
+    for start in range(0, len(far), PAIR_BLOCK):
+        block = far[start:start + PAIR_BLOCK]
+        others = rows
+        if (groups[block] == groups[block[0]]).all():  # (a chain of 2,000: no others at all)
+            others = np.flatnonzero(groups != groups[block[0]])
+        if not len(others):
+            nearest[block] = np.inf
+            continue
+        clear_far = (np.abs(centres[block][:, None, :] - centres[others][None, :, :])
+                     - (halves[block][:, None, :] + halves[others][None, :, :]))
+        gaps_far = pair_gaps(clear_far)
+        gaps_far[groups[block][:, None] == groups[others][None, :]] = np.inf
+        nearest[block] = gaps_far.min(axis=1)
+    return float(overlap.sum()), hits, int(np.count_nonzero(overlapping)), nearest
+
+
+def all_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
+                 ) -> tuple[float, list[tuple[int, int]], int, np.ndarray]:
+    """``pairwise`` over every pair,
     ``PAIR_BLOCK`` rows at a time: the whole (n, n) matrices took 6.7 GB at 10,000 items, and
     `floatpage check` must stay under 1 GB for any file that loads.  Pairs within one anchor
     group count for neither."""
@@ -90,9 +185,7 @@ def pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
         if len(hits) < PAIRS_LISTED:
             hits += [(int(start + a), int(start + b))
                      for a, b in np.argwhere(overlapping)[:PAIRS_LISTED - len(hits)]]
-        both = (clear > 0).all(axis=-1)
-        corner = np.sqrt((np.clip(clear, 0.0, None) ** 2).sum(axis=-1))
-        gaps = np.where(both, corner, clear.max(axis=-1))
+        gaps = pair_gaps(clear)
         gaps[excluded] = np.inf
         nearest[start:stop] = np.minimum(nearest[start:stop], gaps.min(axis=1))
         nearest[start:] = np.minimum(nearest[start:], gaps.min(axis=0))

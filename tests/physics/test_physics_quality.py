@@ -2,9 +2,11 @@
 
 import math
 
+import numpy as np
 import pytest
 
 from floatpage.physics import measure_quality
+from floatpage.physics.quality import all_pairwise, pairwise
 
 # Page 100 x 100.  A [10,30]x[10,30]; B [25,45]x[20,30] overlaps A by 5 x 10;
 # C [85,105]x[40,60] sticks 5 mm out on the right; D is a decorative backdrop over everything.
@@ -68,3 +70,31 @@ def test_fewer_than_two_items():
     empty = measure_quality(100, 100, [], [])
     assert empty.ok and empty.overlap_fraction == 0.0
     assert "gap —" in empty.summary()
+
+
+def test_many_items_are_measured_from_their_neighbours_with_the_same_figures_as_every_pair():
+    """Above PAIR_BLOCK items the pairs come from a neighbour search (quality.near_pairwise);
+    the figures must be those of all pairs: overlaps, the pairs listed, and every item's
+    nearest gap, also for items far from all others and for anchor groups."""
+    rng = np.random.default_rng(5)
+    for count, spread in ((600, 200.0), (1500, 400.0)):
+        centres = rng.uniform(0, spread, (count, 2))
+        centres[:5] = [[-500, -500], [900, 900], [-500, 900], [900, -500], [2000, 0]]  # far off
+        halves = rng.uniform(0.5, 6.0, (count, 2))
+        groups = np.arange(count)
+        groups[rng.random(count) < 0.2] = 7  # one big anchor group, spread over the page
+        dense = all_pairwise(centres, halves, groups)
+        near = pairwise(centres, halves, groups)
+        assert near[2] == dense[2] > 0 and near[1] == dense[1]
+        assert near[0] == pytest.approx(dense[0], rel=1e-12)
+        np.testing.assert_array_equal(np.isinf(near[3]), np.isinf(dense[3]))
+        finite = np.isfinite(dense[3])
+        np.testing.assert_allclose(near[3][finite], dense[3][finite], rtol=0, atol=1e-12)
+
+
+def test_one_anchor_group_of_many_items_has_no_gap_and_is_measured_quickly():
+    count = 2000
+    centres = np.column_stack([np.linspace(20, 120, count), np.linspace(20, 120, count)])
+    halves = np.ones((count, 2))
+    total, hits, overlaps, nearest = pairwise(centres, halves, np.zeros(count, dtype=int))
+    assert (total, hits, overlaps) == (0.0, [], 0) and np.isinf(nearest).all()
