@@ -116,30 +116,37 @@ class RestCheck:
         centres = self.bodies.centres
         trial = centres.copy()
         trial[members, axis] += shift
-        before = self.unheld(self.group_net(rows, pairs, centres, groups), groups, centres)
-        after = self.unheld(self.group_net(rows, pairs, trial, groups), groups, trial)
+        held_before = held_after = None
+        if self.hold > 0:
+            # the move changes no feature across its axis: only ``axis`` is found again
+            held_before = self.on_lines(groups, centres, (0, 1))
+            held_after = held_before.copy()
+            held_after[:, axis] = self.on_lines(groups, trial, (axis,))[:, 0]
+        before = self.unheld(self.group_net(rows, pairs, centres, groups), held_before)
+        after = self.unheld(self.group_net(rows, pairs, trial, groups), held_after)
         return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
 
-    def unheld(self, acc: np.ndarray, groups: np.ndarray, centres: np.ndarray) -> np.ndarray:
-        """Each group's largest push the lines' hold leaves, (len(groups),)."""
+    def unheld(self, acc: np.ndarray, held: np.ndarray | None) -> np.ndarray:
+        """Each group's largest push the lines' hold leaves where ``held`` (on a line, per
+        group and axis), (len(groups),)."""
         size = np.abs(acc)
-        if self.hold <= 0:
+        if held is None:
             return size.max(axis=1)
-        held = self.on_lines(groups, centres)
         return np.where(held, np.maximum(size - self.hold, 0.0), size).max(axis=1)
 
-    def on_lines(self, groups: np.ndarray, centres: np.ndarray) -> np.ndarray:
-        """(len(groups), 2): whether each group, with the items at ``centres``, has a feature
-        on a guide line on each axis, as the guides' hold finds it: an edge on another group's
-        edge or on a margin or region line, a centre on another group's centre or on the
-        page's middle (within ``ON_LINE_MM``)."""
+    def on_lines(self, groups: np.ndarray, centres: np.ndarray,
+                 axes: tuple[int, ...]) -> np.ndarray:
+        """(len(groups), len(axes)): whether each group, with the items at ``centres``, has a
+        feature on a guide line on each of ``axes``, as the guides' hold finds it: an edge on
+        another group's edge or on a margin or region line, a centre on another group's centre
+        or on the page's middle (within ``ON_LINE_MM``)."""
         sizes = [len(self.group_rows[g]) for g in groups]
         rows = np.concatenate([self.group_rows[g] for g in groups])
         owner = np.repeat(np.arange(len(groups)), sizes)
         others = self.active_rows
         mine_roots, their_roots = self.roots[rows], self.roots[others]
-        held = np.zeros((len(groups), 2), dtype=bool)
-        for axis in (0, 1):
+        held = np.zeros((len(groups), len(axes)), dtype=bool)
+        for column, axis in enumerate(axes):
             page_edges, page_middles = self.page_lines[axis]
             at, half = centres[:, axis], self.halves[:, axis]
             edges = np.concatenate([at[others] - half[others], at[others] + half[others],
@@ -152,7 +159,7 @@ class RestCheck:
                        & (edge_roots[None, None, :] != mine_roots[:, None, None])).any(axis=(1, 2))
             on_middle = ((np.abs(at[rows][:, None] - middles[None, :]) <= ON_LINE_MM)
                          & (middle_roots[None, :] != mine_roots[:, None])).any(axis=1)
-            held[:, axis] = np.bincount(owner, on_edge | on_middle, len(groups)) > 0
+            held[:, column] = np.bincount(owner, on_edge | on_middle, len(groups)) > 0
         return held
 
     def group_net(self, rows: np.ndarray, pairs: np.ndarray, centres: np.ndarray,

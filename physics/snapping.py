@@ -203,7 +203,7 @@ class _Snapper:
         values, kinds = self.mine(row, axis)
         same_kind = feature_kinds(1)[:, None] == kinds[None, :]  # (3 features, values)
         on = (np.abs(lines[:, :, None] - values[None, None, :]) <= ALIGNED_MM) & same_kind
-        roots = np.unique(self.roots[self.active & on.any(axis=(1, 2))])
+        roots = sorted_unique(self.roots[self.active & on.any(axis=(1, 2))])
         return [row] + [int(root) for root in roots if root != row and int(root) in self.members]
 
     def options(self, roots: list[int], axis: int) -> "Moves":
