@@ -7,8 +7,9 @@ values of the `x = ...` and `y = ...` lines that changed, each written as tomlki
 number; every other byte (comments, spacing, line endings, key order) stays as it was.
 
 Where the text is not laid out one key to a line under `[[pages.items]]` headers (an inline
-item table, say), or the project differs from what was read by more than positions, there is
-no patch and the caller saves the full way (model.save.save_project).
+item table, say), holds a multi-line string (whose lines could look like keys or headers), or
+the project differs from what was read by more than positions, there is no patch and the
+caller saves the full way (model.save.save_project).
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from floatpage.model.locate import LineFinder
 from floatpage.model.save import UTF8_BOM, mm, non_finite_numbers, same, save_project, \
     unchanged_on_disk
 
+MULTILINE_STRING = re.compile(r'"""|\'\'\'')
 PLAIN_NUMBER = re.compile(r"[+-]?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?")
 VALUE = re.compile(r"^(?P<key>\s*(?P<name>[xy])\s*=\s*)(?P<value>[^\s#]+)(?P<rest>\s*(?:#.*)?)$")
 
@@ -61,8 +63,8 @@ def patched_text(project: Project, read: Positions) -> str | None:
     the full save writes them (to 0.01 mm, where they differ by as much), or None where only
     the full save can say it (see the module doc)."""
     text = project.source_text
-    if text is None or project.parsed_source is not None:
-        return None
+    if text is None or project.parsed_source is not None or MULTILINE_STRING.search(text):
+        return None  # a line of a multi-line string may look like `x = 10` or a header
     if [[item.id for item in page.items] for page in project.pages] != \
             [[item_id for item_id, _, _ in page] for page in read.pages]:
         return None

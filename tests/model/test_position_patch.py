@@ -111,3 +111,17 @@ def test_a_project_changed_beyond_positions_takes_the_full_save(tmp_path):
     read = Positions.of(project)
     project.pages[0].items.pop()
     assert patched_text(project, read) is None
+
+
+def test_a_multi_line_string_that_looks_like_keys_takes_the_full_save(tmp_path):
+    path = tmp_path / "card.toml"
+    path.write_text(HAND_WRITTEN.replace(
+        'id = "note"\nkind = "block"\n',
+        'id = "note"\nkind = "text"\ntext = """\nx = 30\n[[pages.items]]\n"""\n'))
+    project = load_project(path)
+    read = Positions.of(project)
+    project.pages[0].items[1].x = 44.5
+    assert patched_text(project, read) is None
+    save_settled(project, read)
+    saved = load_project(path).pages[0].items[1]
+    assert (saved.x, saved.text) == (44.5, "x = 30\n[[pages.items]]\n")
