@@ -229,7 +229,9 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
         margin_mm = float(wanted.max(initial=0.0))
         edge = np.minimum(centres - halves, np.array([page_w_mm, page_h_mm]) - centres - halves)
         short = (edge.min(axis=1) < wanted - MARGIN_TOLERANCE_MM) & ~layered & (wanted > 0)
-        in_margin = tuple(int(k) for k in np.flatnonzero(short) if k not in off_page)
+        off = np.zeros(count, bool)
+        off[list(off_page)] = True  # a tuple's `in` per item was O(n^2) on a page far off
+        in_margin = tuple(int(k) for k in np.flatnonzero(short & ~off))
 
     outside_region: tuple[int, ...] = ()
     if regions is not None:
