@@ -67,14 +67,15 @@ class DirectPainter:
         color_system = widget.app.console._color_system
         region = widget.content_region
         runs: list[Run] = []
-        for row, (first, end) in sorted(cache.changed.items()):
-            col, segments = cache.segments(row, first, end)
-            for segment in segments:
-                style = self.terminal_style(segment.style, color_system)
-                if style is None:
-                    return False
-                add_run(runs, region.y + row, region.x + col, segment.text, style)
-                col += cell_len(segment.text)
+        for row, spans in sorted(cache.changed.items()):
+            for first, end in spans:
+                col, segments = cache.segments(row, first, end)
+                for segment in segments:
+                    style = self.terminal_style(segment.style, color_system)
+                    if style is None:
+                        return False
+                    add_run(runs, region.y + row, region.x + col, segment.text, style)
+                    col += cell_len(segment.text)
         offset, width = widget.content_offset, widget.size.width
         rows = list(cache.changed)
 

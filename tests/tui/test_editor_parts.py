@@ -100,3 +100,20 @@ def test_canvas_rows_become_half_block_strips_and_later_fills_hide_glyphs():
     assert strips[1].text == "a   "
     assert canvas.glyph_at(1, 1) is None and canvas.glyph_at(0, 1) == Glyph("a", (255, 255, 255))
     assert all(strip.cell_length == 4 for strip in strips)
+
+
+def test_changes_far_apart_in_a_row_are_separate_spans_and_close_ones_one():
+    """Two guide lines crossing a row change two cells; the cells between them (a calendar's
+    digits) are not resent: only each change and a cell either side (wide characters)."""
+    def painted(*cols: int) -> CellCanvas:
+        canvas = CellCanvas(60, 2, (0, 0, 0))
+        canvas.write(0, 0, "0123456789" * 6, (255, 255, 255))
+        for col in cols:
+            canvas.pixels[2, col] = (0, 190, 210)
+        return canvas
+
+    cache = StripCache()
+    cache.update(painted())
+    cache.update(painted(5, 40, 45))
+    assert cache.changed == {1: ((4, 7), (39, 47))}
+    assert "".join(segment.text for segment in cache.segments(1, 39, 47)[1]) == " ▀    ▀ "
