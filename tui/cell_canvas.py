@@ -9,6 +9,7 @@ did not change reuses last frame's Strip, so an idle frame costs little.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property, lru_cache
 
 import numpy as np
 from rich.color import Color
@@ -20,6 +21,13 @@ from floatpage.tui.cell_text import graphemes, width
 
 RGB = tuple[int, int, int]
 UPPER_HALF = "\u2580"
+CellRun = tuple[str, int, int, int, bool]  # text, cells, fg, bg (packed), bold
+NARROW_SPAN = 24  # columns up to which a span's runs are found cell by cell, not with numpy
+
+
+@lru_cache(maxsize=4096)
+def text_width(grapheme: str) -> int:
+    return width(grapheme)
 
 
 def pack(rgb: RGB) -> int:
@@ -158,6 +166,10 @@ class CachedRow:
     glyphs: tuple[tuple[int, Glyph], ...]
     strip: Strip | None = None
 
+    @cached_property
+    def glyph_map(self) -> dict[int, Glyph]:
+        return dict(self.glyphs)
+
 
 class StripCache:
     """Turns a canvas into Strips, reusing styles and unchanged rows across frames.
@@ -230,54 +242,71 @@ class StripCache:
         return [self.strip(row) for row in range(self.rows)]
 
     def segments(self, row: int, first: int, end: int) -> tuple[int, list[Segment]]:
-        """Columns first to end of a row as Segments, and the column they start at. Cells
-        between glyphs go by runs of equal pixels (numpy finds where the pixels change), not
-        one by one: building rows was most of a key's redraw. A wide character's second cell
-        is drawn by its first: at `first`, it is left out and the segments start a column
-        later; at `end - 1`, the segments end a column after `end`."""
+        """Columns first to end of a row as Segments (`runs`), and the column they start at."""
+        start, runs = self.runs(row, first, end)
+        style = self.style
+        return start, [Segment(text, style(fg, bg, bold)) for text, _cells, fg, bg, bold in runs]
+
+    def runs(self, row: int, first: int, end: int) -> tuple[int, list[CellRun]]:
+        """Columns first to end of a row as runs of cells in one style, (text, cells, fg, bg,
+        bold) with the colours packed, and the column they start at. A wide character's second
+        cell is drawn by its first: at `first`, it is left out and the runs start a column
+        later; at `end - 1`, the runs end a column after `end`.
+
+        Cells between glyphs go by stretches of equal pixels, which numpy finds in a wide span
+        (building whole rows was most of a key's redraw); a narrow one goes cell by cell, as
+        numpy cost more than it saved there (20 us a span, and a guide line crossing the
+        calendar makes 47 spans of 3 cells). No Rich styles are made here: the direct painter
+        maps the colours to terminal codes itself, and `segments` makes them for Strips."""
         cached = self._rows[row]
-        glyphs = dict(cached.glyphs)
-        tops, bottoms = cached.pair[0, first:end], cached.pair[1, first:end]
-        cols = end - first
-        if cols <= 0:
+        if end <= first:
             return first, []
-        starts = np.empty(cols, dtype=bool)
-        starts[0] = True
-        np.not_equal(tops[1:], tops[:-1], out=starts[1:])
-        starts[1:] |= bottoms[1:] != bottoms[:-1]
-        for col in glyphs:  # every glyph is a run of its own, and so is what follows it
-            if first <= col < end:
-                starts[col - first] = True
-            if first <= col + 1 < end:
-                starts[col + 1 - first] = True
-        bounds = (np.flatnonzero(starts) + first).tolist() + [end]
-        top_at, bottom_at = tops.tolist(), bottoms.tolist()  # from column `first`
-        segments: list[Segment] = []
-        run_text: list[str] = []
-        run_style: Style | None = None
+        glyphs = cached.glyph_map
+        top_row, bottom_row = cached.pair[0, first:end], cached.pair[1, first:end]
+        if end - first <= NARROW_SPAN:
+            bounds = list(range(first, end + 1))
+        else:
+            starts = np.empty(end - first, dtype=bool)
+            starts[0] = True
+            np.not_equal(top_row[1:], top_row[:-1], out=starts[1:])
+            starts[1:] |= bottom_row[1:] != bottom_row[:-1]
+            for col in glyphs:  # every glyph is a run of its own, and so is what follows it
+                if first <= col < end:
+                    starts[col - first] = True
+                if first <= col + 1 < end:
+                    starts[col + 1 - first] = True
+            bounds = (np.flatnonzero(starts) + first).tolist() + [end]
+        tops, bottoms = top_row.tolist(), bottom_row.tolist()  # from column `first`
+        runs: list[CellRun] = []
+        text_parts: list[str] = []
+        cells = 0
+        key: tuple[int, int, bool] | None = None
         start = first
         for col, run_end in zip(bounds, bounds[1:]):
-            top, bottom = top_at[col - first], bottom_at[col - first]
-            glyph = glyphs.get(col)
-            if glyph is not None and glyph.char == "" and col > 0 and glyphs.get(col - 1) is not None:
+            glyph = glyphs.get(col) if glyphs else None
+            if glyph is not None and glyph.char:
+                bg = pack(glyph.bg) if glyph.bg is not None else tops[col - first]
+                cell_key, text = (pack(glyph.fg), bg, glyph.bold), glyph.char
+                count = text_width(text)
+                if count == 2:
+                    following = glyphs.get(col + 1)
+                    if following is None or following.char != "":
+                        text, count = " ", 1  # its second cell was drawn over: keep the width
+            elif glyph is not None and col > 0 and glyphs.get(col - 1) is not None:
                 if col == first:
                     start = first + 1
                 continue  # the second cell of a wide character, drawn by the first
-            if glyph is not None and glyph.char:
-                bg = pack(glyph.bg) if glyph.bg is not None else top
-                style, text = self.style(pack(glyph.fg), bg, glyph.bold), glyph.char
-                following = glyphs.get(col + 1)
-                if width(text) == 2 and (following is None or following.char != ""):
-                    text = " "  # its second cell was drawn over: keep the row's width
             else:
-                style = self.style(top, bottom)
-                text = (" " if top == bottom else UPPER_HALF) * (run_end - col)
-            if style is run_style:
-                run_text.append(text)
-            else:
-                if run_text:
-                    segments.append(Segment("".join(run_text), run_style))
-                run_text, run_style = [text], style
-        if run_text:
-            segments.append(Segment("".join(run_text), run_style))
-        return start, segments
+                top, bottom = tops[col - first], bottoms[col - first]
+                count = run_end - col
+                cell_key, text = (top, bottom, False), \
+                    (" " if top == bottom else UPPER_HALF) * count
+            if cell_key != key:
+                if text_parts:
+                    runs.append(("".join(text_parts), cells, *key))
+                text_parts, cells, key = [], 0, cell_key
+            text_parts.append(text)
+            cells += count
+        if text_parts:
+            runs.append(("".join(text_parts), cells, *key))
+        return start, runs

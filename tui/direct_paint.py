@@ -55,6 +55,7 @@ class DirectPainter:
 
     def __init__(self):
         self._styles: dict[RichStyle, Style | None] = {}
+        self._cell_styles: dict[tuple, Style | None] = {}
         self._batch: list[tuple[list[Run], Callable[[], None], Callable[[], None]]] | None = None
         self._batch_app = None
 
@@ -67,15 +68,16 @@ class DirectPainter:
         color_system = widget.app.console._color_system
         region = widget.content_region
         runs: list[Run] = []
+        cell_style = self.cell_style
         for row, spans in sorted(cache.changed.items()):
             for first, end in spans:
-                col, segments = cache.segments(row, first, end)
-                for segment in segments:
-                    style = self.terminal_style(segment.style, color_system)
+                col, cell_runs = cache.runs(row, first, end)
+                for text, cells, fg, bg, bold in cell_runs:
+                    style = cell_style(cache, fg, bg, bold, color_system)
                     if style is None:
                         return False
-                    add_run(runs, region.y + row, region.x + col, segment.text, style)
-                    col += cell_len(segment.text)
+                    add_run(runs, region.y + row, region.x + col, text, style)
+                    col += cells
         offset, width = widget.content_offset, widget.size.width
         rows = list(cache.changed)
 
@@ -169,6 +171,18 @@ class DirectPainter:
             if other not in ancestors and other.region.overlaps(region):
                 return False
         return True
+
+    def cell_style(self, cache: StripCache, fg: int, bg: int, bold: bool,
+                   color_system) -> Style | None:
+        """The terminal style of the preview's cells in these packed colours: the one its
+        Rich style gives (`terminal_style`), looked up by the colours without making it."""
+        key = (fg, bg, bold, color_system)
+        try:
+            return self._cell_styles[key]
+        except KeyError:
+            known = self._cell_styles[key] = self.terminal_style(cache.style(fg, bg, bold),
+                                                                  color_system)
+            return known
 
     def terminal_style(self, style: RichStyle | None, color_system) -> Style | None:
         """The terminal style Textual's output gives these cells (None: not followed)."""
