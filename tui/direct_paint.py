@@ -90,9 +90,10 @@ class DirectPainter:
 
     def paint_lines(self, widget: Widget) -> bool:
         """The widget's lines as Textual renders them (`Widget.render_lines`, which caches
-        them for Textual's own update), sent ahead of Textual's own update of them: that update
-        then finds the cells on the terminal already (the shadow screen sends none of them)
-        and writes nothing. For a line of text, the top bar; False when it cannot be sent."""
+        them for Textual's own repaints), sent in place of Textual's own update of them; the
+        caller refreshes the widget only when this returns False (cannot be sent). Should the
+        gathered write fail (`answer`), the widget is refreshed. For a line of text, the top
+        bar (`PageBar.show` with `refresh=False`)."""
         region = widget.region
         if not self.may_paint(widget, region.width, region.height, content=False):
             return False
@@ -108,7 +109,7 @@ class DirectPainter:
                     return False
                 add_run(runs, region.y + row, col, segment.text, style)
                 col += cell_len(segment.text)
-        return self._send(widget.app, runs, lambda: None, lambda: None)
+        return self._send(widget.app, runs, lambda: None, widget.refresh)
 
     def may_paint(self, widget: Widget, cols: int, rows: int, content: bool = True) -> bool:
         """A terminal to paint on, whose cells of the widget are the widget's alone."""
