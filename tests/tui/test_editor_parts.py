@@ -39,7 +39,7 @@ def test_step_through_wraps_and_starts_at_either_end():
 
 def test_history_undo_redo_and_a_new_edit_clears_redo():
     history = History(limit=3)
-    snap = lambda label: Snapshot(label, [], 0, None)  # noqa: E731
+    snap = lambda label: Snapshot.take(label, [], 0, None)  # noqa: E731
     for label in "abcd":
         history.record(snap(label))
     assert [s.label for s in history.undo_stack] == ["b", "c", "d"]  # bounded
