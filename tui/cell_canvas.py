@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
-from typing import NamedTuple
 
 import numpy as np
 from rich.color import Color
@@ -39,11 +38,9 @@ def unpack(value: int) -> RGB:
     return (value >> 16) & 255, (value >> 8) & 255, value & 255
 
 
-class Glyph(NamedTuple):
-    """One character in a cell; bg None means 'whatever pixel is in the cell's upper half'.
-
-    A named tuple, not a dataclass: every frame makes and compares a glyph per letter shown
-    (150 on the calendar), and a tuple's are done in C, about 3x faster."""
+@dataclass(frozen=True)
+class Glyph:
+    """One character in a cell; bg None means 'whatever pixel is in the cell's upper half'."""
 
     char: str
     fg: RGB
