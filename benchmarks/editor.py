@@ -19,7 +19,12 @@ benchmarks/terminal_probe.py): one arrow press from rest, a 1 s held arrow (30 p
 bytes a second while it is held, the seconds from the last key until nothing more is written
 (2 s quiet), idle bytes, and the median time from a key to the first byte of its answer
 and to the whole answer on the screen (the top line changed too: `terminal_probe.
-answer_times`), each from 2 s of rest. The latency goal is checked on the whole answer. The
+answer_times`), each from 2 s of rest. The latency goal is checked on the whole answer.
+The apps' keys are sent in turns, one app's key after another's (`terminal_probe.
+interleaved_answers`, all the sessions open at once, idle between their keys), so that
+every app's keys meet the same load on a shared machine; `--sequential` sends each app's
+21 keys in one stretch, app after app, as the tables before the sixth session of
+2026-11-26 were measured. The byte figures are measured app after app either way. The
 remote end gets TERM=xterm-256color and COLORTERM=truecolor: every colour is sent in full,
 the costliest case (`--colors 256` for a link that does not pass COLORTERM). The goals
 are issue 11's, at 100x32. Compare within one run; the machine is shared.
@@ -41,7 +46,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import editor_frames  # noqa: E402
 import editor_hangup  # noqa: E402
 from loopback_sshd import LoopbackSshd  # noqa: E402
-from terminal_probe import SessionFigures, Terminal, measure_session  # noqa: E402
+from terminal_probe import (  # noqa: E402
+    SessionFigures, Terminal, interleaved_answers, measure_session, median_p90)
 
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ("greeting-card", "shop-flyer", "calendar-2027")
@@ -133,14 +139,28 @@ def run_link(args: argparse.Namespace) -> None:
                 scratch.mkdir()
                 apps = sessions(scratch, args.baseline)
                 results: list[tuple[str, SessionFigures]] = []
-                for name, argv, cwd, ready, select_first in apps:
-                    term = open_terminal(args.link, sshd, argv, cwd, size, args.colors)
-                    try:
+                terms: list[Terminal] = []
+                presses = 21 if args.sequential else 0
+                try:
+                    for name, argv, cwd, ready, select_first in apps:
+                        term = open_terminal(args.link, sshd, argv, cwd, size, args.colors)
+                        terms.append(term)
                         results.append((name, measure_session(term, ready=ready,
-                                                              select_first=select_first)))
-                    finally:
+                                                              select_first=select_first,
+                                                              presses=presses)))
+                        if args.sequential:
+                            term.close()
+                            terms.remove(term)
+                        print(f"  measured {name} at {size[0]}x{size[1]}", file=sys.stderr)
+                    if not args.sequential:  # the keys, all apps in turns (the bytes above)
+                        for (name, figures), (firsts, wholes) in zip(
+                                results, interleaved_answers(terms)):
+                            figures.latency_ms, figures.latency_p90_ms = median_p90(firsts)
+                            figures.whole_ms, figures.whole_p90_ms = median_p90(wholes)
+                        print(f"  measured the keys at {size[0]}x{size[1]}", file=sys.stderr)
+                finally:
+                    for term in terms:
                         term.close()
-                    print(f"  measured {name} at {size[0]}x{size[1]}", file=sys.stderr)
                 print_table(args, size, results)
         finally:
             if sshd is not None:
@@ -183,6 +203,9 @@ def main() -> None:
         target.add_argument("--colors", choices=["truecolor", "256"], default="truecolor")
         target.add_argument("--baseline", type=Path, default=None,
                             help="another checkout whose editor gets rows of its own")
+        target.add_argument("--sequential", action="store_true",
+                            help="each app's keys in one stretch, app after app (before "
+                                 "2026-11-26's sixth session); the default: in turns")
     editor_frames.add_arguments(parts.add_parser("frames", help="headless frame time"))
     editor_hangup.add_arguments(parts.add_parser("hangup", help="hang-up over ssh and tmux"))
     args = parser.parse_args()

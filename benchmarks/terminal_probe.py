@@ -58,20 +58,28 @@ class Terminal:
                 break
             ready, _, _ = select.select([self.fd], [], [], min(0.02, left))
             if ready:
-                try:
-                    data = os.read(self.fd, 1 << 16)
-                except OSError:  # the program is gone
+                data = self.read_ready()
+                if data is None:  # the program is gone
                     time.sleep(max(deadline - time.monotonic(), 0))
                     break
                 if not data:
                     break
                 got += len(data)
-                self.seen += data
-                self.received += data
-                self.answer_queries(data)
-                self.last_byte_at = time.monotonic()
-        self.total += got
         return got
+
+    def read_ready(self) -> bytes | None:
+        """One read of what select reported ready (None: the program is gone)."""
+        try:
+            data = os.read(self.fd, 1 << 16)
+        except OSError:
+            return None
+        if data:
+            self.total += len(data)
+            self.seen += data
+            self.received += data
+            self.answer_queries(data)
+            self.last_byte_at = time.monotonic()
+        return data
 
     def answer_queries(self, data: bytes) -> None:
         """Answer cursor-position queries, as a terminal emulator does once it has drawn
@@ -211,9 +219,55 @@ def answer_times(term: Terminal, sent: float, screen: Screen) -> tuple[float, fl
     return reads[0][0] - sent, whole - sent
 
 
+def quiet_all(terms: list[Terminal], quiet_s: float = QUIET_S, limit_s: float = 60.0) -> None:
+    """Read every terminal until none has written for `quiet_s` (or `limit_s` passed): all
+    of them read, so that none waits on a full pty or an unanswered cursor query."""
+    start = time.monotonic()
+    fds = {term.fd: term for term in terms}
+    while time.monotonic() - start < limit_s:
+        ready, _, _ = select.select(list(fds), [], [], 0.05)
+        for fd in ready:
+            if not fds[fd].read_ready():
+                del fds[fd]  # gone: nothing more to wait for
+        last = max([term.last_byte_at for term in fds.values()] + [start])
+        if not fds or time.monotonic() - last >= quiet_s:
+            return
+
+
+def interleaved_answers(terms: list[Terminal], presses: int = 21
+                        ) -> list[tuple[list[float], list[float]]]:
+    """Per terminal, the ms from a key to the first byte of its answer and to the whole of it
+    (`answer_times`), the terminals taking turns key by key, each key after QUIET_S of quiet
+    on all of them: every app meets the same load, where one app's keys after another's met
+    whatever the shared machine did in that minute (ratios between apps moved by up to 1.5x
+    between runs, the trivial app's own median from 4.4 to 12.9 ms). Up and Down in turns,
+    as `measure_session` sends them; the order of the terminals turns by one each round."""
+    screens = [Screen(term, term.columns, term.rows) for term in terms]
+    answers: list[tuple[list[float], list[float]]] = [([], []) for _ in terms]
+    for press in range(presses):
+        for turn in range(len(terms)):
+            index = (turn + press) % len(terms)
+            term, screen = terms[index], screens[index]
+            quiet_all(terms)
+            screen.catch_up()
+            term.send(DOWN if press % 2 else UP)
+            times = answer_times(term, time.monotonic(), screen)
+            if times is not None:
+                answers[index][0].append(1000 * times[0])
+                answers[index][1].append(1000 * times[1])
+    quiet_all(terms, QUIET_S / 2)
+    return answers
+
+
+def median_p90(values: list[float]) -> tuple[float, float]:
+    ordered = sorted(values) or [float("nan")]
+    return statistics.median(ordered), ordered[int(0.9 * (len(ordered) - 1))]
+
+
 def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
                     presses: int = 21) -> SessionFigures:
-    """The user's session: wait for `ready` on the screen, select an item, then the measures."""
+    """The user's session: wait for `ready` on the screen, select an item, then the measures
+    (`presses=0`: no latency figures here, NaN; `interleaved_answers` measures them)."""
     screen = Screen(term, term.columns, term.rows)
     term.until_seen(ready)
     term.until_quiet()
@@ -241,11 +295,6 @@ def measure_session(term: Terminal, *, ready: bytes, select_first: bool,
             firsts.append(1000 * times[0])
             lasts.append(1000 * times[1])
     term.until_quiet(quiet_s=QUIET_S / 2)
-
-    def median_p90(values: list[float]) -> tuple[float, float]:
-        ordered = sorted(values) or [float("nan")]
-        return statistics.median(ordered), ordered[int(0.9 * (len(ordered) - 1))]
-
     (first, first_p90), (whole, whole_p90) = median_p90(firsts), median_p90(lasts)
     return SessionFigures(
         one_key_kb=one_key / 1024, held_kb=(held + after) / 1024,

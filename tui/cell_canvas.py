@@ -9,6 +9,7 @@ did not change reuses last frame's Strip, so an idle frame costs little.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property, lru_cache
 
 import numpy as np
 from rich.color import Color
@@ -20,6 +21,13 @@ from floatpage.tui.cell_text import graphemes, width
 
 RGB = tuple[int, int, int]
 UPPER_HALF = "\u2580"
+CellRun = tuple[str, int, int, int, bool]  # text, cells, fg, bg (packed), bold
+NARROW_SPAN = 24  # columns up to which a span's runs are found cell by cell, not with numpy
+
+
+@lru_cache(maxsize=4096)
+def text_width(grapheme: str) -> int:
+    return width(grapheme)
 
 
 def pack(rgb: RGB) -> int:
@@ -124,17 +132,29 @@ class CellCanvas:
             at += wide
 
 
-def changed_span(cached: "CachedRow | None", pair: np.ndarray, glyphs: tuple,
-                 cols: int) -> tuple[int, int]:
-    """(first, end) columns of a row that differ from its cached version, one cell wider on
-    each side for wide characters; the whole row when there is nothing to compare with."""
+SPAN_GAP = 8  # unchanged cells between two changes that still go in one span
+
+
+def changed_spans(cached: "CachedRow | None", pair: np.ndarray, glyphs: tuple,
+                  cols: int) -> tuple[tuple[int, int], ...]:
+    """The (first, end) columns of a row that differ from its cached version, each one cell
+    wider on either side for wide characters; the whole row when there is nothing to compare
+    with. Changes more than SPAN_GAP unchanged cells apart go in spans of their own: two
+    guide lines on the calendar changed columns 33 and 66 of each row they crossed, and the
+    35 cells between them, digits mostly, went through the segments and the shadow screen
+    on every arrow (2-4 ms of its answer; issue 11, key to screen)."""
     if cached is None or cached.pair.shape != pair.shape:
-        return 0, cols
+        return ((0, cols),)
     columns = set(np.flatnonzero((cached.pair != pair).any(axis=0)).tolist())
     columns.update(col for col, _glyph in set(cached.glyphs) ^ set(glyphs))
-    if not columns:
-        return 0, 0
-    return max(min(columns) - 1, 0), min(max(columns) + 2, cols)
+    spans: list[tuple[int, int]] = []
+    for col in sorted(columns):
+        first, end = max(col - 1, 0), min(col + 2, cols)
+        if spans and first <= spans[-1][1] + SPAN_GAP:
+            spans[-1] = (spans[-1][0], end)
+        else:
+            spans.append((first, end))
+    return tuple(spans)
 
 
 @dataclass
@@ -146,12 +166,16 @@ class CachedRow:
     glyphs: tuple[tuple[int, Glyph], ...]
     strip: Strip | None = None
 
+    @cached_property
+    def glyph_map(self) -> dict[int, Glyph]:
+        return dict(self.glyphs)
+
 
 class StripCache:
     """Turns a canvas into Strips, reusing styles and unchanged rows across frames.
 
     `update` tells which cells of which rows differ from the last frame, in `changed` as
-    {row: (first col, end col)}: the preview repaints only those, since a moving item changes
+    {row: ((first col, end col), ...)}: the preview repaints only those, since a moving item changes
     a few columns of its rows and the page's surround none (issue 11). A changed row's Strip
     is built when it is asked for (`strip`): when the preview's cells go straight to the
     terminal (`direct_paint`), only the changed columns are turned into segments
@@ -164,7 +188,7 @@ class StripCache:
         self._packed: np.ndarray | None = None  # the last frame's pixels, packed (2 x rows, cols)
         self.rows = 0
         self.cols = 0
-        self.changed: dict[int, tuple[int, int]] = {}
+        self.changed: dict[int, tuple[tuple[int, int], ...]] = {}
 
     def style(self, fg: int, bg: int, bold: bool = False) -> Style:
         key = (fg, bg, bold)
@@ -200,7 +224,9 @@ class StripCache:
             cached = self._rows.get(row)
             if cached is not None and cached.glyphs == glyphs and not pixels_changed[row]:
                 continue
-            self.changed[row] = changed_span(cached, pair, glyphs, canvas.cols)
+            spans = changed_spans(cached, pair, glyphs, canvas.cols)
+            if spans:
+                self.changed[row] = spans
             self._rows[row] = CachedRow(pair, glyphs)
 
     def strip(self, row: int) -> Strip:
@@ -216,54 +242,71 @@ class StripCache:
         return [self.strip(row) for row in range(self.rows)]
 
     def segments(self, row: int, first: int, end: int) -> tuple[int, list[Segment]]:
-        """Columns first to end of a row as Segments, and the column they start at. Cells
-        between glyphs go by runs of equal pixels (numpy finds where the pixels change), not
-        one by one: building rows was most of a key's redraw. A wide character's second cell
-        is drawn by its first: at `first`, it is left out and the segments start a column
-        later; at `end - 1`, the segments end a column after `end`."""
+        """Columns first to end of a row as Segments (`runs`), and the column they start at."""
+        start, runs = self.runs(row, first, end)
+        style = self.style
+        return start, [Segment(text, style(fg, bg, bold)) for text, _cells, fg, bg, bold in runs]
+
+    def runs(self, row: int, first: int, end: int) -> tuple[int, list[CellRun]]:
+        """Columns first to end of a row as runs of cells in one style, (text, cells, fg, bg,
+        bold) with the colours packed, and the column they start at. A wide character's second
+        cell is drawn by its first: at `first`, it is left out and the runs start a column
+        later; at `end - 1`, the runs end a column after `end`.
+
+        Cells between glyphs go by stretches of equal pixels, which numpy finds in a wide span
+        (building whole rows was most of a key's redraw); a narrow one goes cell by cell, as
+        numpy cost more than it saved there (20 us a span, and a guide line crossing the
+        calendar makes 47 spans of 3 cells). No Rich styles are made here: the direct painter
+        maps the colours to terminal codes itself, and `segments` makes them for Strips."""
         cached = self._rows[row]
-        glyphs = dict(cached.glyphs)
-        tops, bottoms = cached.pair[0, first:end], cached.pair[1, first:end]
-        cols = end - first
-        if cols <= 0:
+        if end <= first:
             return first, []
-        starts = np.empty(cols, dtype=bool)
-        starts[0] = True
-        np.not_equal(tops[1:], tops[:-1], out=starts[1:])
-        starts[1:] |= bottoms[1:] != bottoms[:-1]
-        for col in glyphs:  # every glyph is a run of its own, and so is what follows it
-            if first <= col < end:
-                starts[col - first] = True
-            if first <= col + 1 < end:
-                starts[col + 1 - first] = True
-        bounds = (np.flatnonzero(starts) + first).tolist() + [end]
-        top_at, bottom_at = tops.tolist(), bottoms.tolist()  # from column `first`
-        segments: list[Segment] = []
-        run_text: list[str] = []
-        run_style: Style | None = None
+        glyphs = cached.glyph_map
+        top_row, bottom_row = cached.pair[0, first:end], cached.pair[1, first:end]
+        if end - first <= NARROW_SPAN:
+            bounds = list(range(first, end + 1))
+        else:
+            starts = np.empty(end - first, dtype=bool)
+            starts[0] = True
+            np.not_equal(top_row[1:], top_row[:-1], out=starts[1:])
+            starts[1:] |= bottom_row[1:] != bottom_row[:-1]
+            for col in glyphs:  # every glyph is a run of its own, and so is what follows it
+                if first <= col < end:
+                    starts[col - first] = True
+                if first <= col + 1 < end:
+                    starts[col + 1 - first] = True
+            bounds = (np.flatnonzero(starts) + first).tolist() + [end]
+        tops, bottoms = top_row.tolist(), bottom_row.tolist()  # from column `first`
+        runs: list[CellRun] = []
+        text_parts: list[str] = []
+        cells = 0
+        key: tuple[int, int, bool] | None = None
         start = first
         for col, run_end in zip(bounds, bounds[1:]):
-            top, bottom = top_at[col - first], bottom_at[col - first]
-            glyph = glyphs.get(col)
-            if glyph is not None and glyph.char == "" and col > 0 and glyphs.get(col - 1) is not None:
+            glyph = glyphs.get(col) if glyphs else None
+            if glyph is not None and glyph.char:
+                bg = pack(glyph.bg) if glyph.bg is not None else tops[col - first]
+                cell_key, text = (pack(glyph.fg), bg, glyph.bold), glyph.char
+                count = text_width(text)
+                if count == 2:
+                    following = glyphs.get(col + 1)
+                    if following is None or following.char != "":
+                        text, count = " ", 1  # its second cell was drawn over: keep the width
+            elif glyph is not None and col > 0 and glyphs.get(col - 1) is not None:
                 if col == first:
                     start = first + 1
                 continue  # the second cell of a wide character, drawn by the first
-            if glyph is not None and glyph.char:
-                bg = pack(glyph.bg) if glyph.bg is not None else top
-                style, text = self.style(pack(glyph.fg), bg, glyph.bold), glyph.char
-                following = glyphs.get(col + 1)
-                if width(text) == 2 and (following is None or following.char != ""):
-                    text = " "  # its second cell was drawn over: keep the row's width
             else:
-                style = self.style(top, bottom)
-                text = (" " if top == bottom else UPPER_HALF) * (run_end - col)
-            if style is run_style:
-                run_text.append(text)
-            else:
-                if run_text:
-                    segments.append(Segment("".join(run_text), run_style))
-                run_text, run_style = [text], style
-        if run_text:
-            segments.append(Segment("".join(run_text), run_style))
-        return start, segments
+                top, bottom = tops[col - first], bottoms[col - first]
+                count = run_end - col
+                cell_key, text = (top, bottom, False), \
+                    (" " if top == bottom else UPPER_HALF) * count
+            if cell_key != key:
+                if text_parts:
+                    runs.append(("".join(text_parts), cells, *key))
+                text_parts, cells, key = [], 0, cell_key
+            text_parts.append(text)
+            cells += count
+        if text_parts:
+            runs.append(("".join(text_parts), cells, *key))
+        return start, runs

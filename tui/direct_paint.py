@@ -55,6 +55,7 @@ class DirectPainter:
 
     def __init__(self):
         self._styles: dict[RichStyle, Style | None] = {}
+        self._cell_styles: dict[tuple, Style | None] = {}
         self._batch: list[tuple[list[Run], Callable[[], None], Callable[[], None]]] | None = None
         self._batch_app = None
 
@@ -67,14 +68,16 @@ class DirectPainter:
         color_system = widget.app.console._color_system
         region = widget.content_region
         runs: list[Run] = []
-        for row, (first, end) in sorted(cache.changed.items()):
-            col, segments = cache.segments(row, first, end)
-            for segment in segments:
-                style = self.terminal_style(segment.style, color_system)
-                if style is None:
-                    return False
-                add_run(runs, region.y + row, region.x + col, segment.text, style)
-                col += cell_len(segment.text)
+        cell_style = self.cell_style
+        for row, spans in sorted(cache.changed.items()):
+            for first, end in spans:
+                col, cell_runs = cache.runs(row, first, end)
+                for text, cells, fg, bg, bold in cell_runs:
+                    style = cell_style(cache, fg, bg, bold, color_system)
+                    if style is None:
+                        return False
+                    add_run(runs, region.y + row, region.x + col, text, style)
+                    col += cells
         offset, width = widget.content_offset, widget.size.width
         rows = list(cache.changed)
 
@@ -87,9 +90,10 @@ class DirectPainter:
 
     def paint_lines(self, widget: Widget) -> bool:
         """The widget's lines as Textual renders them (`Widget.render_lines`, which caches
-        them for Textual's own update), sent ahead of Textual's own update of them: that update
-        then finds the cells on the terminal already (the shadow screen sends none of them)
-        and writes nothing. For a line of text, the top bar; False when it cannot be sent."""
+        them for Textual's own repaints), sent in place of Textual's own update of them; the
+        caller refreshes the widget only when this returns False (cannot be sent). Should the
+        gathered write fail (`answer`), the widget is refreshed. For a line of text, the top
+        bar (`PageBar.show` with `refresh=False`)."""
         region = widget.region
         if not self.may_paint(widget, region.width, region.height, content=False):
             return False
@@ -105,7 +109,7 @@ class DirectPainter:
                     return False
                 add_run(runs, region.y + row, col, segment.text, style)
                 col += cell_len(segment.text)
-        return self._send(widget.app, runs, lambda: None, lambda: None)
+        return self._send(widget.app, runs, lambda: None, widget.refresh)
 
     def may_paint(self, widget: Widget, cols: int, rows: int, content: bool = True) -> bool:
         """A terminal to paint on, whose cells of the widget are the widget's alone."""
@@ -168,6 +172,18 @@ class DirectPainter:
             if other not in ancestors and other.region.overlaps(region):
                 return False
         return True
+
+    def cell_style(self, cache: StripCache, fg: int, bg: int, bold: bool,
+                   color_system) -> Style | None:
+        """The terminal style of the preview's cells in these packed colours: the one its
+        Rich style gives (`terminal_style`), looked up by the colours without making it."""
+        key = (fg, bg, bold, color_system)
+        try:
+            return self._cell_styles[key]
+        except KeyError:
+            known = self._cell_styles[key] = self.terminal_style(cache.style(fg, bg, bold),
+                                                                  color_system)
+            return known
 
     def terminal_style(self, style: RichStyle | None, color_system) -> Style | None:
         """The terminal style Textual's output gives these cells (None: not followed)."""

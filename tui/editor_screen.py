@@ -304,8 +304,9 @@ class EditorScreen(Screen):
                     frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
                     details=self.details))
             bar = self.query_one(PageBar)
-            if bar.show(self.page_bar_runs()):  # an unchanged bar costs no bytes
-                preview.direct.paint_lines(bar)
+            if bar.show(self.page_bar_runs(), refresh=False) \
+                    and not preview.direct.paint_lines(bar):  # an unchanged bar costs no bytes
+                bar.refresh()
 
     def quality_summary(self) -> tuple[str, str]:
         """The layout's quality, as numbers and in words; exact when idle, refreshed a few

@@ -54,8 +54,12 @@ class LinkMeter:
         self.bytes_written = 0  # everything handed to the terminal, in UTF-8 bytes
 
     def arm(self) -> None:
-        """The next write carries a physics frame: ask after it (keys and dialogs are not
-        followed by queries, nor is anything once the physics rests)."""
+        """The next write carries a drawn frame: ask after it. That is a physics frame, or a
+        key's answer while the physics runs (`EditorScreen.after_edit` asks `may_draw`
+        before drawing it, and an arrow from rest has reheated the page by then), so such an
+        answer is followed by a query too. Nothing else is: not a key's answer on a page at
+        rest (a decoration nudged on a still page), a dialog, or anything once the physics
+        rests."""
         self.armed = True
 
     # -- queries ------------------------------------------------------------------------
@@ -122,7 +126,9 @@ class LinkMeter:
 
 
 class FramePacer:
-    """Decides at each physics tick whether to draw it. `link` is None without a terminal."""
+    """Decides at each physics tick whether to draw it, and at each edit made while the
+    physics runs whether to draw its answer now or leave it to the next frame (a held key
+    that outruns the link). `link` is None without a terminal."""
 
     def __init__(self, link: LinkMeter | None, clock=time.monotonic):
         self.link = link

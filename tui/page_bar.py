@@ -29,12 +29,22 @@ class PageBar(Widget):
         self.runs: tuple[Run, ...] = ()
         self._strip: tuple[tuple, Strip] | None = None  # (what it was built for, the strip)
 
-    def show(self, runs: tuple[Run, ...]) -> bool:
-        """Show these runs; False (and nothing to draw) when they are the ones shown."""
+    def show(self, runs: tuple[Run, ...], refresh: bool = True) -> bool:
+        """Show these runs; False (and nothing to draw) when they are the ones shown.
+
+        With `refresh=False` the caller paints the line itself (`DirectPainter.paint_lines`)
+        and refreshes only if that fails: the lines Textual cached are dropped, so that
+        whatever renders the bar next renders these runs, but no screen update is asked
+        for. After each arrow key that update found the line on the terminal already and
+        sent nothing, for 1.3-1.5 ms of CPU while the key's answer was on its way (issue 11:
+        key to screen, on a shared 2-core machine)."""
         if runs == self.runs:
             return False
         self.runs = runs
-        self.refresh()
+        if refresh:
+            self.refresh()
+        else:
+            self._styles_cache.clear()
         return True
 
     @property

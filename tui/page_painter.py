@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
+import numpy.ma  # noqa: F401  (imported with the editor, not on the first key: see below)
 
 from floatpage.model.calendar_month import month_name, month_weeks, weekday_names
 from floatpage.physics.guides import lines_met
@@ -51,6 +52,9 @@ class PageView:
 
 
 GUIDE_SHOWN_MM = 0.5  # a feature this close to a guide line is on it (physics.alignment)
+# numpy.ma is imported above, with the editor: `lines_met` calls np.unique, which imports
+# numpy.ma on its first call (np.ma.is_masked), and that was the first arrow key's guide
+# lines: 40-120 ms of its answer (issue 11: key to screen).
 
 
 def shown_guides(engine, item_id: str | None, moving: bool) -> tuple[tuple[int, float], ...]:

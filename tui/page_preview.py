@@ -98,9 +98,8 @@ class PagePreview(Widget, can_focus=True):
         Rows with the same changed columns go as one region."""
         run: tuple[int, int, int, int] | None = None  # first row, rows, first col, end col
         for row in sorted(self._cache.changed):
-            first, end = self._cache.changed[row]
-            if end <= first:
-                continue
+            spans = self._cache.changed[row]
+            first, end = spans[0][0], spans[-1][1]  # Textual resends a line's run as one
             if run is not None and run[0] + run[1] == row and run[2:] == (first, end):
                 run = (run[0], run[1] + 1, first, end)
                 continue

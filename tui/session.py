@@ -176,7 +176,7 @@ class EditSession:
 
     def _restore(self, snapshot: Snapshot) -> None:
         self.held_id = None
-        self.project.pages[:] = copy.deepcopy(snapshot.pages)
+        self.project.pages[:] = snapshot.pages  # a fresh copy
         self.page_index = min(snapshot.page_index, len(self.project.pages) - 1)
         self.selected_id = snapshot.selected_id
         self.version = snapshot.version

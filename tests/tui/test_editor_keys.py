@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
 import pytest
 
 from editor_helpers import editor, item, position, preview_text, screen_of, type_text
@@ -9,6 +14,8 @@ from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, PictureItem, PointAnchor, TextItem,
 )
 from floatpage.tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def label_cell(app, item_id: str) -> tuple[int, int]:
@@ -455,3 +462,27 @@ async def test_unsaved_follows_undo_and_redo_across_a_save(project_path):
         assert not session.unsaved  # back to exactly what was saved
         await pilot.press("ctrl+z", "d")
         assert session.unsaved  # a different edit: not the saved state
+
+
+def test_the_editor_has_imported_numpy_ma_before_the_first_arrow(tmp_path):
+    """The guide lines shown while an item moves call np.unique, whose first call imports
+    numpy.ma (np.ma.is_masked): 40-120 ms of the first arrow's answer, until the editor
+    imported it at start. In a fresh interpreter, as the editor starts, since this one's
+    other tests may have imported it already."""
+    script = textwrap.dedent(f"""
+        import asyncio, sys
+        from floatpage.tui.app import make_app
+
+        async def main():
+            app = make_app({str(ROOT / "sample_projects" / "greeting-card" / "greeting-card.toml")!r},
+                           autostart=False)
+            async with app.run_test(size=(100, 32)) as pilot:
+                await pilot.press("tab")
+                await pilot.pause()
+                print("numpy.ma" in sys.modules)
+
+        asyncio.run(main())
+    """)
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                            timeout=120, cwd=tmp_path)
+    assert result.stdout.strip() == "True", result.stderr

@@ -39,7 +39,7 @@ def test_step_through_wraps_and_starts_at_either_end():
 
 def test_history_undo_redo_and_a_new_edit_clears_redo():
     history = History(limit=3)
-    snap = lambda label: Snapshot(label, [], 0, None)  # noqa: E731
+    snap = lambda label: Snapshot.take(label, [], 0, None)  # noqa: E731
     for label in "abcd":
         history.record(snap(label))
     assert [s.label for s in history.undo_stack] == ["b", "c", "d"]  # bounded
@@ -100,3 +100,43 @@ def test_canvas_rows_become_half_block_strips_and_later_fills_hide_glyphs():
     assert strips[1].text == "a   "
     assert canvas.glyph_at(1, 1) is None and canvas.glyph_at(0, 1) == Glyph("a", (255, 255, 255))
     assert all(strip.cell_length == 4 for strip in strips)
+
+
+def test_changes_far_apart_in_a_row_are_separate_spans_and_close_ones_one():
+    """Two guide lines crossing a row change two cells; the cells between them (a calendar's
+    digits) are not resent: only each change and a cell either side (wide characters)."""
+    def painted(*cols: int) -> CellCanvas:
+        canvas = CellCanvas(60, 2, (0, 0, 0))
+        canvas.write(0, 0, "0123456789" * 6, (255, 255, 255))
+        for col in cols:
+            canvas.pixels[2, col] = (0, 190, 210)
+        return canvas
+
+    cache = StripCache()
+    cache.update(painted())
+    cache.update(painted(5, 40, 45))
+    assert cache.changed == {1: ((4, 7), (39, 47))}
+    assert "".join(segment.text for segment in cache.segments(1, 39, 47)[1]) == " ▀    ▀ "
+
+
+def test_a_spans_runs_are_the_rows_cells_cell_by_cell_or_by_numpy():
+    """Narrow spans are cut into runs cell by cell, wide ones with numpy: both give the
+    row's own cells, a wide character whole, in the style the row's Strip gives them."""
+    canvas = CellCanvas(60, 1, (0, 0, 0))
+    canvas.fill(10, 0, 30, 1, (255, 0, 0))  # the top pixels of columns 10-29
+    canvas.write(3, 0, "ab日本c", (255, 255, 255), (0, 0, 90), bold=True)  # 日本: columns 5-8
+    canvas.write(40, 0, "xyz", (255, 255, 255))
+    cache = StripCache()
+    at_col = {}  # column -> the characters of the row's Strip from there, with their styles
+    chars = [(char, segment.style) for segment in cache.strips(canvas)[0] for char in segment.text]
+    col = 0
+    for index, (char, _) in enumerate(chars):
+        at_col[col] = chars[index:]
+        col += 2 if char in "日本" else 1
+    for first, end in ((0, 60), (2, 9), (6, 8), (7, 9), (9, 44), (38, 45)):
+        start, runs = cache.runs(0, first, end)
+        got = [(char, cache.style(fg, bg, bold)) for text, _, fg, bg, bold in runs
+               for char in text]
+        assert start == (first + 1 if first in (6, 8) else first)  # a second half: left out
+        assert got == at_col[start][:len(got)], (first, end)
+        assert start + sum(count for _, count, *_ in runs) == (end + 1 if end in (6, 8) else end)
