@@ -45,11 +45,13 @@ STALL_GAIN = 0.01
 # the packing holds the gutter by construction).  The 5-item page's first run was jammed from
 # its 3rd round on (its score did not change in the 16th digit) and ran 60 more.
 FIRST_ATTEMPT_STALL = 15
-# ...or in this many when the margin gives way (remove_overlaps), which happens only on a page
-# the full attempt left overlapping: over-full, so the run can only lessen the overlap.  On
-# 36 over-full pages (10 to 60 items at 85, 90 and 100 %, three seeds) the overlap left was
-# the same to 0.01 % with 20 as with 60 (one page 3.76 -> 3.77 %, items in the margin 11.39
-# -> 11.36 on average), and the benchmark's over-full page's pass took 203 -> 123 rounds.
+# ...or in this many on a page that looks over-full: where the gutter cannot fit by area and
+# no arrangement without overlap has turned up (project_within), and where the margin gives
+# way (remove_overlaps), which happens only on a page the full attempt left overlapping.
+# There a stalled run seldom does more than lessen the overlap a little.  On 36 over-full pages (10 to 60
+# items at 85, 90 and 100 %, three seeds) the overlap left was the same to 0.01 % with 20 as
+# with 60 (items in the margin 11.39 -> 11.33 on average), the same on eight crowded pages
+# (60-500 items) to 0.001 %, and the benchmark's over-full page's pass took 203 -> 104 rounds.
 OVERFULL_STALL = 20
 # When the gutter does not fit: at most this many bisection steps between the widest clearance
 # reached and the gutter, stopping once they are this close; each step aims only this far beyond
@@ -349,8 +351,9 @@ def project_within(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm
         # fails the page is over-full, and the run left the arrangement with least overlap.
         # Without a gutter, the run just made was this one: once more from its best
         # arrangement found no less overlap on 36 over-full pages, in 60 to 80 more rounds.
-        if gutter_mm == 0 and not hopeless or not projection.run(ROUNDING_MM, iterations,
-                                                                 aim=AIM_BEYOND_MM):
+        if gutter_mm == 0 and not hopeless or not projection.run(
+                ROUNDING_MM, iterations, aim=AIM_BEYOND_MM,
+                stall=OVERFULL_STALL if hopeless else STALL_ITERATIONS):
             return False
     low, high = projection.widest, gutter_mm + ROUNDING_MM
     for _ in range(FALLBACK_ATTEMPTS):
