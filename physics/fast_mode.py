@@ -11,6 +11,7 @@ Verlet neighbour list).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -81,14 +82,18 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
 
 
 def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params, heat: float,
-             steps: int, rng: np.random.Generator, spread_out: bool = False
-             ) -> tuple[int, float, bool, bool]:
+             steps: int, rng: np.random.Generator, spread_out: bool = False,
+             gives_up: Callable[[], bool] | None = None) -> tuple[int, float, bool, bool]:
     """Advance up to ``steps`` steps in place; stop once the page is still.
 
     Each step: the forces' sum (fast_forces), semi-implicit Euler with friction and a speed
     limit, hard walls, constraints, cooling. Returns (steps run, heat after them, settled,
     spread out: whether the page has spread and now cools onto its guides, which the caller
     hands back to the next call, as the editor runs a page one frame at a time).
+
+    ``gives_up``, if given, is asked once, when the page has spread and first comes to rest:
+    True ends the run there, without cooling onto the guides (Engine.settle asks whether the
+    page as it lies can keep the gutter at all; if not, lining it up is wasted).
     """
     free = bodies.free
     if not free.any() or steps <= 0:
@@ -165,6 +170,8 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
                 top_speed = walled
         if top_speed < still_speed:
             if heat <= settled_below:
+                return done, heat, True, spread_out
+            if not spread_out and gives_up is not None and gives_up():
                 return done, heat, True, spread_out
             heat = min(heat, guided_heat)  # spread out and still: on to where the guides pull
             keep = min(keep, 1.0 - GUIDED_COOLING)

@@ -166,3 +166,33 @@ def test_cannot_fit_is_an_area_bound():
     assert cannot_fit(engine.bodies, 100.0, 100.0, 0.01, 5.0)
     engine.confine("huge", 0, 0, 100, 20)  # with a region the bound says nothing
     assert not cannot_fit(engine.bodies, 100.0, 100.0, 0.01, 5.0)
+
+
+def test_an_over_full_page_gives_its_margin_up_in_fewer_rounds_with_the_same_overlap(
+        monkeypatch):
+    """Once the margin gives way the page is over-full: the run can only lessen the overlap,
+    and stops after OVERFULL_STALL stalled rounds instead of STALL_ITERATIONS."""
+    from floatpage.physics import finalize
+    from seeded_scenes import load, mixed_scene
+
+    scene = mixed_scene(40, 0.9, seed=1)
+    rounds = [0]
+    moves = finalize.moves_from_gaps
+
+    def counted(*args, **kwargs):
+        rounds[0] += 1
+        return moves(*args, **kwargs)
+
+    monkeypatch.setattr(finalize, "moves_from_gaps", counted)
+    found = {}
+    for stall in (finalize.STALL_ITERATIONS, finalize.OVERFULL_STALL):
+        monkeypatch.setattr(finalize, "OVERFULL_STALL", stall)
+        engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
+        load(engine, scene)
+        engine.advance(2_000)
+        rounds[0] = 0
+        assert not engine.finalize()
+        found[stall] = (rounds[0], engine.quality().overlap_fraction)
+    (long_rounds, long_overlap), (short_rounds, short_overlap) = found.values()
+    assert short_rounds < long_rounds - 40
+    assert short_overlap <= long_overlap + 1e-4
