@@ -116,6 +116,9 @@ class RestCheck:
         centres = self.bodies.centres
         trial = centres.copy()
         trial[members, axis] += shift
+        after_net = self.group_net(rows, pairs, trial, groups)
+        if np.abs(after_net).max() <= self.limit + 1e-9:
+            return True  # within the limit with no hold at all: which lines hold is moot
         held_before = held_after = None
         if self.hold > 0:
             # the move changes no feature across its axis: only ``axis`` is found again
@@ -123,7 +126,7 @@ class RestCheck:
             held_after = held_before.copy()
             held_after[:, axis] = self.on_lines(groups, trial, (axis,))[:, 0]
         before = self.unheld(self.group_net(rows, pairs, centres, groups), held_before)
-        after = self.unheld(self.group_net(rows, pairs, trial, groups), held_after)
+        after = self.unheld(after_net, held_after)
         return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
 
     def unheld(self, acc: np.ndarray, held: np.ndarray | None) -> np.ndarray:
