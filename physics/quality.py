@@ -102,6 +102,20 @@ def sweep_candidates(centres: np.ndarray, halves: np.ndarray, reach: float) -> i
     return int(len(centres) * spans.mean() * per_cell)
 
 
+def clearances(centres_a: np.ndarray, halves_a: np.ndarray, centres_b: np.ndarray,
+               halves_b: np.ndarray) -> np.ndarray:
+    """Per-axis clearance between boxes a and b (broadcast), negative where they overlap on
+    that axis: the same arithmetic for a pair whichever of its items comes first."""
+    return np.abs(centres_a - centres_b) - (halves_a + halves_b)
+
+
+def overlap_areas(clear: np.ndarray, halves_a: np.ndarray, halves_b: np.ndarray) -> np.ndarray:
+    """Overlap area of boxes a and b from their clearances (a box inside another overlaps by
+    its own size, not by the depth)."""
+    depth = np.minimum(np.clip(-clear, 0.0, None), 2 * np.minimum(halves_a, halves_b))
+    return depth[..., 0] * depth[..., 1]
+
+
 def pair_gaps(clear: np.ndarray) -> np.ndarray:
     """Edge-to-edge gap of pairs from their per-axis clearances (..., 2): the corner distance
     where they are apart on both axes, else the larger clearance (negative: overlapping)."""
@@ -122,9 +136,8 @@ def near_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | N
     groups = rows if group is None else np.asarray(group)
     a, b = candidate_pairs(centres, halves, rows, groups, reach)
     i, j = np.minimum(a, b), np.maximum(a, b)
-    clear = np.abs(centres[i] - centres[j]) - (halves[i] + halves[j])
-    depth = np.minimum(np.clip(-clear, 0.0, None), 2 * np.minimum(halves[i], halves[j]))
-    overlap = depth[:, 0] * depth[:, 1]
+    clear = clearances(centres[i], halves[i], centres[j], halves[j])
+    overlap = overlap_areas(clear, halves[i], halves[j])
     overlapping = overlap > 0
     listed = np.lexsort((j[overlapping], i[overlapping]))[:PAIRS_LISTED]
     hits = [(int(first), int(second)) for first, second
@@ -143,9 +156,8 @@ def near_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | N
         if not len(others):
             nearest[block] = np.inf
             continue
-        clear_far = (np.abs(centres[block][:, None, :] - centres[others][None, :, :])
-                     - (halves[block][:, None, :] + halves[others][None, :, :]))
-        gaps_far = pair_gaps(clear_far)
+        gaps_far = pair_gaps(clearances(centres[block][:, None, :], halves[block][:, None, :],
+                                        centres[others][None, :, :], halves[others][None, :, :]))
         gaps_far[groups[block][:, None] == groups[others][None, :]] = np.inf
         nearest[block] = gaps_far.min(axis=1)
     return float(overlap.sum()), hits, int(np.count_nonzero(overlapping)), nearest
@@ -166,11 +178,9 @@ def all_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | No
         stop = min(start + PAIR_BLOCK, n)
         block_c, block_h = centres[start:stop], halves[start:stop]
         later_c, later_h = centres[start:], halves[start:]
-        clear = (np.abs(block_c[:, None, :] - later_c[None, :, :])
-                 - (block_h[:, None, :] + later_h[None, :, :]))
-        depth = np.minimum(np.clip(-clear, 0.0, None),
-                           2 * np.minimum(block_h[:, None, :], later_h[None, :, :]))
-        overlap = depth[..., 0] * depth[..., 1]
+        clear = clearances(block_c[:, None, :], block_h[:, None, :], later_c[None, :, :],
+                           later_h[None, :, :])
+        overlap = overlap_areas(clear, block_h[:, None, :], later_h[None, :, :])
         own = np.arange(stop - start)[:, None]
         columns = np.arange(n - start)[None, :]
         upper = columns > own
