@@ -155,46 +155,16 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
+    from floatpage.cli.page_report import page_report
     from floatpage.model.layout import engine_for_page
-    from floatpage.physics.alignment import measure_alignment
-    from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
 
     print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
-    gutter = project.physics.gutter_mm
     for page in project.pages:
-        engine = engine_for_page(page, project.physics)
-        quality = engine.quality()
-        print(f"page {page.id}: {quality.summary()}")
-        bodies = engine.bodies
-        print(f"  {measure_alignment(bodies.centres, bodies.sizes, bodies.decorative).summary()}")
-        issues += (quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
-                   + len(quality.outside_region))
-        for k in quality.outside_region:
-            item = page.items[k]
-            print(f'  item "{item.id}" is not wholly inside its region "{item.region}": run '
-                  "`floatpage settle`, or make the region larger")
-        if quality.in_margin:
-            ids = [page.items[k].id for k in quality.in_margin]
-            shown = ", ".join(ids[:5]) + (f" and {len(ids) - 5} more" if len(ids) > 5 else "")
-            print(f"  {len(ids)} item(s) inside the {quality.margin_mm:.1f} mm print-safe margin: "
-                  f"{shown}; where a page is too full the gutter gives way first, then the "
-                  "margin: run `floatpage settle`, make items smaller, mark items that may "
-                  "touch the edge `bleed = true`, or lower margin_mm in [physics]")
-        if quality.overlap_count or quality.min_gap_mm >= gutter - GAP_TOLERANCE_MM:
-            continue
-        need = gutter_need(page.width_mm, page.height_mm, engine.bodies.sizes, gutter,
-                           decorative=engine.bodies.decorative)
-        if need > GUTTER_FITS_SHARE:
-            print(f"  note: the {gutter:g} mm gutter cannot fit on page {page.id}: its items, "
-                  f"each grown by the gutter, need {need:.0%} of the page (more than the "
-                  f"{GUTTER_FITS_SHARE:.0%} rectangles pack to), so settle keeps the widest gap "
-                  f"that fits; make items smaller, move some to another page or lower "
-                  f"gutter_mm to keep it")
-        else:
-            print(f"  the {gutter:g} mm gutter fits on page {page.id} (its items grown by it "
-                  f"need {need:.0%} of the page) but is not kept: run `floatpage settle`")
-            issues += 1
+        lines, problems = page_report(page, engine_for_page(page, project.physics),
+                                      project.physics.gutter_mm)
+        print("\n".join(lines))
+        issues += problems
     from floatpage.typeset import text_fit_warnings
     from floatpage.typeset.render import picture_warnings
 

@@ -93,3 +93,26 @@ def test_new_blank_then_the_whole_chain(tmp_path):
     again = run("new", "blank", str(path))
     assert again.returncode == 1, "new refuses to overwrite"
     assert run("check", "--strict", str(path)).returncode == 0
+
+
+def test_check_says_why_no_settle_can_fix_a_page(tmp_path):
+    """Two hard anchors pinned onto each other and a pair too large to part: `check` names the
+    items, the numbers and what to change, instead of sending the user back to `settle`."""
+    from floatpage.model.document import PointAnchor
+
+    items = [BlockItem(id="logo", x=60.0, y=60.0, w=40.0, h=30.0,
+                       anchor=PointAnchor(x=60.0, y=60.0, hard=True)),
+             BlockItem(id="badge", x=80.0, y=70.0, w=30.0, h=30.0,
+                       anchor=PointAnchor(x=80.0, y=70.0, hard=True)),
+             BlockItem(id="tall", x=170.0, y=169.0, w=70.0, h=256.0),
+             BlockItem(id="wide", x=105.0, y=200.0, w=199.5, h=75.0)]
+    path = tmp_path / "stuck.toml"
+    save_project(Project(title="Stuck", pages=[Page(id="front", items=items)]), path)
+    assert run("settle", str(path)).returncode == 0
+    result = run("check", str(path))
+    assert result.returncode == 0, result.stderr
+    out = result.stdout
+    assert 'items "logo" and "badge" cannot move' in out and "overlap by 15.0 mm" in out
+    assert 'items "tall" and "wide" cannot both fit' in out
+    assert "they overlap wherever they go on this page" in out
+    assert "overlapping:" not in out, "explained overlaps are not sent back to settle"

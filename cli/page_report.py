@@ -1,0 +1,142 @@
+"""What `floatpage check` says of one page: its measures, and for each guarantee it misses
+(zero overlap, on the page, the print-safe margin, the gutter), why and what to do.
+
+A miss that the items themselves force (physics.page_limits) is named as such, with the items
+and the numbers, so that nobody runs `floatpage settle` again and again on a page no settle
+can fix.  Only a miss nothing explains is sent back to `settle`.
+"""
+
+from __future__ import annotations
+
+from floatpage.model.errors import printable
+from floatpage.physics.alignment import measure_alignment
+from floatpage.physics.page_limits import (
+    Crossing, Limit, PinnedClash, PinnedOutside, TooLarge, page_limits,
+)
+from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
+
+SHOWN = 5  # reasons of one kind spelled out; the rest are counted
+AXIS_WORDS = (("wide", "across"), ("tall", "down"))
+
+
+def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
+    """The lines `check` prints for ``page`` (settled or not, as it lies in the file) and the
+    number of layout problems it counts for ``--strict``."""
+    quality = engine.quality()
+    bodies = engine.bodies
+    lines = [f"page {page.id}: {quality.summary()}",
+             f"  {measure_alignment(bodies.centres, bodies.sizes, bodies.decorative).summary()}"]
+    problems = (quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
+                + len(quality.outside_region))
+    name = _namer(page)
+    for k in quality.outside_region:
+        item = page.items[k]
+        lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
+                     f'"{printable(item.region)}": run `floatpage settle`, or make the region larger')
+    limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
+              if not quality.ok else [])
+    if quality.in_margin:
+        ids = [name(k) for k in quality.in_margin]
+        shown = ", ".join(ids[:SHOWN]) + (f" and {len(ids) - SHOWN} more" if len(ids) > SHOWN else "")
+        lines.append(f"  {len(ids)} item(s) inside the {quality.margin_mm:.1f} mm print-safe "
+                     f"margin: {shown}; where a page is too full the gutter gives way first, "
+                     "then the margin: run `floatpage settle`, make items smaller, mark items "
+                     "that may touch the edge `bleed = true`, or lower margin_mm in [physics]")
+    lines += _explain(limits, name, gutter_mm, engine.margin_mm)
+    forced = any(isinstance(limit, (PinnedClash, Crossing)) and limit_gap(limit) < 0
+                 for limit in limits)
+    if quality.overlap_count and not forced:
+        pairs = ", ".join(f"{name(a)} and {name(b)}"
+                          for a, b in quality.overlapping_pairs[:SHOWN])
+        more = (f" and {quality.overlap_count - SHOWN} more"
+                if quality.overlap_count > SHOWN else "")
+        lines.append(f"  overlapping: {pairs}{more}; run `floatpage settle`; if they still "
+                     "overlap after it, hard anchors or anchored groups box them in: move an "
+                     "anchor, make items smaller, or move some to another page")
+    short_gap = (not quality.overlap_count
+                 and quality.min_gap_mm < gutter_mm - GAP_TOLERANCE_MM)
+    if short_gap and not limits:
+        need = gutter_need(page.width_mm, page.height_mm, bodies.sizes, gutter_mm,
+                           decorative=bodies.decorative)
+        if need > GUTTER_FITS_SHARE:
+            lines.append(
+                f"  note: the {gutter_mm:g} mm gutter cannot fit on page {page.id}: its items, "
+                f"each grown by the gutter, need {need:.0%} of the page (more than the "
+                f"{GUTTER_FITS_SHARE:.0%} rectangles pack to), so settle keeps the widest gap "
+                f"that fits; make items smaller, move some to another page or lower "
+                f"gutter_mm to keep it")
+        else:
+            lines.append(
+                f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
+                f"need {need:.0%} of the page) but is not kept: run `floatpage settle`")
+            problems += 1
+    return lines, problems
+
+
+def limit_gap(limit: Limit) -> float:
+    return limit.gap_mm if isinstance(limit, PinnedClash) else limit.widest_gap_mm
+
+
+def _namer(page):
+    items = page.items
+
+    def name(row: int) -> str:
+        return f'"{printable(items[row].id)}"'
+    return name
+
+
+def _explain(limits: list[Limit], name, gutter_mm: float, margin_mm: float) -> list[str]:
+    lines: list[str] = []
+    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing):
+        mine = [limit for limit in limits if isinstance(limit, kind)]
+        for limit in mine[:SHOWN]:
+            lines.append("  " + _sentence(limit, name, gutter_mm, margin_mm))
+        if len(mine) > SHOWN:
+            lines.append(f"  … and {len(mine) - SHOWN} more like it")
+    return lines
+
+
+def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
+    if isinstance(limit, PinnedClash):
+        a, b = (name(row) for row in limit.rows)
+        where = (f"overlap by {-limit.gap_mm:.1f} mm" if limit.gap_mm < 0
+                 else f"stand {limit.gap_mm:.1f} mm apart, less than the {gutter_mm:g} mm gutter")
+        return (f"items {a} and {b} cannot move (hard anchors, or anchored to one) and {where}: "
+                "no settle can part them; move one of the anchors, or make one soft "
+                "(hard = false)")
+    if isinstance(limit, PinnedOutside):
+        where = (f"{limit.past_edge_mm:.1f} mm past the page's edge" if limit.past_edge_mm > 0
+                 else f"{limit.into_margin_mm:.1f} mm into the {margin_mm:.1f} mm print-safe margin")
+        if limit.decoration:
+            return (f"decoration {name(limit.row)} stands {where}; decorations are never "
+                    "moved: move it onto the page, or make it smaller")
+        return (f"item {name(limit.row)} is pinned (a hard anchor, or anchored to one) "
+                f"{where}: move its anchor inwards, or mark it `bleed = true` if it may reach "
+                "the edge")
+    if isinstance(limit, TooLarge):
+        size_word, _ = AXIS_WORDS[limit.axis]
+        who = f"item {name(limit.rows[0])}"
+        if len(limit.rows) > 1:
+            others = ", ".join(name(row) for row in limit.rows[1:1 + SHOWN])
+            more = f" and {len(limit.rows) - 1 - SHOWN} more" if len(limit.rows) > 1 + SHOWN else ""
+            who += f" with the items anchored to it ({others}{more}) is"
+        else:
+            who += " is"
+        fate = ("it cannot stay on the page" if limit.extent_mm > limit.page_mm + 0.01
+                else "it cannot keep the print-safe margin")
+        return (f"{who} {limit.extent_mm:.1f} mm {size_word}, but its room inside the margins "
+                f"is {limit.room_mm:.1f} mm (the page: {limit.page_mm:g} mm): {fate}; make it "
+                "smaller" + (", or bring its followers closer (their dx and dy)"
+                             if len(limit.rows) > 1 else ""))
+    a, b = (name(row) for row in limit.rows)
+    (side, above), (room_w, room_h) = limit.needs_mm, limit.room_mm
+    if not limit.fits_page:
+        fate = "they overlap wherever they go on this page"
+    elif limit.widest_gap_mm < 0:
+        fate = "they can be parted only by giving up the margin"
+    else:
+        fate = f"the widest gap they can keep is {limit.widest_gap_mm:.1f} mm"
+    return (f"items {a} and {b} cannot both fit with the {gutter_mm:g} mm gutter: side by side "
+            f"they need {side:.1f} mm of the {room_w:.1f} mm inside the margins, one above the "
+            f"other {above:.1f} mm of {room_h:.1f} mm; {fate}; make one smaller, or move it to "
+            "another page")

@@ -1,0 +1,195 @@
+"""What a page's own items rule out, whatever the physics does: the reasons `check` gives when
+a settled page misses one of its guarantees (zero overlap, inside the page, the print-safe
+margin, the gutter).
+
+The guarantees give way in a fixed order on a page too full for all of them (the gutter, then
+the margin, then overlap; finalize.remove_overlaps), and a page can be too full in ways its
+area does not show.  Two items each wider and taller than half the room cannot be parted at
+all; a group anchored together can be wider than the page; two hard anchors can pin items onto
+each other.  Every reason here is exact for the items it names, so a user told of it knows
+that no settle will help, and what to change instead:
+
+- ``PinnedClash``: two items that cannot move (hard anchors, held, or following one) stand
+  closer than the gutter, or overlap;
+- ``PinnedOutside``: such an item stands past the page's edge or inside the margin, or a
+  decoration (never moved either) past the page's edge;
+- ``TooLarge``: a rigid group (an item and those anchored to it), or a lone item, is larger
+  than the room between its walls on one axis;
+- ``Crossing``: two items that can be parted neither side by side nor one above the other
+  with the gutter between them inside the room.
+
+The area test (physics.quality.gutter_need) stays the reason for a crowd of small items.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Union
+
+import numpy as np
+
+from floatpage.physics.bodies import Bodies
+from floatpage.physics.geometry import group_extents
+
+TOLERANCE_MM = 0.01  # saved positions are rounded to 0.01 mm
+CROSSING_BLOCK = 512  # wide items compared with all others at once: memory O(512 n)
+
+
+@dataclass(frozen=True)
+class PinnedClash:
+    rows: tuple[int, int]
+    gap_mm: float  # edge to edge, negative when they overlap
+
+
+@dataclass(frozen=True)
+class PinnedOutside:
+    row: int
+    past_edge_mm: float  # how far it reaches past the page's edge (0 if inside the page)
+    into_margin_mm: float  # how far it reaches into its margin
+    decoration: bool = False  # a decoration: keeps no margin, but never moves either
+
+
+@dataclass(frozen=True)
+class TooLarge:
+    rows: tuple[int, ...]  # the group's members, its root first
+    axis: int  # 0 across (width), 1 down (height)
+    extent_mm: float
+    room_mm: float  # between its walls (the margins, or its region)
+    page_mm: float
+
+
+@dataclass(frozen=True)
+class Crossing:
+    rows: tuple[int, int]
+    needs_mm: tuple[float, float]  # side by side (widths + gutter), one above the other
+    room_mm: tuple[float, float]  # inside the margins
+    widest_gap_mm: float  # the widest gap the two can keep inside the margins (< 0: overlap)
+    fits_page: bool  # whether they can be parted at all if the margins give way
+
+
+Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing]
+
+
+def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float,
+                gutter_mm: float) -> list[Limit]:
+    """Every reason on this page that no arrangement keeps its guarantees (see the module
+    doc), most binding first within each kind.  Decorations take no part."""
+    roots, offsets = bodies.group_roots()
+    near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
+    pinned = _pinned(bodies, roots)
+    found: list[Limit] = []
+    found += _pinned_clashes(bodies, roots, pinned, gutter_mm)
+    found += _pinned_outside(bodies, pinned, near, far, page_w_mm, page_h_mm)
+    found += _decorations_outside(bodies, page_w_mm, page_h_mm)
+    found += _too_large(bodies, roots, offsets, pinned, near, far, page_w_mm, page_h_mm)
+    found += _crossings(bodies, roots, pinned, near, far, page_w_mm, page_h_mm, gutter_mm)
+    return found
+
+
+def _pinned(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
+    """Rows that no push moves: hard anchors and held items, and everything following one."""
+    fixed = bodies.hard | bodies.held
+    return bodies.active & (fixed | fixed[roots])
+
+
+def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,
+                    gutter_mm: float) -> list[Limit]:
+    rows = np.flatnonzero(pinned)
+    if len(rows) < 2:
+        return []
+    i, j = np.triu_indices(len(rows), 1)
+    a, b = rows[i], rows[j]
+    gaps = (np.abs(bodies.centres[a] - bodies.centres[b])
+            - (bodies.sizes[a] + bodies.sizes[b]) / 2).max(axis=1)
+    close = (gaps < gutter_mm - TOLERANCE_MM) & (roots[a] != roots[b])
+    order = np.argsort(gaps[close], kind="stable")
+    return [PinnedClash((int(x), int(y)), float(g))
+            for x, y, g in zip(a[close][order], b[close][order], gaps[close][order])]
+
+
+def _pinned_outside(bodies: Bodies, pinned: np.ndarray, near: np.ndarray, far: np.ndarray,
+                    page_w_mm: float, page_h_mm: float) -> list[Limit]:
+    extent = np.array([page_w_mm, page_h_mm])
+    low = bodies.centres - bodies.sizes / 2
+    high = bodies.centres + bodies.sizes / 2
+    past = np.maximum(-low, high - extent).max(axis=1).clip(0.0)
+    into = np.maximum(near - low, high - (extent - far)).max(axis=1).clip(0.0)
+    rows = np.flatnonzero(pinned & (into > TOLERANCE_MM))
+    return [PinnedOutside(int(row), float(past[row]), float(into[row])) for row in rows]
+
+
+def _decorations_outside(bodies: Bodies, page_w_mm: float, page_h_mm: float) -> list[Limit]:
+    """Decorations past the page's edge: they keep no margin, but they count as off the page."""
+    extent = np.array([page_w_mm, page_h_mm])
+    low = bodies.centres - bodies.sizes / 2
+    high = bodies.centres + bodies.sizes / 2
+    past = np.maximum(-low, high - extent).max(axis=1)
+    rows = np.flatnonzero(bodies.decorative & (past > TOLERANCE_MM))
+    return [PinnedOutside(int(row), float(past[row]), float(past[row]), True) for row in rows]
+
+
+def _too_large(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray, pinned: np.ndarray,
+               near: np.ndarray, far: np.ndarray, page_w_mm: float, page_h_mm: float
+               ) -> list[Limit]:
+    """Groups (and lone items) that no shift keeps inside their walls on an axis: the walls
+    of every member count, as each keeps its own (a bleed member none, a confined one its
+    region's)."""
+    low, high = group_extents(bodies, roots, offsets)
+    extent = np.array([page_w_mm, page_h_mm])
+    member_low = offsets - bodies.sizes / 2  # each row's edges relative to its root's centre
+    member_high = offsets + bodies.sizes / 2
+    count = bodies.count
+    # The shift of the root's centre each member's walls allow: from lowest to highest.
+    lowest = np.full((count, 2), -np.inf)
+    highest = np.full((count, 2), np.inf)
+    active = bodies.active
+    np.maximum.at(lowest, roots[active], near[active] - member_low[active])
+    np.minimum.at(highest, roots[active], extent - far[active] - member_high[active])
+    found: list[Limit] = []
+    groups = np.flatnonzero(active & (roots == np.arange(count)) & ~pinned)
+    for axis in (0, 1):
+        short = groups[lowest[groups, axis] > highest[groups, axis] + TOLERANCE_MM]
+        for root in short:
+            members = np.flatnonzero(active & (roots == root))
+            members = np.concatenate([[root], members[members != root]])
+            size = float(high[root, axis] - low[root, axis])
+            room = size - float(lowest[root, axis] - highest[root, axis])
+            found.append(TooLarge(tuple(int(m) for m in members), axis, size, room,
+                                  float(extent[axis])))
+    return found
+
+
+def _crossings(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray, near: np.ndarray,
+               far: np.ndarray, page_w_mm: float, page_h_mm: float, gutter_mm: float
+               ) -> list[Limit]:
+    """Pairs of items of different groups that cannot keep the gutter inside the room, at
+    least one of them free (two pinned ones are clashes).  Such a pair holds an item wider
+    than half the room less the gutter, so only those are compared with the rest."""
+    extent = np.array([page_w_mm, page_h_mm])
+    rows = np.flatnonzero(bodies.active)
+    if len(rows) < 2:
+        return []
+    sizes = bodies.sizes[rows]
+    room = extent - near[rows] - far[rows]  # each item's own room, (m, 2)
+    wide = np.flatnonzero(sizes[:, 0] > (room[:, 0] - gutter_mm) / 2)
+    found: list[Limit] = []
+    for start in range(0, len(wide), CROSSING_BLOCK):
+        first = wide[start:start + CROSSING_BLOCK]
+        shared = np.minimum(room[first][:, None, :], room[None, :, :])  # (k, m, 2)
+        needs = sizes[first][:, None, :] + sizes[None, :, :]
+        spare = (shared - needs).max(axis=2)  # the widest gap inside the margins
+        spare_page = (extent - needs).max(axis=2)
+        a, b = np.meshgrid(first, np.arange(len(rows)), indexing="ij")
+        ra, rb = rows[a], rows[b]
+        hit = ((spare < gutter_mm - TOLERANCE_MM) & (ra != rb) & (roots[ra] != roots[rb])
+               & ~(pinned[ra] & pinned[rb])
+               # a pair of two wide items is found from both: keep it once
+               & ~((b < a) & np.isin(b, wide)))
+        for k, m in zip(*np.nonzero(hit)):
+            x, y = int(ra[k, m]), int(rb[k, m])
+            found.append(Crossing((min(x, y), max(x, y)),
+                                  tuple(float(v) + gutter_mm for v in needs[k, m]),
+                                  tuple(float(v) for v in shared[k, m]),
+                                  float(spare[k, m]), bool(spare_page[k, m] >= 0)))
+    found.sort(key=lambda limit: limit.widest_gap_mm)
+    return found

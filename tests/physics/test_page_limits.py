@@ -1,0 +1,83 @@
+"""physics.page_limits: the reasons no arrangement keeps a page's guarantees, each exact for the
+items it names, and each what the settle itself then reaches."""
+
+from __future__ import annotations
+
+import pytest
+
+from floatpage.physics import Engine
+from floatpage.physics.page_limits import (
+    Crossing, PinnedClash, PinnedOutside, TooLarge, page_limits,
+)
+
+
+def limits_of(engine: Engine) -> list:
+    return page_limits(engine.bodies, engine.page_w_mm, engine.page_h_mm, engine.margin_mm,
+                       engine.params.gutter_mm)
+
+
+def test_a_roomy_page_of_free_items_has_no_limits():
+    engine = Engine(210.0, 297.0)
+    for k in range(6):
+        engine.insert(f"i{k}", 30.0 + 25 * k, 100.0, 40.0, 30.0)
+    assert limits_of(engine) == []
+
+
+def test_two_hard_anchors_on_each_other_clash():
+    engine = Engine(148.0, 210.0)
+    engine.insert("a", 70.0, 100.0, 30.0, 20.0)
+    engine.insert("b", 90.0, 100.0, 30.0, 20.0)
+    engine.insert("free", 70.0, 30.0, 20.0, 20.0)
+    engine.anchor_point("a", 70.0, 100.0, hard=True)
+    engine.anchor_point("b", 90.0, 100.0, hard=True)
+    found = limits_of(engine)
+    assert found == [PinnedClash((0, 1), pytest.approx(-10.0))]
+
+
+def test_a_group_wider_than_the_room_is_too_large():
+    engine = Engine(105.0, 148.0)  # A6: a 5 mm margin is scaled down for a small card
+    engine.insert("lead", 40.0, 70.0, 60.0, 20.0)
+    engine.insert("follower", 40.0, 70.0, 40.0, 20.0)
+    engine.anchor_to("follower", "lead", -55.0, 0.0)
+    (limit,) = limits_of(engine)
+    assert isinstance(limit, TooLarge) and limit.rows == (0, 1) and limit.axis == 0
+    assert limit.extent_mm == pytest.approx(30 + 55 + 20)
+    assert limit.room_mm == pytest.approx(105.0 - 2 * engine.margin_mm)
+
+
+def test_two_items_that_cannot_be_parted_cross_and_settle_overlaps_them():
+    engine = Engine(210.0, 297.0)
+    engine.insert("tall", 170.0, 169.0, 70.0, 256.0)
+    engine.insert("wide", 105.0, 37.0, 199.5, 75.0)
+    (limit,) = limits_of(engine)
+    assert isinstance(limit, Crossing) and limit.rows == (0, 1) and not limit.fits_page
+    engine.settle()
+    assert engine.quality().overlap_count == 1
+
+
+def test_the_widest_gap_a_crossing_allows_is_the_gap_settle_keeps():
+    """Two items one gutter too tall to stack inside a 100 mm card's margins: the gutter gives
+    way, to exactly what the room leaves."""
+    engine = Engine(100.0, 100.0)
+    engine.insert("top", 64.0, 25.0, 57.9, 45.14)
+    engine.insert("bottom", 43.0, 74.0, 72.22, 48.17)
+    (limit,) = limits_of(engine)
+    assert isinstance(limit, Crossing) and limit.fits_page
+    room = 100.0 - 2 * engine.margin_mm
+    assert limit.widest_gap_mm == pytest.approx(room - 45.14 - 48.17)
+    engine.settle()
+    quality = engine.quality()
+    assert not quality.overlap_count and not quality.in_margin
+    assert quality.min_gap_mm == pytest.approx(limit.widest_gap_mm, abs=0.05)
+
+
+def test_a_hard_anchor_past_the_edge_and_a_decoration_off_the_page_are_named():
+    engine = Engine(210.0, 297.0)
+    engine.insert("pinned", 10.0, 100.0, 40.0, 30.0)
+    engine.anchor_point("pinned", 10.0, 100.0, hard=True)
+    engine.insert("band", 200.0, 280.0, 60.0, 10.0, decorative=True)
+    engine.insert("free", 100.0, 150.0, 30.0, 30.0)
+    found = limits_of(engine)
+    assert PinnedOutside(0, pytest.approx(10.0), pytest.approx(10.0 + engine.margin_mm)) in found
+    assert PinnedOutside(1, pytest.approx(20.0), pytest.approx(20.0), True) in found
+    assert len(found) == 2
