@@ -68,7 +68,9 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
         else:
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
-                f"need {need:.0%} of the page) but is not kept: run `floatpage settle`")
+                f"need {need:.0%} of the page) but is not kept: run `floatpage settle`; if "
+                f"a settled page still misses it, its anchors or the order its items lie in "
+                f"jam it: move an anchored item or nudge items apart, and settle again")
             problems += 1
     return lines, problems
 

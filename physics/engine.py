@@ -20,13 +20,16 @@ from floatpage.physics.alignment import Alignment, measure_alignment
 from floatpage.physics.bodies import NO_TARGET, Bodies
 from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
-from floatpage.physics.finalize import ROUNDING_MM, remove_overlaps
+from floatpage.physics.finalize import (
+    MAX_ITERATIONS, ROUNDING_MM, STALL_ITERATIONS, project_within, remove_overlaps,
+)
 from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover, lines_up
 from floatpage.physics.guides import snap_range
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
+from floatpage.physics.relocation import MAX_ITEMS as RELOCATE_MAX_ITEMS, relocate_jammed, placed_anew
 from floatpage.physics.snapping import snap_page
 
 BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the clock
@@ -34,6 +37,7 @@ BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the 
 # from the first step (GUIDED_COOLING).  From 0.1 the packed items crept apart for 120 steps
 # on the 5-item page; from 0.2 they are still after 88, as evenly spread (evenness 0.68).
 SECOND_START_HEAT = 0.2
+RELOCATED_RUN_STEPS = 20_000  # the gentle run from items set down anew (_relocate_jammed)
 
 
 @dataclass(frozen=True)
@@ -374,10 +378,51 @@ class Engine:
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
                                self.params.gutter_mm, margin_mm=self.margin_mm,
                                fall_back=fall_back)
+        if not fits and fall_back and self._may_relocate():
+            fits = self._relocate_jammed()
         if fits and align and self.lines_up:  # on a page too full for the gutter, or nearly,
             snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)  # it gives way
         self._bodies.velocities[:] = 0.0
         return fits
+
+    def _may_relocate(self) -> bool:
+        """Whether a page the no-overlap pass left short of the gutter may have items lifted
+        out of the jam (physics.relocation): the fast mode, a page where the gutter fits (each
+        item grown by it, at most GUTTER_FITS_COVER of the room), few enough items."""
+        count = int(self._bodies.active.sum())
+        return (self.params.mode == "fast" and 2 <= count <= RELOCATE_MAX_ITEMS
+                and self._grown_cover() <= GUTTER_FITS_COVER)
+
+    def _relocate_jammed(self) -> bool:
+        """physics.relocation from the widest arrangement the pass reached; back to that
+        arrangement if no move lets the pass keep the gutter."""
+        bodies = self._bodies
+        widest = bodies.centres.copy()
+
+        def project() -> bool:  # as patient as the pass's own first attempt
+            return project_within(bodies, self.page_w_mm, self.page_h_mm, self.params.gutter_mm,
+                                  MAX_ITERATIONS, self.margin_mm, fall_back=False,
+                                  stall=STALL_ITERATIONS)
+        if relocate_jammed(bodies, self.page_w_mm, self.page_h_mm, self.params.gutter_mm,
+                           self.margin_mm, project):
+            return True
+        placed = placed_anew(bodies, self.page_w_mm, self.page_h_mm, self.params.gutter_mm,
+                             self.margin_mm)
+        if placed is not None:
+            # As from the packed second start: a gentle run spreads the items from where they
+            # were set down; if it jams them again, they stay where they were set down.
+            bodies.centres[:] = placed
+            bodies.velocities[:] = 0.0
+            self.reheat(SECOND_START_HEAT)
+            self._spread_out = True
+            self._run_until_settled(RELOCATED_RUN_STEPS)
+            if project():
+                return True
+            bodies.centres[:] = placed
+            if project():
+                return True
+        bodies.centres[:] = widest
+        return False
 
     @property
     def lines_up(self) -> bool:

@@ -333,13 +333,17 @@ def cannot_fit(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance: fl
 
 def project_within(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                    max_iterations: int, margin_mm: float, fall_back: bool = True,
-                   stall: int = STALL_ITERATIONS) -> bool:
+                   stall: int | None = None) -> bool:
+    """The projection at the gutter within the margins; with ``fall_back``, the search for the
+    widest gap that fits if it misses.  ``stall``: rounds without gain before a run gives up
+    (STALL_ITERATIONS, or FIRST_ATTEMPT_STALL without ``fall_back``, unless given)."""
     projection = _Projection(bodies, page_w_mm, page_h_mm, gutter_mm, margin_mm)
     projection.clamp()
     if len(projection.rows_active) < 2 or len(projection.free_rows) == 0:
         return projection.violations(gutter_mm + ROUNDING_MM) == 0
     hopeless = cannot_fit(bodies, page_w_mm, page_h_mm, gutter_mm + ROUNDING_MM, margin_mm)
-    stall = stall if fall_back else FIRST_ATTEMPT_STALL
+    if stall is None:
+        stall = STALL_ITERATIONS if fall_back else FIRST_ATTEMPT_STALL
     if not hopeless and projection.run(gutter_mm + ROUNDING_MM, max_iterations,
                                        aim=gutter_mm + AIM_BEYOND_MM, stall=stall):
         return True
