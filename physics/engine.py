@@ -27,6 +27,7 @@ from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover, lines_up
 from floatpage.physics.guides import snap_range
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
+from floatpage.physics.page_limits import page_limits
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
 from floatpage.physics.relocation import MAX_ITEMS as RELOCATE_MAX_ITEMS, relocate_jammed, placed_anew
@@ -391,7 +392,15 @@ class Engine:
         item grown by it, at most GUTTER_FITS_COVER of the room), few enough items."""
         count = int(self._bodies.active.sum())
         return (self.params.mode == "fast" and 2 <= count <= RELOCATE_MAX_ITEMS
-                and self._grown_cover() <= GUTTER_FITS_COVER)
+                and self._grown_cover() <= GUTTER_FITS_COVER and not self._forced_short())
+
+    def _forced_short(self) -> bool:
+        """Whether the items themselves rule the gutter out (physics.page_limits: pinned items
+        on each other, a pair that cannot be parted, a group too large for its room); no move
+        helps there, and each try was seconds of a settle."""
+        return any(not getattr(limit, "decoration", False) for limit in page_limits(
+            self._bodies, self.page_w_mm, self.page_h_mm, self.margin_mm,
+            self.params.gutter_mm))
 
     def _relocate_jammed(self) -> bool:
         """physics.relocation from the widest arrangement the pass reached; back to that

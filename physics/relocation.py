@@ -17,6 +17,11 @@ near).  A soft-anchored item goes to the place nearest its anchor.  Where no suc
 room for it, it goes where it crowds the others least, if less than where it is: the pushes
 then part a few items where there is room to part them.  After each move the projection runs
 again.  Items in a group, held or anchored hard stay where they are.
+
+Where a few such moves do not free the page (the room it needs is spread in slivers between
+items), every free item is set down anew (``placed_anew``), the largest first, each in the
+free place nearest where it lay, around the items that stay: the gutter holds by
+construction, and Engine then lets a gentle run spread the items from there.
 """
 
 from __future__ import annotations
@@ -29,6 +34,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.finalize import ROUNDING_MM, pair_clearances
 
 MAX_ITEMS = 150  # the search is O(n^3) in NumPy: 0.1 s a move at 150 items
+PLACE_MAX_ITEMS = 60  # setting every item down anew is n searches: 0.3 s at 60 items
 MAX_MOVES = 6  # items lifted out before the pass gives up and keeps the widest gap
 MOVES_PER_ITEM = 2  # the pushes after a move may jam the same item again, once
 TOLERANCE_MM = 1e-9
@@ -81,6 +87,8 @@ def placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: f
     down before it.  The gutter holds by construction, around hard anchors too, where the
     packed second start (physics.packing) knows no obstacles; None if an item finds no room.
     Deterministic: the same page gives the same centres."""
+    if int(bodies.active.sum()) > PLACE_MAX_ITEMS:
+        return None
     for into_corner in (False, True):
         centres = _placed_anew(bodies, page_w_mm, page_h_mm, gutter_mm, margin_mm, into_corner)
         if centres is not None:

@@ -14,7 +14,7 @@ from floatpage.model import load_project, save_project
 from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics import Engine
 from floatpage.physics.finalize import pair_clearances
-from floatpage.physics.relocation import room_for
+from floatpage.physics.relocation import crowding, room_for
 
 JAMS = Path(__file__).parent / "jams"
 
@@ -56,10 +56,16 @@ def test_room_for_finds_the_nearest_place_that_keeps_the_clearance():
     assert spot[0] == pytest.approx(48.0) and spot[1] == pytest.approx(88.0)
 
 
-def test_room_for_says_none_when_no_place_has_room():
+def test_without_room_an_item_goes_where_it_crowds_the_others_least():
     engine = Engine(100.0, 100.0)
     engine.insert("wall", 50.0, 50.0, 90.0, 90.0)
     engine.insert("lost", 50.0, 50.0, 20.0, 20.0)
     bodies = engine.bodies
     halves = bodies.sizes[1] / 2
-    assert room_for(bodies, 1, 3.0, halves + 2.0, np.array([100.0, 100.0]) - halves - 2.0) is None
+    low, high = halves + 2.0, np.array([100.0, 100.0]) - halves - 2.0
+    assert room_for(bodies, 1, 3.0, low, high, clear_only=True) is None
+    spot = room_for(bodies, 1, 3.0, low, high)
+    # a corner: the grown item covers the wall by the least there
+    assert np.abs(spot - 50.0) == pytest.approx([38.0, 38.0])
+    assert crowding(spot[None], bodies.centres[:1], (bodies.sizes[:1] + 20.0) / 2 + 3.0)[0] \
+        < crowding(np.array([[50.0, 50.0]]), bodies.centres[:1], (bodies.sizes[:1] + 20.0) / 2 + 3.0)[0]
