@@ -57,8 +57,8 @@ def random_project(seed: int, kind: str) -> Project:
             anchor = PointAnchor(x=float(rng.uniform(0, page_w)), y=float(rng.uniform(0, page_h)),
                                  gamma=float(rng.uniform(0.1, 1)))
         elif draw < 0.12:
-            anchor = PointAnchor(x=_inside(rng, widths[k], page_w), y=_inside(rng, heights[k], page_h),
-                                 hard=True)
+            anchor = PointAnchor(x=_inside(rng, widths[k], page_w),
+                                 y=_inside(rng, heights[k], page_h), hard=True)
         elif draw < 0.2 and k > 0:
             target = int(rng.integers(0, k))
             side = float(rng.choice([-1, 1]))

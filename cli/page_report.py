@@ -32,12 +32,14 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     for k in quality.outside_region:
         item = page.items[k]
         lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
-                     f'"{printable(item.region)}": run `floatpage settle`, or make the region larger')
+                     f'"{printable(item.region)}": run `floatpage settle`, or make the region '
+                     "larger")
     limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
               if not quality.ok else [])
     if quality.in_margin:
         ids = [name(k) for k in quality.in_margin]
-        shown = ", ".join(ids[:SHOWN]) + (f" and {len(ids) - SHOWN} more" if len(ids) > SHOWN else "")
+        more = f" and {len(ids) - SHOWN} more" if len(ids) > SHOWN else ""
+        shown = ", ".join(ids[:SHOWN]) + more
         lines.append(f"  {len(ids)} item(s) inside the {quality.margin_mm:.1f} mm print-safe "
                      f"margin: {shown}; where a page is too full the gutter gives way first, "
                      "then the margin: run `floatpage settle`, make items smaller, mark items "
@@ -108,7 +110,8 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
                 "(hard = false)")
     if isinstance(limit, PinnedOutside):
         where = (f"{limit.past_edge_mm:.1f} mm past the page's edge" if limit.past_edge_mm > 0
-                 else f"{limit.into_margin_mm:.1f} mm into the {margin_mm:.1f} mm print-safe margin")
+                 else f"{limit.into_margin_mm:.1f} mm into the {margin_mm:.1f} mm print-safe "
+                 "margin")
         if limit.decoration:
             return (f"decoration {name(limit.row)} stands {where}; decorations are never "
                     "moved: move it onto the page, or make it smaller")

@@ -30,7 +30,9 @@ from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.page_limits import page_limits
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
-from floatpage.physics.relocation import MAX_ITEMS as RELOCATE_MAX_ITEMS, relocate_jammed, placed_anew
+from floatpage.physics.relocation import (
+    MAX_ITEMS as RELOCATE_MAX_ITEMS, placed_anew, relocate_jammed,
+)
 from floatpage.physics.snapping import snap_page
 
 BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the clock

@@ -67,5 +67,6 @@ def test_without_room_an_item_goes_where_it_crowds_the_others_least():
     spot = room_for(bodies, 1, 3.0, low, high)
     # a corner: the grown item covers the wall by the least there
     assert np.abs(spot - 50.0) == pytest.approx([38.0, 38.0])
-    assert crowding(spot[None], bodies.centres[:1], (bodies.sizes[:1] + 20.0) / 2 + 3.0)[0] \
-        < crowding(np.array([[50.0, 50.0]]), bodies.centres[:1], (bodies.sizes[:1] + 20.0) / 2 + 3.0)[0]
+    reach = (bodies.sizes[:1] + 20.0) / 2 + 3.0
+    assert crowding(spot[None], bodies.centres[:1], reach)[0] \
+        < crowding(np.array([[50.0, 50.0]]), bodies.centres[:1], reach)[0]
