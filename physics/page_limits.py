@@ -29,10 +29,15 @@ from typing import Union
 import numpy as np
 
 from floatpage.physics.bodies import Bodies
+from floatpage.physics.fast_forces import candidate_pairs
+from floatpage.physics.finalize import pair_clearances
 from floatpage.physics.geometry import group_extents
+from floatpage.physics.quality import sweep_candidates
 
 TOLERANCE_MM = 0.01  # saved positions are rounded to 0.01 mm
-CROSSING_BLOCK = 512  # wide items compared with all others at once: memory O(512 n)
+CROSSING_BLOCK = 512  # rows compared with all others at once: memory O(512 n)
+LISTED = 1_000  # reasons of one kind kept: enough to name, bounded on a hostile file
+SWEEP_BUDGET = 10_000_000  # neighbour-search candidates (about 300 MB) before blocks instead
 
 
 @dataclass(frozen=True)
@@ -94,17 +99,38 @@ def _pinned(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
 
 def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,
                     gutter_mm: float) -> list[Limit]:
+    """Pairs of pinned items of different groups closer than the gutter, closest first, at
+    most ``LISTED``; compared a block of rows at a time, so that a file of thousands of
+    pinned items is measured in bounded memory."""
     rows = np.flatnonzero(pinned)
+    centres, halves = bodies.centres[rows], bodies.sizes[rows] / 2
     if len(rows) < 2:
         return []
-    i, j = np.triu_indices(len(rows), 1)
-    a, b = rows[i], rows[j]
-    gaps = (np.abs(bodies.centres[a] - bodies.centres[b])
-            - (bodies.sizes[a] + bodies.sizes[b]) / 2).max(axis=1)
-    close = (gaps < gutter_mm - TOLERANCE_MM) & (roots[a] != roots[b])
-    order = np.argsort(gaps[close], kind="stable")
-    return [PinnedClash((int(x), int(y)), float(g))
-            for x, y, g in zip(a[close][order], b[close][order], gaps[close][order])]
+    if sweep_candidates(centres, halves, gutter_mm) <= SWEEP_BUDGET:
+        # the physics' neighbour search: on a page of thousands of pinned items, a few
+        # milliseconds where comparing every pair took 20 s
+        i, j = candidate_pairs(bodies.centres, bodies.sizes / 2, rows, roots, gutter_mm)
+        gaps = pair_clearances(bodies.centres, bodies.sizes / 2, i, j)
+        close = gaps < gutter_mm - TOLERANCE_MM
+        order = np.lexsort((j[close], i[close], gaps[close]))[:LISTED]
+        return [PinnedClash((int(a), int(b)), float(g)) for a, b, g in
+                zip(i[close][order], j[close][order], gaps[close][order])]
+    found: list[tuple[float, int, int]] = []
+    for start in range(0, len(rows), CROSSING_BLOCK):  # a pile: a block of rows at a time
+        block = np.arange(start, min(start + CROSSING_BLOCK, len(rows)))
+        gaps = (np.abs(centres[block][:, None, :] - centres[None, :, :])
+                - halves[block][:, None, :] - halves[None, :, :]).max(axis=2)
+        later = np.arange(len(rows))[None, :] > block[:, None]
+        close = ((gaps < gutter_mm - TOLERANCE_MM) & later
+                 & (roots[rows][block][:, None] != roots[rows][None, :]))
+        a, b = np.nonzero(close)
+        values = gaps[a, b]
+        if len(values) > LISTED:  # a pile: keep the closest, not millions of tuples
+            keep = np.argpartition(values, LISTED)[:LISTED]
+            a, b, values = a[keep], b[keep], values[keep]
+        found = sorted(found + [(float(g), int(rows[block[x]]), int(rows[y]))
+                                for g, x, y in zip(values, a, b)])[:LISTED]
+    return [PinnedClash((a, b), gap) for gap, a, b in sorted(found)[:LISTED]]
 
 
 def _pinned_outside(bodies: Bodies, pinned: np.ndarray, near: np.ndarray, far: np.ndarray,
