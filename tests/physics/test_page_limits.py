@@ -3,6 +3,7 @@ items it names, and each what the settle itself then reaches."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from floatpage.physics import Engine
@@ -81,3 +82,27 @@ def test_a_hard_anchor_past_the_edge_and_a_decoration_off_the_page_are_named():
     assert PinnedOutside(0, pytest.approx(10.0), pytest.approx(10.0 + engine.margin_mm)) in found
     assert PinnedOutside(1, pytest.approx(20.0), pytest.approx(20.0), True) in found
     assert len(found) == 2
+
+
+def test_pinned_pairs_are_the_same_found_by_the_neighbour_search_or_block_by_block(monkeypatch):
+    """A pile of pinned items is compared block by block (the neighbour search would make
+    every pair a candidate); both ways list the same closest pairs, at most LISTED."""
+    import floatpage.physics.page_limits as limits
+
+    rng = np.random.default_rng(3)
+    engine = Engine(210.0, 297.0)
+    spots = rng.uniform(60.0, 90.0, (300, 2))
+    engine.insert_all([f"p{k}" for k in range(300)],
+                      [(float(x), float(y), 6.0, 4.0) for x, y in spots], [False] * 300,
+                      [False] * 300)
+    for k, (x, y) in enumerate(spots):
+        engine.anchor_point(f"p{k}", float(x), float(y), hard=True)
+    searched = [limit for limit in limits_of(engine) if isinstance(limit, PinnedClash)]
+    monkeypatch.setattr(limits, "SWEEP_BUDGET", 0)
+    monkeypatch.setattr(limits, "CROSSING_BLOCK", 64)
+    blocked = [limit for limit in limits_of(engine) if isinstance(limit, PinnedClash)]
+    assert len(searched) == limits.LISTED
+    assert [limit.gap_mm for limit in blocked] == [limit.gap_mm for limit in searched]
+    cut = searched[-1].gap_mm  # pairs tied at the cut may be listed either way
+    assert ({limit.rows for limit in blocked if limit.gap_mm < cut}
+            == {limit.rows for limit in searched if limit.gap_mm < cut})
