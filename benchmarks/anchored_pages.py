@@ -59,10 +59,12 @@ def random_project(seed: int, kind: str) -> Project:
         elif draw < 0.12:
             anchor = PointAnchor(x=_inside(rng, widths[k], page_w),
                                  y=_inside(rng, heights[k], page_h), hard=True)
-        elif draw < 0.2 and k > 0:
-            target = int(rng.integers(0, k))
-            side = float(rng.choice([-1, 1]))
-            anchor = ItemAnchor(to=f"b{target}", dx=side * (widths[k] / 2 + widths[target] / 2 + 4))
+        elif draw < 0.2:
+            if k > 0:  # the first item has nothing to follow, and stays free
+                target = int(rng.integers(0, k))
+                side = float(rng.choice([-1, 1]))
+                anchor = ItemAnchor(to=f"b{target}",
+                                    dx=side * (widths[k] / 2 + widths[target] / 2 + 4))
         elif draw < 0.23:
             decorative = True
         items.append(BlockItem(id=f"b{k}", x=float(x), y=float(y), w=round(float(widths[k]), 2),
