@@ -11,7 +11,7 @@ from __future__ import annotations
 from floatpage.model.errors import printable
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
-    Crossing, Limit, PinnedClash, PinnedOutside, TooLarge, page_limits,
+    Crossing, Limit, PinnedClash, PinnedOutside, TooLarge, binding, page_limits,
 )
 from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
 
@@ -57,7 +57,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                      "anchor, make items smaller, or move some to another page")
     short_gap = (not quality.overlap_count
                  and quality.min_gap_mm < gutter_mm - GAP_TOLERANCE_MM)
-    if short_gap and not limits:
+    if short_gap and not binding(limits):
         need = gutter_need(page.width_mm, page.height_mm, bodies.sizes, gutter_mm,
                            decorative=bodies.decorative)
         if need > GUTTER_FITS_SHARE:

@@ -27,7 +27,7 @@ from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover, lines_up
 from floatpage.physics.guides import snap_range
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
-from floatpage.physics.page_limits import page_limits
+from floatpage.physics.page_limits import binding, page_limits
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
 from floatpage.physics.relocation import (
@@ -400,9 +400,8 @@ class Engine:
         """Whether the items themselves rule the gutter out (physics.page_limits: pinned items
         on each other, a pair that cannot be parted, a group too large for its room); no move
         helps there, and each try was seconds of a settle."""
-        return any(not getattr(limit, "decoration", False) for limit in page_limits(
-            self._bodies, self.page_w_mm, self.page_h_mm, self.margin_mm,
-            self.params.gutter_mm))
+        return bool(binding(page_limits(self._bodies, self.page_w_mm, self.page_h_mm,
+                                        self.margin_mm, self.params.gutter_mm)))
 
     def _relocate_jammed(self) -> bool:
         """physics.relocation from the widest arrangement the pass reached; back to that

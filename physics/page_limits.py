@@ -91,6 +91,13 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
     return found
 
 
+def binding(limits: list[Limit]) -> list[Limit]:
+    """The limits that rule out the gutter or zero overlap: all but decorations past the
+    page's edge (they take no part in either)."""
+    return [limit for limit in limits
+            if not (isinstance(limit, PinnedOutside) and limit.decoration)]
+
+
 def _pinned(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
     """Rows that no push moves: hard anchors and held items, and everything following one."""
     fixed = bodies.hard | bodies.held
