@@ -75,6 +75,13 @@ class RestCheck:
         # the page's own guide lines per axis, (edges, centres): guides.page_lines
         self.page_lines = lines or [(np.zeros(0), np.zeros(0))] * 2
         self.active_rows = np.flatnonzero(active)
+        # per axis, whose each guide line is (on_lines): the active rows' low edges, their
+        # high edges and the page's edge lines (-1); their centres and the page's middle (-1)
+        their_roots = roots[self.active_rows]
+        self.line_roots = [(np.concatenate([their_roots, their_roots,
+                                            np.full(len(self.page_lines[axis][0]), -1)]),
+                            np.concatenate([their_roots, np.full(len(self.page_lines[axis][1]), -1)]))
+                           for axis in (0, 1)]
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
@@ -147,21 +154,22 @@ class RestCheck:
         rows = np.concatenate([self.group_rows[g] for g in groups])
         owner = np.repeat(np.arange(len(groups)), sizes)
         others = self.active_rows
-        mine_roots, their_roots = self.roots[rows], self.roots[others]
+        mine_roots = self.roots[rows]
         held = np.zeros((len(groups), len(axes)), dtype=bool)
         for column, axis in enumerate(axes):
+            edge_roots, middle_roots = self.line_roots[axis]
+            other_edge = edge_roots[None, None, :] != mine_roots[:, None, None]
+            other_middle = middle_roots[None, :] != mine_roots[:, None]
             page_edges, page_middles = self.page_lines[axis]
             at, half = centres[:, axis], self.halves[:, axis]
-            edges = np.concatenate([at[others] - half[others], at[others] + half[others],
-                                    page_edges])
-            edge_roots = np.concatenate([their_roots, their_roots, np.full(len(page_edges), -1)])
-            middles = np.concatenate([at[others], page_middles])
-            middle_roots = np.concatenate([their_roots, np.full(len(page_middles), -1)])
+            theirs, spans = at[others], half[others]
+            edges = np.concatenate([theirs - spans, theirs + spans, page_edges])
+            middles = np.concatenate([theirs, page_middles])
             mine = np.column_stack([at[rows] - half[rows], at[rows] + half[rows]])
             on_edge = ((np.abs(mine[:, :, None] - edges[None, None, :]) <= ON_LINE_MM)
-                       & (edge_roots[None, None, :] != mine_roots[:, None, None])).any(axis=(1, 2))
+                       & other_edge).any(axis=(1, 2))
             on_middle = ((np.abs(at[rows][:, None] - middles[None, :]) <= ON_LINE_MM)
-                         & (middle_roots[None, :] != mine_roots[:, None])).any(axis=1)
+                         & other_middle).any(axis=1)
             held[:, column] = np.bincount(owner, on_edge | on_middle, len(groups)) > 0
         return held
 
