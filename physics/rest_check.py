@@ -89,6 +89,8 @@ class RestCheck:
         pair_ids = np.concatenate([np.arange(len(i)), np.arange(len(j))])[order]
         self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
         self.group_rows = group_members(roots, active)
+        self.reach_of: dict[bytes, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        self.before: dict[bytes, tuple[np.ndarray | None, np.ndarray]] = {}
 
     def net(self, rows: np.ndarray, pairs: np.ndarray, centres: np.ndarray) -> np.ndarray:
         """Net acceleration (n, 2), right for ``rows`` (``pairs`` must hold every pair that
@@ -112,29 +114,56 @@ class RestCheck:
         follower's forces to its root; on an axis where the group is on a guide line, less
         the line's hold, before and after the move alike).  ``members`` may be several groups
         lined up, moved as one: each is held on the line by the others."""
-        touching = np.concatenate([self.pairs_of[m] for m in members])
-        touched = np.concatenate([members, self.i[touching], self.j[touching]])
-        groups = sorted_unique(self.roots[touched])
-        groups = groups[self.movable[groups]]
+        groups, rows, pairs = self.reached_by(members)
         if len(groups) == 0:
             return True
-        rows = np.concatenate([self.group_rows[g] for g in groups])
-        pairs = sorted_unique(np.concatenate([self.pairs_of[r] for r in rows]))
         centres = self.bodies.centres
         trial = centres.copy()
         trial[members, axis] += shift
         after_net = self.group_net(rows, pairs, trial, groups)
         if np.abs(after_net).max() <= self.limit + 1e-9:
             return True  # within the limit with no hold at all: which lines hold is moot
-        held_before = held_after = None
+        held_before, before = self.as_it_is(members.tobytes(), groups, rows, pairs)
+        held_after = None
         if self.hold > 0:
             # the move changes no feature across its axis: only ``axis`` is found again
-            held_before = self.on_lines(groups, centres, (0, 1))
             held_after = held_before.copy()
             held_after[:, axis] = self.on_lines(groups, trial, (axis,))[:, 0]
-        before = self.unheld(self.group_net(rows, pairs, centres, groups), held_before)
         after = self.unheld(after_net, held_after)
         return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
+
+    def reached_by(self, members: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The movable groups that the rigid body ``members`` touches (itself among them), their
+        rows and every pair that touches those: fixed by the pairs found at the start, so
+        worked out once per body."""
+        key = members.tobytes()
+        found = self.reach_of.get(key)
+        if found is None:
+            touching = np.concatenate([self.pairs_of[m] for m in members])
+            touched = np.concatenate([members, self.i[touching], self.j[touching]])
+            groups = sorted_unique(self.roots[touched])
+            groups = groups[self.movable[groups]]
+            rows = np.concatenate([self.group_rows[g] for g in groups]) if len(groups) else groups
+            pairs = (sorted_unique(np.concatenate([self.pairs_of[r] for r in rows]))
+                     if len(groups) else groups)
+            found = self.reach_of[key] = (groups, rows, pairs)
+        return found
+
+    def as_it_is(self, key: bytes, groups: np.ndarray, rows: np.ndarray,
+                 pairs: np.ndarray) -> tuple[np.ndarray | None, np.ndarray]:
+        """For the groups a body touches, with the page as it is: whether a line holds each on
+        each axis (None without a hold) and the push the hold leaves.  The same until an item
+        moves (``moved``), so a body whose moves fail one after the other works it out once."""
+        found = self.before.get(key)
+        if found is None:
+            held = self.on_lines(groups, self.bodies.centres, (0, 1)) if self.hold > 0 else None
+            net = self.group_net(rows, pairs, self.bodies.centres, groups)
+            found = self.before[key] = (held, self.unheld(net, held))
+        return found
+
+    def moved(self) -> None:
+        """Items have moved: forget the forces worked out for the page as it was."""
+        self.before.clear()
 
     def unheld(self, acc: np.ndarray, held: np.ndarray | None) -> np.ndarray:
         """Each group's largest push the lines' hold leaves where ``held`` (on a line, per

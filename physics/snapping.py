@@ -54,7 +54,7 @@ ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm 
 MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
 MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
 TOLERANCE_MM = 1e-9
-EDGES = [LOW, HIGH]  # an item's two edges among its features on an axis
+EDGES = slice(LOW, HIGH + 1, HIGH - LOW)  # an item's two edges among its three features
 NO_SHIFTS = np.zeros(0)
 STAY = np.zeros(1)  # the shift that leaves a body where it is, always a candidate
 ESCAPES = np.array([-ESCAPE_MM, ESCAPE_MM])  # from a line's distance to a move out of its reach
@@ -185,7 +185,9 @@ class _Snapper:
         groups moved (their roots), none if nothing moved."""
         alone = self.options([row], axis)
         choices = [alone]
-        if alone.missing:  # a group on no near miss gains nothing from its line's move
+        # a group on no near miss gains nothing from its line's move, and one on no line
+        # has none (line_of would find it alone)
+        if alone.missing and alone.lined_up:
             line = self.line_of(row, axis)
             line_key = (tuple(sorted(line)), axis)
             if len(line) > 1 and line_key not in self.stuck_lines:
@@ -232,7 +234,7 @@ class _Snapper:
         members = (self.members[roots[0]] if len(roots) == 1
                    else np.concatenate([self.members[root] for root in roots]))
         if any(self.too_large[root][axis] for root in roots):
-            return Moves(roots, members, NO_SHIFTS, NO_SHIFTS, 0.0, False)
+            return Moves(roots, members, NO_SHIFTS, NO_SHIFTS, 0.0, False, False)
         key = tuple(sorted(roots))
         known = self.memo.recall(key, axis)
         if known is not None:  # the same groups, perhaps named in another order
@@ -246,7 +248,7 @@ class _Snapper:
         ordered = np.sort(np.concatenate([
             (edges[None, :] - mine[:, EDGES].reshape(-1, 1)).ravel(),
             (middles[None, :] - mine[:, CENTRE, None]).ravel()]))
-        shifts, missing = candidate_shifts(ordered, self.bounds, self.farthest)
+        shifts, missing, lined_up = candidate_shifts(ordered, self.bounds, self.farthest)
         if len(shifts) > MAX_CANDIDATES:  # a crowded page: the nearest lines only
             shifts = np.sort(shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]])
         scores = misses_after(ordered, shifts)
@@ -255,9 +257,9 @@ class _Snapper:
         if len(better):  # best first: fewest misses, then the shortest move
             better = better[np.lexsort((np.abs(shifts[better]), scores[better]))][:MAX_TRIES]
             found = Moves(roots, members, shifts[better], ordered,
-                          now - float(scores[better[0]]), missing)
+                          now - float(scores[better[0]]), missing, lined_up)
         else:  # most calls
-            found = Moves(roots, members, NO_SHIFTS, ordered, 0.0, missing)
+            found = Moves(roots, members, NO_SHIFTS, ordered, 0.0, missing, lined_up)
         return self.memo.keep(key, axis, low, high, found)
 
     def attempt(self, moves: "Moves", axis: int) -> bool:
@@ -274,6 +276,8 @@ class _Snapper:
                 self.bodies.centres[members, axis] += shift
                 self.lines[axis][members] += shift
                 self.memo.moved(axis, before, self.lines[axis][members])
+                if self.rest is not None:
+                    self.rest.moved()
                 return True
         return False
 
@@ -322,6 +326,7 @@ class Moves(NamedTuple):
     distances: np.ndarray  # from their features to the lines of the same kind near them, sorted
     gain: float  # what the best of them would lower the page's score by
     missing: bool  # whether they miss a line now
+    lined_up: bool  # whether they are on a line now (within ALIGNED_MM)
 
 
 def distance_bounds(reach: float, farthest: float) -> tuple[np.ndarray, np.ndarray]:
@@ -335,14 +340,15 @@ def distance_bounds(reach: float, farthest: float) -> tuple[np.ndarray, np.ndarr
 
 
 def candidate_shifts(ordered: np.ndarray, bounds: tuple[np.ndarray, np.ndarray],
-                     farthest: float) -> tuple[np.ndarray, bool]:
+                     farthest: float) -> tuple[np.ndarray, bool, bool]:
     """Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
     within reach, or put it just out of a near miss with one (``ESCAPE_MM``) within
     ``farthest``; sorted, with 0 (staying) among them.  The way out of a near miss may be
     long: two items of nearly the same width cannot line up both edges and centre, and one
     1 mm from the other stays in near misses until it has moved 4-5 mm.  Also whether a
-    feature misses a line now (a distance between ``ALIGNED_MM`` and ``NEAR_MM``).  Each
-    range of distances (``bounds``, from distance_bounds) is a slice of the sorted ones."""
+    feature misses a line now (a distance between ``ALIGNED_MM`` and ``NEAR_MM``), and
+    whether one is on a line (a distance within ``ALIGNED_MM``).  Each range of distances
+    (``bounds``, from distance_bounds) is a slice of the sorted ones."""
     low = np.searchsorted(ordered, bounds[0], "left")
     high = np.searchsorted(ordered, bounds[1], "right")
     near = ordered[high[1]:low[1]]  # |distance| < farthest + ESCAPE_MM
@@ -350,7 +356,8 @@ def candidate_shifts(ordered: np.ndarray, bounds: tuple[np.ndarray, np.ndarray],
     shifts = sorted_unique(np.concatenate([ordered[low[0]:high[0]],  # |distance| <= reach
                                            away[np.abs(away) <= farthest], STAY]))
     missing = low[2] > high[2] or low[3] > high[3]
-    return shifts, bool(missing)
+    lined_up = high[3] > low[2]  # -ALIGNED_MM <= distance <= ALIGNED_MM
+    return shifts, bool(missing), bool(lined_up)
 
 
 def misses_after(ordered: np.ndarray, shifts: np.ndarray) -> np.ndarray:
