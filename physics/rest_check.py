@@ -78,10 +78,10 @@ class RestCheck:
         # per axis, whose each guide line is (on_lines): the active rows' low edges, their
         # high edges and the page's edge lines (-1); their centres and the page's middle (-1)
         their_roots = roots[self.active_rows]
-        self.line_roots = [(np.concatenate([their_roots, their_roots,
-                                            np.full(len(self.page_lines[axis][0]), -1)]),
-                            np.concatenate([their_roots, np.full(len(self.page_lines[axis][1]), -1)]))
-                           for axis in (0, 1)]
+        self.line_roots = [
+            (np.concatenate([their_roots, their_roots, np.full(len(edges), -1)]),
+             np.concatenate([their_roots, np.full(len(middles), -1)]))
+            for edges, middles in self.page_lines]
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
@@ -89,6 +89,7 @@ class RestCheck:
         pair_ids = np.concatenate([np.arange(len(i)), np.arange(len(j))])[order]
         self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
         self.group_rows = group_members(roots, active)
+        self.grouped = bool((roots != np.arange(count)).any())
         self.reach_of: dict[bytes, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
         self.before: dict[bytes, tuple[np.ndarray | None, np.ndarray]] = {}
 
@@ -206,6 +207,8 @@ class RestCheck:
                   groups: np.ndarray) -> np.ndarray:
         """Each group's net acceleration, (len(groups), 2)."""
         per_row = self.net(rows, pairs, centres)[rows]
+        if not self.grouped:  # every group one row: its own
+            return per_row
         summed = np.zeros((self.bodies.count, 2))
         np.add.at(summed, self.roots[rows], per_row)
         return summed[groups]

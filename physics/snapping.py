@@ -144,6 +144,7 @@ class _Snapper:
         # their groups would try the same move of the same line again, to the same end.
         self.stuck_lines: set[tuple[tuple[int, ...], int]] = set()
         self.memo = AxisMemo()  # the lines and scores read off one axis, until a move there
+        self.arounds: dict[tuple[bytes, int], tuple[np.ndarray, ...]] = {}  # see around
 
     def mine(self, row: int, axis: int) -> np.ndarray:
         """The group's features on ``axis`` (low edge, centre, high edge per member)."""
@@ -220,8 +221,9 @@ class _Snapper:
         lined[self.roots[self.active & on]] = True
         lined &= self.is_mover
         lined[row] = False
+        line = [row] + np.flatnonzero(lined).tolist()
         return self.memo.keep(("line", row), axis, float(mine.min()) - ALIGNED_MM,
-                              float(mine.max()) + ALIGNED_MM, [row] + np.flatnonzero(lined).tolist())
+                              float(mine.max()) + ALIGNED_MM, line)
 
     def options(self, roots: list[int], axis: int) -> "Moves":
         """The moves along ``axis`` that would lower the near misses of the groups of
@@ -291,19 +293,16 @@ class _Snapper:
         Only the items a move could bring within the clearance are tested: within it of a
         member across the axis, and within it and the longest move along it (on a 600-item
         page the test against every item was two thirds of the snapping's time)."""
-        centres, halves = self.bodies.centres, self.halves
+        centres = self.bodies.centres
         current = centres[members, axis]
         low = np.minimum(self.lowest[members, axis], current)
         high = np.maximum(self.highest[members, axis], current)
         moved = current[None, :] + shifts[:, None]  # (shifts, members)
         ok = ((moved >= low - TOLERANCE_MM) & (moved <= high + TOLERANCE_MM)).all(axis=1)
-        outside = self.active.copy()  # the body's members are its groups' active rows
-        outside[members] = False
-        others = np.flatnonzero(outside)
+        others, their_across, my_across, reach = self.around(members, axis)
         across = 1 - axis
         gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
-                      - halves[others, across][None, :] - halves[members, across][:, None])
-        reach = halves[others, axis][None, :] + halves[members, axis][:, None]
+                      - their_across - my_across)
         theirs = centres[others, axis][None, :]
         gap_now = np.abs(theirs - current[:, None]) - reach
         near = ((gap_across < self.clearance)
@@ -315,6 +314,23 @@ class _Snapper:
         needed = np.minimum(np.maximum(gap_now, gap_across), self.clearance) - TOLERANCE_MM
         gap_new = np.abs(theirs[None] - moved[:, :, None]) - reach[None]  # (shifts, m, o)
         return ok & (np.maximum(gap_new, gap_across[None]) >= needed[None]).all(axis=(1, 2))
+
+
+    def around(self, members: np.ndarray, axis: int) -> tuple[np.ndarray, ...]:
+        """What fits needs of the rigid body ``members`` moving along ``axis`` that no move
+        changes, worked out once per body: the other active rows, their half sizes across the
+        axis (1, o) and the members' (m, 1), and each pair's half sizes along it summed (m, o)."""
+        key = (members.tobytes(), axis)
+        found = self.arounds.get(key)
+        if found is None:
+            outside = self.active.copy()  # the body's members are its groups' active rows
+            outside[members] = False
+            others = np.flatnonzero(outside)
+            halves, across = self.halves, 1 - axis
+            found = self.arounds[key] = (
+                others, halves[others, across][None, :], halves[members, across][:, None],
+                halves[others, axis][None, :] + halves[members, axis][:, None])
+        return found
 
 
 class Moves(NamedTuple):
