@@ -57,7 +57,7 @@ TOLERANCE_MM = 1e-9
 EDGES = slice(LOW, HIGH + 1, HIGH - LOW)  # an item's two edges among its three features
 NO_SHIFTS = np.zeros(0)
 STAY = np.zeros(1)  # the shift that leaves a body where it is, always a candidate
-ESCAPES = np.array([-ESCAPE_MM, ESCAPE_MM])  # from a line's distance to a move out of its reach
+ESCAPES = np.array([-ESCAPE_MM, ESCAPE_MM])  # a line's distance plus these: just out of reach
 WINDOW_ENDS = np.array([NEAR_MM, -ALIGNED_MM, -NEAR_MM, ALIGNED_MM])  # misses_after's ranges
 
 
@@ -314,7 +314,6 @@ class _Snapper:
         needed = np.minimum(np.maximum(gap_now, gap_across), self.clearance) - TOLERANCE_MM
         gap_new = np.abs(theirs[None] - moved[:, :, None]) - reach[None]  # (shifts, m, o)
         return ok & (np.maximum(gap_new, gap_across[None]) >= needed[None]).all(axis=(1, 2))
-
 
     def around(self, members: np.ndarray, axis: int) -> tuple[np.ndarray, ...]:
         """What fits needs of the rigid body ``members`` moving along ``axis`` that no move
