@@ -22,10 +22,19 @@ from collections import defaultdict
 
 import floatpage.physics.engine as engine_module
 from floatpage.model.layout import settle_project
+from floatpage.physics import Engine, Params
 from floatpage.physics.snapping import snap_page
 
 from alignment import benchmark_scenes, random_scenes, scene_project
-from physics import loaded
+from seeded_scenes import Scene, load
+
+
+def loaded(scene: Scene) -> Engine:
+    """A new engine holding the scene's items where it scattered them (as benchmarks/physics.py
+    loads its scenes)."""
+    engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
+    load(engine, scene)
+    return engine
 
 
 def captured_snaps(only: str) -> list[tuple[str, tuple]]:
