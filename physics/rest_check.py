@@ -75,6 +75,13 @@ class RestCheck:
         # the page's own guide lines per axis, (edges, centres): guides.page_lines
         self.page_lines = lines or [(np.zeros(0), np.zeros(0))] * 2
         self.active_rows = np.flatnonzero(active)
+        # per axis, whose each guide line is (on_lines): the active rows' low edges, their
+        # high edges and the page's edge lines (-1); their centres and the page's middle (-1)
+        their_roots = roots[self.active_rows]
+        self.line_roots = [
+            (np.concatenate([their_roots, their_roots, np.full(len(edges), -1)]),
+             np.concatenate([their_roots, np.full(len(middles), -1)]))
+            for edges, middles in self.page_lines]
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
@@ -82,6 +89,9 @@ class RestCheck:
         pair_ids = np.concatenate([np.arange(len(i)), np.arange(len(j))])[order]
         self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
         self.group_rows = group_members(roots, active)
+        self.grouped = bool((roots != np.arange(count)).any())
+        self.reach_of: dict[bytes, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        self.before: dict[bytes, tuple[np.ndarray | None, np.ndarray]] = {}
 
     def net(self, rows: np.ndarray, pairs: np.ndarray, centres: np.ndarray) -> np.ndarray:
         """Net acceleration (n, 2), right for ``rows`` (``pairs`` must hold every pair that
@@ -105,29 +115,56 @@ class RestCheck:
         follower's forces to its root; on an axis where the group is on a guide line, less
         the line's hold, before and after the move alike).  ``members`` may be several groups
         lined up, moved as one: each is held on the line by the others."""
-        touching = np.concatenate([self.pairs_of[m] for m in members])
-        touched = np.concatenate([members, self.i[touching], self.j[touching]])
-        groups = sorted_unique(self.roots[touched])
-        groups = groups[self.movable[groups]]
+        groups, rows, pairs = self.reached_by(members)
         if len(groups) == 0:
             return True
-        rows = np.concatenate([self.group_rows[g] for g in groups])
-        pairs = sorted_unique(np.concatenate([self.pairs_of[r] for r in rows]))
         centres = self.bodies.centres
         trial = centres.copy()
         trial[members, axis] += shift
         after_net = self.group_net(rows, pairs, trial, groups)
         if np.abs(after_net).max() <= self.limit + 1e-9:
             return True  # within the limit with no hold at all: which lines hold is moot
-        held_before = held_after = None
+        held_before, before = self.as_it_is(members.tobytes(), groups, rows, pairs)
+        held_after = None
         if self.hold > 0:
             # the move changes no feature across its axis: only ``axis`` is found again
-            held_before = self.on_lines(groups, centres, (0, 1))
             held_after = held_before.copy()
             held_after[:, axis] = self.on_lines(groups, trial, (axis,))[:, 0]
-        before = self.unheld(self.group_net(rows, pairs, centres, groups), held_before)
         after = self.unheld(after_net, held_after)
         return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
+
+    def reached_by(self, members: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The movable groups that the rigid body ``members`` touches (itself among them), their
+        rows and every pair that touches those: fixed by the pairs found at the start, so
+        worked out once per body."""
+        key = members.tobytes()
+        found = self.reach_of.get(key)
+        if found is None:
+            touching = np.concatenate([self.pairs_of[m] for m in members])
+            touched = np.concatenate([members, self.i[touching], self.j[touching]])
+            groups = sorted_unique(self.roots[touched])
+            groups = groups[self.movable[groups]]
+            rows = np.concatenate([self.group_rows[g] for g in groups]) if len(groups) else groups
+            pairs = (sorted_unique(np.concatenate([self.pairs_of[r] for r in rows]))
+                     if len(groups) else groups)
+            found = self.reach_of[key] = (groups, rows, pairs)
+        return found
+
+    def as_it_is(self, key: bytes, groups: np.ndarray, rows: np.ndarray,
+                 pairs: np.ndarray) -> tuple[np.ndarray | None, np.ndarray]:
+        """For the groups a body touches, with the page as it is: whether a line holds each on
+        each axis (None without a hold) and the push the hold leaves.  The same until an item
+        moves (``moved``), so a body whose moves fail one after the other works it out once."""
+        found = self.before.get(key)
+        if found is None:
+            held = self.on_lines(groups, self.bodies.centres, (0, 1)) if self.hold > 0 else None
+            net = self.group_net(rows, pairs, self.bodies.centres, groups)
+            found = self.before[key] = (held, self.unheld(net, held))
+        return found
+
+    def moved(self) -> None:
+        """Items have moved: forget the forces worked out for the page as it was."""
+        self.before.clear()
 
     def unheld(self, acc: np.ndarray, held: np.ndarray | None) -> np.ndarray:
         """Each group's largest push the lines' hold leaves where ``held`` (on a line, per
@@ -147,21 +184,22 @@ class RestCheck:
         rows = np.concatenate([self.group_rows[g] for g in groups])
         owner = np.repeat(np.arange(len(groups)), sizes)
         others = self.active_rows
-        mine_roots, their_roots = self.roots[rows], self.roots[others]
+        mine_roots = self.roots[rows]
         held = np.zeros((len(groups), len(axes)), dtype=bool)
         for column, axis in enumerate(axes):
+            edge_roots, middle_roots = self.line_roots[axis]
+            other_edge = edge_roots[None, None, :] != mine_roots[:, None, None]
+            other_middle = middle_roots[None, :] != mine_roots[:, None]
             page_edges, page_middles = self.page_lines[axis]
             at, half = centres[:, axis], self.halves[:, axis]
-            edges = np.concatenate([at[others] - half[others], at[others] + half[others],
-                                    page_edges])
-            edge_roots = np.concatenate([their_roots, their_roots, np.full(len(page_edges), -1)])
-            middles = np.concatenate([at[others], page_middles])
-            middle_roots = np.concatenate([their_roots, np.full(len(page_middles), -1)])
+            theirs, spans = at[others], half[others]
+            edges = np.concatenate([theirs - spans, theirs + spans, page_edges])
+            middles = np.concatenate([theirs, page_middles])
             mine = np.column_stack([at[rows] - half[rows], at[rows] + half[rows]])
             on_edge = ((np.abs(mine[:, :, None] - edges[None, None, :]) <= ON_LINE_MM)
-                       & (edge_roots[None, None, :] != mine_roots[:, None, None])).any(axis=(1, 2))
+                       & other_edge).any(axis=(1, 2))
             on_middle = ((np.abs(at[rows][:, None] - middles[None, :]) <= ON_LINE_MM)
-                         & (middle_roots[None, :] != mine_roots[:, None])).any(axis=1)
+                         & other_middle).any(axis=1)
             held[:, column] = np.bincount(owner, on_edge | on_middle, len(groups)) > 0
         return held
 
@@ -169,6 +207,8 @@ class RestCheck:
                   groups: np.ndarray) -> np.ndarray:
         """Each group's net acceleration, (len(groups), 2)."""
         per_row = self.net(rows, pairs, centres)[rows]
+        if not self.grouped:  # every group one row: its own
+            return per_row
         summed = np.zeros((self.bodies.count, 2))
         np.add.at(summed, self.roots[rows], per_row)
         return summed[groups]

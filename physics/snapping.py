@@ -30,7 +30,6 @@ way first and the step does not run.
 
 from __future__ import annotations
 
-from functools import lru_cache
 from typing import NamedTuple
 
 import numpy as np
@@ -39,6 +38,7 @@ from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members, sorted_unique
+from floatpage.physics.snap_memo import AxisMemo
 from floatpage.physics.fast_forces import target_gap
 from floatpage.physics.finalize import ROUNDING_MM
 from floatpage.physics.guides import (
@@ -54,6 +54,11 @@ ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm 
 MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
 MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
 TOLERANCE_MM = 1e-9
+EDGES = slice(LOW, HIGH + 1, HIGH - LOW)  # an item's two edges among its three features
+NO_SHIFTS = np.zeros(0)
+STAY = np.zeros(1)  # the shift that leaves a body where it is, always a candidate
+ESCAPES = np.array([-ESCAPE_MM, ESCAPE_MM])  # a line's distance plus these: just out of reach
+WINDOW_ENDS = np.array([NEAR_MM, -ALIGNED_MM, -NEAR_MM, ALIGNED_MM])  # misses_after's ranges
 
 
 def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params) -> int:
@@ -115,46 +120,48 @@ class _Snapper:
         self.reach = snap_range(*page)
         self.farthest = ESCAPE_REACH * self.reach  # the longest move
         self.window = max(self.farthest, NEAR_MM) + NEAR_MM  # further apart cannot matter
+        self.bounds = distance_bounds(self.reach, self.farthest)
         extent = np.array(page)
         near, far = bodies.insets(margin_mm, *page)
         self.lowest = self.halves + near
         self.highest = extent - self.halves - far
+        # per group and axis: too large to fit between its margins (it has no move to make)
+        too_large = self.lowest > self.highest
+        self.too_large = {row: too_large[members].any(axis=0)
+                          for row, members in self.members.items()}
+        self.is_mover = np.zeros(bodies.count, dtype=bool)
+        self.is_mover[self.movers] = True
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
         self.bleeds = {row: bool(bodies.bleed[members].any())
                        for row, members in self.members.items()}
         lines = {bleed: [page_lines(*page, 0.0 if bleed else margin_mm, axis, bodies.regions)
                          for axis in (0, 1)] for bleed in (False, True)}
-        self.page_values = {bleed: [np.concatenate(pair) for pair in pairs]
-                            for bleed, pairs in lines.items()}
-        # kinds: 0 for the edge lines (margins, regions' edges), 1 for the centre line
-        self.page_kinds = {bleed: [np.concatenate([np.zeros(len(edges)), np.ones(len(middles))])
-                                   for edges, middles in pairs] for bleed, pairs in lines.items()}
+        self.page_lines = lines  # [bleed][axis]: (edge lines, centre lines)
         self.lines = [features(bodies.centres, self.halves, axis) for axis in (0, 1)]
         self.moved_from: dict[int, np.ndarray] = {}
         # Lines (roots, axis) whose move as one failed since the last move on the page: each of
         # their groups would try the same move of the same line again, to the same end.
         self.stuck_lines: set[tuple[tuple[int, ...], int]] = set()
+        self.memo = AxisMemo()  # the lines and scores read off one axis, until a move there
+        self.arounds: dict[tuple[bytes, int], tuple[np.ndarray, ...]] = {}  # see around
 
-    def mine(self, row: int, axis: int) -> tuple[np.ndarray, np.ndarray]:
-        """The group's features on ``axis`` and their kinds (0 edge, 1 centre)."""
-        return self.features_of(self.members[row], axis)
+    def mine(self, row: int, axis: int) -> np.ndarray:
+        """The group's features on ``axis`` (low edge, centre, high edge per member)."""
+        return self.lines[axis][self.members[row]].ravel()
 
-    def features_of(self, members: np.ndarray, axis: int) -> tuple[np.ndarray, np.ndarray]:
-        lines = self.lines[axis][members]
-        return lines.ravel(), feature_kinds(len(lines))
-
-    def pool(self, members: np.ndarray, bleed: bool, axis: int,
-             values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Every other active item's features, and the page's lines, within the window of
-        ``values``, with their kinds."""
+    def lines_near(self, members: np.ndarray, bleed: bool, axis: int, low: float,
+                   high: float) -> tuple[np.ndarray, np.ndarray]:
+        """The lines near the rigid body ``members`` on ``axis``: every other active item whose
+        extent reaches into ``(low, high)``, with the page's lines; (edges, centres).  Kept
+        apart by kind, as only an edge meets an edge and a centre a centre."""
         lines = self.lines[axis]
-        near = (self.active & (lines[:, LOW] < values.max() + self.window)
-                & (lines[:, HIGH] > values.min() - self.window))
+        near = self.active & (lines[:, LOW] < high) & (lines[:, HIGH] > low)
         near[members] = False
         theirs = lines[near]
-        return (np.concatenate([theirs.ravel(), self.page_values[bleed][axis]]),
-                np.concatenate([feature_kinds(len(theirs)), self.page_kinds[bleed][axis]]))
+        page_edges, page_middles = self.page_lines[bleed][axis]
+        return (np.concatenate([theirs[:, EDGES].ravel(), page_edges]),
+                np.concatenate([theirs[:, CENTRE], page_middles]))
 
     def near(self, moved: list[int], axis: int) -> np.ndarray:
         """Movers with a feature within the window of a moved group's features, before or
@@ -164,7 +171,7 @@ class _Snapper:
         lines = self.lines[axis]
         touched = np.zeros(self.bodies.count, dtype=bool)
         for row in moved:
-            for spot in (self.moved_from[row], self.mine(row, axis)[0]):
+            for spot in (self.moved_from[row], self.mine(row, axis)):
                 low, high = spot.min() - self.window, spot.max() + self.window
                 touched |= (lines[:, LOW] < high) & (lines[:, HIGH] > low)
         touched = np.isin(self.roots, np.flatnonzero(touched)) | touched
@@ -179,7 +186,9 @@ class _Snapper:
         groups moved (their roots), none if nothing moved."""
         alone = self.options([row], axis)
         choices = [alone]
-        if alone.missing:  # a group on no near miss gains nothing from its line's move
+        # a group on no near miss gains nothing from its line's move, and one on no line
+        # has none (line_of would find it alone)
+        if alone.missing and alone.lined_up:
             line = self.line_of(row, axis)
             line_key = (tuple(sorted(line)), axis)
             if len(line) > 1 and line_key not in self.stuck_lines:
@@ -198,35 +207,62 @@ class _Snapper:
 
     def line_of(self, row: int, axis: int) -> list[int]:
         """``row`` and the movers with a feature on one of its group's lines on ``axis`` (an
-        edge on an edge, a centre on a centre)."""
+        edge on an edge, a centre on a centre), in row order after ``row``."""
+        known = self.memo.recall(("line", row), axis)
+        if known is not None:
+            return known
         lines = self.lines[axis]
-        values, kinds = self.mine(row, axis)
-        same_kind = feature_kinds(1)[:, None] == kinds[None, :]  # (3 features, values)
-        on = (np.abs(lines[:, :, None] - values[None, None, :]) <= ALIGNED_MM) & same_kind
-        roots = sorted_unique(self.roots[self.active & on.any(axis=(1, 2))])
-        return [row] + [int(root) for root in roots if root != row and int(root) in self.members]
+        mine = lines[self.members[row]]
+        edges = np.abs(lines[:, EDGES].reshape(-1, 1) - mine[:, EDGES].reshape(1, -1))
+        middles = np.abs(lines[:, CENTRE, None] - mine[None, :, CENTRE])
+        on = ((edges <= ALIGNED_MM).reshape(len(lines), -1).any(axis=1)
+              | (middles <= ALIGNED_MM).any(axis=1))
+        lined = np.zeros(self.bodies.count, dtype=bool)
+        lined[self.roots[self.active & on]] = True
+        lined &= self.is_mover
+        lined[row] = False
+        line = [row] + np.flatnonzero(lined).tolist()
+        return self.memo.keep(("line", row), axis, float(mine.min()) - ALIGNED_MM,
+                              float(mine.max()) + ALIGNED_MM, line)
 
     def options(self, roots: list[int], axis: int) -> "Moves":
         """The moves along ``axis`` that would lower the near misses of the groups of
-        ``roots``, moved as one rigid body, best first (at most ``MAX_TRIES``)."""
-        members = np.concatenate([self.members[root] for root in roots])
-        if (self.lowest[members, axis] > self.highest[members, axis]).any():
-            return Moves(roots, members, np.zeros(0), np.zeros(0), 0.0, False)  # too large
-        values, kinds = self.features_of(members, axis)
-        bleed = all(self.bleeds[root] for root in roots)
-        pool, pool_kinds = self.pool(members, bleed, axis, values)
-        distance = (pool[None, :] - values[:, None])[kinds[:, None] == pool_kinds[None, :]]
-        shifts = candidate_shifts(distance, self.reach, self.farthest)
+        ``roots``, moved as one rigid body, best first (at most ``MAX_TRIES``).
+
+        Everything is read off the sorted distances from the body's features to the lines of
+        the same kind near them, by bisection: which moves to score, their scores, whether the
+        body misses a line now.  Most calls (on the 50-item page, three in five) find no move
+        that helps, so a call is a few dozen small NumPy operations, and each one counts."""
+        members = (self.members[roots[0]] if len(roots) == 1
+                   else np.concatenate([self.members[root] for root in roots]))
+        if any(self.too_large[root][axis] for root in roots):
+            return Moves(roots, members, NO_SHIFTS, NO_SHIFTS, 0.0, False, False)
+        key = tuple(sorted(roots))
+        known = self.memo.recall(key, axis)
+        if known is not None:  # the same groups, perhaps named in another order
+            return known if known.roots == roots else known._replace(roots=roots, members=members)
+        mine = self.lines[axis][members]
+        # a feature's low edge is its lowest value, its high edge its highest
+        low = float(mine[:, LOW].min()) - self.window
+        high = float(mine[:, HIGH].max()) + self.window
+        edges, middles = self.lines_near(members, all(self.bleeds[root] for root in roots),
+                                         axis, low, high)
+        ordered = np.sort(np.concatenate([
+            (edges[None, :] - mine[:, EDGES].reshape(-1, 1)).ravel(),
+            (middles[None, :] - mine[:, CENTRE, None]).ravel()]))
+        shifts, missing, lined_up = candidate_shifts(ordered, self.bounds, self.farthest)
         if len(shifts) > MAX_CANDIDATES:  # a crowded page: the nearest lines only
             shifts = np.sort(shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]])
-        scores = misses_after(distance, shifts)
+        scores = misses_after(ordered, shifts)
         now = float(scores[np.searchsorted(shifts, 0.0)])
-        gaps = np.abs(distance)
-        missing = bool(((gaps > ALIGNED_MM) & (gaps < NEAR_MM)).any())
-        order = np.lexsort((np.abs(shifts), scores))
-        order = order[scores[order] < now - TOLERANCE_MM][:MAX_TRIES]
-        gain = now - float(scores[order[0]]) if len(order) else 0.0
-        return Moves(roots, members, shifts[order], distance, gain, missing)
+        better = np.flatnonzero(scores < now - TOLERANCE_MM)
+        if len(better):  # best first: fewest misses, then the shortest move
+            better = better[np.lexsort((np.abs(shifts[better]), scores[better]))][:MAX_TRIES]
+            found = Moves(roots, members, shifts[better], ordered,
+                          now - float(scores[better[0]]), missing, lined_up)
+        else:  # most calls
+            found = Moves(roots, members, NO_SHIFTS, ordered, 0.0, missing, lined_up)
+        return self.memo.keep(key, axis, low, high, found)
 
     def attempt(self, moves: "Moves", axis: int) -> bool:
         """Make the first of ``moves`` that fits and keeps the page at rest; whether one did."""
@@ -237,9 +273,13 @@ class _Snapper:
             if abs(shift) <= NUDGE_MM or self.rest is None \
                     or self.rest.keeps_rest(members, axis, shift):
                 for root in moves.roots:
-                    self.moved_from[root] = self.mine(root, axis)[0]
+                    self.moved_from[root] = self.mine(root, axis)
+                before = self.lines[axis][members]
                 self.bodies.centres[members, axis] += shift
                 self.lines[axis][members] += shift
+                self.memo.moved(axis, before, self.lines[axis][members])
+                if self.rest is not None:
+                    self.rest.moved()
                 return True
         return False
 
@@ -253,21 +293,16 @@ class _Snapper:
         Only the items a move could bring within the clearance are tested: within it of a
         member across the axis, and within it and the longest move along it (on a 600-item
         page the test against every item was two thirds of the snapping's time)."""
-        centres, halves = self.bodies.centres, self.halves
+        centres = self.bodies.centres
         current = centres[members, axis]
         low = np.minimum(self.lowest[members, axis], current)
         high = np.maximum(self.highest[members, axis], current)
         moved = current[None, :] + shifts[:, None]  # (shifts, members)
         ok = ((moved >= low - TOLERANCE_MM) & (moved <= high + TOLERANCE_MM)).all(axis=1)
-        groups = self.roots[members]
-        outside = self.active & (self.roots != groups[0])
-        if (groups != groups[0]).any():
-            outside &= ~np.isin(self.roots, groups)
-        others = np.flatnonzero(outside)
+        others, their_across, my_across, reach = self.around(members, axis)
         across = 1 - axis
         gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
-                      - halves[others, across][None, :] - halves[members, across][:, None])
-        reach = halves[others, axis][None, :] + halves[members, axis][:, None]
+                      - their_across - my_across)
         theirs = centres[others, axis][None, :]
         gap_now = np.abs(theirs - current[:, None]) - reach
         near = ((gap_across < self.clearance)
@@ -280,6 +315,22 @@ class _Snapper:
         gap_new = np.abs(theirs[None] - moved[:, :, None]) - reach[None]  # (shifts, m, o)
         return ok & (np.maximum(gap_new, gap_across[None]) >= needed[None]).all(axis=(1, 2))
 
+    def around(self, members: np.ndarray, axis: int) -> tuple[np.ndarray, ...]:
+        """What fits needs of the rigid body ``members`` moving along ``axis`` that no move
+        changes, worked out once per body: the other active rows, their half sizes across the
+        axis (1, o) and the members' (m, 1), and each pair's half sizes along it summed (m, o)."""
+        key = (members.tobytes(), axis)
+        found = self.arounds.get(key)
+        if found is None:
+            outside = self.active.copy()  # the body's members are its groups' active rows
+            outside[members] = False
+            others = np.flatnonzero(outside)
+            halves, across = self.halves, 1 - axis
+            found = self.arounds[key] = (
+                others, halves[others, across][None, :], halves[members, across][:, None],
+                halves[others, axis][None, :] + halves[members, axis][:, None])
+        return found
+
 
 class Moves(NamedTuple):
     """The candidate moves of one rigid body of groups along one axis (_Snapper.options)."""
@@ -287,41 +338,51 @@ class Moves(NamedTuple):
     roots: list[int]  # the groups moved together
     members: np.ndarray  # their rows
     shifts: np.ndarray  # the moves that lower their near misses, best first
-    distance: np.ndarray  # from their features to the lines of the same kind near them
+    distances: np.ndarray  # from their features to the lines of the same kind near them, sorted
     gain: float  # what the best of them would lower the page's score by
     missing: bool  # whether they miss a line now
+    lined_up: bool  # whether they are on a line now (within ALIGNED_MM)
 
 
-@lru_cache(maxsize=256)
-def feature_kinds(count: int) -> np.ndarray:
-    """0, 1, 0 (edge, centre, edge) for ``count`` items' features on one axis, kept once made
-    (read-only): np.tile's set-up cost a tenth of the snapping's time."""
-    kinds = np.tile([0.0, 1.0, 0.0], count)
-    kinds.flags.writeable = False
-    return kinds
+def distance_bounds(reach: float, farthest: float) -> tuple[np.ndarray, np.ndarray]:
+    """The ends of the ranges of distances candidate_shifts reads, as (ends found from the
+    left, ends found from the right) for np.searchsorted: |distance| <= ``reach``, |distance| <
+    ``farthest`` + ``ESCAPE_MM``, and -``NEAR_MM`` < distance < -``ALIGNED_MM`` or ``ALIGNED_MM`` <
+    distance < ``NEAR_MM``."""
+    escape = farthest + ESCAPE_MM
+    return (np.array([-reach, escape, -ALIGNED_MM, NEAR_MM]),
+            np.array([reach, -escape, -NEAR_MM, ALIGNED_MM]))
 
 
-def candidate_shifts(distance: np.ndarray, reach: float, farthest: float) -> np.ndarray:
-    """Shifts that put a feature on a line at ``distance`` from it within ``reach``, or put
-    it just out of a near miss with one (``ESCAPE_MM``) within ``farthest``; sorted, with 0
-    (staying) among them.  The way out of a near miss may be long: two items of nearly the
-    same width cannot line up both edges and centre, and one 1 mm from the other stays in
-    near misses until it has moved 4-5 mm."""
-    size = np.abs(distance)
-    near = distance[size < farthest + ESCAPE_MM]
-    away = np.concatenate([near - ESCAPE_MM, near + ESCAPE_MM])
-    return sorted_unique(np.concatenate([distance[size <= reach], away[np.abs(away) <= farthest],
-                                         [0.0]]))
+def candidate_shifts(ordered: np.ndarray, bounds: tuple[np.ndarray, np.ndarray],
+                     farthest: float) -> tuple[np.ndarray, bool, bool]:
+    """Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
+    within reach, or put it just out of a near miss with one (``ESCAPE_MM``) within
+    ``farthest``; sorted, with 0 (staying) among them.  The way out of a near miss may be
+    long: two items of nearly the same width cannot line up both edges and centre, and one
+    1 mm from the other stays in near misses until it has moved 4-5 mm.  Also whether a
+    feature misses a line now (a distance between ``ALIGNED_MM`` and ``NEAR_MM``), and
+    whether one is on a line (a distance within ``ALIGNED_MM``).  Each range of distances
+    (``bounds``, from distance_bounds) is a slice of the sorted ones."""
+    low = np.searchsorted(ordered, bounds[0], "left")
+    high = np.searchsorted(ordered, bounds[1], "right")
+    near = ordered[high[1]:low[1]]  # |distance| < farthest + ESCAPE_MM
+    away = (near[:, None] + ESCAPES).ravel()
+    shifts = sorted_unique(np.concatenate([ordered[low[0]:high[0]],  # |distance| <= reach
+                                           away[np.abs(away) <= farthest], STAY]))
+    missing = low[2] > high[2] or low[3] > high[3]
+    lined_up = high[3] > low[2]  # -ALIGNED_MM <= distance <= ALIGNED_MM
+    return shifts, bool(missing), bool(lined_up)
 
 
-def misses_after(distance: np.ndarray, shifts: np.ndarray) -> np.ndarray:
+def misses_after(ordered: np.ndarray, shifts: np.ndarray) -> np.ndarray:
     """For each shift, the near misses between a group's features and the lines of the same
-    kind at ``distance`` from them (one entry per pair), less ``ALIGN_GAIN`` per exact
-    alignment; (len(shifts),).  Counted by bisection in the sorted distances: the
-    (shifts, distances) table of gaps it replaces was a fifth of the snapping's time."""
-    ordered = np.sort(distance)
-    within_near = (np.searchsorted(ordered, shifts + NEAR_MM, "left")
-                   - np.searchsorted(ordered, shifts - NEAR_MM, "right"))
-    aligned = (np.searchsorted(ordered, shifts + ALIGNED_MM, "right")
-               - np.searchsorted(ordered, shifts - ALIGNED_MM, "left"))
+    kind at the sorted distances ``ordered`` from them (one entry per pair), less
+    ``ALIGN_GAIN`` per exact alignment; (len(shifts),).  Counted by bisection: the (shifts,
+    distances) table of gaps it replaces was a fifth of the snapping's time."""
+    ends = shifts[:, None] + WINDOW_ENDS  # (shifts, 4)
+    low = np.searchsorted(ordered, ends[:, :2], "left")  # d < shift + NEAR, d < shift - ALIGNED
+    high = np.searchsorted(ordered, ends[:, 2:], "right")  # d <= shift - NEAR, d <= shift + ALIGNED
+    within_near = low[:, 0] - high[:, 0]
+    aligned = high[:, 1] - low[:, 1]
     return (within_near - aligned) - ALIGN_GAIN * aligned

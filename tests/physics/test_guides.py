@@ -8,6 +8,7 @@ from __future__ import annotations
 import copy
 import tempfile
 from pathlib import Path
+from unittest import mock
 
 import numpy as np
 from hypothesis import HealthCheck, Phase, given, settings
@@ -16,7 +17,7 @@ from hypothesis import strategies as st
 from floatpage.model import load_project, save_project
 from floatpage.model.document import BlockItem, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project
 from floatpage.model.layout import AT_REST_MM, settle_project
-from floatpage.physics import Engine, Params
+from floatpage.physics import Engine, Params, snap_memo
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.finalize import ROUNDING_MM, remove_overlaps
@@ -324,3 +325,42 @@ def test_a_snapped_page_is_at_rest_for_the_gentle_run_that_probes_it():
         engine.settle(finalize=False)
         drift = np.abs(engine.bodies.centres - snapped).max()
         assert drift <= AT_REST_MM, f"{scene.name}: the probe moved an item {drift:.2f} mm"
+
+
+# ----- what the snap remembers between its tries (physics.snap_memo) -------------------------
+
+def snapped_twice(bodies, page, params):
+    """The page snapped as shipped, and snapped by a snap whose memo never recalls."""
+    remembering = copy.deepcopy(bodies)
+    moves = snap_page(remembering, *page, params)
+    forgetting = copy.deepcopy(bodies)
+    with mock.patch.object(snap_memo.AxisMemo, "recall", lambda self, key, axis: None):
+        fresh_moves = snap_page(forgetting, *page, params)
+    return moves, remembering.centres, fresh_moves, forgetting.centres
+
+
+def test_a_snap_that_remembers_moves_as_one_that_forgets_on_seeded_pages():
+    for count, seed in ((20, 1), (50, 1), (30, 3)):
+        scene = mixed_scene(count, 0.5, seed=seed)
+        engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
+        load(engine, scene)
+        engine.settle(finalize=False)
+        page = (engine.page_w_mm, engine.page_h_mm)
+        bodies = engine.bodies
+        remove_overlaps(bodies, *page, engine.params.gutter_mm,
+                        margin_mm=page_margin(engine.params.margin_mm, *page))
+        moves, centres, fresh_moves, fresh_centres = snapped_twice(bodies, page, engine.params)
+        assert moves > 10  # a page the snap works on, many moves near each other
+        assert (moves, centres.tobytes()) == (fresh_moves, fresh_centres.tobytes())
+
+
+@PROPERTIES
+@given(crowded_pages())
+def test_a_snap_that_remembers_moves_as_one_that_forgets(engine):
+    """On pages with held, hard-anchored, following and bleeding items too."""
+    page = (engine.page_w_mm, engine.page_h_mm)
+    bodies = engine.bodies
+    remove_overlaps(bodies, *page, engine.params.gutter_mm,
+                    margin_mm=page_margin(engine.params.margin_mm, *page))
+    moves, centres, fresh_moves, fresh_centres = snapped_twice(bodies, page, engine.params)
+    assert (moves, centres.tobytes()) == (fresh_moves, fresh_centres.tobytes())

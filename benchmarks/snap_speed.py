@@ -1,0 +1,91 @@
+"""The alignment snap alone (physics.snapping.snap_page), on the pages it is handed while the
+alignment benchmark's scenes settle the `floatpage settle` way (model.layout.settle_project)
+and the Engine.settle way (benchmarks/physics.py).
+
+    .venv/bin/python benchmarks/snap_speed.py              # best of 3 per snap
+    .venv/bin/python benchmarks/snap_speed.py --repeats 1 --only "50 items"
+
+Each snap's input (the bodies after the no-overlap pass) is kept, then snapped again on a copy:
+CPU seconds (time.process_time) per scene, best of --repeats, the moves made, and a hash of the
+snapped centres over every snap, so that a change meant to make the snap cheaper can show it
+makes the same moves (the hash is the same) and what it saves.  Under callgrind (one repeat)
+the instruction counts do not depend on the machine's load.
+"""
+
+from __future__ import annotations
+
+import argparse
+import copy
+import hashlib
+import time
+from collections import defaultdict
+
+import floatpage.physics.engine as engine_module
+from floatpage.model.layout import settle_project
+from floatpage.physics import Engine, Params
+from floatpage.physics.snapping import snap_page
+
+from alignment import benchmark_scenes, random_scenes, scene_project
+from seeded_scenes import Scene, load
+
+
+def loaded(scene: Scene) -> Engine:
+    """A new engine holding the scene's items where it scattered them (as benchmarks/physics.py
+    loads its scenes)."""
+    engine = Engine(scene.page_w_mm, scene.page_h_mm, Params())
+    load(engine, scene)
+    return engine
+
+
+def captured_snaps(only: str) -> list[tuple[str, tuple]]:
+    """(label, snap_page's arguments) for every snap the settles ask for."""
+    captured: list[tuple[str, tuple]] = []
+    label = [""]
+
+    def keep(bodies, page_w_mm, page_h_mm, params):
+        captured.append((label[0], (copy.deepcopy(bodies), page_w_mm, page_h_mm, params)))
+        return snap_page(bodies, page_w_mm, page_h_mm, params)
+
+    engine_module.snap_page = keep
+    try:
+        for scene in benchmark_scenes(quick=True) + random_scenes():
+            if only not in scene.name:
+                continue
+            label[0] = f"settle {scene.name}"
+            settle_project(scene_project(scene))
+            label[0] = f"Engine.settle {scene.name}"
+            loaded(scene).settle()
+    finally:
+        engine_module.snap_page = snap_page
+    return captured
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=3, help="timed snaps per input (best)")
+    parser.add_argument("--only", default="", help="only the scenes whose name contains this")
+    args = parser.parse_args()
+    seconds: dict[str, float] = defaultdict(float)
+    moves: dict[str, int] = defaultdict(int)
+    snapped = hashlib.sha256()
+    for label, (bodies, page_w_mm, page_h_mm, params) in captured_snaps(args.only):
+        best = float("inf")
+        for _ in range(args.repeats):
+            trial = copy.deepcopy(bodies)
+            start = time.process_time()
+            made = snap_page(trial, page_w_mm, page_h_mm, params)
+            best = min(best, time.process_time() - start)
+        seconds[label] += best
+        moves[label] += made
+        snapped.update(trial.centres.tobytes())
+    print("| settle | scene | snap ms | moves |")
+    print("|---|---|---|---|")
+    for label in seconds:
+        how, name = label.split(" ", 1)
+        print(f"| {how} | {name} | {seconds[label] * 1000:.1f} | {moves[label]} |")
+    print(f"\nall snaps: {sum(seconds.values()) * 1000:.0f} ms, {sum(moves.values())} moves, "
+          f"snapped centres hash {snapped.hexdigest()[:16]}")
+
+
+if __name__ == "__main__":
+    main()
