@@ -48,15 +48,20 @@ def engine_for_page(page: Page, settings: PhysicsSettings) -> Engine:
                       [(item.x, item.y, item.w, item.h) for item in page.items],
                       [item.decorative for item in page.items],
                       [bool(getattr(item, "bleed", False)) for item in page.items])
+    following: list[tuple[str, str, float, float]] = []  # anchor_to's, applied in order
     for item in page.items:
         anchor = item.anchor
         if isinstance(anchor, PointAnchor):
+            if anchor.hard:  # it moves its item: the followers before it go first
+                engine.anchor_all_to(following)
+                following = []
             engine.anchor_point(item.id, anchor.x, anchor.y, gamma=anchor.gamma,
                                 hard=anchor.hard)
         elif isinstance(anchor, ItemAnchor):
-            engine.anchor_to(item.id, anchor.to, anchor.dx, anchor.dy)
-    for item, lead in group_followers(page):
-        engine.anchor_to(item.id, lead.id, item.x - lead.x, item.y - lead.y)
+            following.append((item.id, anchor.to, anchor.dx, anchor.dy))
+    following += [(item.id, lead.id, item.x - lead.x, item.y - lead.y)
+                  for item, lead in group_followers(page)]
+    engine.anchor_all_to(following)
     regions = {region.id: region.box for region in page.regions}
     for item in page.items:
         if item.region in regions:
