@@ -203,7 +203,8 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
     nudges items off the physics' equilibrium, and the next full run from the nudged, rounded
     layout moves them again (up to 30 mm on a crowded page).  So a settle first *probes* the
     layout: a gentle run (heat ``PROBE_HEAT``) from the page as it is, the same numbers and seed
-    every time.  The layout is kept exactly as it is when it is
+    every time (a plainly scattered page, whose probe's answer is known, goes straight to the
+    full run: see ``plainly_scattered``).  The layout is kept exactly as it is when it is
 
     - *at rest*: the probe moves no item more than ``AT_REST_MM`` and the layout already keeps
       every guarantee the probe reaches; or
@@ -261,16 +262,14 @@ def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
     (its result is sounder than the page), so the full run follows; on those 10,000 items the
     probe was an eighth of the settle.  Only a probe whose pass jams, leaving as many
     overlaps, would have answered otherwise and kept the page as it was; such a page now gets
-    the full run (with its second start) instead.  A page
-    whose overlaps may stay (too full by area, or held by anchors, groups or regions) is
-    probed first, as before."""
+    the full run (with its second start) instead.  A page whose overlaps may stay (too full
+    by area, or held by anchors, groups or regions) is probed first, as before."""
     if any(item.anchor is not None or item.group or item.region for item in page.items):
         return False
     engine = engine_for_page(page, settings)
     if engine.quality().overlap_count == 0:
         return False
-    bodies = engine.bodies
-    return not cannot_fit(bodies, engine.page_w_mm, engine.page_h_mm, ROUNDING_MM,
+    return not cannot_fit(engine.bodies, engine.page_w_mm, engine.page_h_mm, ROUNDING_MM,
                           engine.margin_mm)
 
 
