@@ -19,7 +19,6 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
-
 from floatpage.model.atomic_file import atomic_write
 from floatpage.model.document import Project
 from floatpage.model.locate import LineFinder
