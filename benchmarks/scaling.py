@@ -4,9 +4,13 @@ Each scene settles (`Engine.settle()`, the no-overlap pass included) in its own 
 reports its own peak memory (ru_maxrss), so each figure is that scene's alone.  Then the chain
 as a user meets it: a project file of 2,000 items anchored one to the next, and the wall time
 of each `floatpage` command on it, start to exit (loading the file, anchoring, the quality
-measures, the save; render includes LuaLaTeX).
+measures, the save; render includes LuaLaTeX), with the CPU seconds the command and its
+children used (user + system: on a shared machine the wall time grows with the load, the CPU
+time much less).  For the floor under render, the same commands on a file of one block; and
+`settle` of the 10,000-item scene as a file (benchmarks/fixed_point.scene_project).
 
     .venv/bin/python benchmarks/scaling.py            # every scene, each capped at 600 s
+    .venv/bin/python benchmarks/scaling.py --commands [--small]   # the command table alone
 """
 
 from __future__ import annotations
@@ -71,24 +75,59 @@ def chain_project(folder: Path, count: int = 2_000) -> Path:
     return path
 
 
-def command_rows() -> None:
-    """The wall time of each command on the chain file (settle twice: the second finds it
-    settled)."""
+def one_block_project(folder: Path) -> Path:
+    """The floor: a project of one block on A4."""
+    from floatpage.model import save_project
+    from floatpage.model.document import BlockItem, Page, Project
+
+    path = folder / "one.toml"
+    save_project(Project(title="one", pages=[Page(id="p", size="A4", items=[
+        BlockItem(id="b", x=105.0, y=148.5, w=20.0, h=20.0)])]), path)
+    return path
+
+
+def timed(command: list[str]) -> tuple[float, float, int]:
+    """(wall seconds, CPU seconds of the command and its children, exit code)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    started = time.perf_counter()
+    done = subprocess.run(command, capture_output=True, text=True, timeout=900)
+    seconds = time.perf_counter() - started
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return seconds, cpu, done.returncode
+
+
+def command_rows(big: bool = True) -> None:
+    """The wall and CPU time of each command on the chain file (settle twice: the second
+    finds it settled), on a one-block file, and (``big``) settle of 10,000 items."""
+    sys.path.insert(0, str(Path(__file__).parent))
+    from fixed_point import scene_project
+    from seeded_scenes import mixed_scene
+
     floatpage = Path(sys.executable).with_name("floatpage")
     with tempfile.TemporaryDirectory() as folder:
-        path = chain_project(Path(folder))
-        for command in (["check"], ["settle"], ["settle"], ["render", "-o", f"{folder}/c.pdf"]):
-            started = time.perf_counter()
-            done = subprocess.run([str(floatpage), *command, str(path)], capture_output=True,
-                                  text=True, timeout=600)
-            seconds = time.perf_counter() - started
-            print(f"| 2,000-anchor chain file | floatpage {command[0]} | 2 s | {seconds:.2f} "
-                  f"| exit {done.returncode} |", flush=True)
+        files = [("2,000-anchor chain file", "2 s", chain_project(Path(folder))),
+                 ("one block (the floor)", "", one_block_project(Path(folder)))]
+        for label, goal, path in files:
+            for command in (["check"], ["settle"], ["settle"],
+                            ["render", "-o", f"{folder}/c.pdf"]):
+                seconds, cpu, code = timed([str(floatpage), *command, str(path)])
+                print(f"| {label} | floatpage {command[0]} | {goal} | {seconds:.2f} "
+                      f"| {cpu:.2f} | exit {code} |", flush=True)
+        if big:
+            path = scene_project(mixed_scene(10_000, 0.3, seed=1), Path(folder) / "ten.toml")
+            seconds, cpu, code = timed([str(floatpage), "settle", str(path)])
+            print(f"| 10,000 items, 30 % (file) | floatpage settle | 60 s | {seconds:.1f} "
+                  f"| {cpu:.1f} | exit {code} |", flush=True)
 
 
 def main() -> None:
     if len(sys.argv) > 2 and sys.argv[1] == "--one":
         print(json.dumps(run_scene(sys.argv[2])))
+        return
+    if len(sys.argv) > 1 and sys.argv[1] == "--commands":  # the command table alone
+        print("| file | command | goal | s | CPU s | |\n|---|---|---|---|---|---|")
+        command_rows(big="--small" not in sys.argv)
         return
     print("| scene | goal | s | steps | settled | overlapping pairs | off page | peak memory |")
     print("|---|---|---|---|---|---|---|---|")
@@ -107,7 +146,7 @@ def main() -> None:
         print(f"| {name} | {GOALS[name]} | {figures['seconds']:.1f} | {figures['steps']} "
               f"| {'yes' if figures['settled'] else 'no'} | {figures['overlaps']} "
               f"| {figures['off_page']} | {figures['peak_mb']:.0f} MB |", flush=True)
-    print("\n| file | command | goal | s | |\n|---|---|---|---|---|")
+    print("\n| file | command | goal | s | CPU s | |\n|---|---|---|---|---|---|")
     command_rows()
 
 

@@ -18,8 +18,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal, Union
 
-import tomlkit
-
 from floatpage.model.key_specs import (
     CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, WEEKDAYS, at_most_chars, between, colour,
     finite, item_id, name_or_empty, one_of, positive, spec,
@@ -306,6 +304,8 @@ class Project:
         """The tomlkit document of the file read (None for a new project); may raise
         RecursionError on nesting too deep for tomlkit."""
         if self.parsed_source is None and self.source_text is not None:
+            import tomlkit  # only a save that edits the document needs it
+
             self.parsed_source = tomlkit.parse(self.source_text)
         return self.parsed_source
 

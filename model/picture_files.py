@@ -16,8 +16,6 @@ import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
-from PIL import Image, UnidentifiedImageError
-
 MAX_PIXELS = 100_000_000  # 100 megapixels: a 40 x 40 cm print at 600 dpi is 15 Mpx
 FORMATS = ("PNG", "JPEG", "WEBP", "GIF", "BMP", "TIFF")
 FORMAT_WORDS = "PNG, JPEG, PDF, WebP, GIF, BMP or TIFF"
@@ -51,6 +49,8 @@ def read_header(path: Path) -> PictureHeader:
                 return pdf_header(path)
     except OSError as error:
         return PictureHeader(problem=f"cannot be read: {error.strerror}", hint="check its permissions")
+    from PIL import Image, UnidentifiedImageError  # only for a project with pictures
+
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)
@@ -106,6 +106,8 @@ def decode_warning(path: Path) -> str:
     so even a 100-megapixel photo costs a few MB here; other formats are verified chunk by
     chunk (PNG's checksums) without decoding.
     """
+    from PIL import Image
+
     try:
         with open(path, "rb") as handle:
             if handle.read(5) == b"%PDF-":  # no pixels: read_header opened it as a PDF

@@ -19,8 +19,6 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
-import tomlkit
-
 from floatpage.model.atomic_file import atomic_write
 from floatpage.model.document import Project
 from floatpage.model.locate import LineFinder
@@ -90,7 +88,12 @@ def rewritten(line: str, name: str, old: float, new: float) -> str | None:
     match = VALUE.match(body)
     if match is None or match["name"] != name or not holds(match["value"], old):
         return None
-    value = tomlkit.item(new).as_string()
+    if type(new) is float:  # noqa: E721 (bool and numpy floats take tomlkit's way)
+        value = repr(new)  # what tomlkit.item(new).as_string() writes, without importing it
+    else:
+        import tomlkit
+
+        value = tomlkit.item(new).as_string()
     return match["key"] + value + match["rest"] + line[len(body):]
 
 

@@ -13,9 +13,9 @@ from dataclasses import fields
 from pathlib import Path
 from typing import Any
 
-import tomlkit
-from tomlkit.items import AoT, Array, InlineTable, Table, Whitespace
-
+# tomlkit is imported by the functions that build or edit its documents: `check`, `render`
+# and a `settle` that patches positions into the text never need it (importing it took a
+# tenth of a second, a twentieth of `settle` on the 2,000-anchor chain file).
 from floatpage.model.document import (
     Background, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project, Region,
 )
@@ -110,6 +110,7 @@ def item_pairs(item) -> Pairs:
 
 
 def inline(value: Any) -> Any:
+    import tomlkit
     if isinstance(value, dict):
         table = tomlkit.inline_table()
         table.update(value)
@@ -145,6 +146,7 @@ def sync_table(table: Table, pairs: Pairs) -> None:
 
 
 def new_table(pairs: Pairs) -> Table:
+    import tomlkit
     table = tomlkit.table()
     for key, value, _ in pairs:
         if value is not None and value is not KEEP:
@@ -154,6 +156,8 @@ def new_table(pairs: Pairs) -> Table:
 
 def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=None) -> None:
     """Sync an array of tables by id: keep existing tables (and their comments), add new ones."""
+    import tomlkit
+    from tomlkit.items import AoT
     existing = parent.get(key)
     if is_inline_array(existing) and sync_inline_array(existing, records, pairs_of, id_of, fill):
         return
@@ -192,6 +196,7 @@ def edit_in_place(array: AoT, tables: list) -> bool:
     item deleted, an item added at the end): rebuilding the array made tomlkit write an extra
     blank line between every two tables of the page (editor defect 12).  False, with nothing
     changed, when the kept tables were reordered."""
+    import tomlkit
     wanted = {id(table) for table in tables}
     kept = [table for table in array if id(table) in wanted]
     if [id(t) for t in kept] != [id(t) for t in tables[:len(kept)]]:
@@ -210,6 +215,7 @@ def edit_in_place(array: AoT, tables: list) -> bool:
 
 
 def trailing_space(table: Table) -> str:
+    from tomlkit.items import Whitespace
     body = table.value.body
     if body and body[-1][0] is None and isinstance(body[-1][1], Whitespace):
         return body[-1][1].s
@@ -217,6 +223,7 @@ def trailing_space(table: Table) -> str:
 
 
 def is_inline_array(value: Any) -> bool:
+    from tomlkit.items import Array, InlineTable
     return isinstance(value, Array) and all(isinstance(entry, InlineTable) for entry in value)
 
 
@@ -237,6 +244,7 @@ def sync_inline_array(array: Array, records: list, pairs_of, id_of, fill) -> boo
 
 def to_document(project: Project) -> tomlkit.TOMLDocument:
     """The project as a tomlkit document: its source document, edited, or a fresh one."""
+    import tomlkit
     doc = project.source_document
     if doc is None:
         doc = tomlkit.document()
@@ -269,6 +277,7 @@ def to_document(project: Project) -> tomlkit.TOMLDocument:
 
 
 def dump_project(project: Project) -> str:
+    import tomlkit
     return tomlkit.dumps(to_document(project))
 
 
@@ -307,6 +316,7 @@ def unchanged_on_disk(target: Path, data: bytes) -> bool:
 
 def save_project(project: Project, path: str | Path | None = None) -> Path:
     """Save atomically to `path` (default: where it was loaded from) and remember the new path."""
+    import tomlkit
     target = Path(path) if path is not None else project.path
     if target is None:
         raise FloatpageError("the project has no file name yet (save it with a path)")

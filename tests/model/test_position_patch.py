@@ -125,3 +125,14 @@ def test_a_multi_line_string_that_looks_like_keys_takes_the_full_save(tmp_path):
     save_settled(project, read)
     saved = load_project(path).pages[0].items[1]
     assert (saved.x, saved.text) == (44.5, "x = 30\n[[pages.items]]\n")
+
+
+@pytest.mark.parametrize("value", [0.0, -0.0, 1.0, 12.5, 107.25, 0.01, 1e-05, 123456789.01,
+                                   -3.14, 1e16, 2.675, 0.1 + 0.2])
+def test_a_patched_number_is_written_as_tomlkit_writes_it(value):
+    """The patch writes floats itself, without importing tomlkit: the same text."""
+    import tomlkit
+
+    from floatpage.model.position_patch import rewritten
+
+    assert rewritten("x = 1.0\n", "x", 1.0, value) == f"x = {tomlkit.item(value).as_string()}\n"

@@ -179,6 +179,66 @@ def test_anchor_cycle_is_refused():
         engine.anchor_to("a", "c", 20, 0)
 
 
+def anchored_pair(one_by_one: bool, anchors: list) -> Engine:
+    engine = Engine(*A4)
+    for k, name in enumerate("abcde"):
+        engine.insert(name, 30 + 30 * k, 40 + 20 * k, 10, 8)
+    engine.anchor_point("e", 150, 150, hard=True)
+    if one_by_one:
+        for entry in anchors:
+            engine.anchor_to(*entry)
+    else:
+        engine.anchor_all_to(anchors)
+    return engine
+
+
+def test_anchor_all_to_equals_anchor_to_one_by_one():
+    """In order: "d" follows "c" after "c" was placed beside "b"; "e" loses its hard anchor;
+    "a" is anchored twice and keeps the second."""
+    anchors = [("b", "a", 12, 0), ("c", "b", 0, 9), ("d", "c", 12, 9), ("e", "d", -5, 14),
+               ("a", "e", 0, 0.5), ("a", "e", 3, 40)]
+    with pytest.raises(ValueError, match="cycle"):
+        anchored_pair(True, anchors)  # a -> e -> d -> c -> b -> a
+    anchors = [entry for entry in anchors if entry[0] != "a"]
+    expected, got = anchored_pair(True, anchors), anchored_pair(False, anchors)
+    assert got.positions() == expected.positions()
+    for name in ("targets", "offsets", "anchors", "gammas", "hard"):
+        np.testing.assert_array_equal(getattr(got.bodies, name), getattr(expected.bodies, name))
+    assert not got.settled and got.heat == 1.0
+
+
+def test_anchor_all_to_refuses_as_anchor_to_does():
+    """A cycle is refused at the anchor that closes it, the ones before it kept (as one by
+    one); an unknown id or an offset that is not finite refuses them all."""
+    cycle = [("b", "a", 20, 0), ("c", "b", 20, 0), ("a", "c", 20, 0)]
+    engine = anchored_pair(False, [])
+    with pytest.raises(ValueError, match="cycle"):
+        engine.anchor_all_to(cycle)
+    assert list(engine.bodies.targets[:3]) == [-1, 0, 1]
+    for bad in ([("b", "a", 1, 1), ("x", "a", 1, 1)], [("b", "a", 1, 1), ("c", "a", np.nan, 0)]):
+        engine = anchored_pair(False, [])
+        before = engine.positions()
+        with pytest.raises((KeyError, ValueError)):
+            engine.anchor_all_to(bad)
+        assert engine.positions() == before and (engine.bodies.targets == -1).all()
+    with pytest.raises(ValueError, match="cycle"):
+        anchored_pair(False, [("c", "c", 1, 1)])
+
+
+def test_group_roots_follow_edits_in_place_and_hand_out_copies():
+    engine = anchored_pair(False, [("b", "a", 12, 0), ("c", "b", 0, 9)])
+    roots, offsets = engine.bodies.group_roots()
+    assert list(roots[:3]) == [0, 0, 0] and offsets[2].tolist() == [12.0, 9.0]
+    roots[:] = 4
+    offsets[:] = 99.0
+    engine.bodies.offsets[1] = (1.0, 2.0)  # an edit in place
+    roots, offsets = engine.bodies.group_roots()
+    assert list(roots[:3]) == [0, 0, 0] and offsets[2].tolist() == [1.0, 11.0]
+    engine.bodies.targets[2] = -1
+    roots, offsets = engine.bodies.group_roots()
+    assert list(roots[:3]) == [0, 0, 2] and offsets[2].tolist() == [0.0, 0.0]
+
+
 def test_follower_group_stays_on_the_page():
     engine = Engine(*A4)
     engine.insert("photo", 190, 150, 60, 40)

@@ -67,3 +67,46 @@ def test_write_back_skips_items_the_engine_does_not_know():
     write_back(page, engine)
     assert (page.item("title").x, page.item("title").y) == (60.0, 250.13)
     assert (page.item("late").x, page.item("late").y) == (1, 2)
+
+
+def scene_page(scene) -> Page:
+    return Page(id="p", width_mm=scene.page_w_mm, height_mm=scene.page_h_mm,
+                items=[BlockItem(id=name, x=float(x), y=float(y), w=float(w), h=float(h))
+                       for name, (x, y), (w, h) in zip(scene.ids, scene.centres, scene.sizes)])
+
+
+def test_plainly_scattered_pages_are_free_overlapping_items_that_fit():
+    from seeded_scenes import mixed_scene
+
+    from floatpage.model.layout import plainly_scattered
+
+    settings = PhysicsSettings()
+    scattered = scene_page(mixed_scene(20, 0.5, seed=1))
+    assert plainly_scattered(scattered, settings)
+    anchored = scene_page(mixed_scene(20, 0.5, seed=1))
+    anchored.items[3].anchor = ItemAnchor(to=anchored.items[0].id, dx=5, dy=5)
+    assert not plainly_scattered(anchored, settings)
+    settled = scene_page(mixed_scene(20, 0.5, seed=1))
+    settle_project(Project(pages=[settled]))
+    assert not plainly_scattered(settled, settings)
+    full = Page(id="p", width_mm=100, height_mm=100, items=[  # 4 x 56 x 56 mm: over-full
+        BlockItem(id=f"b{k}", x=50 + k, y=50, w=56, h=56) for k in range(4)])
+    assert not plainly_scattered(full, settings)
+
+
+@pytest.mark.parametrize("count", [12, 50])
+def test_skipping_the_first_probe_of_a_scattered_page_settles_it_the_same(count, monkeypatch):
+    """The probe that plainly_scattered skips would have answered "far from rest": the page
+    settles to the same positions, and the same report, with it as without it."""
+    from seeded_scenes import mixed_scene
+
+    import floatpage.model.layout as layout
+
+    settings = PhysicsSettings()
+    skipped = scene_page(mixed_scene(count, 0.5, seed=2))
+    assert layout.plainly_scattered(skipped, settings)
+    report = layout.settle_page(skipped, settings)
+    monkeypatch.setattr(layout, "plainly_scattered", lambda page, settings: False)
+    probed = scene_page(mixed_scene(count, 0.5, seed=2))
+    assert layout.settle_page(probed, settings) == report
+    assert [(i.x, i.y) for i in skipped.items] == [(i.x, i.y) for i in probed.items]
