@@ -331,16 +331,16 @@ class Engine:
     @staticmethod
     def _has_cycle(targets: np.ndarray) -> bool:
         """Whether following ``targets`` (NO_TARGET: none) from some row comes back to it, by
-        pointer jumping: without a cycle every row reaches the end of its chain within
-        log2(n) + 1 jumps."""
+        pointer jumping: without a cycle every row reaches the end of its chain, a row that
+        follows nothing, within log2(n) + 1 doublings.  A row in (or leading into) a cycle
+        reaches only rows that follow something: on a cycle of 2, 4, 8... rows the doublings
+        bring each row back to itself, which looks like an end unless that is asked."""
         count = len(targets)
         rows = np.arange(count)
-        if (targets == rows).any():
-            return True
         ahead = np.where(targets == NO_TARGET, rows, targets)
         for _ in range(max(count, 1).bit_length() + 1):
             ahead = ahead[ahead]
-        return bool((ahead[ahead] != ahead).any())
+        return bool((targets[ahead] != NO_TARGET).any())
 
     def _leads_back(self, target: int, row: int) -> bool:
         """Whether the chain of anchors from ``target`` reaches ``row``.  Only an item that

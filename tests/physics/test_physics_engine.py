@@ -225,6 +225,16 @@ def test_anchor_all_to_refuses_as_anchor_to_does():
         anchored_pair(False, [("c", "c", 1, 1)])
 
 
+@pytest.mark.parametrize("length", [2, 3, 4, 5])
+def test_anchor_all_to_refuses_a_cycle_of_any_length(length):
+    """Pointer jumping brings every row of a cycle of 2 or 4 rows back to itself, which looks
+    like the end of a chain: the cycle test must still see it."""
+    names = "abcde"[:length]
+    cycle = [(names[k], names[(k + 1) % length], 5, 0) for k in range(length)]
+    with pytest.raises(ValueError, match="cycle"):
+        anchored_pair(False, cycle)
+
+
 def test_group_roots_follow_edits_in_place_and_hand_out_copies():
     engine = anchored_pair(False, [("b", "a", 12, 0), ("c", "b", 0, 9)])
     roots, offsets = engine.bodies.group_roots()
