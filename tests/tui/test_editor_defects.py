@@ -237,6 +237,20 @@ async def test_help_explains_every_mark_the_preview_draws(project_path):
             assert meaning[:30] in text.replace("\n", " ") or mark in text
 
 
+def test_the_marks_name_the_keys_that_make_them():
+    """`?` said "g joins or leaves" a group: g opens the background dialog, G is Group. And
+    the dashed cyan guide lines drawn while an item moves were explained nowhere."""
+    from floatpage.tui.dialogs.help import MARKS
+    from floatpage.tui.keymap import COMMANDS
+
+    keys = {command.action_name: command.keys for command in COMMANDS}
+    marks = dict(MARKS)
+    assert f"({keys['group']} joins or leaves)" in marks["- - group"]
+    assert f"(shown with {keys['toggle_labels']})" in marks["~name"]
+    assert any("guide" in meaning and "while the selected item moves" in meaning
+               for meaning in marks.values())
+
+
 async def test_a_smaller_page_size_ends_with_no_overlap_and_nothing_off_it(tmp_path):
     """Issue 11, a fair start after layout changes: `S`, a smaller size, Enter; the items that
     no longer fit are made smaller, spread and settle with no overlap and nothing off the
