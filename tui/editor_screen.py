@@ -155,12 +155,15 @@ class EditorScreen(Screen):
             if self.pacer.may_draw():
                 self.frame_timer.pause()
                 self.redraw()
+            else:
+                self.meter.record_held(time.perf_counter())
             return
         start = time.perf_counter()
         self._steps_undrawn += engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
         if engine.settled:
             self.finish_settling()
         if not self.pacer.may_draw():
+            self.meter.record_held(time.perf_counter())
             return
         if engine.settled:
             self.frame_timer.pause()
@@ -300,7 +303,7 @@ class EditorScreen(Screen):
                 summary, words = self.quality_summary()
                 self.query_one(StatusLine).show(Status(
                     state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
-                    steps_per_s=self.meter.steps_per_s, quality=summary,
+                    held=self.meter.held, steps_per_s=self.meter.steps_per_s, quality=summary,
                     frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
                     details=self.details))
             bar = self.query_one(PageBar)
