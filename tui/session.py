@@ -75,6 +75,13 @@ def needs_settling(page: Page, settings, engine: Engine) -> bool:
     return any((a.x, a.y) != (b.x, b.y) for a, b in zip(page.items, trial.items))
 
 
+def finalize_as_shown(engine: Engine) -> None:
+    """The no-overlap pass, lining the page up only if it had something to mend (see
+    ``EditSession.finalize_for_export``)."""
+    quality = engine.quality()
+    engine.finalize(align=bool(quality.overlapping_pairs or quality.off_page))
+
+
 def copy_into(picture: Path, folder: Path) -> Path:
     """Copy ``picture`` into ``folder`` under its own name (numbered if another file holds it);
     the same bytes already there are reused."""
@@ -552,19 +559,25 @@ class EditSession:
 
         The finalised positions become part of the document (undoable), so the
         page on screen is the page in the PDF.
+
+        A page with nothing overlapping and nothing off it is not lined up by the alignment
+        snap here: it is the page as shown, as saved. The snap pulled a picture nudged one step
+        back onto the page's centre, so Ctrl+S then Ctrl+E left the project unsaved again and
+        the PDF undid the nudge (defect 1). A page the pass has to mend is lined up, as the
+        editor's own pass at rest lines it up (`EditorScreen.finish_settling`).
         """
         self.end_move()
         self.sync_positions()
         before = [(item.x, item.y) for page in self.project.pages for item in page.items]
         version, undo_depth = self.version, len(self.history.undo_stack)
         self.checkpoint("finalise for export")
-        self.engine.finalize()
+        finalize_as_shown(self.engine)
         self.sync_positions()
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
         for index, page in enumerate(self.project.pages):
             if index != self.page_index:
                 engine = engine_for_page(page, settings)
-                engine.finalize()
+                finalize_as_shown(engine)
                 write_back(page, engine)
         after = [(item.x, item.y) for page in self.project.pages for item in page.items]
         if after == before:  # nothing moved: no edit, and a saved project stays saved
