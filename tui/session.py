@@ -318,20 +318,30 @@ class EditSession:
         """Hold the item at (x, y), kept inside the page: a held key (or a drag) past the edge
         used to carry the item, and then its anchor, off the page (defect 10).  A member of a
         group moves its whole group (by its lead) so that it lands at (x, y)."""
+        item_id, x_mm, y_mm = self._move_target(item_id, x_mm, y_mm)
+        self.begin_move(item_id)
+        self.engine.move(item_id, x_mm, y_mm)
+
+    def _move_target(self, item_id: str, x_mm: float, y_mm: float) -> tuple[str, float, float]:
+        """The item a move of ``item_id`` to (x, y) moves, and where, kept inside the page."""
         lead_id = self.mover_of(item_id)
         if lead_id != item_id:
             positions = self.engine.positions()
             (x, y), (lead_x, lead_y) = positions[item_id], positions[lead_id]
             item_id, x_mm, y_mm = lead_id, x_mm - x + lead_x, y_mm - y + lead_y
-        self.begin_move(item_id)
         item = self.page.item(item_id)
-        x_mm = inside(x_mm, item.w, self.page.width_mm)
-        y_mm = inside(y_mm, item.h, self.page.height_mm)
-        self.engine.move(item_id, x_mm, y_mm)
+        return (item_id, inside(x_mm, item.w, self.page.width_mm),
+                inside(y_mm, item.h, self.page.height_mm))
 
     def nudge(self, dx_mm: float, dy_mm: float) -> None:
+        """Move the selected item a step; refused, with no edit made, when the page's edge
+        leaves it no room that way (a full-width band nudged sideways used to be marked
+        unsaved although nothing moved)."""
         item = self._require_selected()
         x, y = self.engine.positions()[item.id]
+        mover, to_x, to_y = self._move_target(item.id, x + dx_mm, y + dy_mm)
+        if self.held_id != mover and (to_x, to_y) == self.engine.positions()[mover]:
+            raise EditError(f"{item.id} is at the page's edge: no room to move that way")
         self.move_to(item.id, x + dx_mm, y + dy_mm)
 
     def end_move(self) -> None:

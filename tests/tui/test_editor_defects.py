@@ -341,3 +341,21 @@ async def test_a_key_is_not_held_back_by_the_no_overlap_pass(tmp_path):
         while screen.passes_running:
             await pilot.pause(0.05)
         assert session.engine.positions()["jan-title"][1] < y, "the pass undid the key's edit"
+
+
+async def test_a_nudge_the_page_edge_stops_makes_no_edit_and_says_so(tmp_path):
+    """The greeting card's band is as wide as the page: Tab to it and Right moved nothing,
+    yet the project was "● unsaved" and `q` asked about changes."""
+    import shutil
+
+    folder = tmp_path / "greeting-card"
+    shutil.copytree(Path(__file__).resolve().parents[2] / "sample_projects" / "greeting-card",
+                    folder)
+    async with editor(folder / "greeting-card.toml") as (app, pilot):
+        while app.session.selected_id != "front-band":
+            await pilot.press("tab")
+        await pilot.press("right")
+        assert not app.session.unsaved, "nothing moved"
+        assert messages(app)[-1] == "front-band is at the page's edge: no room to move that way"
+        await pilot.press("up")  # up it can go
+        assert app.session.unsaved
