@@ -29,6 +29,7 @@ from rich.cells import cell_len
 
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
+from floatpage.model.layout import copy_of
 from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.direct_paint import draws_none_of, stale_lines_hidden
@@ -388,6 +389,10 @@ class EditorScreen(Screen):
         the selection, the page is redrawn and the physics woken (or, when a held key outruns
         the link or the byte budget, only woken: the next frame shows it)."""
         self.item_selected = self.session.selected_id is not None
+        request, self.session.room_wanted = self.session.room_wanted, None
+        if request is not None:  # an insert or a page change: room is found off this thread
+            self.passes_running += 1
+            self.room_worker(request, copy_of(self.session.page))
         if self.running and not self.session.engine.settled and not self.pacer.may_draw():
             self.wake()
             return
@@ -403,17 +408,31 @@ class EditorScreen(Screen):
 
     def attempt(self, edit, *args) -> bool:
         """Run a session edit; a refusal (EditError, or the engine's ValueError) is a notice."""
-        self.session.last_fit_scale = 1.0
         try:
             edit(*args)
         except (FloatpageError, ValueError) as error:
             self.notify(str(error), severity="warning")
             return False
         self.after_edit()
-        if self.session.last_fit_scale < 1.0:
-            self.notify(f"made {1 - self.session.last_fit_scale:.0%} smaller so that everything "
-                        "fits the page without overlap (Ctrl+Z undoes it)", timeout=4)
         return True
+
+    @work(thread=True, group="room")
+    def room_worker(self, request, page) -> None:
+        """`EditSession.room_scale` on a copy of the page, in a thread (see `want_room`)."""
+        scale = 1.0
+        try:
+            scale = self.session.room_scale(page, request)
+        finally:
+            self.app.call_from_thread(self.adopt_room, request, scale)
+
+    def adopt_room(self, request, scale: float) -> None:
+        self.passes_running -= 1
+        if self.session.make_room(request, scale):
+            self.notify(f"made {1 - scale:.0%} smaller so that everything fits the page "
+                        "without overlap (Ctrl+Z undoes it)", timeout=4)
+            self.after_edit()
+        else:
+            self.redraw()
 
     @property
     def active_bindings(self):

@@ -224,10 +224,19 @@ async def test_an_insert_that_had_to_shrink_says_so(tmp_path):
     picture = next((tmp_path / "pictures").iterdir())
     async with editor(path) as (app, pilot):
         session = app.session
-        screen_of(app).attempt(lambda: session.insert_item(
-            session.make_item("picture", path=str(picture.relative_to(tmp_path)))))
+        item = session.make_item("picture", path=str(picture.relative_to(tmp_path)))
+        size = (item.w, item.h)
+        screen_of(app).attempt(lambda: session.insert_item(item))
+        # The key's answer shows the picture at once; the room is sought in a thread (it
+        # took 0.8-2.3 s of the answer, the editor frozen meanwhile)...
+        assert (item.w, item.h) == size and screen_of(app).passes_running == 1
+        assert not screen_of(app).at_rest
+        await app.workers.wait_for_complete()
         await pilot.pause()
+        # ...and when it is found, the picture shrinks, and the editor says so.
+        assert item.w < size[0] and item.h < size[1]
         assert messages(app)[-1].startswith("made ") and "smaller" in messages(app)[-1]
+        assert screen_of(app).passes_running == 0
 
 
 async def test_10_holding_an_arrow_keeps_an_anchored_item_and_its_anchor_on_the_page(tmp_path):
@@ -359,3 +368,21 @@ async def test_a_nudge_the_page_edge_stops_makes_no_edit_and_says_so(tmp_path):
         assert messages(app)[-1] == "front-band is at the page's edge: no room to move that way"
         await pilot.press("up")  # up it can go
         assert app.session.unsaved
+
+
+async def test_turning_the_page_answers_before_the_room_is_found(tmp_path):
+    """`o` on the card turned the page only after settling copies of it, to find whether its
+    items fit (2.6-5.6 s on the samples at load 7, the editor frozen). The page turns in the
+    key's answer; the search runs in a thread, and the page ends with no overlap."""
+    from floatpage.starters import create
+
+    path = tmp_path / "card.toml"
+    create("card", path)
+    async with editor(path, autostart=True) as (app, pilot):
+        screen = screen_of(app)
+        screen.action_toggle_orientation()
+        assert app.session.page.orientation == "landscape"
+        assert screen.passes_running == 1 and not screen.at_rest
+        await settle_live(app, pilot)
+        quality = app.session.engine.quality()
+        assert quality.overlapping_pairs == () and quality.off_page == ()
