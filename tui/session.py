@@ -123,7 +123,6 @@ class EditSession:
         self._versions = itertools.count(1)
         self.held_id: str | None = None
         self.room_wanted: RoomRequest | None = None  # see want_room
-        self.last_fit_scale = 1.0  # how much the last insert or page change shrank items
         self.engine: Engine = self._build_engine()
 
     # -- what is on screen ---------------------------------------------------------------
@@ -289,7 +288,6 @@ class EditSession:
                 item.w, item.h = item.w * scale, item.h * scale
         if self.saved_version == self.version:  # saved meanwhile: this is a change to save
             self.mark_unsaved()
-        self.last_fit_scale = scale
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
         return True
