@@ -127,6 +127,7 @@ class EditorScreen(Screen):
         self._quality_at = float("-inf")
         self._quality_key: bytes | None = None  # what the figures were measured on, at rest
         self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
+        self.room_searches = 0  # searches for room running in threads (`room_worker`)
 
     def compose(self) -> ComposeResult:
         yield PageBar(id="page-bar")
@@ -284,7 +285,8 @@ class EditorScreen(Screen):
     @property
     def at_rest(self) -> bool:
         """Settled, and the no-overlap pass (if it was needed) done."""
-        return self.session.engine.settled and not self.passes_running
+        return self.session.engine.settled and not self.passes_running \
+            and not self.room_searches
 
     def redraw(self, measure: bool = True) -> None:
         """Paint the preview, the status lines and the top bar.  ``measure=False`` (a key's
@@ -391,7 +393,7 @@ class EditorScreen(Screen):
         self.item_selected = self.session.selected_id is not None
         request, self.session.room_wanted = self.session.room_wanted, None
         if request is not None:  # an insert or a page change: room is found off this thread
-            self.passes_running += 1
+            self.room_searches += 1
             self.room_worker(request, copy_of(self.session.page))
         if self.running and not self.session.engine.settled and not self.pacer.may_draw():
             self.wake()
@@ -426,7 +428,7 @@ class EditorScreen(Screen):
             self.app.call_from_thread(self.adopt_room, request, scale)
 
     def adopt_room(self, request, scale: float) -> None:
-        self.passes_running -= 1
+        self.room_searches -= 1
         if self.session.make_room(request, scale):
             self.notify(f"made {1 - scale:.0%} smaller so that everything fits the page "
                         "without overlap (Ctrl+Z undoes it)", timeout=4)

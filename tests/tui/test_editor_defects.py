@@ -229,14 +229,14 @@ async def test_an_insert_that_had_to_shrink_says_so(tmp_path):
         screen_of(app).attempt(lambda: session.insert_item(item))
         # The key's answer shows the picture at once; the room is sought in a thread (it
         # took 0.8-2.3 s of the answer, the editor frozen meanwhile)...
-        assert (item.w, item.h) == size and screen_of(app).passes_running == 1
+        assert (item.w, item.h) == size and screen_of(app).room_searches == 1
         assert not screen_of(app).at_rest
         await app.workers.wait_for_complete()
         await pilot.pause()
         # ...and when it is found, the picture shrinks, and the editor says so.
         assert item.w < size[0] and item.h < size[1]
         assert messages(app)[-1].startswith("made ") and "smaller" in messages(app)[-1]
-        assert screen_of(app).passes_running == 0
+        assert screen_of(app).room_searches == 0
 
 
 async def test_10_holding_an_arrow_keeps_an_anchored_item_and_its_anchor_on_the_page(tmp_path):
@@ -382,7 +382,7 @@ async def test_turning_the_page_answers_before_the_room_is_found(tmp_path):
         screen = screen_of(app)
         screen.action_toggle_orientation()
         assert app.session.page.orientation == "landscape"
-        assert screen.passes_running == 1 and not screen.at_rest
+        assert screen.room_searches == 1 and not screen.at_rest
         await settle_live(app, pilot)
         quality = app.session.engine.quality()
         assert quality.overlapping_pairs == () and quality.off_page == ()
