@@ -33,12 +33,14 @@ are issue 11's, at 100x32. Compare within one run; the machine is shared.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import shlex
 import shutil
 import sys
 import tempfile
 import textwrap
+import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -127,9 +129,27 @@ def sessions(scratch: Path, baseline: Path | None = None
     return rows
 
 
+@contextlib.contextmanager
+def scratch_folder(tries: int = 10):
+    """A temporary folder, removed at the end once the editors in it have gone: an editor
+    whose session ends writes its recovery file (and lets go of its lock) within a second of
+    the hang-up, and removing the folder meanwhile failed ("Directory not empty") after
+    every table was printed: the run ended in a traceback and exit status 1."""
+    folder = tempfile.mkdtemp(prefix="floatpage-editor-bench-")
+    try:
+        yield folder
+    finally:
+        for _ in range(tries):
+            try:
+                shutil.rmtree(folder)
+                break
+            except OSError:
+                time.sleep(0.5)
+
+
 def run_link(args: argparse.Namespace) -> None:
     sizes = [tuple(int(part) for part in size.split("x")) for size in args.size]
-    with tempfile.TemporaryDirectory() as folder:
+    with scratch_folder() as folder:
         sshd = LoopbackSshd() if args.link == "ssh" else None
         try:
             if sshd is not None:

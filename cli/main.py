@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import os
 import sys
 import time
 from pathlib import Path
@@ -87,7 +88,7 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
           f"(kept in {printable(recovery.name)}).")
     while True:
         try:
-            answer = input("[r]estore them, [d]iscard them, or [q]uit and decide later? ").strip().lower()
+            answer = ask_letter("[r]estore them, [d]iscard them, or [q]uit and decide later? ")
         except EOFError:
             answer = "q"
         if answer in ("r", "restore"):
@@ -97,6 +98,31 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
             return False
         if answer in ("q", "quit"):
             raise FloatpageError(f"{project}: not opened; the unsaved edits stay in {recovery}")
+
+
+def ask_letter(prompt: str) -> str:
+    """One answer to a `[r]estore`-style question: on a terminal, the first key pressed, as
+    the prompt's brackets promise (a user pressed r and waited: it wanted Enter too); else a
+    line, as from a pipe."""
+    if not sys.stdin.isatty():
+        return input(prompt).strip().lower()
+    import termios
+    import tty
+
+    fd = sys.stdin.fileno()
+    saved = termios.tcgetattr(fd)
+    try:
+        tty.setcbreak(fd)  # before the prompt shows: a key typed in line mode waits for Enter
+        print(prompt, end="", flush=True)
+        key = os.read(fd, 1).decode(errors="replace")
+        termios.tcflush(fd, termios.TCIFLUSH)  # an Enter after it is not the editor's first key
+    finally:
+        termios.tcsetattr(fd, termios.TCSADRAIN, saved)
+    if not key or key == "\x04":  # end of input, or Ctrl+D
+        print()
+        raise EOFError
+    print(key if key.isprintable() else "")
+    return key.strip().lower()
 
 
 def cmd_settle(args: argparse.Namespace) -> int:

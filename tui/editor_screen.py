@@ -29,6 +29,7 @@ from rich.cells import cell_len
 
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
+from floatpage.model.layout import copy_of
 from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.direct_paint import draws_none_of, stale_lines_hidden
@@ -126,6 +127,7 @@ class EditorScreen(Screen):
         self._quality_at = float("-inf")
         self._quality_key: bytes | None = None  # what the figures were measured on, at rest
         self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
+        self.room_searches = 0  # searches for room running in threads (`room_worker`)
 
     def compose(self) -> ComposeResult:
         yield PageBar(id="page-bar")
@@ -155,12 +157,15 @@ class EditorScreen(Screen):
             if self.pacer.may_draw():
                 self.frame_timer.pause()
                 self.redraw()
+            else:
+                self.meter.record_held(time.perf_counter())
             return
         start = time.perf_counter()
         self._steps_undrawn += engine.advance(budget_s=PHYSICS_BUDGET_S, clock=time.perf_counter)
         if engine.settled:
             self.finish_settling()
         if not self.pacer.may_draw():
+            self.meter.record_held(time.perf_counter())
             return
         if engine.settled:
             self.frame_timer.pause()
@@ -280,7 +285,8 @@ class EditorScreen(Screen):
     @property
     def at_rest(self) -> bool:
         """Settled, and the no-overlap pass (if it was needed) done."""
-        return self.session.engine.settled and not self.passes_running
+        return self.session.engine.settled and not self.passes_running \
+            and not self.room_searches
 
     def redraw(self, measure: bool = True) -> None:
         """Paint the preview, the status lines and the top bar.  ``measure=False`` (a key's
@@ -300,7 +306,7 @@ class EditorScreen(Screen):
                 summary, words = self.quality_summary()
                 self.query_one(StatusLine).show(Status(
                     state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
-                    steps_per_s=self.meter.steps_per_s, quality=summary,
+                    held=self.meter.held, steps_per_s=self.meter.steps_per_s, quality=summary,
                     frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
                     details=self.details))
             bar = self.query_one(PageBar)
@@ -385,6 +391,10 @@ class EditorScreen(Screen):
         the selection, the page is redrawn and the physics woken (or, when a held key outruns
         the link or the byte budget, only woken: the next frame shows it)."""
         self.item_selected = self.session.selected_id is not None
+        request, self.session.room_wanted = self.session.room_wanted, None
+        if request is not None:  # an insert or a page change: room is found off this thread
+            self.room_searches += 1
+            self.room_worker(request, copy_of(self.session.page))
         if self.running and not self.session.engine.settled and not self.pacer.may_draw():
             self.wake()
             return
@@ -400,17 +410,31 @@ class EditorScreen(Screen):
 
     def attempt(self, edit, *args) -> bool:
         """Run a session edit; a refusal (EditError, or the engine's ValueError) is a notice."""
-        self.session.last_fit_scale = 1.0
         try:
             edit(*args)
         except (FloatpageError, ValueError) as error:
             self.notify(str(error), severity="warning")
             return False
         self.after_edit()
-        if self.session.last_fit_scale < 1.0:
-            self.notify(f"made {1 - self.session.last_fit_scale:.0%} smaller so that everything "
-                        "fits the page without overlap (Ctrl+Z undoes it)", timeout=4)
         return True
+
+    @work(thread=True, group="room")
+    def room_worker(self, request, page) -> None:
+        """`EditSession.room_scale` on a copy of the page, in a thread (see `want_room`)."""
+        scale = 1.0
+        try:
+            scale = self.session.room_scale(page, request)
+        finally:
+            self.app.call_from_thread(self.adopt_room, request, scale)
+
+    def adopt_room(self, request, scale: float) -> None:
+        self.room_searches -= 1
+        if self.session.make_room(request, scale):
+            self.notify(f"made {1 - scale:.0%} smaller so that everything fits the page "
+                        "without overlap (Ctrl+Z undoes it)", timeout=4)
+            self.after_edit()
+        else:
+            self.redraw()
 
     @property
     def active_bindings(self):

@@ -251,8 +251,13 @@ class PagePainter:
 
     def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
               *, bold: bool = False, wrap: bool = True, below_label: bool = True) -> None:
-        """As much of the text as fits the item's full cells (under the label row, if any)."""
+        """As much of the text as fits the item's full cells (under the label row, if any).
+        A box with no full row (a caption a cell tall that straddles two rows, as most do at
+        some height) gets one line on the row holding its top, as the label does: the album's
+        captions, the flyer's and the multilingual card's lines showed as bare half-blocks."""
         col0, row0, col1, row1 = self._cells(box)
+        if row1 <= row0 and box[3] > box[1]:
+            row0, row1 = box[1] // 2, box[1] // 2 + 1
         width, first = col1 - col0, row0 + (1 if below_label else 0)
         if width < 1 or first >= row1:
             return

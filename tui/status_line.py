@@ -19,6 +19,7 @@ class Status:
     frame_ms: float = 0.0
     quality_words: str = ""  # the same, said in words
     details: bool = False  # `v` shows the numbers
+    held: int = 0  # frames held back in the last second: the link could not take them
 
 
 STATE_WORDS = {"settling": "settling…", "settled": "still", "paused": "paused · Space resumes"}
@@ -33,8 +34,8 @@ def status_text(status: Status) -> str:
     if status.state in ("settled", "paused"):
         rate = "idle: no frames drawn"
     else:
-        rate = (f"{status.fps:4.1f} fps · {status.steps_per_s:,.0f} steps/s · "
-                f"frame {status.frame_ms:4.1f} ms")
+        rate = (f"{status.fps:4.1f} fps · {status.held} held · "
+                f"{status.steps_per_s:,.0f} steps/s · frame {status.frame_ms:4.1f} ms")
     return f"{words} · energy {status.energy:.2e} · {rate}\n{status.quality}"
 
 

@@ -184,6 +184,23 @@ def test_the_next_edit_offers_the_recovered_edits(tmp_path):
     assert not recovery_path(path).exists()
 
 
+def test_one_key_answers_the_recovery_question(tmp_path):
+    """"[r]estore them, [d]iscard them, or [q]uit": a user pressed r and nothing happened, as
+    the question read a line and wanted Enter too. The key alone answers it."""
+    path = project_file(tmp_path)
+    recovery_path(path).write_bytes(path.read_bytes())
+    editor = Editor(path)
+    try:
+        editor.read_until(b"[d]iscard them")
+        editor.send(b"r")
+        editor.read_until(b"2 items")
+        editor.send(b"\x11")  # Ctrl+Q: the restored edits are unsaved, so it asks
+        editor.read_until(b"Quit without saving")
+    finally:
+        editor.kill()
+        os.close(editor.fd)
+
+
 def test_discarding_the_recovered_edits_deletes_them(tmp_path):
     path = project_file(tmp_path)
     recovery_path(path).write_bytes(path.read_bytes())

@@ -58,6 +58,17 @@ def test_frame_meter_counts_frames_and_steps_over_the_window():
     assert meter.steps_per_s == pytest.approx(300)
 
 
+def test_frame_meter_counts_frames_held_back_over_the_window():
+    meter = FrameMeter(window_s=1.0)
+    for tick in range(60):  # two seconds: every third frame drawn, the others held back
+        if tick % 3 == 0:
+            meter.record(tick / 30, 10, 0.005)
+        else:
+            meter.record_held(tick / 30)
+    assert meter.held == 21  # ticks 29-59: the window holds both its ends
+    assert meter.fps == pytest.approx(10, rel=0.1)
+
+
 def test_key_labels_read_as_typed():
     assert key_label("plus,equals_sign") == "+ ="
     assert key_label("shift+left,H") == "Shift+\u2190 H"

@@ -131,3 +131,22 @@ def test_a_moving_item_keeps_its_size_in_pixels():
         x0, y0, x1, y1 = p.rect(50.0 + step / 20, 70.0 + step / 20, 93.0, 124.0)
         sizes.add((x1 - x0, y1 - y0))
     assert sizes == {(round(93.0 * p.scale), round(124.0 * p.scale))}
+
+
+async def test_a_caption_a_cell_tall_shows_its_text_wherever_it_sits(tmp_path):
+    """The photo album at 100 x 32, as opened: each photo's caption, a box about one cell
+    tall, showed as a bare strip when it straddled two cell rows (four of five on page 1),
+    since text went only on rows the box covers whole. Then one line goes on the row
+    holding the box's top."""
+    import shutil
+    from pathlib import Path
+
+    folder = tmp_path / "photo-album"
+    shutil.copytree(Path(__file__).resolve().parents[2] / "sample_projects" / "photo-album",
+                    folder)
+    async with editor(folder / "photo-album.toml", size=(100, 32)) as (app, pilot):
+        text = preview_text(app)
+        captions = [item for item in app.session.page.items if item.id.endswith("-caption")]
+        assert len(captions) == 5, [item.id for item in app.session.page.items]
+        for caption in captions:
+            assert caption.text in text, (caption.text, text)
