@@ -37,22 +37,19 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
               if not quality.ok else [])
     if quality.in_margin:
-        ids = [name(k) for k in quality.in_margin]
-        more = f" and {len(ids) - SHOWN} more" if len(ids) > SHOWN else ""
-        shown = ", ".join(ids[:SHOWN]) + more
-        lines.append(f"  {len(ids)} item(s) inside the {quality.margin_mm:.1f} mm print-safe "
-                     f"margin: {shown}; where a page is too full the gutter gives way first, "
-                     "then the margin: run `floatpage settle`, make items smaller, mark items "
-                     "that may touch the edge `bleed = true`, or lower margin_mm in [physics]")
+        shown = _some([name(k) for k in quality.in_margin[:SHOWN]], len(quality.in_margin))
+        lines.append(f"  {len(quality.in_margin)} item(s) inside the {quality.margin_mm:.1f} mm "
+                     f"print-safe margin: {shown}; where a page is too full the gutter gives "
+                     "way first, then the margin: run `floatpage settle`, make items smaller, "
+                     "mark items that may touch the edge `bleed = true`, or lower margin_mm in "
+                     "[physics]")
     lines += _explain(limits, name, gutter_mm, engine.margin_mm)
     forced = any(isinstance(limit, (PinnedClash, Crossing)) and limit_gap(limit) < 0
                  for limit in limits)
     if quality.overlap_count and not forced:
-        pairs = ", ".join(f"{name(a)} and {name(b)}"
-                          for a, b in quality.overlapping_pairs[:SHOWN])
-        more = (f" and {quality.overlap_count - SHOWN} more"
-                if quality.overlap_count > SHOWN else "")
-        lines.append(f"  overlapping: {pairs}{more}; run `floatpage settle`; if they still "
+        pairs = _some([f"{name(a)} and {name(b)}"
+                       for a, b in quality.overlapping_pairs[:SHOWN]], quality.overlap_count)
+        lines.append(f"  overlapping: {pairs}; run `floatpage settle`; if they still "
                      "overlap after it, hard anchors or anchored groups box them in: move an "
                      "anchor, make items smaller, or move some to another page")
     short_gap = (not quality.overlap_count
@@ -75,6 +72,11 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                 f"jam it: move an anchored item or nudge items apart, and settle again")
             problems += 1
     return lines, problems
+
+
+def _some(shown: list[str], total: int) -> str:
+    """The first of ``total`` things, and how many more there are."""
+    return ", ".join(shown) + (f" and {total - len(shown)} more" if total > len(shown) else "")
 
 
 def limit_gap(limit: Limit) -> float:

@@ -463,19 +463,8 @@ class Engine:
             return True
         placed = placed_anew(bodies, self.page_w_mm, self.page_h_mm, self.params.gutter_mm,
                              self.margin_mm)
-        if placed is not None:
-            # As from the packed second start: a gentle run spreads the items from where they
-            # were set down; if it jams them again, they stay where they were set down.
-            bodies.centres[:] = placed
-            bodies.velocities[:] = 0.0
-            self.reheat(SECOND_START_HEAT)
-            self._spread_out = True
-            self._run_until_settled(RELOCATED_RUN_STEPS)
-            if project():
-                return True
-            bodies.centres[:] = placed
-            if project():
-                return True
+        if placed is not None and self._spread_from(placed, RELOCATED_RUN_STEPS, project):
+            return True
         bodies.centres[:] = widest
         return False
 
@@ -581,15 +570,26 @@ class Engine:
         first = bodies.centres.copy()
         start = first.copy()
         start[rows] = packed
+        if self._spread_from(start, max_steps,
+                             lambda: self.finalize(fall_back=False, align=align)):
+            return True
+        bodies.centres[:] = first
+        return self.finalize(align=align)
+
+    def _spread_from(self, start: np.ndarray, max_steps: int, keeps: Callable[[], bool]
+                     ) -> bool:
+        """A start that holds the gutter by construction (the packing, or the items set down
+        anew by physics.relocation), settled gently from there: whether ``keeps`` (a no-overlap
+        pass, True when it holds the gutter) holds after the run, or else on the start itself,
+        less evenly spread than the physics would leave it.  Leaves the page as ``keeps`` left
+        it."""
+        bodies = self._bodies
         bodies.centres[:] = start
         bodies.velocities[:] = 0.0
         self.reheat(SECOND_START_HEAT)
         self._spread_out = True  # spread already: it cools onto its guides (fast_mode.run_fast)
         self._run_until_settled(max_steps)
-        if self.finalize(fall_back=False, align=align):
+        if keeps():
             return True
         bodies.centres[:] = start
-        if self.finalize(fall_back=False, align=align):
-            return True
-        bodies.centres[:] = first
-        return self.finalize(align=align)
+        return keeps()

@@ -103,6 +103,16 @@ def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray
     return low, high
 
 
+def item_bounds(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest centre, (n, 2) each, that keeps each item on its own inside its
+    walls (Bodies.insets); lowest above highest where it is too large for them.  For an item
+    that moves as a group, see ``group_bounds``."""
+    near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
+    halves = bodies.sizes / 2
+    return halves + near, np.array([page_w_mm, page_h_mm]) - halves - far
+
+
 def group_bounds(bodies: Bodies, rows: np.ndarray, roots: np.ndarray, root_offsets: np.ndarray,
                  near: np.ndarray, far: np.ndarray, page_w_mm: float, page_h_mm: float
                  ) -> tuple[np.ndarray, np.ndarray]:

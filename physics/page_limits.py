@@ -84,8 +84,7 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
     pinned = _pinned(bodies, roots)
     found: list[Limit] = []
     found += _pinned_clashes(bodies, roots, pinned, gutter_mm)
-    found += _pinned_outside(bodies, pinned, near, far, page_w_mm, page_h_mm)
-    found += _decorations_outside(bodies, page_w_mm, page_h_mm)
+    found += _standing_outside(bodies, pinned, near, far, page_w_mm, page_h_mm)
     found += _too_large(bodies, roots, offsets, pinned, near, far, page_w_mm, page_h_mm)
     found += _crossings(bodies, roots, pinned, near, far, page_w_mm, page_h_mm, gutter_mm)
     return found
@@ -140,25 +139,21 @@ def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,
     return [PinnedClash((a, b), gap) for gap, a, b in sorted(found)[:LISTED]]
 
 
-def _pinned_outside(bodies: Bodies, pinned: np.ndarray, near: np.ndarray, far: np.ndarray,
-                    page_w_mm: float, page_h_mm: float) -> list[Limit]:
+def _standing_outside(bodies: Bodies, pinned: np.ndarray, near: np.ndarray, far: np.ndarray,
+                      page_w_mm: float, page_h_mm: float) -> list[Limit]:
+    """Items that never move, standing outside their room: pinned ones past their walls (the
+    margin, or a region), decorations past the page's edge (they keep no margin, but count as
+    off the page)."""
     extent = np.array([page_w_mm, page_h_mm])
     low = bodies.centres - bodies.sizes / 2
     high = bodies.centres + bodies.sizes / 2
     past = np.maximum(-low, high - extent).max(axis=1).clip(0.0)
     into = np.maximum(near - low, high - (extent - far)).max(axis=1).clip(0.0)
-    rows = np.flatnonzero(pinned & (into > TOLERANCE_MM))
-    return [PinnedOutside(int(row), float(past[row]), float(into[row])) for row in rows]
-
-
-def _decorations_outside(bodies: Bodies, page_w_mm: float, page_h_mm: float) -> list[Limit]:
-    """Decorations past the page's edge: they keep no margin, but they count as off the page."""
-    extent = np.array([page_w_mm, page_h_mm])
-    low = bodies.centres - bodies.sizes / 2
-    high = bodies.centres + bodies.sizes / 2
-    past = np.maximum(-low, high - extent).max(axis=1)
-    rows = np.flatnonzero(bodies.decorative & (past > TOLERANCE_MM))
-    return [PinnedOutside(int(row), float(past[row]), float(past[row]), True) for row in rows]
+    decoration = bodies.decorative
+    into = np.where(decoration, past, into)
+    rows = np.flatnonzero((pinned | decoration) & (into > TOLERANCE_MM))
+    return [PinnedOutside(int(row), float(past[row]), float(into[row]), bool(decoration[row]))
+            for row in rows]
 
 
 def _too_large(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray, pinned: np.ndarray,

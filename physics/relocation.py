@@ -32,6 +32,7 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.finalize import ROUNDING_MM, pair_clearances
+from floatpage.physics.geometry import item_bounds
 
 MAX_ITEMS = 150  # the search is O(n^3) in NumPy: 0.1 s a move at 150 items
 PLACE_MAX_ITEMS = 60  # setting every item down anew is n searches: 0.3 s at 60 items
@@ -46,7 +47,7 @@ def relocate_jammed(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_m
     keeps the gutter) after each move; whether the page keeps the gutter in the end.  Leaves
     the page as the last attempt left it: the caller restores what it had if this fails."""
     clearance = gutter_mm + 2 * ROUNDING_MM
-    lowest, highest = _centre_range(bodies, page_w_mm, page_h_mm, margin_mm)
+    lowest, highest = item_bounds(bodies, page_w_mm, page_h_mm, margin_mm)
     movable = _movable(bodies)
     moves = np.zeros(bodies.count, int)
     for _ in range(MAX_MOVES):
@@ -102,7 +103,7 @@ def _placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: 
     the room's top left corner, as a printer fills a sheet, where the first try left an item
     without room."""
     clearance = gutter_mm + 2 * ROUNDING_MM
-    lowest, highest = _centre_range(bodies, page_w_mm, page_h_mm, margin_mm)
+    lowest, highest = item_bounds(bodies, page_w_mm, page_h_mm, margin_mm)
     movable = _movable(bodies)
     placed = bodies.active & ~movable
     centres = bodies.centres.copy()
@@ -120,13 +121,6 @@ def _placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: 
         centres[row] = spot
         placed[row] = True
     return centres
-
-
-def _centre_range(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float
-                  ) -> tuple[np.ndarray, np.ndarray]:
-    near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
-    halves = bodies.sizes / 2
-    return near + halves, np.array([page_w_mm, page_h_mm]) - far - halves
 
 
 def _movable(bodies: Bodies) -> np.ndarray:

@@ -41,6 +41,7 @@ from floatpage.physics.rest_check import RestCheck, group_members, sorted_unique
 from floatpage.physics.snap_memo import AxisMemo
 from floatpage.physics.fast_forces import target_gap
 from floatpage.physics.finalize import ROUNDING_MM
+from floatpage.physics.geometry import item_bounds
 from floatpage.physics.guides import (
     CENTRE, HIGH, LOW, features, hold_strength, page_lines, snap_range,
 )
@@ -121,10 +122,7 @@ class _Snapper:
         self.farthest = ESCAPE_REACH * self.reach  # the longest move
         self.window = max(self.farthest, NEAR_MM) + NEAR_MM  # further apart cannot matter
         self.bounds = distance_bounds(self.reach, self.farthest)
-        extent = np.array(page)
-        near, far = bodies.insets(margin_mm, *page)
-        self.lowest = self.halves + near
-        self.highest = extent - self.halves - far
+        self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
         # per group and axis: too large to fit between its margins (it has no move to make)
         too_large = self.lowest > self.highest
         self.too_large = {row: too_large[members].any(axis=0)
