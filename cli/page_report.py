@@ -11,7 +11,7 @@ from __future__ import annotations
 from floatpage.model.errors import printable
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
-    Crossing, Limit, PinnedClash, PinnedOutside, TooLarge, binding, page_limits,
+    Crossing, Limit, PinnedClash, PinnedOutside, Stack, TooLarge, binding, page_limits,
 )
 from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
 
@@ -44,7 +44,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                      "mark items that may touch the edge `bleed = true`, or lower margin_mm in "
                      "[physics]")
     lines += _explain(limits, name, gutter_mm, engine.margin_mm)
-    forced = any(isinstance(limit, (PinnedClash, Crossing)) and limit_gap(limit) < 0
+    forced = any(isinstance(limit, (PinnedClash, Crossing, Stack)) and limit_gap(limit) < 0
                  for limit in limits)
     if quality.overlap_count and not forced:
         pairs = _some([f"{name(a)} and {name(b)}"
@@ -93,7 +93,7 @@ def _namer(page):
 
 def _explain(limits: list[Limit], name, gutter_mm: float, margin_mm: float) -> list[str]:
     lines: list[str] = []
-    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing):
+    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing, Stack):
         mine = [limit for limit in limits if isinstance(limit, kind)]
         for limit in mine[:SHOWN]:
             lines.append("  " + _sentence(limit, name, gutter_mm, margin_mm))
@@ -135,15 +135,34 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
                 f"is {limit.room_mm:.1f} mm (the page: {limit.page_mm:g} mm): {fate}; make it "
                 "smaller" + (", or bring its followers closer (their dx and dy)"
                              if len(limit.rows) > 1 else ""))
+    if isinstance(limit, Stack):
+        return _stack_sentence(limit, name, gutter_mm)
     a, b = (name(row) for row in limit.rows)
     (side, above), (room_w, room_h) = limit.needs_mm, limit.room_mm
-    if not limit.fits_page:
-        fate = "they overlap wherever they go on this page"
-    elif limit.widest_gap_mm < 0:
-        fate = "they can be parted only by giving up the margin"
-    else:
-        fate = f"the widest gap they can keep is {limit.widest_gap_mm:.1f} mm"
+    fate = _fate(limit, "the widest gap they can keep is")
     return (f"items {a} and {b} cannot both fit with the {gutter_mm:g} mm gutter: side by side "
             f"they need {side:.1f} mm of the {room_w:.1f} mm inside the margins, one above the "
             f"other {above:.1f} mm of {room_h:.1f} mm; {fate}; make one smaller, or move it to "
             "another page")
+
+
+def _fate(limit: Crossing | Stack, widest: str) -> str:
+    if not limit.fits_page:
+        return "they overlap wherever they go on this page"
+    if limit.widest_gap_mm < 0:
+        return "they can be parted only by giving up the margin"
+    return f"{widest} {limit.widest_gap_mm:.1f} mm"
+
+
+def _stack_sentence(limit: Stack, name, gutter_mm: float) -> str:
+    who = ", ".join(name(row) for row in limit.rows[:SHOWN])
+    if len(limit.rows) > SHOWN:
+        who += f" and {len(limit.rows) - SHOWN} more"
+    size_word, _ = AXIS_WORDS[1 - limit.axis]
+    place = "one above another" if limit.axis == 1 else "side by side"
+    along = "tall" if limit.axis == 1 else "wide"
+    return (f"items {who} are each too {size_word} to stand beside another of them with the "
+            f"{gutter_mm:g} mm gutter, so they must stand {place}, and that is "
+            f"{limit.needs_mm:.1f} mm {along}, more than the {limit.room_mm:.1f} mm inside the "
+            f"margins; {_fate(limit, 'the widest gap they can keep is at most')}; make one "
+            "smaller, or move one to another page")

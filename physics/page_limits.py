@@ -16,7 +16,9 @@ that no settle will help, and what to change instead:
 - ``TooLarge``: a rigid group (an item and those anchored to it), or a lone item, is larger
   than the room between its walls on one axis;
 - ``Crossing``: two items that can be parted neither side by side nor one above the other
-  with the gutter between them inside the room.
+  with the gutter between them inside the room;
+- ``Stack``: three or more items of which no two fit side by side with the gutter, so that
+  all must stand one above another, taller together than the room (or the same across).
 
 The area test (physics.quality.gutter_need) stays the reason for a crowd of small items.
 """
@@ -72,7 +74,17 @@ class Crossing:
     fits_page: bool  # whether they can be parted at all if the margins give way
 
 
-Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing]
+@dataclass(frozen=True)
+class Stack:
+    rows: tuple[int, ...]  # tallest first
+    axis: int  # the axis they must be stacked along: 1 one above another, 0 side by side
+    needs_mm: float  # their sizes along it, and a gutter between each two
+    room_mm: float  # inside the margins
+    widest_gap_mm: float  # at most this gap between them inside the margins (< 0: overlap)
+    fits_page: bool  # whether they can be parted at all if the margins give way
+
+
+Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack]
 
 
 def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float,
@@ -87,6 +99,7 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
     found += _standing_outside(bodies, pinned, near, far, page_w_mm, page_h_mm)
     found += _too_large(bodies, roots, offsets, pinned, near, far, page_w_mm, page_h_mm)
     found += _crossings(bodies, roots, pinned, near, far, page_w_mm, page_h_mm, gutter_mm)
+    found += _stacks(bodies, roots, near, far, page_w_mm, page_h_mm, gutter_mm)
     return found
 
 
@@ -221,3 +234,74 @@ def _crossings(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray, near: np.n
                                   float(spare[k, m]), bool(spare_page[k, m] >= 0)))
     found.sort(key=lambda limit: limit.widest_gap_mm)
     return found
+
+
+def _stacks(bodies: Bodies, roots: np.ndarray, near: np.ndarray, far: np.ndarray,
+            page_w_mm: float, page_h_mm: float, gutter_mm: float) -> list[Limit]:
+    """The tallest set of items (one per group, of the same room) of which no two fit side by
+    side with the gutter, where that set is taller than the room with a gutter between each
+    two; the same with the axes swapped.  Two items clash across when their widths and the
+    gutter exceed the room's width, so every item wider than half of (room - gutter) clashes
+    with every other such item, and a narrower one with those wide enough to make up the rest:
+    the largest such set is the wide ones with at most one narrow one, found exactly by trying
+    each narrow one.  Sets of two are Crossings; a set whose two tallest cannot stack either
+    holds a Crossing that already explains the page, and is left out."""
+    extent = np.array([page_w_mm, page_h_mm])
+    rows = np.flatnonzero(bodies.active)
+    if len(rows) < 3:
+        return []
+    rooms = extent - near[rows] - far[rows]
+    found: list[Limit] = []
+    for room in np.unique(rooms.round(6), axis=0):
+        mine = rows[(np.abs(rooms - room) < 1e-6).all(axis=1)]
+        for across in (0, 1):
+            stack = _tallest_stack(bodies.sizes, roots, mine, across, room, gutter_mm)
+            if stack is not None:
+                found.append(_stack_limit(bodies.sizes, stack, across, room, extent, gutter_mm))
+    return found
+
+
+def _tallest_stack(sizes: np.ndarray, roots: np.ndarray, rows: np.ndarray, across: int,
+                   room: np.ndarray, gutter_mm: float) -> np.ndarray | None:
+    """_stacks' search on one axis: the rows of the set, or None where none is too tall."""
+    along = 1 - across
+    spare = room[across] - gutter_mm + TOLERANCE_MM  # two clash when their widths exceed it
+    widths, heights = sizes[rows, across], sizes[rows, along]
+    wide = widths > spare / 2
+    choices = [wide] + [wide & (widths > spare - widths[k]) | (np.arange(len(rows)) == k)
+                        for k in np.flatnonzero(~wide & (widths > spare - widths.max()))]
+    best, best_need = None, room[along] + TOLERANCE_MM
+    for chosen in choices:
+        picked = _one_per_group(rows[chosen], heights[chosen], roots)
+        if len(picked) < 3:
+            continue
+        tall = np.sort(sizes[picked, along])[::-1]
+        if tall[0] + tall[1] + gutter_mm > room[along] + TOLERANCE_MM:
+            continue  # its two tallest are a Crossing
+        need = tall.sum() + gutter_mm * (len(picked) - 1)
+        if need > best_need:
+            best, best_need = picked, need
+    return best
+
+
+def _one_per_group(rows: np.ndarray, heights: np.ndarray, roots: np.ndarray) -> np.ndarray:
+    """The tallest row of each rigid group among ``rows``: members of one group keep their
+    own offsets and may overlap, so only one of them counts towards a stack."""
+    order = np.argsort(-heights, kind="stable")
+    _, first = np.unique(roots[rows[order]], return_index=True)
+    return rows[order[np.sort(first)]]
+
+
+def _stack_limit(sizes: np.ndarray, stack: np.ndarray, across: int, room: np.ndarray,
+                 extent: np.ndarray, gutter_mm: float) -> Stack:
+    along = 1 - across
+    tall = np.sort(sizes[stack, along])[::-1]
+    narrow = np.sort(sizes[stack, across])
+    count = len(stack)
+
+    def widest(span: np.ndarray) -> float:  # stacked, or the two narrowest side by side
+        return max((span[along] - tall.sum()) / (count - 1), span[across] - narrow[0] - narrow[1])
+    return Stack(tuple(int(row) for row in stack[np.argsort(-sizes[stack, along],
+                                                                 kind="stable")]),
+                 along, float(tall.sum() + gutter_mm * (count - 1)), float(room[along]),
+                 float(widest(room)), bool(widest(extent) >= 0))

@@ -116,3 +116,22 @@ def test_check_says_why_no_settle_can_fix_a_page(tmp_path):
     assert 'items "tall" and "wide" cannot both fit' in out
     assert "they overlap wherever they go on this page" in out
     assert "overlapping:" not in out, "explained overlaps are not sent back to settle"
+
+
+def test_check_names_items_that_must_stack_taller_than_the_page(tmp_path):
+    """Three pictures on an A6 card, no two narrow enough to stand side by side with the
+    gutter, and one above another 3.3 mm too tall: `check` names them and the gap that is
+    left, instead of sending the user back to `settle` (a random page's, seed 5017)."""
+    items = [BlockItem(id=name, x=52.0, y=74.0, w=w, h=h) for name, (w, h) in
+             {"sea": (55.08, 44.76), "boat": (36.45, 25.05), "dunes": (56.82, 52.7),
+              "gulls": (55.93, 42.82)}.items()]
+    path = tmp_path / "card.toml"
+    save_project(Project(title="Card", pages=[Page(id="front", size="custom", width_mm=105.0,
+                                                         height_mm=148.0, items=items)]), path)
+    assert run("settle", str(path)).returncode == 0
+    out = run("check", str(path)).stdout
+    assert ('items "dunes", "sea", "gulls" are each too wide to stand beside another of them'
+            in out)
+    assert "they must stand one above another, and that is 146.3 mm tall" in out
+    assert "the widest gap they can keep is at most 1.4 mm" in out
+    assert "run `floatpage settle`" not in out

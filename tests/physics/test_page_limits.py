@@ -3,12 +3,14 @@ items it names, and each what the settle itself then reaches."""
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 
 from floatpage.physics import Engine
 from floatpage.physics.page_limits import (
-    Crossing, PinnedClash, PinnedOutside, TooLarge, page_limits,
+    Crossing, PinnedClash, PinnedOutside, Stack, TooLarge, page_limits,
 )
 
 
@@ -106,3 +108,75 @@ def test_pinned_pairs_are_the_same_found_by_the_neighbour_search_or_block_by_blo
     cut = searched[-1].gap_mm  # pairs tied at the cut may be listed either way
     assert ({limit.rows for limit in blocked if limit.gap_mm < cut}
             == {limit.rows for limit in searched if limit.gap_mm < cut})
+
+
+def stack_engine(*sizes: tuple[float, float]) -> Engine:
+    """An A6 card (105 x 148 mm) with items of these sizes in a row across its middle."""
+    engine = Engine(105.0, 148.0)
+    for k, (w, h) in enumerate(sizes):
+        engine.insert(f"i{k}", 20.0 + 10 * k, 74.0, w, h)
+    return engine
+
+
+def test_items_too_wide_to_pair_and_too_tall_to_stack_are_named_and_settle_keeps_that_gap():
+    """Three items each wider than half the card's room: no two side by side, and one above
+    another they are 3.3 mm too tall for a 3 mm gutter (a random page's, seed 5017)."""
+    engine = stack_engine((55.08, 44.76), (36.45, 25.05), (56.82, 52.7), (55.93, 42.82))
+    (limit,) = limits_of(engine)
+    room = 148.0 - 2 * engine.margin_mm
+    assert isinstance(limit, Stack) and limit.rows == (2, 0, 3) and limit.axis == 1
+    assert limit.needs_mm == pytest.approx(52.7 + 44.76 + 42.82 + 2 * 3.0)
+    assert limit.widest_gap_mm == pytest.approx((room - 52.7 - 44.76 - 42.82) / 2)
+    engine.settle()
+    quality = engine.quality()
+    assert not quality.overlap_count and not quality.in_margin
+    assert quality.min_gap_mm == pytest.approx(limit.widest_gap_mm, abs=0.05)
+
+
+def test_a_stack_with_two_items_narrow_enough_to_pair_is_no_limit():
+    engine = stack_engine((55.08, 44.76), (36.45, 25.05), (56.82, 52.7), (40.0, 42.82))
+    assert limits_of(engine) == []  # 56.82 + 40 + 3 fit in the card's 100 mm room
+
+
+def test_members_of_one_group_count_once_in_a_stack():
+    """A follower may overlap its lead by its offset, so a lead and its follower are not two
+    items that must stand apart: four items 34 mm tall are a stack on the card (145 mm of
+    143), three of them and a follower overlapping one are not."""
+    sizes = [(56.0, 34.0)] * 4
+    assert [type(limit) for limit in limits_of(stack_engine(*sizes))] == [Stack]
+    engine = stack_engine(*sizes)
+    engine.anchor_to("i1", "i0", 0.0, 5.0)
+    assert limits_of(engine) == []
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_the_stack_found_is_the_tallest_that_brute_force_finds(seed):
+    """On random sets of items, the set named is one of the tallest sets (one per group, of
+    three or more, no two fitting side by side, no Crossing inside) that trying every subset
+    finds, and is named exactly when such a set is taller than the room."""
+    rng = np.random.default_rng(seed)
+    count = int(rng.integers(3, 9))
+    sizes = [(float(w), float(h)) for w, h in
+             zip(rng.uniform(20, 80, count), rng.uniform(15, 60, count))]
+    engine = stack_engine(*sizes)
+    room = np.array([105.0, 148.0]) - 2 * engine.margin_mm
+    gutter = engine.params.gutter_mm
+    best = {0: room[1] + 0.01, 1: room[0] + 0.01}
+    for across in (0, 1):
+        along = 1 - across
+        for size in range(3, count + 1):
+            for chosen in itertools.combinations(range(count), size):
+                pairs = itertools.combinations(chosen, 2)
+                if all(sizes[a][across] + sizes[b][across] + gutter > room[across] + 0.01
+                       for a, b in pairs):
+                    tall = sorted((sizes[k][along] for k in chosen), reverse=True)
+                    if tall[0] + tall[1] + gutter <= room[along] + 0.01:
+                        best[across] = max(best[across], sum(tall) + gutter * (size - 1))
+    found = {1 - limit.axis: limit.needs_mm for limit in limits_of(engine)
+             if isinstance(limit, Stack)}
+    for across in (0, 1):
+        limit_room = room[1 - across] + 0.01
+        if best[across] > limit_room:
+            assert found.get(across) == pytest.approx(best[across])
+        else:
+            assert across not in found
