@@ -28,7 +28,7 @@ from floatpage.model import load_project, save_project
 from floatpage.model.document import BlockItem, ItemAnchor, Page, PointAnchor, Project
 from floatpage.model.layout import engine_for_page
 from floatpage.physics.page_limits import page_limits
-from floatpage.physics.quality import GUTTER_FITS_SHARE, gutter_need
+from floatpage.physics.geometry import GUTTER_FITS_COVER
 from fixed_point import settle_file as settle_and_save
 
 PAGES = [(105, 148), (148, 210), (210, 297), (297, 210), (215.9, 279.4), (210, 210),
@@ -100,9 +100,8 @@ def verdict(path: Path) -> tuple[bool, str]:
                          project.physics.gutter_mm)
     if limits:
         return False, ", ".join(sorted({type(limit).__name__ for limit in limits}))
-    need = gutter_need(page.width_mm, page.height_mm, engine.bodies.sizes,
-                       project.physics.gutter_mm, decorative=engine.bodies.decorative)
-    if need > GUTTER_FITS_SHARE:
+    need = engine.grown_cover()
+    if need > GUTTER_FITS_COVER:
         return False, f"area ({need:.0%})"
     return False, "UNEXPLAINED"
 

@@ -13,7 +13,8 @@ from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
     Crossing, Limit, PinnedClash, PinnedOutside, Stack, TooLarge, binding, page_limits,
 )
-from floatpage.physics.quality import GAP_TOLERANCE_MM, GUTTER_FITS_SHARE, gutter_need
+from floatpage.physics.geometry import GUTTER_FITS_COVER
+from floatpage.physics.quality import GAP_TOLERANCE_MM
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -55,19 +56,18 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     short_gap = (not quality.overlap_count
                  and quality.min_gap_mm < gutter_mm - GAP_TOLERANCE_MM)
     if short_gap and not binding(limits):
-        need = gutter_need(page.width_mm, page.height_mm, bodies.sizes, gutter_mm,
-                           decorative=bodies.decorative)
-        if need > GUTTER_FITS_SHARE:
+        need = engine.grown_cover()
+        if need > GUTTER_FITS_COVER:
             lines.append(
                 f"  note: the {gutter_mm:g} mm gutter cannot fit on page {page.id}: its items, "
-                f"each grown by the gutter, need {need:.0%} of the page (more than the "
-                f"{GUTTER_FITS_SHARE:.0%} rectangles pack to), so settle keeps the widest gap "
-                f"that fits; make items smaller, move some to another page or lower "
-                f"gutter_mm to keep it")
+                f"each grown by the gutter, need {need:.0%} of the room inside the margins "
+                f"(more than the {GUTTER_FITS_COVER:.0%} rectangles pack to), so settle keeps "
+                f"the widest gap that fits; make items smaller, move some to another page or "
+                f"lower gutter_mm or margin_mm to keep it")
         else:
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
-                f"need {need:.0%} of the page) but is not kept: run `floatpage settle`; if "
+                f"need {need:.0%} of the room inside the margins) but is not kept: run `floatpage settle`; if "
                 f"a settled page still misses it, its anchors or the order its items lie in "
                 f"jam it: move an anchored item or nudge items apart, and settle again")
             problems += 1

@@ -439,7 +439,7 @@ class Engine:
         item grown by it, at most GUTTER_FITS_COVER of the room), few enough items."""
         count = int(self._bodies.active.sum())
         return (self.params.mode == "fast" and 2 <= count <= RELOCATE_MAX_ITEMS
-                and self._grown_cover() <= GUTTER_FITS_COVER and not self._forced_short())
+                and self.grown_cover() <= GUTTER_FITS_COVER and not self._forced_short())
 
     def _forced_short(self) -> bool:
         """Whether the items themselves rule the gutter out (physics.page_limits: pinned items
@@ -473,10 +473,12 @@ class Engine:
         """Whether the page has room to line items up (geometry.lines_up): on a fuller one
         the snap found little (200 items covering half of A4 with the gutter kept: 18.5 near
         misses an item before it, 17.3 after) at the cost of two thirds of the settle."""
-        return lines_up(self._grown_cover(), int(self._bodies.active.sum()))
+        return lines_up(self.grown_cover(), int(self._bodies.active.sum()))
 
-    def _grown_cover(self) -> float:
-        """How tight the page is (geometry.grown_cover) within its walls."""
+    def grown_cover(self) -> float:
+        """How tight the page is (geometry.grown_cover): the share of the room inside its
+        walls the items need, each grown by the gutter.  Up to GUTTER_FITS_COVER the settle
+        keeps the gutter, and `check` says so; the same number decides both."""
         near, far = self._bodies.insets(self.margin_mm, self.page_w_mm, self.page_h_mm)
         return grown_cover(self._bodies, near, far, self.page_w_mm, self.page_h_mm,
                            self.params.gutter_mm)
@@ -551,7 +553,7 @@ class Engine:
                 bodies.free[rows].all() and np.isnan(bodies.anchors[rows, 0]).all()
                 and np.isnan(bodies.regions[rows, 0]).all() and not bodies.followers.any()):
             return False
-        return self._grown_cover() <= GUTTER_FITS_COVER
+        return self.grown_cover() <= GUTTER_FITS_COVER
 
     def _settle_from_packing(self, max_steps: int, align: bool = True) -> bool:
         """The second start: the items packed (packing.packed_layout) and settled gently from

@@ -20,7 +20,7 @@ that no settle will help, and what to change instead:
 - ``Stack``: three or more items of which no two fit side by side with the gutter, so that
   all must stand one above another, taller together than the room (or the same across).
 
-The area test (physics.quality.gutter_need) stays the reason for a crowd of small items.
+The area test (Engine.grown_cover) stays the reason for a crowd of small items.
 """
 
 from __future__ import annotations

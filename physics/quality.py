@@ -288,18 +288,3 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
         outside_region=outside_region,
     )
 
-
-GUTTER_FITS_SHARE = 0.85  # grown by the gutter, items up to this share of the page keep it
-
-
-def gutter_need(page_w_mm: float, page_h_mm: float, sizes, gutter_mm: float, *,
-                decorative=None) -> float:
-    """Share of the page the items need once each grows by the gutter: sum of (w+g)(h+g) over
-    (W+g)(H+g) (the page grows too, since items may touch its edge).  Rectangles of mixed
-    shapes pack to about 85 % at best, so above ``GUTTER_FITS_SHARE`` the gutter cannot be
-    promised; below it the settle keeps it."""
-    sizes = np.asarray(sizes, float).reshape(-1, 2)
-    if decorative is not None:
-        sizes = sizes[~np.asarray(decorative, bool).reshape(len(sizes))]
-    grown = np.prod(sizes + gutter_mm, axis=1).sum()
-    return float(grown / ((page_w_mm + gutter_mm) * (page_h_mm + gutter_mm)))

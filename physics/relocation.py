@@ -9,56 +9,113 @@ must flow around) or soft ones (whose springs pull their items back into the jam
 the widest gap the pushes reached, 0.3-1.8 mm, on random pages whose items, grown by the
 gutter, needed 45-75 % of the room.
 
-So here one item at a time, the lone free item in the most pairs closer than the gutter (the
-smallest of those first), moves to the nearest place where it keeps the gutter from every
-other item and its walls: a place beside another item's edge, or against a wall, on each axis
-(the corners of the room left between items are where a rectangle fits if it fits anywhere
-near).  A soft-anchored item goes to the place nearest its anchor.  Where no such place has
-room for it, it goes where it crowds the others least, if less than where it is: the pushes
-then part a few items where there is room to part them.  After each move the projection runs
-again.  Items in a group, held or anchored hard stay where they are.
+So here one *unit* at a time moves: a free item, or a free item with the items that follow
+it, moved as one rigid group (a photo and its caption; a group jammed against a hard anchor
+overlapped it by 14 mm on a random page, where no lone item's move could help).  The unit in
+the most pairs closer than the gutter (the smallest of those first) moves to the nearest place
+where each of its members keeps the gutter from every other item and its walls: a place where
+a member stands beside another item's edge, or against a wall, on each axis (the corners of
+the room left between items are where a rectangle fits if it fits anywhere near).  A
+soft-anchored unit goes to the place nearest its anchor.  Where no such place has room for
+it, it goes where it crowds the others least, if less than where it is: the pushes then part
+a few items where there is room to part them.  After each move the projection runs again.
+Held items, hard anchors and the groups that hold one stay where they are.
 
 Where a few such moves do not free the page (the room it needs is spread in slivers between
-items), every free item is set down anew (``placed_anew``), the largest first, each in the
+items), every unit is set down anew (``placed_anew``), the largest first, each in the
 free place nearest where it lay, around the items that stay: the gutter holds by
 construction, and Engine then lets a gentle run spread the items from there.
 """
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, NamedTuple
 
 import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.finalize import ROUNDING_MM, pair_clearances
-from floatpage.physics.geometry import item_bounds
+from floatpage.physics.geometry import group_bounds
 
-MAX_ITEMS = 150  # the search is O(n^3) in NumPy: 0.1 s a move at 150 items
-PLACE_MAX_ITEMS = 60  # setting every item down anew is n searches: 0.3 s at 60 items
-MAX_MOVES = 6  # items lifted out before the pass gives up and keeps the widest gap
-MOVES_PER_ITEM = 2  # the pushes after a move may jam the same item again, once
+# A search is one (2n x n) by (n x 2n) product, about 1 ms at 150 items; setting every item
+# down anew is n searches, 0.2 s of CPU at 150 items.
+MAX_ITEMS = 150
+MAX_MOVES = 6  # units lifted out before the pass gives up and keeps the widest gap
+MOVES_PER_ITEM = 2  # the pushes after a move may jam the same unit again, once
 TOLERANCE_MM = 1e-9
+# room_for's matrix product is taken this many rows at a time: the whole one (300 x 150 x 300
+# on a page of 150 items) went to OpenBLAS's threads, which spun on the shared two-core
+# machine, 5x the CPU time of the same product in small blocks that one thread computes.
+PRODUCT_ROWS = 8
+
+
+class Unit(NamedTuple):
+    """What moves as one: a free item and the items that follow it (directly or down a
+    chain).  ``members`` are the rows that take room, the root first; ``offsets`` (m, 2) their
+    centres from the root's; ``carried`` every row set from the root, decorations too."""
+    root: int
+    members: np.ndarray
+    offsets: np.ndarray
+    carried: np.ndarray
+    carried_offsets: np.ndarray
+
+    @classmethod
+    def lone(cls, row: int) -> "Unit":
+        rows, none = np.array([row]), np.zeros((1, 2))
+        return cls(row, rows, none, rows, none)
+
+    def place(self, centres: np.ndarray, spot: np.ndarray) -> None:
+        centres[self.carried] = spot + self.carried_offsets
+
+
+def movable_units(bodies: Bodies) -> list[Unit]:
+    """Every unit that may move, by root: free roots whose group holds no held item or hard
+    anchor (those never move, and a group moves whole)."""
+    roots, offsets = bodies.group_roots()
+    active = bodies.active
+    pinned = np.zeros(bodies.count, dtype=bool)
+    np.logical_or.at(pinned, roots, bodies.hard | bodies.held)
+    order = np.argsort(roots, kind="stable")
+    starts = np.searchsorted(roots[order], np.arange(bodies.count + 1))
+    units = []
+    for root in np.flatnonzero(bodies.free & active & ~pinned):
+        carried = order[starts[root]:starts[root + 1]]
+        carried = np.concatenate([[root], carried[carried != root]])
+        members = carried[active[carried]]
+        units.append(Unit(int(root), members, offsets[members], carried, offsets[carried]))
+    return units
+
+
+def unit_bounds(bodies: Bodies, units: list[Unit], page_w_mm: float, page_h_mm: float,
+                margin_mm: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest root centre, (len(units), 2) each, that keeps each unit inside its
+    members' walls (geometry.group_bounds)."""
+    roots, offsets = bodies.group_roots()
+    near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
+    rows = np.array([unit.root for unit in units], dtype=int)
+    return group_bounds(bodies, rows, roots, offsets, near, far, page_w_mm, page_h_mm)
 
 
 def relocate_jammed(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                     margin_mm: float, project: Callable[[], bool]) -> bool:
-    """Move jammed items into room, running ``project`` (the no-overlap pass, True when it
+    """Move jammed units into room, running ``project`` (the no-overlap pass, True when it
     keeps the gutter) after each move; whether the page keeps the gutter in the end.  Leaves
     the page as the last attempt left it: the caller restores what it had if this fails."""
     clearance = gutter_mm + 2 * ROUNDING_MM
-    lowest, highest = item_bounds(bodies, page_w_mm, page_h_mm, margin_mm)
-    movable = _movable(bodies)
-    moves = np.zeros(bodies.count, int)
+    units = movable_units(bodies)
+    if not units:
+        return False
+    lowest, highest = unit_bounds(bodies, units, page_w_mm, page_h_mm, margin_mm)
+    moves = np.zeros(len(units), int)
     for _ in range(MAX_MOVES):
-        for row in jammed_rows(bodies, clearance, movable):
-            if moves[row] >= MOVES_PER_ITEM:
+        for k in jammed_units(bodies, clearance, units):
+            if moves[k] >= MOVES_PER_ITEM:
                 continue
-            moves[row] += 1
-            spot = room_for(bodies, row, clearance, lowest[row], highest[row])
+            moves[k] += 1
+            spot = room_for(bodies, units[k], clearance, lowest[k], highest[k])
             if spot is not None:
-                bodies.centres[row] = spot
-                bodies.velocities[row] = 0.0
+                units[k].place(bodies.centres, spot)
+                bodies.velocities[units[k].carried] = 0.0
                 break
         else:
             return False
@@ -67,28 +124,34 @@ def relocate_jammed(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_m
     return False
 
 
-def jammed_rows(bodies: Bodies, clearance: float, movable: np.ndarray) -> list[int]:
-    """Movable rows in pairs closer than ``clearance``: the most such pairs first, then the
-    smallest item (the easiest to set down elsewhere)."""
+def jammed_units(bodies: Bodies, clearance: float, units: list[Unit]) -> list[int]:
+    """Indices into ``units`` of those in pairs closer than ``clearance``: the most such
+    pairs first, then the smallest (the easiest to set down elsewhere)."""
     rows = np.flatnonzero(bodies.active)
     i, j = np.triu_indices(len(rows), 1)
     i, j = rows[i], rows[j]
+    roots, _ = bodies.group_roots()
     close = pair_clearances(bodies.centres, bodies.sizes / 2, i, j) < clearance - ROUNDING_MM
+    close &= roots[i] != roots[j]  # a group's own members keep their offsets
     counts = np.bincount(np.concatenate([i[close], j[close]]), minlength=bodies.count)
-    jammed = np.flatnonzero((counts > 0) & movable)
-    areas = bodies.sizes[jammed, 0] * bodies.sizes[jammed, 1]
-    return [int(row) for row in jammed[np.lexsort((jammed, areas, -counts[jammed]))]]
+    areas = bodies.sizes[:, 0] * bodies.sizes[:, 1]
+    unit_counts = np.array([counts[unit.members].sum() for unit in units])
+    unit_areas = np.array([areas[unit.members].sum() for unit in units])
+    unit_roots = np.array([unit.root for unit in units])
+    jammed = np.flatnonzero(unit_counts > 0)
+    order = np.lexsort((unit_roots[jammed], unit_areas[jammed], -unit_counts[jammed]))
+    return [int(k) for k in jammed[order]]
 
 
 def placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                 margin_mm: float) -> np.ndarray | None:
     """Centres (n, 2) for a page the moves above could not free: the items that do not move
-    stay, and the free lone items are set down anew one by one, the largest first, each in
-    the place nearest its anchor (or where it lay) that keeps the gutter from every item set
-    down before it.  The gutter holds by construction, around hard anchors too, where the
-    packed second start (physics.packing) knows no obstacles; None if an item finds no room.
+    stay, and the units are set down anew one by one, the largest first, each in the place
+    nearest its anchor (or where it lay) that keeps the gutter from every item set down
+    before it.  The gutter holds by construction, around hard anchors too, where the packed
+    second start (physics.packing) knows no obstacles; None if a unit finds no room.
     Deterministic: the same page gives the same centres."""
-    if int(bodies.active.sum()) > PLACE_MAX_ITEMS:
+    if int(bodies.active.sum()) > MAX_ITEMS:
         return None
     for into_corner in (False, True):
         centres = _placed_anew(bodies, page_w_mm, page_h_mm, gutter_mm, margin_mm, into_corner)
@@ -99,81 +162,87 @@ def placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: f
 
 def _placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                  margin_mm: float, into_corner: bool) -> np.ndarray | None:
-    """placed_anew's one try: each item nearest where it was, or (``into_corner``) nearest
-    the room's top left corner, as a printer fills a sheet, where the first try left an item
+    """placed_anew's one try: each unit nearest where it was, or (``into_corner``) nearest
+    the room's top left corner, as a printer fills a sheet, where the first try left a unit
     without room."""
     clearance = gutter_mm + 2 * ROUNDING_MM
-    lowest, highest = item_bounds(bodies, page_w_mm, page_h_mm, margin_mm)
-    movable = _movable(bodies)
-    placed = bodies.active & ~movable
+    units = movable_units(bodies)
+    if not units:
+        return None
+    lowest, highest = unit_bounds(bodies, units, page_w_mm, page_h_mm, margin_mm)
+    placed = bodies.active.copy()
+    for unit in units:
+        placed[unit.members] = False
     centres = bodies.centres.copy()
     work = Bodies(centres=centres, sizes=bodies.sizes, anchors=bodies.anchors,
                   decorative=~placed)
-    rows = np.flatnonzero(movable)
-    areas = bodies.sizes[rows, 0] * bodies.sizes[rows, 1]
-    for row in rows[np.lexsort((rows, -areas))]:
+    areas = np.array([(bodies.sizes[unit.members, 0] * bodies.sizes[unit.members, 1]).sum()
+                      for unit in units])
+    roots = np.array([unit.root for unit in units])
+    for k in np.lexsort((roots, -areas)):
+        unit = units[k]
         work.decorative = ~placed  # what is not yet set down takes no room
-        work.decorative[row] = False
-        spot = room_for(work, int(row), clearance, lowest[row], highest[row], clear_only=True,
-                        goal=lowest[row] if into_corner else None)
+        work.decorative[unit.members] = False
+        spot = room_for(work, unit, clearance, lowest[k], highest[k], clear_only=True,
+                        goal=lowest[k] if into_corner else None)
         if spot is None:
             return None
-        centres[row] = spot
-        placed[row] = True
+        unit.place(centres, spot)
+        placed[unit.members] = True
     return centres
 
 
-def _movable(bodies: Bodies) -> np.ndarray:
-    """Free lone items: not held, anchored hard, following or followed."""
-    movable = bodies.free & bodies.active
-    movable[bodies.targets[bodies.followers]] = False
-    return movable
-
-
-def room_for(bodies: Bodies, row: int, clearance: float, lowest: np.ndarray,
+def room_for(bodies: Bodies, unit: Unit, clearance: float, lowest: np.ndarray,
              highest: np.ndarray, clear_only: bool = False,
              goal: np.ndarray | None = None) -> np.ndarray | None:
-    """Where the row should go: a centre within ``lowest``-``highest`` at which it keeps
-    ``clearance`` from every other active item, the one nearest its anchor (or where it is);
-    where no place tried has such room, the place where it crowds the others least (the area
-    by which it, grown by the clearance, covers them), if that is less than where it is: the
-    pass then has less to part, and room to part it (not if ``clear_only``).  None if there
-    is no such place."""
+    """Where the unit's root should go: a centre within ``lowest``-``highest`` at which each
+    member keeps ``clearance`` from every other active item, the one nearest the root's
+    anchor (or where it is); where no place tried has such room, the place where it crowds
+    the others least (the area by which its members, grown by the clearance, cover them), if
+    that is less than where it is: the pass then has less to part, and room to part it (not
+    if ``clear_only``).  None if there is no such place."""
     if (lowest > highest + TOLERANCE_MM).any():
         return None
+    row, offsets = unit.root, unit.offsets
     others = np.flatnonzero(bodies.active)
-    others = others[others != row]
+    others = others[~np.isin(others, unit.members)]
     centres, sizes = bodies.centres[others], bodies.sizes[others]
-    reach = (sizes + bodies.sizes[row]) / 2 + clearance  # centre distance that clears a pair
+    # centre distance that clears each member (m) from each other item (o): (m, o, 2)
+    reach = (sizes[None] + bodies.sizes[unit.members][:, None]) / 2 + clearance
     if goal is None:
         anchor = bodies.anchors[row]
         goal = anchor if not np.isnan(anchor).any() else bodies.centres[row]
+    # where each other item sits as seen from the root: (m, o, 2)
+    seen = centres[None] - offsets[:, None]
     spots = []
     for axis in (0, 1):
-        line = np.concatenate([centres[:, axis] - reach[:, axis],
-                               centres[:, axis] + reach[:, axis],
+        line = np.concatenate([(seen[..., axis] - reach[..., axis]).ravel(),
+                               (seen[..., axis] + reach[..., axis]).ravel(),
                                [lowest[axis], highest[axis], goal[axis]]])
         inside = (line >= lowest[axis] - TOLERANCE_MM) & (line <= highest[axis] + TOLERANCE_MM)
         spots.append(np.unique(np.clip(line[inside], lowest[axis], highest[axis])))
     xs, ys = spots
-    now = crowding(bodies.centres[row][None, :], centres, reach)[0]
-    best, best_key = None, None
-    depth_y = np.clip(reach[None, :, 1] - np.abs(ys[:, None] - centres[None, :, 1]), 0.0, None)
-    for x in xs:
-        depth_x = np.clip(reach[:, 0] - np.abs(x - centres[:, 0]), 0.0, None)  # (others,)
-        crowd = (depth_y * depth_x[None, :]).sum(axis=1)  # (ys,)
-        distance = (x - goal[0]) ** 2 + (ys - goal[1]) ** 2
-        k = int(np.lexsort((distance, crowd))[0])
-        key = (float(crowd[k]), float(distance[k]))
-        if clear_only and key[0] > TOLERANCE_MM:
-            continue
-        if (clear_only or key[0] < now - TOLERANCE_MM) and (best_key is None or key < best_key):
-            best, best_key = np.array([x, ys[k]]), key
-    return best
+    now = crowding(bodies.centres[row][None, :], seen, reach)[0]
+    # The area each spot's members cover the others by, every spot at once: the overlap of
+    # two rectangles is the product of their overlaps on each axis, so the sum over the pairs
+    # is a matrix product, (xs, pairs) by (pairs, ys).
+    depth_x = np.clip(reach[..., 0].ravel() - np.abs(xs[:, None] - seen[..., 0].ravel()), 0.0,
+                      None)
+    depth_y = np.clip(reach[..., 1].ravel() - np.abs(ys[:, None] - seen[..., 1].ravel()), 0.0,
+                      None)
+    crowd = np.concatenate([depth_x[start:start + PRODUCT_ROWS] @ depth_y.T
+                            for start in range(0, len(xs), PRODUCT_ROWS)]).ravel()  # x by x
+    distance = ((xs[:, None] - goal[0]) ** 2 + (ys[None, :] - goal[1]) ** 2).ravel()
+    least = np.flatnonzero(crowd == crowd.min())
+    best = int(least[np.argmin(distance[least])])  # the least crowded, then the nearest
+    if crowd[best] > (TOLERANCE_MM if clear_only else now - TOLERANCE_MM):
+        return None
+    return np.array([xs[best // len(ys)], ys[best % len(ys)]])
 
 
-def crowding(spots: np.ndarray, centres: np.ndarray, reach: np.ndarray) -> np.ndarray:
-    """For each spot (m, 2), the area by which an item there, grown by the clearance, covers
-    the others (their centres, and the centre distances that clear each pair)."""
-    depth = np.clip(reach[None] - np.abs(spots[:, None, :] - centres[None]), 0.0, None)
-    return (depth[:, :, 0] * depth[:, :, 1]).sum(axis=1)
+def crowding(spots: np.ndarray, seen: np.ndarray, reach: np.ndarray) -> np.ndarray:
+    """For each root spot (k, 2), the area by which the unit's members there, grown by the
+    clearance, cover the others: ``seen`` (m, o, 2) is where each other item sits from the
+    root for each member, ``reach`` (m, o, 2) the centre distances that clear each pair."""
+    depth = np.clip(reach[None] - np.abs(spots[:, None, None, :] - seen[None]), 0.0, None)
+    return (depth[..., 0] * depth[..., 1]).sum(axis=(1, 2))

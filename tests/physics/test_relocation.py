@@ -14,7 +14,7 @@ from floatpage.model import load_project, save_project
 from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics import Engine
 from floatpage.physics.finalize import pair_clearances
-from floatpage.physics.relocation import crowding, room_for
+from floatpage.physics.relocation import Unit, crowding, movable_units, room_for, unit_bounds
 
 JAMS = Path(__file__).parent / "jams"
 
@@ -47,7 +47,7 @@ def test_room_for_finds_the_nearest_place_that_keeps_the_clearance():
     engine.anchor_point("lost", 30.0, 90.0)
     bodies = engine.bodies
     halves = bodies.sizes[2] / 2
-    spot = room_for(bodies, 2, 3.0, halves + 2.0, np.array([100.0, 100.0]) - halves - 2.0)
+    spot = room_for(bodies, Unit.lone(2), 3.0, halves + 2.0, np.array([100.0, 100.0]) - halves - 2.0)
     assert spot is not None
     bodies.centres[2] = spot
     i, j = np.array([0, 1]), np.array([2, 2])
@@ -63,10 +63,35 @@ def test_without_room_an_item_goes_where_it_crowds_the_others_least():
     bodies = engine.bodies
     halves = bodies.sizes[1] / 2
     low, high = halves + 2.0, np.array([100.0, 100.0]) - halves - 2.0
-    assert room_for(bodies, 1, 3.0, low, high, clear_only=True) is None
-    spot = room_for(bodies, 1, 3.0, low, high)
+    assert room_for(bodies, Unit.lone(1), 3.0, low, high, clear_only=True) is None
+    spot = room_for(bodies, Unit.lone(1), 3.0, low, high)
     # a corner: the grown item covers the wall by the least there
     assert np.abs(spot - 50.0) == pytest.approx([38.0, 38.0])
-    reach = (bodies.sizes[:1] + 20.0) / 2 + 3.0
-    assert crowding(spot[None], bodies.centres[:1], reach)[0] \
-        < crowding(np.array([[50.0, 50.0]]), bodies.centres[:1], reach)[0]
+    reach = ((bodies.sizes[:1] + 20.0) / 2 + 3.0)[None]
+    seen = bodies.centres[:1][None]
+    assert crowding(spot[None], seen, reach)[0] < crowding(np.array([[50.0, 50.0]]), seen, reach)[0]
+
+
+def test_a_group_finds_room_where_every_member_keeps_the_clearance():
+    """A photo with its caption following 4 mm below: the room left of a tall block is wide
+    enough for the photo, but only the place low on the page has room for the caption too."""
+    engine = Engine(100.0, 100.0)
+    engine.insert("block", 70.0, 40.0, 50.0, 70.0)
+    engine.insert("photo", 60.0, 40.0, 30.0, 20.0)  # over the block
+    engine.insert("caption", 60.0, 56.0, 44.0, 8.0)
+    engine.anchor_to("caption", "photo", 0.0, 16.0)
+    (unit,) = [unit for unit in movable_units(engine.bodies) if unit.root == 1]
+    assert unit.members.tolist() == [1, 2] and unit.offsets.tolist() == [[0, 0], [0, 16]]
+    (low,), (high,) = unit_bounds(engine.bodies, [unit], 100.0, 100.0, engine.margin_mm)
+    assert low.tolist() == [22.0 + engine.margin_mm, 10.0 + engine.margin_mm]
+    spot = room_for(engine.bodies, unit, 3.0, low, high, clear_only=True)
+    assert spot is not None
+    unit.place(engine.bodies.centres, spot)
+    i, j = np.array([0, 0]), np.array([1, 2])
+    gaps = pair_clearances(engine.bodies.centres, engine.bodies.sizes / 2, i, j)
+    assert (gaps >= 3.0 - 1e-9).all()
+    assert engine.bodies.centres[2] == pytest.approx(engine.bodies.centres[1] + [0.0, 16.0])
+    # the caption is wider than the 40 mm beside the block: it goes below the block, with the
+    # photo beside it, as near as that is to where the photo lay
+    assert spot[1] + 16.0 - 4.0 == pytest.approx(40.0 + 35.0 + 3.0)
+    assert spot[0] + 15.0 <= 45.0 - 3.0 + 1e-9
