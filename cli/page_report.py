@@ -11,7 +11,8 @@ from __future__ import annotations
 from floatpage.model.errors import printable
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
-    Crossing, Limit, PinnedClash, PinnedOutside, Stack, TooLarge, binding, page_limits,
+    Crossing, Limit, NoRoom, PinnedClash, PinnedOutside, Stack, TooLarge, binding,
+    page_limits,
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER
 from floatpage.physics.quality import GAP_TOLERANCE_MM
@@ -41,11 +42,12 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
         shown = _some([name(k) for k in quality.in_margin[:SHOWN]], len(quality.in_margin))
         lines.append(f"  {len(quality.in_margin)} item(s) inside the {quality.margin_mm:.1f} mm "
                      f"print-safe margin: {shown}; where a page is too full the gutter gives "
-                     "way first, then the margin: run `floatpage settle`, make items smaller, "
-                     "mark items that may touch the edge `bleed = true`, or lower margin_mm in "
-                     "[physics]")
+                     "way first, then the margin: "
+                     + ("" if binding(limits) else "run `floatpage settle`, ")
+                     + "make items smaller, mark items that may touch the edge `bleed = true`, "
+                     "or lower margin_mm in [physics]")
     lines += _explain(limits, name, gutter_mm, engine.margin_mm)
-    forced = any(isinstance(limit, (PinnedClash, Crossing, Stack)) and limit_gap(limit) < 0
+    forced = any(isinstance(limit, (PinnedClash, Crossing, Stack, NoRoom)) and limit_gap(limit) < 0
                  for limit in limits)
     if quality.overlap_count and not forced:
         pairs = _some([f"{name(a)} and {name(b)}"
@@ -93,7 +95,7 @@ def _namer(page):
 
 def _explain(limits: list[Limit], name, gutter_mm: float, margin_mm: float) -> list[str]:
     lines: list[str] = []
-    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing, Stack):
+    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom):
         mine = [limit for limit in limits if isinstance(limit, kind)]
         for limit in mine[:SHOWN]:
             lines.append("  " + _sentence(limit, name, gutter_mm, margin_mm))
@@ -137,6 +139,8 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
                              if len(limit.rows) > 1 else ""))
     if isinstance(limit, Stack):
         return _stack_sentence(limit, name, gutter_mm)
+    if isinstance(limit, NoRoom):
+        return _no_room_sentence(limit, name, gutter_mm)
     a, b = (name(row) for row in limit.rows)
     (side, above), (room_w, room_h) = limit.needs_mm, limit.room_mm
     fate = _fate(limit, "the widest gap they can keep is")
@@ -146,9 +150,10 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
             "another page")
 
 
-def _fate(limit: Crossing | Stack, widest: str) -> str:
+def _fate(limit: Crossing | Stack | NoRoom, widest: str,
+          overlap: str = "they overlap wherever they go on this page") -> str:
     if not limit.fits_page:
-        return "they overlap wherever they go on this page"
+        return overlap
     if limit.widest_gap_mm < 0:
         return "they can be parted only by giving up the margin"
     return f"{widest} {limit.widest_gap_mm:.1f} mm"
@@ -166,3 +171,15 @@ def _stack_sentence(limit: Stack, name, gutter_mm: float) -> str:
             f"{limit.needs_mm:.1f} mm {along}, more than the {limit.room_mm:.1f} mm inside the "
             f"margins; {_fate(limit, 'the widest gap they can keep is at most')}; make one "
             "smaller, or move one to another page")
+
+
+def _no_room_sentence(limit: NoRoom, name, gutter_mm: float) -> str:
+    who = f"item {name(limit.rows[0])}"
+    if len(limit.rows) > 1:
+        who += f" with the items following it ({', '.join(name(row) for row in limit.rows[1:])})"
+    pinned = _some([name(row) for row in limit.pinned[:SHOWN]], len(limit.pinned))
+    fate = _fate(limit, "the widest gap it can keep from them is",
+                 "it overlaps them wherever it goes on this page")
+    return (f"{who} has no place inside the margins that keeps the {gutter_mm:g} mm gutter "
+            f"from the items that cannot move ({pinned}); {fate}; move one of their anchors "
+            "or make one soft (hard = false), make it smaller, or move it to another page")

@@ -18,7 +18,10 @@ that no settle will help, and what to change instead:
 - ``Crossing``: two items that can be parted neither side by side nor one above the other
   with the gutter between them inside the room;
 - ``Stack``: three or more items of which no two fit side by side with the gutter, so that
-  all must stand one above another, taller together than the room (or the same across).
+  all must stand one above another, taller together than the room (or the same across);
+- ``NoRoom``: a free item (with the items following it) that has no place inside its walls
+  keeping the gutter from the items that cannot move (physics.relocation.room_for's search,
+  exact for one rectangle among fixed ones).
 
 The area test (Engine.grown_cover) stays the reason for a crowd of small items.
 """
@@ -35,11 +38,17 @@ from floatpage.physics.fast_forces import candidate_pairs
 from floatpage.physics.finalize import pair_clearances
 from floatpage.physics.geometry import group_extents
 from floatpage.physics.quality import sweep_candidates
+from floatpage.physics.relocation import Unit, movable_units, room_for, unit_bounds
 
 TOLERANCE_MM = 0.01  # saved positions are rounded to 0.01 mm
 CROSSING_BLOCK = 512  # rows compared with all others at once: memory O(512 n)
 LISTED = 1_000  # reasons of one kind kept: enough to name, bounded on a hostile file
 SWEEP_BUDGET = 10_000_000  # neighbour-search candidates (about 300 MB) before blocks instead
+# NoRoom's search costs about (2 m p)^2 x (m p) for each unit of m members among p pinned
+# items that does not already stand clear of them: pages beyond this budget (thousands of
+# items jammed among hundreds of anchors) are not searched, so that check stays quick.
+NO_ROOM_BUDGET = 2e9
+GAP_STEPS = 16  # bisection steps for the widest gap a unit can keep from the pinned items
 
 
 @dataclass(frozen=True)
@@ -84,7 +93,15 @@ class Stack:
     fits_page: bool  # whether they can be parted at all if the margins give way
 
 
-Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack]
+@dataclass(frozen=True)
+class NoRoom:
+    rows: tuple[int, ...]  # the free item, then the items following it
+    pinned: tuple[int, ...]  # the items that cannot move, that leave it no room
+    widest_gap_mm: float  # the widest gap from them it can keep inside the margins (< 0: overlap)
+    fits_page: bool  # whether it can stand clear of them at all if the margins give way
+
+
+Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom]
 
 
 def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float,
@@ -100,6 +117,7 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
     found += _too_large(bodies, roots, offsets, pinned, near, far, page_w_mm, page_h_mm)
     found += _crossings(bodies, roots, pinned, near, far, page_w_mm, page_h_mm, gutter_mm)
     found += _stacks(bodies, roots, near, far, page_w_mm, page_h_mm, gutter_mm)
+    found += _no_room(bodies, pinned, margin_mm, page_w_mm, page_h_mm, gutter_mm)
     return found
 
 
@@ -305,3 +323,84 @@ def _stack_limit(sizes: np.ndarray, stack: np.ndarray, across: int, room: np.nda
                                                                  kind="stable")]),
                  along, float(tall.sum() + gutter_mm * (count - 1)), float(room[along]),
                  float(widest(room)), bool(widest(extent) >= 0))
+
+
+def _no_room(bodies: Bodies, pinned: np.ndarray, margin_mm: float, page_w_mm: float,
+             page_h_mm: float, gutter_mm: float) -> list[Limit]:
+    """Free units (physics.relocation.Unit) with no place inside their walls that keeps the
+    gutter from every pinned item, the others left aside: the free items can make room for
+    one another, the pinned ones never move.  room_for tries every place where a member's
+    edge meets a pinned item's grown edge or a wall, on each axis, and the room left around
+    fixed rectangles always has a corner of that kind, so "no place" is exact."""
+    if not pinned.any():
+        return []
+    units = movable_units(bodies)
+    if not units:
+        return []
+    lowest, highest = unit_bounds(bodies, units, page_w_mm, page_h_mm, margin_mm)
+    on_page = unit_bounds(bodies, units, page_w_mm, page_h_mm, 0.0)
+    # where a unit stands is a place if it keeps the gutter there: only the others are searched
+    searched = np.flatnonzero(~_standing_clear(bodies, pinned, units, lowest, highest,
+                                               gutter_mm))
+    obstacles = int(pinned.sum())
+    cost = sum((2.0 * len(units[k].members) * obstacles) ** 2 * len(units[k].members)
+               * obstacles for k in searched)
+    if cost > NO_ROOM_BUDGET:
+        return []
+    found: list[Limit] = []
+    for k in searched:
+        unit = units[k]
+        work = _among_pinned(bodies, pinned, unit)
+        if room_for(work, unit, gutter_mm, lowest[k], highest[k], clear_only=True) is not None:
+            continue
+        widest = _widest_clearance(work, unit, lowest[k], highest[k], gutter_mm)
+        fits_page = room_for(work, unit, 0.0, on_page[0][k], on_page[1][k],
+                             clear_only=True) is not None
+        found.append(NoRoom(tuple(int(row) for row in unit.members),
+                            tuple(int(row) for row in np.flatnonzero(pinned)), widest, fits_page))
+        if len(found) >= LISTED:
+            break
+    return found
+
+
+def _standing_clear(bodies: Bodies, pinned: np.ndarray, units: list, lowest: np.ndarray,
+                    highest: np.ndarray, gutter_mm: float) -> np.ndarray:
+    """For each unit, whether it already stands inside its walls with every member the gutter
+    from every pinned item: most do, and need no search.  A block of rows at a time, so a
+    page of thousands of items beside thousands of anchors is measured in bounded memory."""
+    roots = np.array([unit.root for unit in units])
+    clear = ((bodies.centres[roots] >= lowest - TOLERANCE_MM)
+             & (bodies.centres[roots] <= highest + TOLERANCE_MM)).all(axis=1)
+    owner = np.concatenate([np.full(len(unit.members), k) for k, unit in enumerate(units)])
+    members = np.concatenate([unit.members for unit in units])
+    obstacles = np.flatnonzero(pinned)
+    halves = bodies.sizes / 2
+    for start in range(0, len(members), CROSSING_BLOCK):
+        rows = members[start:start + CROSSING_BLOCK]
+        gaps = (np.abs(bodies.centres[rows][:, None] - bodies.centres[obstacles][None])
+                - halves[rows][:, None] - halves[obstacles][None]).max(axis=2)
+        close = (gaps < gutter_mm - TOLERANCE_MM).any(axis=1)
+        clear[owner[start:start + CROSSING_BLOCK][close]] = False
+    return clear
+
+
+def _among_pinned(bodies: Bodies, pinned: np.ndarray, unit: Unit) -> Bodies:
+    """The page as the unit alone among the pinned items: everything else takes no room."""
+    alone = ~pinned
+    alone[unit.members] = False
+    return Bodies(centres=bodies.centres, sizes=bodies.sizes, anchors=bodies.anchors,
+                  decorative=alone)
+
+
+def _widest_clearance(work: Bodies, unit: Unit, lowest: np.ndarray, highest: np.ndarray,
+                      gutter_mm: float) -> float:
+    """The widest gap (negative: the least overlap) the unit can keep from the pinned items
+    inside its walls, by bisection (to its largest side / 2**GAP_STEPS: 0.001 mm on 60 mm)."""
+    low, high = -float(work.sizes[unit.members].max()), gutter_mm
+    for _ in range(GAP_STEPS):
+        middle = (low + high) / 2
+        if room_for(work, unit, middle, lowest, highest, clear_only=True) is None:
+            high = middle
+        else:
+            low = middle
+    return low

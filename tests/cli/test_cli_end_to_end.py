@@ -118,6 +118,27 @@ def test_check_says_why_no_settle_can_fix_a_page(tmp_path):
     assert "overlapping:" not in out, "explained overlaps are not sent back to settle"
 
 
+def test_check_names_an_item_with_no_room_among_hard_anchors(tmp_path):
+    """Two hard-anchored pictures on a Letter page leave no place for a 108 x 73 mm block (a
+    random page's, seed 1005): `check` names it and the anchored items, and says that no
+    settle can help."""
+    from floatpage.model.document import PointAnchor
+
+    items = [BlockItem(id="block", x=180.0, y=143.0, w=107.82, h=73.43),
+             BlockItem(id="photo", x=98.24, y=186.65, w=66.07, h=66.65,
+                       anchor=PointAnchor(x=98.24, y=186.65, hard=True)),
+             BlockItem(id="map", x=98.67, y=103.52, w=120.67, h=66.15,
+                       anchor=PointAnchor(x=98.67, y=103.52, hard=True))]
+    path = tmp_path / "letter.toml"
+    save_project(Project(title="Letter", pages=[Page(id="front", size="Letter", items=items)]),
+                 path)
+    assert run("settle", str(path)).returncode == 0
+    out = run("check", str(path)).stdout
+    assert ('item "block" has no place inside the margins that keeps the 3 mm gutter from the '
+            'items that cannot move ("photo", "map"); it overlaps them wherever it goes') in out
+    assert "run `floatpage settle`" not in out and "overlapping:" not in out
+
+
 def test_check_names_items_that_must_stack_taller_than_the_page(tmp_path):
     """Three pictures on an A6 card, no two narrow enough to stand side by side with the
     gutter, and one above another 3.3 mm too tall: `check` names them and the gap that is

@@ -9,8 +9,9 @@ import numpy as np
 import pytest
 
 from floatpage.physics import Engine
+from floatpage.physics.relocation import movable_units, room_for, unit_bounds
 from floatpage.physics.page_limits import (
-    Crossing, PinnedClash, PinnedOutside, Stack, TooLarge, page_limits,
+    Crossing, NoRoom, PinnedClash, PinnedOutside, Stack, TooLarge, page_limits,
 )
 
 
@@ -180,3 +181,60 @@ def test_the_stack_found_is_the_tallest_that_brute_force_finds(seed):
             assert found.get(across) == pytest.approx(best[across])
         else:
             assert across not in found
+
+
+def test_a_free_item_with_no_room_between_hard_anchors_is_named_with_the_gap_it_can_keep():
+    """Two hard-anchored columns leave a 30 mm lane between them: a block 40 mm wide overlaps
+    them wherever it goes; 26 mm wide, it keeps 2 mm from each, not the 3 mm gutter; 24 mm
+    wide, it keeps the gutter and is no limit."""
+    def page(block_w: float) -> Engine:
+        engine = Engine(100.0, 100.0)
+        m = engine.margin_mm
+        engine.insert("block", 50.0, 50.0, block_w, 20.0)
+        for name, low, high in (("left", m, 40.0), ("right", 70.0, 100.0 - m)):
+            engine.insert(name, (low + high) / 2, 50.0, high - low, 100.0 - 2 * m)
+            engine.anchor_point(name, (low + high) / 2, 50.0, hard=True)
+        return engine
+
+    # the columns are nearly as tall as the room, so the three are a Stack as well, with the
+    # same widest gap
+    (limit,) = [limit for limit in limits_of(page(40.0)) if isinstance(limit, NoRoom)]
+    assert limit.rows == (0,) and limit.pinned == (1, 2)
+    assert not limit.fits_page and limit.widest_gap_mm == pytest.approx(-5.0, abs=0.01)
+    (limit,) = [limit for limit in limits_of(page(26.0)) if isinstance(limit, NoRoom)]
+    assert limit.fits_page
+    assert limit.widest_gap_mm == pytest.approx(2.0, abs=0.01)
+    assert limits_of(page(24.0)) == []
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_no_room_is_exact_against_a_fine_grid(seed):
+    """Among random hard-anchored items, a free one is named as having no room exactly when a
+    search of every 0.25 mm of the page finds no place that keeps the gutter: a place the grid
+    finds, the search must find too."""
+    rng = np.random.default_rng(seed)
+    engine = Engine(100.0, 80.0)
+    engine.insert("free", 50.0, 40.0, *rng.uniform(15, 35, 2))
+    for k in range(int(rng.integers(5, 11))):  # no room for it on about one page in five
+        x, y = rng.uniform(10, 90), rng.uniform(10, 70)
+        engine.insert(f"pin{k}", x, y, *rng.uniform(10, 30, 2))
+        engine.anchor_point(f"pin{k}", x, y, hard=True)
+    bodies, gutter, margin = engine.bodies, engine.params.gutter_mm, engine.margin_mm
+    half = bodies.sizes[0] / 2
+    xs = np.arange(margin + half[0], 100.0 - margin - half[0] + 1e-9, 0.25)
+    ys = np.arange(margin + half[1], 80.0 - margin - half[1] + 1e-9, 0.25)
+    spots = np.stack(np.meshgrid(xs, ys), axis=-1).reshape(-1, 2)
+    clear = np.ones(len(spots), dtype=bool)
+    for row in range(1, bodies.count):
+        gap = (np.abs(spots - bodies.centres[row]) - half - bodies.sizes[row] / 2).max(axis=1)
+        clear &= gap >= gutter
+    named = any(isinstance(limit, NoRoom) for limit in limits_of(engine))
+    if clear.any():
+        assert not named
+    elif not named:  # the grid missed a sliver the exact search found: it must be real
+        (unit,) = movable_units(bodies)
+        (low,), (high,) = unit_bounds(bodies, [unit], 100.0, 80.0, margin)
+        spot = room_for(bodies, unit, gutter, low, high, clear_only=True)
+        gap = (np.abs(spot - bodies.centres[1:]) - half - bodies.sizes[1:] / 2).max(axis=1)
+        assert (gap >= gutter - 1e-9).all() and (spot >= low - 1e-9).all()
+        assert (spot <= high + 1e-9).all()
