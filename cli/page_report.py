@@ -109,9 +109,9 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
         a, b = (name(row) for row in limit.rows)
         where = (f"overlap by {-limit.gap_mm:.1f} mm" if limit.gap_mm < 0
                  else f"stand {limit.gap_mm:.1f} mm apart, less than the {gutter_mm:g} mm gutter")
-        return (f"items {a} and {b} cannot move (hard anchors, or anchored to one) and {where}: "
-                "no settle can part them; move one of the anchors, or make one soft "
-                "(hard = false)")
+        return (f"items {a} and {b} cannot move (hard anchors, or anchored to one or to a "
+                f"decoration) and {where}: no settle can part them; move one of the anchors, "
+                "or make one soft (hard = false)")
     if isinstance(limit, PinnedOutside):
         where = (f"{limit.past_edge_mm:.1f} mm past the page's edge" if limit.past_edge_mm > 0
                  else f"{limit.into_margin_mm:.1f} mm into the {margin_mm:.1f} mm print-safe "
@@ -119,9 +119,9 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
         if limit.decoration:
             return (f"decoration {name(limit.row)} stands {where}; decorations are never "
                     "moved: move it onto the page, or make it smaller")
-        return (f"item {name(limit.row)} is pinned (a hard anchor, or anchored to one) "
-                f"{where}: move its anchor inwards, or mark it `bleed = true` if it may reach "
-                "the edge")
+        return (f"item {name(limit.row)} is pinned (a hard anchor, or anchored to one or to a "
+                f"decoration) {where}: move its anchor inwards, or mark it `bleed = true` if it "
+                "may reach the edge")
     if isinstance(limit, TooLarge):
         size_word, _ = AXIS_WORDS[limit.axis]
         who = f"item {name(limit.rows[0])}"

@@ -9,8 +9,8 @@ all; a group anchored together can be wider than the page; two hard anchors can 
 each other.  Every reason here is exact for the items it names, so a user told of it knows
 that no settle will help, and what to change instead:
 
-- ``PinnedClash``: two items that cannot move (hard anchors, held, or following one) stand
-  closer than the gutter, or overlap;
+- ``PinnedClash``: two items that cannot move (hard anchors, held, or following one of those
+  or a decoration) stand closer than the gutter, or overlap;
 - ``PinnedOutside``: such an item stands past the page's edge or inside the margin, or a
   decoration (never moved either) past the page's edge;
 - ``TooLarge``: a rigid group (an item and those anchored to it), or a lone item, is larger
@@ -129,8 +129,10 @@ def binding(limits: list[Limit]) -> list[Limit]:
 
 
 def _pinned(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
-    """Rows that no push moves: hard anchors and held items, and everything following one."""
-    fixed = bodies.hard | bodies.held
+    """Rows that no push moves: hard anchors and held items, and everything following one or
+    following a decoration (a decoration is never moved, so neither is a caption set beside
+    it: on a random page one stood past the page's edge, another 6.5 mm into a hard anchor)."""
+    fixed = bodies.hard | bodies.held | bodies.decorative
     return bodies.active & (fixed | fixed[roots])
 
 

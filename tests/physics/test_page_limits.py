@@ -238,3 +238,22 @@ def test_no_room_is_exact_against_a_fine_grid(seed):
         gap = (np.abs(spot - bodies.centres[1:]) - half - bodies.sizes[1:] / 2).max(axis=1)
         assert (gap >= gutter - 1e-9).all() and (spot >= low - 1e-9).all()
         assert (spot <= high + 1e-9).all()
+
+
+def test_an_item_following_a_decoration_is_pinned_with_it():
+    """A decoration is never moved, so neither is the item that follows it: set 6.5 mm into
+    a hard-anchored item, or past the page's edge, no settle can help (random pages 7011 and
+    7029)."""
+    engine = Engine(297.0, 420.0)
+    engine.insert("band", 152.36, 59.74, 42.04, 14.86, decorative=True)
+    engine.insert("caption", 185.45, 59.74, 16.15, 21.28)
+    engine.anchor_to("caption", "band", 33.09, 0.0)
+    engine.insert("logo", 187.44, 76.61, 26.14, 25.45)
+    engine.anchor_point("logo", 187.44, 76.61, hard=True)
+    engine.insert("tag", 20.0, 12.27, 9.55, 37.25)
+    engine.anchor_to("tag", "band", -130.0, -50.0)
+    found = limits_of(engine)
+    (clash,) = [limit for limit in found if isinstance(limit, PinnedClash)]
+    assert clash.rows == (1, 2) and clash.gap_mm < 0
+    (outside,) = [limit for limit in found if isinstance(limit, PinnedOutside)]
+    assert outside.row == 3 and not outside.decoration and outside.past_edge_mm > 0
