@@ -143,53 +143,71 @@ def jammed_units(bodies: Bodies, clearance: float, units: list[Unit]) -> list[in
     return [int(k) for k in jammed[order]]
 
 
+# placed_anew's tries, in turn until one sets every unit down: the order units go in (the
+# largest area first, or the longest side first), and where each goes (nearest where it lay
+# or its anchor, or nearest a corner of its room, as a printer fills a sheet).  The first is
+# the page as it was, moved least; the corners pack tighter where it left a unit no room.
+PLACEMENT_TRIES = (("area", "own"), ("area", (0, 0)), ("side", (0, 0)), ("area", (1, 0)),
+                   ("area", (0, 1)), ("area", (1, 1)), ("side", (1, 1)))
+
+
 def placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                 margin_mm: float) -> np.ndarray | None:
     """Centres (n, 2) for a page the moves above could not free: the items that do not move
-    stay, and the units are set down anew one by one, the largest first, each in the place
-    nearest its anchor (or where it lay) that keeps the gutter from every item set down
-    before it.  The gutter holds by construction, around hard anchors too, where the packed
-    second start (physics.packing) knows no obstacles; None if a unit finds no room.
+    stay, and the units are set down anew one by one (PLACEMENT_TRIES), each in the place
+    nearest its goal that keeps the gutter from every item set down before it.  The gutter
+    holds by construction, around hard anchors too, where the packed second start
+    (physics.packing) knows no obstacles; None if every try left a unit without room.
     Deterministic: the same page gives the same centres."""
     if int(bodies.active.sum()) > MAX_ITEMS:
         return None
-    for into_corner in (False, True):
-        centres = _placed_anew(bodies, page_w_mm, page_h_mm, gutter_mm, margin_mm, into_corner)
+    units = movable_units(bodies)
+    if not units:
+        return None
+    lowest, highest = unit_bounds(bodies, units, page_w_mm, page_h_mm, margin_mm)
+    for order, goal in PLACEMENT_TRIES:
+        centres = _placed_anew(bodies, units, lowest, highest, gutter_mm, order, goal)
         if centres is not None:
             return centres
     return None
 
 
-def _placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
-                 margin_mm: float, into_corner: bool) -> np.ndarray | None:
-    """placed_anew's one try: each unit nearest where it was, or (``into_corner``) nearest
-    the room's top left corner, as a printer fills a sheet, where the first try left a unit
-    without room."""
+def _placed_anew(bodies: Bodies, units: list[Unit], lowest: np.ndarray, highest: np.ndarray,
+                 gutter_mm: float, order: str, goal) -> np.ndarray | None:
+    """placed_anew's one try (see PLACEMENT_TRIES): ``goal`` "own", or a corner of the room
+    as (0 left / 1 right, 0 top / 1 bottom)."""
     clearance = gutter_mm + 2 * ROUNDING_MM
-    units = movable_units(bodies)
-    if not units:
-        return None
-    lowest, highest = unit_bounds(bodies, units, page_w_mm, page_h_mm, margin_mm)
     placed = bodies.active.copy()
     for unit in units:
         placed[unit.members] = False
     centres = bodies.centres.copy()
     work = Bodies(centres=centres, sizes=bodies.sizes, anchors=bodies.anchors,
                   decorative=~placed)
-    areas = np.array([(bodies.sizes[unit.members, 0] * bodies.sizes[unit.members, 1]).sum()
-                      for unit in units])
     roots = np.array([unit.root for unit in units])
-    for k in np.lexsort((roots, -areas)):
+    for k in np.lexsort((roots, -_unit_sizes(bodies, units, order))):
         unit = units[k]
         work.decorative = ~placed  # what is not yet set down takes no room
         work.decorative[unit.members] = False
+        corner = None if goal == "own" else np.where(goal, highest[k], lowest[k])
         spot = room_for(work, unit, clearance, lowest[k], highest[k], clear_only=True,
-                        goal=lowest[k] if into_corner else None)
+                        goal=corner)
         if spot is None:
             return None
         unit.place(centres, spot)
         placed[unit.members] = True
     return centres
+
+
+def _unit_sizes(bodies: Bodies, units: list[Unit], order: str) -> np.ndarray:
+    """How large each unit is for placed_anew's order: its members' area, or the longest
+    side of the box around them."""
+    if order == "area":
+        return np.array([(bodies.sizes[unit.members, 0] * bodies.sizes[unit.members, 1]).sum()
+                         for unit in units])
+    halves = bodies.sizes / 2
+    return np.array([((unit.offsets + halves[unit.members]).max(axis=0)
+                      - (unit.offsets - halves[unit.members]).min(axis=0)).max()
+                     for unit in units])
 
 
 def room_for(bodies: Bodies, unit: Unit, clearance: float, lowest: np.ndarray,
