@@ -13,7 +13,8 @@ from dataclasses import dataclass, fields, replace
 import numpy as np
 
 from floatpage.physics import Engine, Params, Quality, SettleReport
-from floatpage.physics.finalize import ROUNDING_MM, cannot_fit
+from floatpage.physics.finalize import ROUNDING_MM
+from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover
 from floatpage.physics.snapping import ESCAPE_REACH
 from floatpage.physics.stillness import PROBE_HEAT
 from floatpage.model.errors import FloatpageError
@@ -255,22 +256,27 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
 
 def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
     """Whether the page's first probe is skipped for a full run at once: free items (no
-    anchor, group or region) that overlap, on a page where they fit without overlap by area
-    (physics.finalize.cannot_fit).  There the probe's no-overlap pass leaves fewer overlaps
+    anchor, group or region) that overlap, on a page where the no-overlap pass parts them
+    (they cover at most the GUTTER_FITS_COVER of the room that rectangles pack to, as
+    geometry.grown_cover measures it without a gutter).  There the probe's no-overlap pass leaves fewer overlaps
     than the page has (10,000 scattered items: 6,290 -> 127), and then its answer is known:
     not at rest (at rest keeps every overlap), not near rest (that needs none) and not stuck
     (its result is sounder than the page), so the full run follows; on those 10,000 items the
     probe was an eighth of the settle.  Only a probe whose pass jams, leaving as many
     overlaps, would have answered otherwise and kept the page as it was; such a page now gets
-    the full run (with its second start) instead.  A page whose overlaps may stay (too full
-    by area, or held by anchors, groups or regions) is probed first, as before."""
+    the full run (with its second start) instead.  A page whose overlaps may stay (held by
+    anchors, groups or regions, or too full by area) is probed first, as before.  Where the
+    test was only whether the items fit by area (finalize.cannot_fit), the over-full page (40
+    items on 90 % of A4) was laid out anew from its own settled file, whose overlaps no pass
+    removes, and moved again every time."""
     if any(item.anchor is not None or item.group or item.region for item in page.items):
         return False
     engine = engine_for_page(page, settings)
     if engine.quality().overlap_count == 0:
         return False
-    return not cannot_fit(engine.bodies, engine.page_w_mm, engine.page_h_mm, ROUNDING_MM,
-                          engine.margin_mm)
+    near, far = engine.bodies.insets(engine.margin_mm, engine.page_w_mm, engine.page_h_mm)
+    return grown_cover(engine.bodies, near, far, engine.page_w_mm, engine.page_h_mm,
+                       0.0) <= GUTTER_FITS_COVER
 
 
 def proves_stuck(first: "Probe", settings: PhysicsSettings, max_steps: int) -> bool:

@@ -23,8 +23,9 @@ Held items, hard anchors and the groups that hold one stay where they are.
 
 Where a few such moves do not free the page (the room it needs is spread in slivers between
 items), every unit is set down anew (``placed_anew``), the largest first, each in the
-free place nearest where it lay, around the items that stay: the gutter holds by
-construction, and Engine then lets a gentle run spread the items from there.
+free place nearest where it lay (or, where that leaves one without room, nearest a corner,
+in a few orders), around the items that stay: the gutter holds by construction, and Engine
+then lets a gentle run spread the items from there.
 """
 
 from __future__ import annotations

@@ -94,6 +94,27 @@ def test_plainly_scattered_pages_are_free_overlapping_items_that_fit():
     assert not plainly_scattered(full, settings)
 
 
+def test_an_over_full_page_settled_is_a_fixed_point(tmp_path):
+    """40 items on 90 % of A4 keep overlaps no pass removes; its settled file, whose items fit
+    by area, was taken for a scattered page and laid out anew by every settle (a different
+    file each time)."""
+    from seeded_scenes import mixed_scene
+
+    from floatpage.model import load_project, save_project
+    from floatpage.model.layout import plainly_scattered
+
+    path = tmp_path / "full.toml"
+    save_project(Project(pages=[scene_page(mixed_scene(40, 0.9, seed=1))]), path)
+    settled = []
+    for _ in range(2):
+        project = load_project(path)
+        settle_project(project)
+        save_project(project)
+        settled.append(path.read_bytes())
+    assert settled[1] == settled[0]
+    assert not plainly_scattered(load_project(path).pages[0], PhysicsSettings())
+
+
 @pytest.mark.parametrize("count", [12, 50])
 def test_skipping_the_first_probe_of_a_scattered_page_settles_it_the_same(count, monkeypatch):
     """The probe that plainly_scattered skips would have answered "far from rest": the page
