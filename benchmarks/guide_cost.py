@@ -10,6 +10,15 @@ did: Engine.settle calls (the full run and the probes), fast-mode steps.
 "on/off" is the settle with guides over the settle without; "less snap" leaves the snap's time
 out of the settle with guides (what the rest of the guides costs: the pull, the hold, the
 guided cooling, the probes they bring).
+
+For instruction counts, ``--settle NAME --times K`` only settles that scene K times (guides
+``--guides``); run it under callgrind with K = 2 and K = 1 and take the difference (one warm
+settle).  ``--free-snap`` makes every snap after the first settle a lookup of what it did
+then (the same moves, so the same settle), so the difference is the settle with a snap that
+costs nothing:
+
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null .venv/bin/python \
+        benchmarks/guide_cost.py --settle "20 items" --guides 1 --times 2 --free-snap
 """
 
 from __future__ import annotations
@@ -83,6 +92,28 @@ def settle_once(project, guides: float) -> tuple[float, float, int, int, float, 
             engine.quality().ok)
 
 
+def free_snap() -> None:
+    """Every snap of a page already snapped from the same centres becomes a lookup."""
+    real, done = engine_module.snap_page, {}
+
+    def looked_up(bodies, *args, **kwargs):
+        key = bodies.centres.tobytes()
+        if key in done:
+            bodies.centres[:] = done[key]
+            return
+        real(bodies, *args, **kwargs)
+        done[key] = bodies.centres.copy()
+    engine_module.snap_page = looked_up
+
+
+def settle_only(name: str, guides: float, times: int) -> None:
+    scene = next(s for s in benchmark_scenes(True) + random_scenes() if name in s.name)
+    project = scene_project(scene)
+    project.physics = replace(project.physics, guides=guides)
+    for _ in range(times):
+        settle_project(copy.deepcopy(project))
+
+
 def fresh_scenes(count: int):
     rng = np.random.default_rng(2026)
     chosen = []
@@ -101,7 +132,16 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--only", default="")
     parser.add_argument("--seeds", type=int, default=0, help="fresh seeded pages to add")
+    parser.add_argument("--settle", default="", help="only settle this scene --times times")
+    parser.add_argument("--guides", type=float, default=1.0)
+    parser.add_argument("--times", type=int, default=1)
+    parser.add_argument("--free-snap", action="store_true")
     args = parser.parse_args()
+    if args.free_snap:
+        free_snap()
+    if args.settle:
+        settle_only(args.settle, args.guides, args.times)
+        return
     TALLY.install()
     scenes = [s for s in benchmark_scenes(True) if s.coverage <= 0.6] + random_scenes()
     scenes += fresh_scenes(args.seeds)
