@@ -43,6 +43,8 @@ ON_LINE_MM = 0.05  # a feature this close to its guide is on it (and held)
 PULL_EVERY = 4  # the pull comes as one push every 4th step, four times as strong
 REFRESH_STEPS = 64  # steps between two searches for each item's nearest guide
 PAGE = -1  # owner of the page's own guide lines
+NOBODY = -2  # owner of nearest_guides' sentinels
+LOOKS = np.arange(-2, 3)  # nearest_guides looks two places either side of a query
 LOW, CENTRE, HIGH = 0, 1, 2  # an item's three features on one axis
 
 
@@ -86,19 +88,23 @@ def nearest_guides(values: np.ndarray, owners: np.ndarray, queries: np.ndarray,
     nearest other value.
     """
     order = np.argsort(values, kind="stable")
-    ordered, ordered_owners = values[order], owners[order]
-    last = len(ordered) - 1
-    found = np.full(len(queries), -1)
-    best = np.full(len(queries), np.inf)
-    if last < 0:
-        return found, best
-    place = np.searchsorted(ordered, queries)
-    for shift in (-2, -1, 0, 1, 2):
-        k = np.clip(place + shift, 0, last)
-        distance = ordered[k] - queries
-        better = (ordered_owners[k] != query_owners) & (np.abs(distance) < np.abs(best))
-        best = np.where(better, distance, best)
-        found = np.where(better, order[k], found)
+    if len(values) == 0:
+        return np.full(len(queries), -1), np.full(len(queries), np.inf)
+    # Sentinels, infinitely far and owned by nobody, two below and three above (a query
+    # above every value sorts after the last), so that the five looks
+    # need no clipping to the array; they are never nearer than anything, so the answer is
+    # the clipped look's.  (np.clip was two fifths of a refresh; the five looks are one
+    # (queries, 5) array, where a loop over them took a third longer.)
+    ordered = np.concatenate([[-np.inf] * 2, values[order], [np.inf] * 3])
+    ordered_owners = np.concatenate([[NOBODY] * 2, owners[order], [NOBODY] * 3])
+    order = np.concatenate([[-1] * 2, order, [-1] * 3])
+    looks = np.searchsorted(ordered, queries)[:, None] + LOOKS  # (queries, 5)
+    distance = np.where(ordered_owners[looks] != query_owners[:, None],
+                        ordered[looks] - queries[:, None], np.inf)
+    # the first of the nearest, as a scan from the lowest look keeping only strict gains
+    pick = np.argmin(np.abs(distance), axis=1) + np.arange(0, distance.size, len(LOOKS))
+    best = distance.ravel()[pick]
+    found = order[looks.ravel()[pick]]
     near = np.abs(best) <= reach
     return np.where(near, found, -1), np.where(near, best, np.inf)
 
@@ -117,9 +123,10 @@ class GuidePulls:
         self.halves = sizes / 2
         self.roots = np.arange(len(centres)) if roots is None else roots
         self.grouped = bool((self.roots != np.arange(len(centres))).any())
+        self.flat_roots = (self.roots[:, None] * 2 + np.arange(2)).ravel()  # per flat slot
         self.hold = hold_strength(page, strength)
         self.on_line = np.zeros(0, dtype=int)  # flat slots on their line at the last pull
-        self.holding: list[np.ndarray] | None = None  # from on_line when first needed
+        self.holding: np.ndarray | None = None  # flat slots, from on_line when first needed
         self.guides = np.flatnonzero(active)  # rows whose features are guides
         self.pulled = np.flatnonzero(pulled & active)  # rows the force moves
         self.page, self.margin_mm, self.regions = page, margin_mm, regions
@@ -128,33 +135,50 @@ class GuidePulls:
         self.steps = 0
         self.own = np.zeros(0, dtype=int)
         self.refreshed_at: np.ndarray | None = None
+        self.fixed: list[tuple[np.ndarray, ...] | None] = [None, None]  # per axis: fixed_parts
+
+    def fixed_parts(self, axis: int) -> tuple[np.ndarray, ...]:
+        """What a refresh on ``axis`` needs that no motion changes, worked out on the first
+        refresh and kept: the page's lines, whose each pooled line is and its offset from its
+        owner's centre, the pulled rows' half sizes.  Rebuilt every refresh, these were about
+        a third of its NumPy calls (a refresh is most of what the pull costs: 1-7 % of a settle
+        with guides, benchmarks/guide_cost.py)."""
+        if self.fixed[axis] is None:
+            rows, guides, halves = self.pulled, self.guides, self.halves
+            edges_page, centres_page = page_lines(*self.page, self.margin_mm, axis, self.regions)
+            self.fixed[axis] = (
+                edges_page, centres_page,
+                np.concatenate([guides, guides, np.full(len(edges_page), PAGE)]),  # edge owners
+                np.concatenate([-halves[guides, axis], halves[guides, axis],
+                                np.zeros(len(edges_page))]),  # edge offsets from the centre
+                np.concatenate([guides, [PAGE]]),  # centre owners
+                np.concatenate([rows, rows]),  # who asks, for the low edges then the high
+                halves[rows, axis], halves[guides, axis])
+        return self.fixed[axis]
 
     def refresh(self, centres: np.ndarray) -> None:
         """Choose, per pulled item and axis, the feature to pull and the line to pull it to."""
         self.refreshed_at = centres.copy()
-        rows, guides, halves = self.pulled, self.guides, self.halves
+        rows, guides = self.pulled, self.guides
         own, partner, factor, offset = [], [], [], []
         for axis in (0, 1):
-            edges_page, centres_page = page_lines(*self.page, self.margin_mm, axis, self.regions)
-            mine = features(centres[rows], halves[rows], axis)
-            theirs = features(centres[guides], halves[guides], axis)
+            (edges_page, centres_page, edge_rows, edge_sides, centre_rows, askers, my_halves,
+             their_halves) = self.fixed_parts(axis)
+            mine, theirs = centres[rows, axis], centres[guides, axis]
             # Edges: both of a pulled item's edges against every guide edge and margin line.
-            edge_pool = np.concatenate([theirs[:, LOW], theirs[:, HIGH], edges_page])
-            edge_rows = np.concatenate([guides, guides, np.full(len(edges_page), PAGE)])
-            edge_sides = np.concatenate([-halves[guides, axis], halves[guides, axis],
-                                         np.zeros(len(edges_page))])
+            edge_pool = np.concatenate([theirs - their_halves, theirs + their_halves,
+                                        edges_page])
             found_e, dist_e = nearest_guides(edge_pool, edge_rows,
-                                             np.concatenate([mine[:, LOW], mine[:, HIGH]]),
-                                             np.concatenate([rows, rows]), self.reach)
+                                             np.concatenate([mine - my_halves,
+                                                             mine + my_halves]),
+                                             askers, self.reach)
             count = len(rows)
             low_better = np.abs(dist_e[:count]) <= np.abs(dist_e[count:])
             found_e = np.where(low_better, found_e[:count], found_e[count:])
             dist_e = np.where(low_better, dist_e[:count], dist_e[count:])
-            own_side_e = np.where(low_better, -halves[rows, axis], halves[rows, axis])
-            centre_pool = np.concatenate([theirs[:, CENTRE], centres_page])
-            centre_rows = np.concatenate([guides, [PAGE]])
-            found_c, dist_c = nearest_guides(centre_pool, centre_rows, mine[:, CENTRE], rows,
-                                             self.reach)
+            own_side_e = np.where(low_better, -my_halves, my_halves)
+            centre_pool = np.concatenate([theirs, centres_page])
+            found_c, dist_c = nearest_guides(centre_pool, centre_rows, mine, rows, self.reach)
             use_edge = np.abs(dist_e) <= np.abs(dist_c)
             found = np.where(use_edge, found_e, found_c)
             keep = found >= 0
@@ -202,22 +226,22 @@ class GuidePulls:
         """Static friction at a line: a group with a feature on its guide keeps its place on
         that axis unless the other forces on it (summed over the group, as the integrator
         hands a follower's forces to its root) exceed ``hold``; then only the excess moves it."""
-        count = len(acc)
         if self.holding is None:
+            # the flat slots (root * 2 + axis) to hold, one entry per root and axis: both axes
+            # in one pass, where a pass per axis was twice the NumPy calls in every step of a
+            # probe (4.9 % of the settle on the 25-item page of benchmarks/guide_cost.py)
             rows, axes = self.on_line // 2, self.on_line % 2
-            # the roots to hold on each axis (one entry per root)
-            self.holding = [np.flatnonzero(np.bincount(self.roots[rows[axes == axis]],
-                                                       minlength=count))
-                            for axis in (0, 1)]
-        for axis, roots in enumerate(self.holding):
-            if len(roots) == 0:
-                continue
-            if self.grouped:
-                totals = np.bincount(self.roots, acc[:, axis], count)[roots]
-            else:
-                totals = acc[roots, axis]
-            kept = np.sign(totals) * np.maximum(np.abs(totals) - self.hold, 0.0)
-            acc[roots, axis] += kept - totals
+            self.holding = np.flatnonzero(np.bincount(self.roots[rows] * 2 + axes,
+                                                      minlength=acc.size))
+        if len(self.holding) == 0:
+            return
+        flat = acc.ravel()
+        if self.grouped:
+            totals = np.bincount(self.flat_roots, flat, acc.size)[self.holding]
+        else:
+            totals = flat[self.holding]
+        kept = np.sign(totals) * np.maximum(np.abs(totals) - self.hold, 0.0)
+        flat[self.holding] += kept - totals
 
 
 def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],

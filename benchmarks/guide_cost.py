@@ -1,0 +1,177 @@
+"""What the alignment guides cost outside the snap (issue 16): each page settled the
+`floatpage settle` way (model.layout.settle_project) with guides = 0 and with the default, off
+and on alternating, best of --repeats; CPU seconds (time.process_time) of the whole settle and
+of the time spent inside the alignment snap (physics.snapping.snap_page), and what the settle
+did: Engine.settle calls (the full run and the probes), fast-mode steps.
+
+    .venv/bin/python benchmarks/guide_cost.py --repeats 3
+    .venv/bin/python benchmarks/guide_cost.py --seeds 7     # plus seven fresh seeded pages
+
+"on/off" is the settle with guides over the settle without; "less snap" leaves the snap's time
+out of the settle with guides (what the rest of the guides costs: the pull, the hold, the
+guided cooling, the probes they bring).
+
+For instruction counts, ``--settle NAME --times K`` only settles that scene K times (guides
+``--guides``); run it under callgrind with K = 2 and K = 1 and take the difference (one warm
+settle).  ``--free-snap`` makes every snap after the first settle a lookup of what it did
+then (the same moves, so the same settle), so the difference is the settle with a snap that
+costs nothing:
+
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null .venv/bin/python \
+        benchmarks/guide_cost.py --settle "20 items" --guides 1 --times 2 --free-snap
+"""
+
+from __future__ import annotations
+
+import argparse
+import copy
+import time
+from dataclasses import replace
+
+import numpy as np
+
+import floatpage.physics.engine as engine_module
+import floatpage.physics.fast_mode as fast_module
+from floatpage.model.layout import engine_for_page, settle_project
+from floatpage.physics.alignment import measure_alignment
+from alignment import benchmark_scenes, random_scenes, scene_project
+from seeded_scenes import mixed_scene
+
+SIZES = ((210.0, 297.0), (297.0, 210.0), (148.0, 210.0), (215.9, 279.4), (297.0, 420.0))
+
+
+class Tally:
+    """Counts and times, gathered by wrapping the functions that do the work."""
+
+    def __init__(self) -> None:
+        self.snap_s = 0.0
+        self.settles = 0
+        self.steps = 0
+
+    def install(self) -> None:
+        snap, settle, run = engine_module.snap_page, engine_module.Engine.settle, \
+            engine_module.run_fast
+        tally = self
+
+        def timed_snap(*args, **kwargs):
+            start = time.process_time()
+            try:
+                return snap(*args, **kwargs)
+            finally:
+                tally.snap_s += time.process_time() - start
+
+        def counted_settle(self, *args, **kwargs):
+            tally.settles += 1
+            return settle(self, *args, **kwargs)
+
+        def counted_run(*args, **kwargs):
+            result = run(*args, **kwargs)
+            tally.steps += result[0]
+            return result
+        engine_module.snap_page = timed_snap
+        engine_module.Engine.settle = counted_settle
+        engine_module.run_fast = counted_run
+
+
+TALLY = Tally()
+
+
+def settle_once(project, guides: float) -> tuple[float, float, int, int, float, bool]:
+    """CPU seconds, of them in the snap, Engine.settle calls, steps; near misses per item and
+    whether the page keeps zero overlap, the gutter and the margin, as settled."""
+    trial = copy.deepcopy(project)
+    trial.physics = replace(trial.physics, guides=guides)
+    TALLY.snap_s, TALLY.settles, TALLY.steps = 0.0, 0, 0
+    start = time.process_time()
+    settle_project(trial)
+    seconds = time.process_time() - start
+    engine = engine_for_page(trial.pages[0], trial.physics)
+    bodies = engine.bodies
+    misses = measure_alignment(bodies.centres, bodies.sizes, bodies.decorative)
+    return (seconds, TALLY.snap_s, TALLY.settles, TALLY.steps, misses.near_misses_per_item,
+            engine.quality().ok)
+
+
+def free_snap() -> None:
+    """Every snap of a page already snapped from the same centres becomes a lookup."""
+    real, done = engine_module.snap_page, {}
+
+    def looked_up(bodies, *args, **kwargs):
+        key = bodies.centres.tobytes()
+        if key in done:
+            bodies.centres[:] = done[key]
+            return
+        real(bodies, *args, **kwargs)
+        done[key] = bodies.centres.copy()
+    engine_module.snap_page = looked_up
+
+
+def settle_only(name: str, guides: float, times: int) -> None:
+    scene = next(s for s in benchmark_scenes(True) + random_scenes() if name in s.name)
+    project = scene_project(scene)
+    project.physics = replace(project.physics, guides=guides)
+    for _ in range(times):
+        settle_project(copy.deepcopy(project))
+
+
+def fresh_scenes(count: int):
+    rng = np.random.default_rng(2026)
+    chosen = []
+    for seed in range(count):
+        items = int(rng.integers(8, 61))
+        coverage = float(rng.uniform(0.25, 0.6))
+        w, h = SIZES[seed % len(SIZES)]
+        scene = mixed_scene(items, coverage, seed=500 + seed, page_w_mm=w, page_h_mm=h)
+        chosen.append(replace(scene, name=f"seed {500 + seed}: {items} items, {coverage:.0%}, "
+                                           f"{w:g}x{h:g} mm"))
+    return chosen
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--only", default="")
+    parser.add_argument("--seeds", type=int, default=0, help="fresh seeded pages to add")
+    parser.add_argument("--settle", default="", help="only settle this scene --times times")
+    parser.add_argument("--guides", type=float, default=1.0)
+    parser.add_argument("--times", type=int, default=1)
+    parser.add_argument("--free-snap", action="store_true")
+    args = parser.parse_args()
+    if args.free_snap:
+        free_snap()
+    if args.settle:
+        settle_only(args.settle, args.guides, args.times)
+        return
+    TALLY.install()
+    scenes = [s for s in benchmark_scenes(True) if s.coverage <= 0.6] + random_scenes()
+    scenes += fresh_scenes(args.seeds)
+    print("| scene | off s | on s | on/off | snap s | on less snap / off "
+          "| settles off → on | steps off → on | near misses/item off → on | ok |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    ratios, rests, misses = [], [], []
+    for scene in scenes:
+        if args.only not in scene.name:
+            continue
+        project = scene_project(scene)
+        best_off = best_on = None
+        for _ in range(args.repeats):
+            off = settle_once(project, 0.0)
+            on = settle_once(project, 1.0)
+            best_off = off if best_off is None or off[0] < best_off[0] else best_off
+            best_on = on if best_on is None or on[0] < best_on[0] else best_on
+        ratio, rest = best_on[0] / best_off[0], (best_on[0] - best_on[1]) / best_off[0]
+        ratios.append(ratio)
+        rests.append(rest)
+        misses.append(best_on[4])
+        ok = "yes" if best_on[5] else "NO"
+        print(f"| {scene.name} | {best_off[0]:.3f} | {best_on[0]:.3f} | {ratio:.2f} | "
+              f"{best_on[1]:.3f} | {rest:.2f} | {best_off[2]} → {best_on[2]} | "
+              f"{best_off[3]} → {best_on[3]} | {best_off[4]:.2f} → {best_on[4]:.2f} | {ok} |",
+              flush=True)
+    print(f"\non/off: median {np.median(ratios):.2f}, worst {max(ratios):.2f}; "
+          f"less snap: median {np.median(rests):.2f}, worst {max(rests):.2f}; "
+          f"near misses/item with guides, summed: {sum(misses):.2f}")
+
+
+if __name__ == "__main__":
+    main()

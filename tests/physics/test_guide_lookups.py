@@ -1,0 +1,76 @@
+"""The guide pull's lookups (physics.guides), made cheaper without changing an answer: the
+nearest guide of another owner (nearest_guides, against a search of every value), and a
+refresh that keeps the parts no motion changes (against a force built afresh)."""
+
+from __future__ import annotations
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from floatpage.physics.guides import PAGE, GuidePulls, nearest_guides
+
+
+def nearest_by_search(values, owners, queries, query_owners, reach):
+    """The distance to the nearest value of another owner within ``reach``, or inf."""
+    best = np.full(len(queries), np.inf)
+    for q, (query, owner) in enumerate(zip(queries, query_owners)):
+        others = values[owners != owner] - query
+        if len(others) and np.abs(others).min() <= reach:
+            best[q] = np.abs(others).min()
+    return best
+
+
+@settings(max_examples=200, deadline=None, derandomize=True, database=None)
+@given(st.data())
+def test_nearest_guides_finds_the_nearest_value_of_another_owner(data):
+    # owners hold at most two values, as an item's two edges do; values on a coarse grid, so
+    # that ties and equal values of different owners come up
+    count = data.draw(st.integers(1, 12))
+    values = np.array(data.draw(st.lists(st.integers(0, 20), min_size=count, max_size=count)),
+                      float)
+    owners = np.array(data.draw(st.lists(st.integers(0, 6), min_size=count, max_size=count)))
+    owners = np.array([owner if list(owners[:k]).count(owner) < 2 else PAGE - 1 - k
+                       for k, owner in enumerate(owners)])
+    queries = np.array(data.draw(st.lists(st.integers(-3, 23), min_size=1, max_size=8)), float)
+    query_owners = np.array(data.draw(st.lists(st.integers(0, 6), min_size=len(queries),
+                                               max_size=len(queries))))
+    reach = data.draw(st.sampled_from([0.0, 1.0, 2.5, 40.0]))
+    found, distance = nearest_guides(values, owners, queries, query_owners, reach)
+    expected = nearest_by_search(values, owners, queries, query_owners, reach)
+    assert np.array_equal(np.abs(distance), expected)
+    hit = found >= 0
+    assert np.array_equal(hit, np.isfinite(expected))
+    assert np.array_equal(values[found[hit]] - queries[hit], distance[hit])
+    assert not (owners[found[hit]] == query_owners[hit]).any()
+
+
+def test_nearest_guides_with_no_values_finds_nothing():
+    found, distance = nearest_guides(np.zeros(0), np.zeros(0, int), np.array([1.0, 2.0]),
+                                     np.array([0, 1]), 4.0)
+    assert found.tolist() == [-1, -1] and np.isinf(distance).all()
+
+
+def test_a_refresh_after_the_items_moved_chooses_as_a_force_built_afresh():
+    """A refresh keeps the page's lines and the pools' owners and offsets from the first; the
+    items' positions must still be read anew (a refresh that kept the first positions' pools
+    pulled towards lines that had moved away)."""
+    rng = np.random.default_rng(7)
+    count = 14
+    sizes = rng.uniform(10, 40, (count, 2))
+    active = np.ones(count, bool)
+    pulled = rng.random(count) < 0.7
+    regions = np.full((count, 4), np.nan)
+    regions[3] = (20.0, 30.0, 120.0, 160.0)
+    first = rng.uniform(30, 170, (count, 2))
+    kept = GuidePulls(first, sizes, active, pulled, (210.0, 297.0), 10.0, 1.0, regions=regions)
+    kept.refresh(first)
+    for _ in range(3):
+        moved = first + rng.normal(0, 6, first.shape)
+        kept.refresh(moved)
+        afresh = GuidePulls(moved, sizes, active, pulled, (210.0, 297.0), 10.0, 1.0,
+                            regions=regions)
+        afresh.refresh(moved)
+        for name in ("own", "partner", "factor", "offset"):
+            assert np.array_equal(getattr(kept, name), getattr(afresh, name)), name
+        assert len(kept.own) > 0
