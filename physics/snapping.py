@@ -129,6 +129,8 @@ class _Snapper:
         self.bounds = distance_bounds(self.reach, self.farthest)
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
         self.half_lists = [self.halves[:, axis].tolist() for axis in (0, 1)]
+        self.limit_lists = [(self.lowest[:, axis].tolist(), self.highest[:, axis].tolist())
+                            for axis in (0, 1)]
         # per group and axis: too large to fit between its margins (it has no move to make)
         too_large = self.lowest > self.highest
         self.too_large = {row: too_large[members].any(axis=0)
@@ -304,14 +306,19 @@ class _Snapper:
         page the test against every item was two thirds of the snapping's time).  The test is
         plain Python on floats: a body meets a handful of neighbours and tries at most
         ``MAX_TRIES`` moves, and NumPy's set-up per call cost more than the arithmetic."""
-        centres = self.bodies.centres
-        along, beside = centres[:, axis].tolist(), centres[:, 1 - axis].tolist()
-        halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
         rows = members.tolist()
+        centres = self.bodies.centres
+        along = centres[:, axis].tolist()
         current = [along[row] for row in rows]
-        limits = [(min(lowest, at) - TOLERANCE_MM, max(highest, at) + TOLERANCE_MM)
-                  for lowest, highest, at in zip(self.lowest[members, axis].tolist(),
-                                                 self.highest[members, axis].tolist(), current)]
+        lowest, highest = self.limit_lists[axis]
+        limits = [(min(lowest[row], at) - TOLERANCE_MM, max(highest[row], at) + TOLERANCE_MM)
+                  for row, at in zip(rows, current)]
+        inside = [shift for shift in shifts
+                  if all(low <= at + shift <= high for at, (low, high) in zip(current, limits))]
+        if not inside:
+            return inside
+        beside = centres[:, 1 - axis].tolist()
+        halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
         clearance, far = self.clearance, self.clearance + self.farthest
         checks = []  # (its position, the member, their reach, gap across, the gap needed)
         for other in self.neighbours(members, axis):
@@ -324,12 +331,13 @@ class _Snapper:
                 checks.extend((there, member, half + halves_along[row], across,
                                min(max(now, across), clearance) - TOLERANCE_MM)
                               for member, (row, (across, now)) in enumerate(zip(rows, gaps)))
+        if not checks:
+            return inside
         fitting = []
-        for shift in shifts:
+        for shift in inside:
             moved = [at + shift for at in current]
-            if all(low <= at <= high for at, (low, high) in zip(moved, limits)) and all(
-                    max(abs(there - moved[member]) - reach, across) >= needed
-                    for there, member, reach, across, needed in checks):
+            if all(max(abs(there - moved[member]) - reach, across) >= needed
+                   for there, member, reach, across, needed in checks):
                 fitting.append(shift)
         return fitting
 
@@ -338,16 +346,20 @@ class _Snapper:
         clearance of, moving along ``axis`` (fits tests them exactly): those within the
         clearance across the axis and within it and the longest move along it, each with a
         millimetre to spare."""
-        across = self.lines[1 - axis]
-        along = self.lines[axis]
-        mine_across, mine_along = across[members], along[members]
         spare = self.clearance + 1.0
         reach = spare + self.farthest
-        near = ((across[:, LOW] < float(mine_across[:, HIGH].max()) + spare)
-                & (across[:, HIGH] > float(mine_across[:, LOW].min()) - spare)
-                & (along[:, LOW] < float(mine_along[:, HIGH].max()) + reach)
-                & (along[:, HIGH] > float(mine_along[:, LOW].min()) - reach))
-        near &= self.active
+        if len(members) == 1:
+            (low_across, _, high_across), (low, _, high) = (
+                self.lines[1 - axis][members[0]].tolist(), self.lines[axis][members[0]].tolist())
+        else:
+            across, along = self.lines[1 - axis][members], self.lines[axis][members]
+            low_across, high_across = float(across[:, LOW].min()), float(across[:, HIGH].max())
+            low, high = float(along[:, LOW].min()), float(along[:, HIGH].max())
+        lows, highs = self.lows, self.highs  # an inactive row's are out of every range
+        near = lows[1 - axis] < high_across + spare
+        near &= highs[1 - axis] > low_across - spare
+        near &= lows[axis] < high + reach
+        near &= highs[axis] > low - reach
         near[members] = False
         return near.nonzero()[0].tolist()
 
