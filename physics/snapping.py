@@ -164,6 +164,13 @@ class _Snapper:
         """The group's features on ``axis`` (low edge, centre, high edge per member)."""
         return self.lines[axis][self.members[row]].ravel()
 
+    def near_lines(self, axis: int, low: float, high: float) -> np.ndarray:
+        """Which active rows reach into ``(low, high)`` on ``axis`` (a new mask): their lines
+        are the ones near a body whose features lie a window inside it."""
+        near = self.lows[axis] < high
+        near &= self.highs[axis] > low
+        return near
+
     def near(self, moved: list[int], axis: int) -> np.ndarray:
         """Movers with a feature within the window of a moved group's features, before or
         after its move, on ``axis``."""
@@ -239,23 +246,22 @@ class _Snapper:
         if known is not None:  # the same groups, perhaps named in another order
             return known if known.roots == roots else known._replace(roots=roots, members=members)
         lines = self.lines[axis]
-        mine = lines[members]
-        # a feature's low edge is its lowest value, its high edge its highest
-        if len(members) == 1:
-            low_edge, _, high_edge = mine[0].tolist()
-        else:
-            low_edge, high_edge = float(mine[:, LOW].min()), float(mine[:, HIGH].max())
-        low, high = low_edge - self.window, high_edge + self.window
-        # the lines near: every other active item whose extent reaches into (low, high), and
-        # the page's lines; an edge meets an edge, a centre a centre (THEIRS and MINE)
-        near = self.lows[axis] < high
-        near &= self.highs[axis] > low
-        near[members] = False
         page, paired = self.page_paired[all(self.bleeds[root] for root in roots)][axis]
-        if len(members) == 1:
-            ordered = np.concatenate(((self.theirs[axis][near] - self.paired_mine[axis][members])
-                                      .ravel(), page - mine[0, paired]))
+        if len(members) == 1:  # most calls: one row, read by plain indexing
+            row = members[0]
+            mine = lines[row]
+            low_edge, _, high_edge = mine.tolist()
+            low, high = low_edge - self.window, high_edge + self.window
+            near = self.near_lines(axis, low, high)
+            near[row] = False
+            ordered = np.concatenate(((self.theirs[axis][near] - self.paired_mine[axis][row])
+                                      .ravel(), page - mine[paired]))
         else:
+            mine = lines[members]
+            low = float(mine[:, LOW].min()) - self.window
+            high = float(mine[:, HIGH].max()) + self.window
+            near = self.near_lines(axis, low, high)
+            near[members] = False
             ordered = np.concatenate((
                 (self.theirs[axis][near][None] - self.paired_mine[axis][members][:, None]).ravel(),
                 (page - mine[:, paired]).ravel()))
