@@ -57,14 +57,15 @@ MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few c
 TOLERANCE_MM = 1e-9
 NO_SHIFTS: tuple[float, ...] = ()
 STAY = np.zeros(1)  # the shift that leaves a body where it is, always a candidate
-# misses_after: the bisections (d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR,
-# d <= shift + ALIGNED) to a score
-SCORE_WEIGHTS = np.array([2, 3, -2, -3])  # twice 1, 1 + ALIGN_GAIN: a score in integers
+# misses_after's four ends around a shift (a column per shift), and what each bisection there
+# counts towards twice the score: d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR,
+# d <= shift + ALIGNED; twice 1 and 1 + ALIGN_GAIN, so that scores are integers
+WINDOW_ENDS = np.array([[NEAR_MM], [-ALIGNED_MM], [-NEAR_MM], [ALIGNED_MM]])
+SCORE_WEIGHTS = np.array([2, 3, -2, -3])
 # a body's features paired with the lines of the same kind: their edges with each of its
 # edges, their centre with its centre
 THEIRS = np.array([LOW, HIGH, LOW, HIGH, CENTRE])
 MINE = np.array([LOW, LOW, HIGH, HIGH, CENTRE])
-WINDOW_ENDS = np.array([[NEAR_MM], [-ALIGNED_MM], [-NEAR_MM], [ALIGNED_MM]])  # misses_after's
 
 
 def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params) -> int:
