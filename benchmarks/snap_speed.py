@@ -4,12 +4,15 @@ and the Engine.settle way (benchmarks/physics.py).
 
     .venv/bin/python benchmarks/snap_speed.py              # best of 3 per snap
     .venv/bin/python benchmarks/snap_speed.py --repeats 1 --only "50 items"
+    .venv/bin/python benchmarks/snap_speed.py --repeats 2 --only "50 items" --engine-only
 
 Each snap's input (the bodies after the no-overlap pass) is kept, then snapped again on a copy:
 CPU seconds (time.process_time) per scene, best of --repeats, the moves made, and a hash of the
 snapped centres over every snap, so that a change meant to make the snap cheaper can show it
 makes the same moves (the hash is the same) and what it saves.  Under callgrind (one repeat)
-the instruction counts do not depend on the machine's load.
+the instruction counts do not depend on the machine's load: the run with --repeats 2 less
+the run with --repeats 1 is one snap of each input (--engine-only: the Engine.settle snaps
+alone, one per scene).
 """
 
 from __future__ import annotations
@@ -37,7 +40,7 @@ def loaded(scene: Scene) -> Engine:
     return engine
 
 
-def captured_snaps(only: str) -> list[tuple[str, tuple]]:
+def captured_snaps(only: str, engine_only: bool = False) -> list[tuple[str, tuple]]:
     """(label, snap_page's arguments) for every snap the settles ask for."""
     captured: list[tuple[str, tuple]] = []
     label = [""]
@@ -51,8 +54,9 @@ def captured_snaps(only: str) -> list[tuple[str, tuple]]:
         for scene in benchmark_scenes(quick=True) + random_scenes():
             if only not in scene.name:
                 continue
-            label[0] = f"settle {scene.name}"
-            settle_project(scene_project(scene))
+            if not engine_only:
+                label[0] = f"settle {scene.name}"
+                settle_project(scene_project(scene))
             label[0] = f"Engine.settle {scene.name}"
             loaded(scene).settle()
     finally:
@@ -64,11 +68,13 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=3, help="timed snaps per input (best)")
     parser.add_argument("--only", default="", help="only the scenes whose name contains this")
+    parser.add_argument("--engine-only", action="store_true",
+                        help="only the snaps of Engine.settle (benchmarks/physics.py's way)")
     args = parser.parse_args()
     seconds: dict[str, float] = defaultdict(float)
     moves: dict[str, int] = defaultdict(int)
     snapped = hashlib.sha256()
-    for label, (bodies, page_w_mm, page_h_mm, params) in captured_snaps(args.only):
+    for label, (bodies, page_w_mm, page_h_mm, params) in captured_snaps(args.only, args.engine_only):
         best = float("inf")
         for _ in range(args.repeats):
             trial = copy.deepcopy(bodies)

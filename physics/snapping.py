@@ -55,11 +55,17 @@ ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm 
 MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
 MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
 TOLERANCE_MM = 1e-9
-EDGES = slice(LOW, HIGH + 1, HIGH - LOW)  # an item's two edges among its three features
-NO_SHIFTS = np.zeros(0)
+NO_SHIFTS: tuple[float, ...] = ()
 STAY = np.zeros(1)  # the shift that leaves a body where it is, always a candidate
-ESCAPES = np.array([-ESCAPE_MM, ESCAPE_MM])  # a line's distance plus these: just out of reach
-WINDOW_ENDS = np.array([NEAR_MM, -ALIGNED_MM, -NEAR_MM, ALIGNED_MM])  # misses_after's ranges
+# misses_after's four ends around a shift (a column per shift), and what each bisection there
+# counts towards twice the score: d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR,
+# d <= shift + ALIGNED; twice 1 and 1 + ALIGN_GAIN, so that scores are integers
+WINDOW_ENDS = np.array([[NEAR_MM], [-ALIGNED_MM], [-NEAR_MM], [ALIGNED_MM]])
+SCORE_WEIGHTS = np.array([2, 3, -2, -3])
+# a body's features paired with the lines of the same kind: their edges with each of its
+# edges, their centre with its centre
+THEIRS = np.array([LOW, HIGH, LOW, HIGH, CENTRE])
+MINE = np.array([LOW, LOW, HIGH, HIGH, CENTRE])
 
 
 def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params) -> int:
@@ -123,43 +129,48 @@ class _Snapper:
         self.window = max(self.farthest, NEAR_MM) + NEAR_MM  # further apart cannot matter
         self.bounds = distance_bounds(self.reach, self.farthest)
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
+        self.half_lists = [self.halves[:, axis].tolist() for axis in (0, 1)]
+        self.limit_lists = [(self.lowest[:, axis].tolist(), self.highest[:, axis].tolist())
+                            for axis in (0, 1)]
         # per group and axis: too large to fit between its margins (it has no move to make)
         too_large = self.lowest > self.highest
         self.too_large = {row: too_large[members].any(axis=0)
                           for row, members in self.members.items()}
-        self.is_mover = np.zeros(bodies.count, dtype=bool)
-        self.is_mover[self.movers] = True
+        is_mover = np.zeros(bodies.count, dtype=bool)
+        is_mover[self.movers] = True
+        self.is_mover = is_mover.tolist()
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
         self.bleeds = {row: bool(bodies.bleed[members].any())
                        for row, members in self.members.items()}
         lines = {bleed: [page_lines(*page, 0.0 if bleed else margin_mm, axis, bodies.regions)
                          for axis in (0, 1)] for bleed in (False, True)}
-        self.page_lines = lines  # [bleed][axis]: (edge lines, centre lines)
+        # [bleed][axis]: the page's lines and which of a body's features each is paired with
+        self.page_paired = {bleed: [paired_page_lines(*per_axis) for per_axis in lines[bleed]]
+                            for bleed in lines}
         self.lines = [features(bodies.centres, self.halves, axis) for axis in (0, 1)]
+        # the same features, paired for options and line_of (THEIRS, MINE), and the edges
+        # alone with an inactive row's out of every range: kept in step with ``lines``
+        self.theirs = [lines[:, THEIRS] for lines in self.lines]
+        self.paired_mine = [lines[:, MINE] for lines in self.lines]
+        self.lows = [np.where(self.active, lines[:, LOW], np.inf) for lines in self.lines]
+        self.highs = [np.where(self.active, lines[:, HIGH], -np.inf) for lines in self.lines]
         self.moved_from: dict[int, np.ndarray] = {}
         # Lines (roots, axis) whose move as one failed since the last move on the page: each of
         # their groups would try the same move of the same line again, to the same end.
         self.stuck_lines: set[tuple[tuple[int, ...], int]] = set()
         self.memo = AxisMemo()  # the lines and scores read off one axis, until a move there
-        self.arounds: dict[tuple[bytes, int], tuple[np.ndarray, ...]] = {}  # see around
 
     def mine(self, row: int, axis: int) -> np.ndarray:
         """The group's features on ``axis`` (low edge, centre, high edge per member)."""
         return self.lines[axis][self.members[row]].ravel()
 
-    def lines_near(self, members: np.ndarray, bleed: bool, axis: int, low: float,
-                   high: float) -> tuple[np.ndarray, np.ndarray]:
-        """The lines near the rigid body ``members`` on ``axis``: every other active item whose
-        extent reaches into ``(low, high)``, with the page's lines; (edges, centres).  Kept
-        apart by kind, as only an edge meets an edge and a centre a centre."""
-        lines = self.lines[axis]
-        near = self.active & (lines[:, LOW] < high) & (lines[:, HIGH] > low)
-        near[members] = False
-        theirs = lines[near]
-        page_edges, page_middles = self.page_lines[bleed][axis]
-        return (np.concatenate([theirs[:, EDGES].ravel(), page_edges]),
-                np.concatenate([theirs[:, CENTRE], page_middles]))
+    def near_lines(self, axis: int, low: float, high: float) -> np.ndarray:
+        """Which active rows reach into ``(low, high)`` on ``axis`` (a new mask): their lines
+        are the ones near a body whose features lie a window inside it."""
+        near = self.lows[axis] < high
+        near &= self.highs[axis] > low
+        return near
 
     def near(self, moved: list[int], axis: int) -> np.ndarray:
         """Movers with a feature within the window of a moved group's features, before or
@@ -209,19 +220,15 @@ class _Snapper:
         known = self.memo.recall(("line", row), axis)
         if known is not None:
             return known
-        lines = self.lines[axis]
-        mine = lines[self.members[row]]
-        edges = np.abs(lines[:, EDGES].reshape(-1, 1) - mine[:, EDGES].reshape(1, -1))
-        middles = np.abs(lines[:, CENTRE, None] - mine[None, :, CENTRE])
-        on = ((edges <= ALIGNED_MM).reshape(len(lines), -1).any(axis=1)
-              | (middles <= ALIGNED_MM).any(axis=1))
-        lined = np.zeros(self.bodies.count, dtype=bool)
-        lined[self.roots[self.active & on]] = True
-        lined &= self.is_mover
-        lined[row] = False
-        line = [row] + np.flatnonzero(lined).tolist()
-        return self.memo.keep(("line", row), axis, float(mine.min()) - ALIGNED_MM,
-                              float(mine.max()) + ALIGNED_MM, line)
+        members = self.members[row]
+        lines = self.lines[axis][members]
+        gaps = self.theirs[axis][:, None] - self.paired_mine[axis][members][None]  # (n, m, 5)
+        on = (np.abs(gaps.reshape(len(gaps), -1)) <= ALIGNED_MM).any(axis=1)
+        on &= self.active
+        roots, is_mover = self.roots, self.is_mover
+        line = [row] + sorted({root for root in roots[on].tolist() if is_mover[root]} - {row})
+        return self.memo.keep(("line", row), axis, float(lines.min()) - ALIGNED_MM,
+                              float(lines.max()) + ALIGNED_MM, line)
 
     def options(self, roots: list[int], axis: int) -> "Moves":
         """The moves along ``axis`` that would lower the near misses of the groups of
@@ -234,32 +241,45 @@ class _Snapper:
         members = (self.members[roots[0]] if len(roots) == 1
                    else np.concatenate([self.members[root] for root in roots]))
         if any(self.too_large[root][axis] for root in roots):
-            return Moves(roots, members, NO_SHIFTS, NO_SHIFTS, 0.0, False, False)
+            return Moves(roots, members, NO_SHIFTS, 0.0, False, False)
         key = tuple(sorted(roots))
         known = self.memo.recall(key, axis)
         if known is not None:  # the same groups, perhaps named in another order
             return known if known.roots == roots else known._replace(roots=roots, members=members)
-        mine = self.lines[axis][members]
-        # a feature's low edge is its lowest value, its high edge its highest
-        low = float(mine[:, LOW].min()) - self.window
-        high = float(mine[:, HIGH].max()) + self.window
-        edges, middles = self.lines_near(members, all(self.bleeds[root] for root in roots),
-                                         axis, low, high)
-        ordered = np.sort(np.concatenate([
-            (edges[None, :] - mine[:, EDGES].reshape(-1, 1)).ravel(),
-            (middles[None, :] - mine[:, CENTRE, None]).ravel()]))
+        lines = self.lines[axis]
+        page, paired = self.page_paired[all(self.bleeds[root] for root in roots)][axis]
+        if len(members) == 1:  # most calls: one row, read by plain indexing
+            row = members[0]
+            mine = lines[row]
+            low_edge, _, high_edge = mine.tolist()
+            low, high = low_edge - self.window, high_edge + self.window
+            near = self.near_lines(axis, low, high)
+            near[row] = False
+            ordered = np.concatenate(((self.theirs[axis][near] - self.paired_mine[axis][row])
+                                      .ravel(), page - mine[paired]))
+        else:
+            mine = lines[members]
+            low = float(mine[:, LOW].min()) - self.window
+            high = float(mine[:, HIGH].max()) + self.window
+            near = self.near_lines(axis, low, high)
+            near[members] = False
+            ordered = np.concatenate((
+                (self.theirs[axis][near][None] - self.paired_mine[axis][members][:, None]).ravel(),
+                (page - mine[:, paired]).ravel()))
+        ordered.sort()
         shifts, missing, lined_up = candidate_shifts(ordered, self.bounds, self.farthest)
-        if len(shifts) > MAX_CANDIDATES:  # a crowded page: the nearest lines only
-            shifts = np.sort(shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]])
+        if len(shifts) > MAX_CANDIDATES:  # perhaps a crowded page: the nearest lines only
+            shifts = sorted_unique(shifts)
+            if len(shifts) > MAX_CANDIDATES:
+                shifts = shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]]
         scores = misses_after(ordered, shifts)
-        now = float(scores[np.searchsorted(shifts, 0.0)])
-        better = np.flatnonzero(scores < now - TOLERANCE_MM)
-        if len(better):  # best first: fewest misses, then the shortest move
-            better = better[np.lexsort((np.abs(shifts[better]), scores[better]))][:MAX_TRIES]
-            found = Moves(roots, members, shifts[better], ordered,
-                          now - float(scores[better[0]]), missing, lined_up)
-        else:  # most calls
-            found = Moves(roots, members, NO_SHIFTS, ordered, 0.0, missing, lined_up)
+        now = int(scores[0] if shifts[0] == 0 else scores[shifts.searchsorted(0.0)])
+        better = (scores < now).nonzero()[0]
+        if len(better):  # most calls have none
+            found = Moves(roots, members, *best_first(shifts[better], scores[better], now),
+                          missing, lined_up)
+        else:
+            found = Moves(roots, members, NO_SHIFTS, 0.0, missing, lined_up)
         return self.memo.keep(key, axis, low, high, found)
 
     def attempt(self, moves: "Moves", axis: int) -> bool:
@@ -267,67 +287,88 @@ class _Snapper:
         if len(moves.shifts) == 0:
             return False  # most calls: no move would help
         members = moves.members
-        for shift in moves.shifts[self.fits(members, axis, moves.shifts)]:
+        for shift in self.fits(members, axis, moves.shifts):
             if abs(shift) <= NUDGE_MM or self.rest is None \
                     or self.rest.keeps_rest(members, axis, shift):
                 for root in moves.roots:
                     self.moved_from[root] = self.mine(root, axis)
                 before = self.lines[axis][members]
                 self.bodies.centres[members, axis] += shift
-                self.lines[axis][members] += shift
+                for kept in (self.lines, self.theirs, self.paired_mine, self.lows, self.highs):
+                    kept[axis][members] += shift
                 self.memo.moved(axis, before, self.lines[axis][members])
                 if self.rest is not None:
                     self.rest.moved()
                 return True
         return False
 
-    def fits(self, members: np.ndarray, axis: int, shifts: np.ndarray) -> np.ndarray:
-        """For each of ``shifts``, whether the rigid body ``members`` may move by it along
+    def fits(self, members: np.ndarray, axis: int, shifts: tuple[float, ...]) -> list[float]:
+        """The ``shifts`` (in their order) by which the rigid body ``members`` may move along
         ``axis`` as far as the page and its neighbours go: every member inside its margins (or
         no further out than it is), and no pair closer than the clearance (or than it is now).
-        All the shifts at once: tested one by one, in Python, this was a third of the
-        snapping's time.  The rest check comes after.
+        The rest check comes after.
 
         Only the items a move could bring within the clearance are tested: within it of a
         member across the axis, and within it and the longest move along it (on a 600-item
-        page the test against every item was two thirds of the snapping's time)."""
+        page the test against every item was two thirds of the snapping's time).  The test is
+        plain Python on floats: a body meets a handful of neighbours and tries at most
+        ``MAX_TRIES`` moves, and NumPy's set-up per call cost more than the arithmetic."""
+        rows = members.tolist()
         centres = self.bodies.centres
-        current = centres[members, axis]
-        low = np.minimum(self.lowest[members, axis], current)
-        high = np.maximum(self.highest[members, axis], current)
-        moved = current[None, :] + shifts[:, None]  # (shifts, members)
-        ok = ((moved >= low - TOLERANCE_MM) & (moved <= high + TOLERANCE_MM)).all(axis=1)
-        others, their_across, my_across, reach = self.around(members, axis)
-        across = 1 - axis
-        gap_across = (np.abs(centres[others, across][None, :] - centres[members, across][:, None])
-                      - their_across - my_across)
-        theirs = centres[others, axis][None, :]
-        gap_now = np.abs(theirs - current[:, None]) - reach
-        near = ((gap_across < self.clearance)
-                & (gap_now < self.clearance + self.farthest)).any(axis=0)
-        if not near.any():
-            return ok
-        gap_across, reach, theirs, gap_now = (part[:, near]
-                                              for part in (gap_across, reach, theirs, gap_now))
-        needed = np.minimum(np.maximum(gap_now, gap_across), self.clearance) - TOLERANCE_MM
-        gap_new = np.abs(theirs[None] - moved[:, :, None]) - reach[None]  # (shifts, m, o)
-        return ok & (np.maximum(gap_new, gap_across[None]) >= needed[None]).all(axis=(1, 2))
+        along = centres[:, axis].tolist()
+        current = [along[row] for row in rows]
+        lowest, highest = self.limit_lists[axis]
+        limits = [(min(lowest[row], at) - TOLERANCE_MM, max(highest[row], at) + TOLERANCE_MM)
+                  for row, at in zip(rows, current)]
+        inside = [shift for shift in shifts
+                  if all(low <= at + shift <= high for at, (low, high) in zip(current, limits))]
+        if not inside:
+            return inside
+        beside = centres[:, 1 - axis].tolist()
+        halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
+        clearance, far = self.clearance, self.clearance + self.farthest
+        checks = []  # (its position, the member, their reach, gap across, the gap needed)
+        for other in self.neighbours(members, axis):
+            there, side, half, half_across = (along[other], beside[other], halves_along[other],
+                                              halves_across[other])
+            gaps = [(abs(side - beside[row]) - half_across - halves_across[row],
+                     abs(there - at) - (half + halves_along[row]))
+                    for row, at in zip(rows, current)]
+            if any(across < clearance and now < far for across, now in gaps):
+                checks.extend((there, member, half + halves_along[row], across,
+                               min(max(now, across), clearance) - TOLERANCE_MM)
+                              for member, (row, (across, now)) in enumerate(zip(rows, gaps)))
+        if not checks:
+            return inside
+        fitting = []
+        for shift in inside:
+            moved = [at + shift for at in current]
+            if all(max(abs(there - moved[member]) - reach, across) >= needed
+                   for there, member, reach, across, needed in checks):
+                fitting.append(shift)
+        return fitting
 
-    def around(self, members: np.ndarray, axis: int) -> tuple[np.ndarray, ...]:
-        """What fits needs of the rigid body ``members`` moving along ``axis`` that no move
-        changes, worked out once per body: the other active rows, their half sizes across the
-        axis (1, o) and the members' (m, 1), and each pair's half sizes along it summed (m, o)."""
-        key = (members.tobytes(), axis)
-        found = self.arounds.get(key)
-        if found is None:
-            outside = self.active.copy()  # the body's members are its groups' active rows
-            outside[members] = False
-            others = np.flatnonzero(outside)
-            halves, across = self.halves, 1 - axis
-            found = self.arounds[key] = (
-                others, halves[others, across][None, :], halves[members, across][:, None],
-                halves[others, axis][None, :] + halves[members, axis][:, None])
-        return found
+    def neighbours(self, members: np.ndarray, axis: int) -> list[int]:
+        """The other active rows that the rigid body ``members`` might come within the
+        clearance of, moving along ``axis`` (fits tests them exactly): those within the
+        clearance across the axis and within it and the longest move along it, each with a
+        millimetre to spare."""
+        spare = self.clearance + 1.0
+        reach = spare + self.farthest
+        if len(members) == 1:
+            (low_across, _, high_across), (low, _, high) = (
+                self.lines[1 - axis][members[0]].tolist(), self.lines[axis][members[0]].tolist())
+        else:
+            across, along = self.lines[1 - axis][members], self.lines[axis][members]
+            low_across, high_across = float(across[:, LOW].min()), float(across[:, HIGH].max())
+            low, high = float(along[:, LOW].min()), float(along[:, HIGH].max())
+        lows, highs = self.lows, self.highs  # an inactive row's are out of every range
+        near = lows[1 - axis] < high_across + spare
+        near &= highs[1 - axis] > low_across - spare
+        near &= lows[axis] < high + reach
+        near &= highs[axis] > low - reach
+        near[members] = False
+        return near.nonzero()[0].tolist()
 
 
 class Moves(NamedTuple):
@@ -335,25 +376,32 @@ class Moves(NamedTuple):
 
     roots: list[int]  # the groups moved together
     members: np.ndarray  # their rows
-    shifts: np.ndarray  # the moves that lower their near misses, best first
-    distances: np.ndarray  # from their features to the lines of the same kind near them, sorted
+    shifts: tuple[float, ...]  # the moves that lower their near misses, best first
     gain: float  # what the best of them would lower the page's score by
     missing: bool  # whether they miss a line now
     lined_up: bool  # whether they are on a line now (within ALIGNED_MM)
 
 
-def distance_bounds(reach: float, farthest: float) -> tuple[np.ndarray, np.ndarray]:
-    """The ends of the ranges of distances candidate_shifts reads, as (ends found from the
-    left, ends found from the right) for np.searchsorted: |distance| <= ``reach``, |distance| <
-    ``farthest`` + ``ESCAPE_MM``, and -``NEAR_MM`` < distance < -``ALIGNED_MM`` or ``ALIGNED_MM`` <
-    distance < ``NEAR_MM``."""
+def paired_page_lines(edges: np.ndarray, middles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The page's lines on one axis as options pairs them with a body's features: each edge
+    line once for its low edges and once for its high edges, each middle for its centres;
+    (lines, the feature of the body each is paired with)."""
+    return (np.concatenate([edges, edges, middles]),
+            np.repeat([LOW, HIGH, CENTRE], [len(edges), len(edges), len(middles)]))
+
+
+def distance_bounds(reach: float, farthest: float) -> np.ndarray:
+    """The ends of the ranges of distances candidate_shifts reads, as needles for one
+    np.searchsorted from the left: four lower ends (|distance| <= ``reach``, |distance| <
+    ``farthest`` + ``ESCAPE_MM``, -``NEAR_MM`` < distance < -``ALIGNED_MM``, ``ALIGNED_MM`` <
+    distance < ``NEAR_MM``), then their four upper ends, each found from the right: "d <= x"
+    is "d < the next float after x"."""
     escape = farthest + ESCAPE_MM
-    return (np.array([-reach, escape, -ALIGNED_MM, NEAR_MM]),
-            np.array([reach, -escape, -NEAR_MM, ALIGNED_MM]))
+    return np.concatenate([[-reach, escape, -ALIGNED_MM, NEAR_MM],
+                           np.nextafter([reach, -escape, -NEAR_MM, ALIGNED_MM], np.inf)])
 
 
-def candidate_shifts(ordered: np.ndarray, bounds: tuple[np.ndarray, np.ndarray],
-                     farthest: float) -> tuple[np.ndarray, bool, bool]:
+def candidate_shifts(ordered: np.ndarray, bounds: np.ndarray, farthest: float) -> tuple[np.ndarray, bool, bool]:
     """Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
     within reach, or put it just out of a near miss with one (``ESCAPE_MM``) within
     ``farthest``; sorted, with 0 (staying) among them.  The way out of a near miss may be
@@ -362,12 +410,12 @@ def candidate_shifts(ordered: np.ndarray, bounds: tuple[np.ndarray, np.ndarray],
     feature misses a line now (a distance between ``ALIGNED_MM`` and ``NEAR_MM``), and
     whether one is on a line (a distance within ``ALIGNED_MM``).  Each range of distances
     (``bounds``, from distance_bounds) is a slice of the sorted ones."""
-    low = np.searchsorted(ordered, bounds[0], "left")
-    high = np.searchsorted(ordered, bounds[1], "right")
+    found = ordered.searchsorted(bounds).tolist()
+    low, high = found[:4], found[4:]
     near = ordered[high[1]:low[1]]  # |distance| < farthest + ESCAPE_MM
-    away = (near[:, None] + ESCAPES).ravel()
-    shifts = sorted_unique(np.concatenate([ordered[low[0]:high[0]],  # |distance| <= reach
-                                           away[np.abs(away) <= farthest], STAY]))
+    # |distance| <= reach (reach < farthest), just out of reach of those within farthest, 0
+    shifts = np.concatenate((STAY, ordered[low[0]:high[0]], near - ESCAPE_MM, near + ESCAPE_MM))
+    shifts = shifts[np.abs(shifts) <= farthest]
     missing = low[2] > high[2] or low[3] > high[3]
     lined_up = high[3] > low[2]  # -ALIGNED_MM <= distance <= ALIGNED_MM
     return shifts, bool(missing), bool(lined_up)
@@ -376,11 +424,26 @@ def candidate_shifts(ordered: np.ndarray, bounds: tuple[np.ndarray, np.ndarray],
 def misses_after(ordered: np.ndarray, shifts: np.ndarray) -> np.ndarray:
     """For each shift, the near misses between a group's features and the lines of the same
     kind at the sorted distances ``ordered`` from them (one entry per pair), less
-    ``ALIGN_GAIN`` per exact alignment; (len(shifts),).  Counted by bisection: the (shifts,
+    ``ALIGN_GAIN`` per exact alignment, twice, in integers; (len(shifts),).  Counted by bisection: the (shifts,
     distances) table of gaps it replaces was a fifth of the snapping's time."""
-    ends = shifts[:, None] + WINDOW_ENDS  # (shifts, 4)
-    low = np.searchsorted(ordered, ends[:, :2], "left")  # d < shift + NEAR, d < shift - ALIGNED
-    high = np.searchsorted(ordered, ends[:, 2:], "right")  # d <= shift - NEAR, d <= shift + ALIGNED
-    within_near = low[:, 0] - high[:, 0]
-    aligned = high[:, 1] - low[:, 1]
-    return (within_near - aligned) - ALIGN_GAIN * aligned
+    ends = WINDOW_ENDS + shifts  # (4, shifts)
+    # d <= x is d < the next float after x: one bisection from the left for all four ends,
+    # d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR, d <= shift + ALIGNED
+    np.nextafter(ends[2:], np.inf, out=ends[2:])
+    # twice (near misses and alignments, less the alignments, ALIGN_GAIN more off each)
+    return SCORE_WEIGHTS @ ordered.searchsorted(ends)
+
+
+def best_first(shifts: np.ndarray, scores: np.ndarray,
+               now: int) -> tuple[tuple[float, ...], float]:
+    """The moves that lower the score, ``shifts`` (perhaps some twice) and their ``scores``,
+    ordered best first: the fewest misses, then the shortest move, then the lower; each once,
+    at most ``MAX_TRIES``; and what the best gains over ``now``."""
+    order = np.lexsort((shifts, np.abs(shifts), scores)).tolist()
+    chosen: list[float] = []
+    for shift in shifts[order].tolist():
+        if not chosen or shift != chosen[-1]:  # equal shifts have equal keys: side by side
+            chosen.append(shift)
+            if len(chosen) == MAX_TRIES:
+                break
+    return tuple(chosen), (now - int(scores[order[0]])) / 2
