@@ -13,11 +13,11 @@ from pathlib import Path
 
 import numpy.ma  # noqa: F401  (imported with the editor, not on the first key: see below)
 
-from floatpage.model.calendar_month import month_name, month_weeks, weekday_names
 from floatpage.physics.guides import lines_met
 from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
+from floatpage.tui.calendar_cells import cells, month_lines, month_text
 from floatpage.tui.cell_text import graphemes, visual, wrap_cells
 from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
 from floatpage.tui.projection import Projection
@@ -35,6 +35,7 @@ GROUP: RGB = (255, 140, 0)  # the frame around the selected item's whole group
 MISSING_PICTURE: RGB = (150, 150, 150)
 WHITE: RGB = (255, 255, 255)
 TEXT_TINT = 0.12  # how much of its ink colour a text box's background takes
+SHADED_DAY = 0.18  # how much ink every other day's cells take, where days touch
 BLACK: RGB = (0, 0, 0)
 
 
@@ -97,18 +98,6 @@ def wrapped(text: str, width: int) -> tuple[str, ...]:
     """Greedy line breaks of a paragraph by cells, in visual order (cached: texts rarely
     change)."""
     return tuple(wrap_cells(text, width))
-
-
-def calendar_lines(item: CalendarItem) -> list[str]:
-    """Title, weekday heads and the day grid, as the typesetter will print them (localised)."""
-    try:
-        title = f"{month_name(item.month, item.language)} {item.year}"
-        heads = " ".join(name[:2] for name in weekday_names(item.first_weekday, item.language))
-        weeks = month_weeks(item.year, item.month, item.first_weekday)
-    except ValueError:
-        return [f"calendar {item.year}-{item.month}"]
-    rows = [" ".join(f"{day:2d}" if day else "  " for day in week) for week in weeks]
-    return [title, heads, *rows]
 
 
 class PagePainter:
@@ -238,8 +227,7 @@ class PagePainter:
             self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold,
                        below_label=labelled)
         elif isinstance(item, CalendarItem):
-            self._body(canvas, box, calendar_lines(item), ink, fill, wrap=False,
-                       below_label=labelled)
+            self._calendar(canvas, box, item, ink, fill, below_label=labelled)
 
     def _label(self, canvas: CellCanvas, item, box, fg: RGB, bg: RGB) -> None:
         """The item's id on its first full row (or the row holding its top, if it is thin)."""
@@ -249,26 +237,47 @@ class PagePainter:
         width = max(col1 - col0, 1)
         canvas.write(col0, row, text[:width], fg, bg, bold=True, end_col=col0 + width)
 
-    def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
-              *, bold: bool = False, wrap: bool = True, below_label: bool = True) -> None:
-        """As much of the text as fits the item's full cells (under the label row, if any).
-        A box with no full row (a caption a cell tall that straddles two rows, as most do at
-        some height) gets one line on the row holding its top, as the label does: the album's
-        captions, the flyer's and the multilingual card's lines showed as bare half-blocks."""
+    def _text_area(self, box, below_label: bool) -> tuple[int, int, int, int]:
+        """The cells a box's text may use, (col0, first row, col1, end row): its full cells,
+        under the label row if any. A box with no full row (a caption a cell tall that
+        straddles two rows, as most do at some height) gets the row holding its top, as the
+        label does: the album's captions, the flyer's and the multilingual card's lines
+        showed as bare half-blocks."""
         col0, row0, col1, row1 = self._cells(box)
         if row1 <= row0 and box[3] > box[1]:
             row0, row1 = box[1] // 2, box[1] // 2 + 1
-        width, first = col1 - col0, row0 + (1 if below_label else 0)
+        return col0, row0 + (1 if below_label else 0), col1, row1
+
+    def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
+              *, bold: bool = False, below_label: bool = True) -> None:
+        """As much of the text as fits the item's cells, word-wrapped."""
+        col0, first, col1, row1 = self._text_area(box, below_label)
+        width = col1 - col0
         if width < 1 or first >= row1:
             return
-        lines: list[str] = []
-        for paragraph in paragraphs:
-            if wrap:
-                lines += wrapped(paragraph, width)
-            else:
-                lines.append(visual(printable(paragraph)))
+        lines = [line for paragraph in paragraphs for line in wrapped(paragraph, width)]
         for row, line in zip(range(first, row1), lines):
             canvas.write(col0, row, line, fg, bg, bold=bold, end_col=col1)
+
+    def _calendar(self, canvas: CellCanvas, box, item: CalendarItem, fg: RGB, bg: RGB,
+                  *, below_label: bool) -> None:
+        """Every day of the month, in the richest layout its cells hold (`calendar_cells`);
+        every other day shaded where the days stand with no space between."""
+        col0, first, col1, row1 = self._text_area(box, below_label)
+        if col1 <= col0 or first >= row1:
+            return
+        month = month_text(item.year, item.month, item.first_weekday, item.language)
+        if month is None:
+            canvas.write(col0, first, f"calendar {item.year}-{item.month}", fg, bg, end_col=col1)
+            return
+        shade = mix(bg, fg, SHADED_DAY)
+        lines, _whole = month_lines(month, col1 - col0, row1 - first)
+        for row, line in zip(range(first, row1), lines):
+            col = col0
+            for text, shaded in line:
+                canvas.write(col, row, visual(printable(text)), fg, shade if shaded else bg,
+                             end_col=col1)
+                col += cells(text)
 
     def _guides(self, canvas: CellCanvas, guides) -> None:
         """Dashed one-pixel lines across the page, on the pixels no text covers: the guides
