@@ -20,6 +20,7 @@ from floatpage.model.document import (
 from floatpage.tui.calendar_cells import cells, month_lines, month_text
 from floatpage.tui.cell_text import graphemes, visual, wrap_cells
 from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
+from floatpage.tui.mark_places import beside_text, inside, mark_cell, touched_cells
 from floatpage.tui.projection import Projection
 from floatpage.tui.thumbnails import thumbnail
 
@@ -116,8 +117,10 @@ class PagePainter:
         for item in items:
             self._item(canvas, view, item, boxes[item.id])
         centres = {item.id: self._centre(item, view) for item in view.page.items}
+        cells = {item_id: touched_cells(box) for item_id, box in boxes.items()}
+        solid = {item.id: cells[item.id] for item in view.page.items if not item.decorative}
         for item in view.page.items:
-            self._anchor(canvas, item, centres)
+            self._anchor(canvas, item, centres, cells, solid)
         self._guides(canvas, view.guides)
         selected = next((item for item in view.page.items if item.id == view.selected_id), None)
         if selected is not None and selected.group:
@@ -298,29 +301,45 @@ class PagePainter:
                         if canvas.glyph_at(x, y // 2) is None:
                             canvas.pixels[y, x] = GUIDE
 
-    def _anchor(self, canvas: CellCanvas, item, centres) -> None:
-        start = self.projection.cell_of(*centres[item.id])
+    def _anchor(self, canvas: CellCanvas, item, centres, cells, solid) -> None:
+        """The item's anchor mark, or its follow link's two ends, where they read as marks
+        and hide nothing (`mark_places`), joined to the item by a dotted line."""
+        own = cells[item.id]
         if isinstance(item.anchor, PointAnchor):
-            end = self.projection.cell_of(item.anchor.x, item.anchor.y)
-            self._dots(canvas, start, end, ANCHOR)
-            under = canvas.glyph_at(*end)  # a letter of a text stays readable, on the anchor colour
-            char = under.char if under is not None else ("#" if item.anchor.hard else "+")
-            canvas.put(*end, Glyph(char, WHITE, ANCHOR, bold=True))
+            point = self.projection.cell_of(item.anchor.x, item.anchor.y)
+            under = canvas.glyph_at(*point)
+            if under is not None and under.char.strip() and inside(own, *point):
+                # a letter of its own text stays readable, on the anchor colour
+                canvas.put(*point, Glyph(under.char, WHITE, ANCHOR, bold=True))
+                return
+            others = [box for item_id, box in solid.items() if item_id != item.id]
+            end = mark_cell(canvas, own, point, others)
+            if end is None:
+                return
+            canvas.put(*end, Glyph("#" if item.anchor.hard else "+", WHITE, ANCHOR, bold=True))
+            self._dots(canvas, self.projection.cell_of(*centres[item.id]), end, ANCHOR, [own])
         elif isinstance(item.anchor, ItemAnchor) and item.anchor.to in centres:
-            end = self.projection.cell_of(*centres[item.anchor.to])
-            self._dots(canvas, start, end, LINK)
-            for end_cell in (start, end):
-                if canvas.glyph_at(*end_cell) is None:  # labels stay readable
-                    canvas.put(*end_cell, Glyph("o", WHITE, LINK, bold=True))
+            followed = item.anchor.to
+            ends = []
+            for marked, toward in ((item.id, followed), (followed, item.id)):
+                others = [box for item_id, box in solid.items() if item_id != marked]
+                end = mark_cell(canvas, cells[marked], self.projection.cell_of(*centres[toward]),
+                                others)
+                if end is not None:
+                    canvas.put(*end, Glyph("o", WHITE, LINK, bold=True))
+                ends.append(end or self.projection.cell_of(*centres[marked]))
+            self._dots(canvas, ends[0], ends[1], LINK, [own, cells[followed]])
 
     @staticmethod
-    def _dots(canvas: CellCanvas, start, end, colour: RGB) -> None:
-        """A dotted line of cells from start to end (Bresenham), ends excluded."""
+    def _dots(canvas: CellCanvas, start, end, colour: RGB, skipped) -> None:
+        """A dotted line of cells from start to end (Bresenham), ends excluded, on no cell of
+        the `skipped` boxes (the items it joins) and beside no letter."""
         (c0, r0), (c1, r1) = start, end
         steps = max(abs(c1 - c0), abs(r1 - r0))
         for i in range(1, steps):
             col = round(c0 + (c1 - c0) * i / steps)
             row = round(r0 + (r1 - r0) * i / steps)
             if 0 <= row < canvas.rows and 0 <= col < canvas.cols \
-                    and canvas.glyph_at(col, row) is None:
+                    and canvas.glyph_at(col, row) is None and not beside_text(canvas, col, row) \
+                    and not any(inside(box, col, row) for box in skipped):
                 canvas.put(col, row, Glyph("\u00b7", colour, None, bold=True))

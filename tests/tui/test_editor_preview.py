@@ -85,13 +85,21 @@ async def test_anchors_and_links_are_visible(project_path):
         col, row = preview.projection.cell_of(74.0, 170.0)  # the month's anchor point
         assert canvas.glyphs[(row, col)].bg == ANCHOR  # over the calendar's text: its letter
         screen_of(app).selected_id = "block"
-        await pilot.press("a")  # a block shows no text: the anchor shows as '+'
-        col, row = preview.projection.cell_of(*app.session.engine.positions()["block"])
-        assert preview.canvas.glyphs[(row, col)].char == "+"
-        assert preview.canvas.glyphs[(row, col)].bg == ANCHOR
+        await pilot.press("a")  # a block shows no text: the anchor shows as '+', beside it
+        x0, y0, x1, y1 = item_pixel_box(app, "block")  # (on it, it hid a cell of the block)
+        pluses = [(col, row) for (row, col), glyph in preview.canvas.glyphs.items()
+                  if glyph.char == "+" and glyph.bg == ANCHOR]
+        beside = [(col, row) for col, row in pluses
+                  if x0 - 1 <= col <= x1 and y0 // 2 - 1 <= row <= (y1 + 1) // 2
+                  and not (x0 <= col < x1 and y0 // 2 <= row < (y1 + 1) // 2)]
+        assert beside, (pluses, (x0, y0, x1, y1))
+        ends = [g for g in preview.canvas.glyphs.values() if g.bg == LINK and g.char == "o"]
+        assert len(ends) == 2  # caption follows photo: an 'o' at each end
+        app.session.move_to("caption", 110.0, 190.0)  # far from its photo: a line between
+        screen_of(app).redraw()
         link_dots = [g for g in preview.canvas.glyphs.values()
                      if g.fg == LINK and g.char == "\u00b7"]
-        assert len(link_dots) >= 3  # caption follows photo: a dotted line between them
+        assert len(link_dots) >= 3
 
 
 async def test_the_preview_fits_an_80_by_24_terminal(project_path):
