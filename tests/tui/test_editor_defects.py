@@ -5,9 +5,13 @@ from __future__ import annotations
 import datetime
 from pathlib import Path
 
+import pytest
+
 from floatpage.model import BlockItem, CalendarItem, Page, Project, load_project, save_project
 
 from editor_helpers import editor, screen_of
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def messages(app) -> list[str]:
@@ -451,3 +455,34 @@ async def test_turning_the_page_answers_before_the_room_is_found(tmp_path):
         await settle_live(app, pilot)
         quality = app.session.engine.quality()
         assert quality.overlapping_pairs == () and quality.off_page == ()
+
+
+@pytest.mark.parametrize("project", ["greeting-card", "card", "flyer", "album", "calendar"])
+async def test_a_turned_page_keeps_the_print_safe_margin(tmp_path, project):
+    """`o` on the greeting card: its picture, 124 mm tall, on a page now 127 mm tall, kept
+    1.4 mm of the 3.2 mm margin (issue 16), and so did the greeting beside it. The search for
+    room after a layout change looked for overlaps and items off the page only; now the items
+    that kept the margin before the turn keep it after, if they are made smaller for it.
+    The sample, and each starter `floatpage new` makes."""
+    import shutil
+
+    from floatpage.starters import create
+
+    if project == "greeting-card":
+        shutil.copytree(ROOT / "sample_projects" / project, tmp_path / project)
+        path = tmp_path / project / f"{project}.toml"
+    else:
+        path = tmp_path / f"{project}.toml"
+        create(project, path)
+    async with editor(path, autostart=True) as (app, pilot):
+        await settle_live(app, pilot)
+        engine = app.session.engine
+        kept = {engine.ids[k] for k in range(len(engine.ids))} - {
+            engine.ids[k] for k in engine.quality().in_margin}
+        await pilot.press("o")
+        await settle_live(app, pilot)
+        engine = app.session.engine
+        quality = engine.quality()
+        assert app.session.page.orientation == "landscape"
+        assert quality.overlapping_pairs == () and quality.off_page == ()
+        assert {engine.ids[k] for k in quality.in_margin} & kept == set(), quality.summary()
