@@ -178,6 +178,36 @@ class EditSession:
             engine.reheat()
         return engine
 
+    def resting_copy(self) -> Page:
+        """A copy of the page with the engine's positions, rounded as a save writes them."""
+        page = copy_of(self.page)
+        write_back(page, self.engine)
+        return page
+
+    def settle_copy(self, page: Page) -> None:
+        """Settle a page (a copy: it is changed) as `floatpage settle` does, with the
+        project's own settings, so its answer is the file's fixed point. Reads nothing else
+        of the session's, so it may run in a thread."""
+        settle_page(page, self.project.physics)
+
+    def adopt_layout(self, page: Page) -> None:
+        """Take the positions of a settled copy of the page; the engine starts from them, at
+        rest."""
+        settled = {item.id: item for item in page.items}
+        for item in self.page.items:
+            if item.id in settled:
+                item.x, item.y = settled[item.id].x, settled[item.id].y
+                if isinstance(item.anchor, PointAnchor) and item.anchor.hard:
+                    item.anchor.x, item.anchor.y = item.x, item.y
+        self.engine = self._build_engine(check=False)
+
+    def settle_now(self) -> None:
+        """Settle the page here and now, and take the answer (a save during a settle)."""
+        self.end_move()
+        page = self.resting_copy()
+        self.settle_copy(page)
+        self.adopt_layout(page)
+
     def sync_positions(self) -> None:
         """Copy the engine's live positions into the model's items."""
         write_back(self.page, self.engine)
