@@ -13,12 +13,14 @@ from pathlib import Path
 
 import numpy.ma  # noqa: F401  (imported with the editor, not on the first key: see below)
 
+from floatpage.merge.placeholders import PlaceholderError, fields_in
 from floatpage.physics.guides import lines_met
 from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
 from floatpage.tui.calendar_cells import cells, month_lines, month_text
 from floatpage.tui.cell_text import graphemes, visual, wrap_cells
+from floatpage.tui.cell_text import width as cell_width
 from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
 from floatpage.tui.mark_places import beside_text, inside, mark_cell, touched_cells
 from floatpage.tui.projection import Projection
@@ -99,6 +101,28 @@ def wrapped(text: str, width: int) -> tuple[str, ...]:
     """Greedy line breaks of a paragraph by cells, in visual order (cached: texts rarely
     change)."""
     return tuple(wrap_cells(text, width))
+
+
+def picture_stand_in(path: str) -> str:
+    """What a picture the preview cannot show says instead: a merge template's picture,
+    named by its fields ("pictures/{photo}"), is filled in per record, and is not missing."""
+    try:
+        if fields_in(path):
+            return f"one per record: {path}"
+    except PlaceholderError:
+        pass
+    return f"missing {path}"
+
+
+def cut_short(line: str, cells: int) -> str:
+    """The line with "…" at its end, in at most ``cells`` cells: at 80x24 the flyer's
+    captions read "Sunfl" and "Coffe", as if that were all of them."""
+    kept, used = "", 0
+    for grapheme in graphemes(line.rstrip()):
+        if used + cell_width(grapheme) > cells - 1:
+            break
+        kept, used = kept + grapheme, used + cell_width(grapheme)
+    return kept + "\u2026"
 
 
 class PagePainter:
@@ -203,7 +227,7 @@ class PagePainter:
             image = thumbnail(view.base_dir / item.path, x1 - x0, y1 - y0)
             if image is None:
                 canvas.fill(*box, MISSING_PICTURE)
-                self._body(canvas, box, [f"missing {item.path}"], BLACK, MISSING_PICTURE)
+                self._body(canvas, box, [picture_stand_in(item.path)], BLACK, MISSING_PICTURE)
             else:
                 canvas.blit(x0, y0, image)
             if view.labels:
@@ -259,6 +283,9 @@ class PagePainter:
         if width < 1 or first >= row1:
             return
         lines = [line for paragraph in paragraphs for line in wrapped(paragraph, width)]
+        rows = row1 - first
+        if len(lines) > rows:  # the last line shown ends in "…": the text goes on
+            lines = lines[:rows - 1] + [cut_short(lines[rows - 1], width)]
         for row, line in zip(range(first, row1), lines):
             canvas.write(col0, row, line, fg, bg, bold=bold, end_col=col1)
 

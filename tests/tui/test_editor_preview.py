@@ -158,3 +158,31 @@ async def test_a_caption_a_cell_tall_shows_its_text_wherever_it_sits(tmp_path):
         assert len(captions) == 5, [item.id for item in app.session.page.items]
         for caption in captions:
             assert caption.text in text, (caption.text, text)
+
+
+async def test_a_merge_templates_picture_is_not_called_missing(tmp_path):
+    """The merge sample's picture is `pictures/{photo}`, one per record: the preview said
+    "missing pictures/{photo}", as for a file that is gone."""
+    import shutil
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[2]
+    shutil.copytree(root / "sample_projects" / "merge-offers", tmp_path / "offers")
+    async with editor(tmp_path / "offers" / "offer.toml", size=(100, 32)) as (app, pilot):
+        text = " ".join(preview_text(app).split())
+        assert "one per record:" in text and "{photo}" in text
+        assert "missing" not in text
+
+
+async def test_a_text_cut_short_ends_in_an_ellipsis(tmp_path):
+    """At 80x24 the flyer's captions read "Sunfl" and "Coffe", as if that were all of them;
+    a box that holds more text than its cells show ends its last line in "…"."""
+    from floatpage.starters import create
+
+    path = tmp_path / "flyer.toml"
+    create("flyer", path)
+    async with editor(path, size=(80, 24)) as (app, pilot):
+        text = preview_text(app)
+        for word in ("Sunflowers", "Coffee", "Lemons"):
+            assert word[:4] + "\u2026" in text, (word, text)
+        assert "Sunfl " not in text and "Coffe\n" not in text

@@ -33,6 +33,7 @@ MARKS = (("~name", "a decoration's id (shown with n): it sits behind and is neve
          ("- - name", "a region, dashed green: its items stay inside it; its edges are guides"),
          ("1 2 3", "a calendar's days, every one of the month: where the panel is small, "
                    "without weekday columns, or two cells a day, every other day shaded"),
+         ("…", "a text cut short: its box holds more than its cells show"),
          ("Jan 1-31", "a calendar panel too small to show its days: its month and days"),
          ("▀ ▄", "half-block pixels: each cell shows two rows of the page"))
 
