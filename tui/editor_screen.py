@@ -226,9 +226,9 @@ class EditorScreen(Screen):
                 and np.array_equal(engine.bodies.centres, centres):
             selected = session.selected_id
             before = engine.positions().get(selected)
-            session.adopt_layout(page)
+            moved = session.adopt_layout(page)
             after = session.engine.positions().get(selected)
-            if before is not None and after is not None \
+            if moved and before is not None and after is not None \
                     and math.dist(before, after) >= SNAP_SAID_MM:
                 # a nudge the settle took back must not look like a key that did nothing
                 self.notify(f"{selected} lined up {math.dist(before, after):.1f} mm, onto a "

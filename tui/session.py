@@ -98,6 +98,10 @@ def copy_into(picture: Path, folder: Path) -> Path:
     return candidate
 
 
+def layout_of(page: Page) -> dict[str, tuple[float, float]]:
+    return {item.id: (item.x, item.y) for item in page.items}
+
+
 def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float) -> None:
     """Move the item, and its point anchor, just far enough that the item keeps the print-safe
     margin where it fits inside it (centred where it does not). Scaled with a turned page, a
@@ -181,6 +185,8 @@ class EditSession:
     def resting_copy(self) -> Page:
         """A copy of the page with the engine's positions, rounded as a save writes them."""
         page = copy_of(self.page)
+        for item in page.items:  # the settle moves hard anchors with their items: not these
+            item.anchor = copy.copy(item.anchor)
         write_back(page, self.engine)
         return page
 
@@ -190,16 +196,21 @@ class EditSession:
         of the session's, so it may run in a thread."""
         settle_page(page, self.project.physics)
 
-    def adopt_layout(self, page: Page) -> None:
-        """Take the positions of a settled copy of the page; the engine starts from them, at
-        rest."""
+    def adopt_layout(self, page: Page) -> bool:
+        """Take the positions of a settled copy of the page, if they differ from the page's
+        own (rounded as a save writes them); the engine starts from them, at rest. Returns
+        whether they differed."""
         settled = {item.id: item for item in page.items}
+        if all(settled[id_].x == x and settled[id_].y == y
+               for id_, (x, y) in layout_of(self.resting_copy()).items() if id_ in settled):
+            return False
         for item in self.page.items:
             if item.id in settled:
                 item.x, item.y = settled[item.id].x, settled[item.id].y
                 if isinstance(item.anchor, PointAnchor) and item.anchor.hard:
                     item.anchor.x, item.anchor.y = item.x, item.y
         self.engine = self._build_engine(check=False)
+        return True
 
     def settle_now(self) -> None:
         """Settle the page here and now, and take the answer (a save during a settle)."""
