@@ -17,6 +17,7 @@ When even that does not fit, the panel says which month it is and which days it 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 from floatpage.model.calendar_month import month_name, month_weeks, weekday_names
 from floatpage.tui.cell_text import graphemes, width
@@ -39,6 +40,7 @@ class MonthText:
         return max(max(week) for week in self.weeks)
 
 
+@lru_cache(maxsize=256)
 def month_text(year: int, month: int, first_weekday: str, language: str) -> MonthText | None:
     """None for a month the model cannot lay out (the panel then shows its raw numbers)."""
     try:
@@ -106,12 +108,13 @@ def line_cells(line: Line) -> int:
     return sum(cells(text) for text, _shaded in line)
 
 
-def month_lines(month: MonthText, cols: int, rows: int) -> tuple[list[Line], bool]:
+@lru_cache(maxsize=1024)
+def month_lines(month: MonthText, cols: int, rows: int) -> tuple[tuple[Line, ...], bool]:
     """The richest layout of the whole month in cols x rows cells, and True; or, when no
     layout fits, the month's short name and day range ("Jan 1-31"), or only its name where
-    the range does not fit either, and False."""
+    the range does not fit either, and False. Cached: a frame asks for every panel's."""
     for lines in layouts(month, cols):
         if len(lines) <= rows and all(line_cells(line) <= cols for line in lines):
-            return lines, True
+            return tuple(lines), True
     summary = f"{month.short_title} 1-{month.days}"
-    return [plain(summary if cells(summary) <= cols else month.short_title)], False
+    return (plain(summary if cells(summary) <= cols else month.short_title),), False

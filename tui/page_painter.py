@@ -22,7 +22,7 @@ from floatpage.tui.calendar_cells import cells, month_lines, month_text
 from floatpage.tui.cell_text import graphemes, visual, wrap_cells
 from floatpage.tui.cell_text import width as cell_width
 from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
-from floatpage.tui.mark_places import beside_text, inside, mark_cell, touched_cells
+from floatpage.tui.mark_places import beside_text, inside, mark_cell, occupancy, touched_cells
 from floatpage.tui.projection import Projection
 from floatpage.tui.thumbnails import thumbnail
 
@@ -114,6 +114,7 @@ def picture_stand_in(path: str) -> str:
     return f"missing {path}"
 
 
+@lru_cache(maxsize=1024)
 def cut_short(line: str, cells: int) -> str:
     """The line with "…" at its end, in at most ``cells`` cells: at 80x24 the flyer's
     captions read "Sunfl" and "Coffe", as if that were all of them."""
@@ -142,9 +143,10 @@ class PagePainter:
             self._item(canvas, view, item, boxes[item.id])
         centres = {item.id: self._centre(item, view) for item in view.page.items}
         cells = {item_id: touched_cells(box) for item_id, box in boxes.items()}
-        solid = {item.id: cells[item.id] for item in view.page.items if not item.decorative}
+        taken = occupancy((cells[item.id] for item in view.page.items if not item.decorative),
+                          canvas.cols, canvas.rows)
         for item in view.page.items:
-            self._anchor(canvas, item, centres, cells, solid)
+            self._anchor(canvas, item, centres, cells, taken)
         self._guides(canvas, view.guides)
         selected = next((item for item in view.page.items if item.id == view.selected_id), None)
         if selected is not None and selected.group:
@@ -328,7 +330,7 @@ class PagePainter:
                         if canvas.glyph_at(x, y // 2) is None:
                             canvas.pixels[y, x] = GUIDE
 
-    def _anchor(self, canvas: CellCanvas, item, centres, cells, solid) -> None:
+    def _anchor(self, canvas: CellCanvas, item, centres, cells, taken) -> None:
         """The item's anchor mark, or its follow link's two ends, where they read as marks
         and hide nothing (`mark_places`), joined to the item by a dotted line."""
         own = cells[item.id]
@@ -339,8 +341,7 @@ class PagePainter:
                 # a letter of its own text stays readable, on the anchor colour
                 canvas.put(*point, Glyph(under.char, WHITE, ANCHOR, bold=True))
                 return
-            others = [box for item_id, box in solid.items() if item_id != item.id]
-            end = mark_cell(canvas, own, point, others)
+            end = mark_cell(canvas, own, point, taken)
             if end is None:
                 return
             canvas.put(*end, Glyph("#" if item.anchor.hard else "+", WHITE, ANCHOR, bold=True))
@@ -349,9 +350,8 @@ class PagePainter:
             followed = item.anchor.to
             ends = []
             for marked, toward in ((item.id, followed), (followed, item.id)):
-                others = [box for item_id, box in solid.items() if item_id != marked]
                 end = mark_cell(canvas, cells[marked], self.projection.cell_of(*centres[toward]),
-                                others)
+                                taken)
                 if end is not None:
                     canvas.put(*end, Glyph("o", WHITE, LINK, bold=True))
                 ends.append(end or self.projection.cell_of(*centres[marked]))
