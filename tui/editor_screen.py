@@ -96,7 +96,7 @@ def next_month(project) -> tuple[int, int]:
 Answer = TypeVar("Answer")
 
 
-SNAP_SAID_MM = 0.5  # a settle at rest that moves the selected item this far says so
+SNAP_SAID_MM = 0.5  # a save's settle that moves the selected item this far says so
 
 
 class EditorScreen(Screen):
@@ -191,49 +191,40 @@ class EditorScreen(Screen):
         self.redraw()
 
     def finish_settling(self) -> None:
-        """What `floatpage settle` does to the page, the editor does too once it is still:
-        the settle of a copy, whose answer the page takes (`adopt_settled`). So the still
-        page is the one the file gets, and a saved file is a fixed point of `floatpage
-        settle`: saved after a nudge, the greeting card's picture was snapped back onto the
-        page's centre line by the next settle, 1.8 mm from where the editor had it. The
-        settle ends with the no-overlap pass, which mends a page that came to rest with items
-        overlapping or off it (an inserted picture stayed on top, defect 7; a turned page, 9).
+        """What `floatpage settle` does at the end, the editor does too: the no-overlap pass,
+        when the physics came to rest with items overlapping or off the page (an inserted
+        picture stayed on top, "settled · 2 overlaps", defect 7; so did a turned page, 9).
+        The rest of the settle (its probes and the alignment snap) waits for a save
+        (`action_save`): run at every rest, it cost the flyer's keys 6 ms each (a settle in
+        a thread beside them) and held the calendar's stillness back to 2.2 s.
 
-        It runs on a copy, in a thread: the pass took 0.5-0.9 s on a page too full for its
-        gutter (the calendar after a held arrow), and run here it held back every key
+        The pass runs on a copy, in a thread: on a page too full for its gutter it took
+        0.5-0.9 s (the calendar after a held arrow), and run here it held back every key
         pressed meanwhile; the calendar's keys answered in 42 or 131 ms, by whether they
         came during it (issue 11)."""
-        session = self.session
-        if session.held_id is not None:
+        engine = self.session.engine
+        if self.session.held_id is not None:
             return
-        self.passes_running += 1
-        self.settle_worker(session.engine, session.resting_copy(),
-                           session.engine.bodies.centres.copy())
+        quality = engine.quality()
+        if quality.overlapping_pairs or quality.off_page:
+            self.passes_running += 1
+            self.finalize_worker(engine, copy.deepcopy(engine), engine.bodies.centres.copy())
 
     @work(thread=True, group="finalize")
-    def settle_worker(self, engine, page, centres: np.ndarray) -> None:
+    def finalize_worker(self, engine, trial, centres: np.ndarray) -> None:
         try:
-            self.session.settle_copy(page)
+            trial.finalize()
         finally:
-            self.app.call_from_thread(self.adopt_settled, engine, page, centres)
+            self.app.call_from_thread(self.adopt_finalized, engine, trial, centres)
 
-    def adopt_settled(self, engine, page, centres: np.ndarray) -> None:
-        """Take the settle's answer, if the page is still as it was when the settle began;
-        else an edit came first, and its own rest settles again."""
+    def adopt_finalized(self, engine, trial, centres: np.ndarray) -> None:
+        """Take the pass's result, if the page is still as it was when the pass began; else
+        an edit came first, and its own rest runs the pass again."""
         self.passes_running -= 1
         session = self.session
         if session.engine is engine and session.held_id is None and engine.settled \
                 and np.array_equal(engine.bodies.centres, centres):
-            selected = session.selected_id
-            before = engine.positions().get(selected)
-            moved = session.adopt_layout(page)
-            after = session.engine.positions().get(selected)
-            if moved and before is not None and after is not None \
-                    and math.dist(before, after) >= SNAP_SAID_MM:
-                # a nudge the settle took back must not look like a key that did nothing
-                self.notify(f"{selected} lined up {math.dist(before, after):.1f} mm, onto a "
-                            "line it nearly met, as `floatpage settle` does; Shift+arrows "
-                            "move it 10 mm, past the snap", timeout=4)
+            session.engine = trial
         self.redraw()
 
     def _on_timer_update(self) -> None:
@@ -731,10 +722,21 @@ class EditorScreen(Screen):
     # -- files -------------------------------------------------------------------------------
 
     def action_save(self) -> None:
-        if self.running and (self.passes_running or not self.session.engine.settled):
-            # the file gets the settle's answer, which the screen is about to show (paused,
-            # the page is saved as it stands)
-            self.session.settle_now()
+        """Save the pages edited since the last save as `floatpage settle` would leave them,
+        so a saved file is a fixed point of it: saved after a nudge, the greeting card's
+        picture was snapped back onto the page's centre line by the next settle, 1.8 mm from
+        where the editor had it. The page on screen takes the same answer, and a nudge it
+        takes back says so. Paused, the page is saved as it stands."""
+        if self.running:
+            selected = self.session.selected_id
+            before = self.session.engine.positions().get(selected)
+            self.session.settle_edited_pages()
+            after = self.session.engine.positions().get(selected)
+            if before is not None and after is not None \
+                    and math.dist(before, after) >= SNAP_SAID_MM:
+                self.notify(f"{selected} lined up {math.dist(before, after):.1f} mm, as "
+                            "`floatpage settle` does: onto a line it nearly met, or clear of "
+                            "the others; Shift+arrows move it 10 mm", timeout=5)
         try:
             path = self.session.save()
         except Exception as error:  # the work stays in the editor; say why and let them retry

@@ -135,6 +135,7 @@ class EditSession:
     def __init__(self, project: Project, *, seed: int = 0):
         self.project = project
         self.seed = seed
+        self.pages_edited: set[str] = set()  # page ids a save settles (settle_edited_pages)
         if not project.pages:
             width, height = page_dimensions("A4", "portrait")
             project.pages.append(Page(id="page-1", width_mm=width, height_mm=height))
@@ -192,8 +193,7 @@ class EditSession:
 
     def settle_copy(self, page: Page) -> None:
         """Settle a page (a copy: it is changed) as `floatpage settle` does, with the
-        project's own settings, so its answer is the file's fixed point. Reads nothing else
-        of the session's, so it may run in a thread."""
+        project's own settings, so its answer is the file's fixed point."""
         settle_page(page, self.project.physics)
 
     def adopt_layout(self, page: Page) -> bool:
@@ -212,12 +212,21 @@ class EditSession:
         self.engine = self._build_engine(check=False)
         return True
 
-    def settle_now(self) -> None:
-        """Settle the page here and now, and take the answer (a save during a settle)."""
+    def settle_edited_pages(self) -> None:
+        """Settle every page edited since the last save as `floatpage settle` would, the
+        current one through its engine (it takes the answer, at rest)."""
         self.end_move()
-        page = self.resting_copy()
-        self.settle_copy(page)
-        self.adopt_layout(page)
+        current = self.page.id
+        for page in self.project.pages:
+            if page.id not in self.pages_edited:
+                continue
+            if page.id == current:
+                settled = self.resting_copy()
+                self.settle_copy(settled)
+                self.adopt_layout(settled)
+            else:
+                self.settle_copy(page)
+        self.pages_edited.clear()
 
     def sync_positions(self) -> None:
         """Copy the engine's live positions into the model's items."""
@@ -251,6 +260,7 @@ class EditSession:
         """Record the state before an edit; the edit makes a new (unsaved) document state."""
         self.history.record(self._snapshot(label))
         self.version = next(self._versions)
+        self.pages_edited.add(self.page.id)
 
     def _restore(self, snapshot: Snapshot) -> None:
         self.held_id = None
@@ -259,6 +269,7 @@ class EditSession:
         self.selected_id = snapshot.selected_id
         self.version = snapshot.version
         self.engine = self._build_engine()
+        self.pages_edited.add(self.page.id)
 
     def undo(self) -> str:
         """Return to the state before the last edit; the name of the edit undone."""
@@ -353,6 +364,7 @@ class EditSession:
             self.mark_unsaved()
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
+        self.pages_edited.add(self.page.id)
         return True
 
     def make_item(self, kind: str, **fields):

@@ -52,9 +52,9 @@ async def test_1_a_nudge_saved_then_exported_stays_saved_and_prints_as_shown(tmp
         while app.session.held_id is not None:  # let go RELEASE_AFTER_S after the key
             await pilot.pause(0.05)
         await settle_live(app, pilot)
-        shown = app.session.engine.positions()[moved]
-        await pilot.press("ctrl+s")
+        await pilot.press("ctrl+s")  # the save settles the page as `floatpage settle` does
         assert not app.session.unsaved
+        shown = app.session.engine.positions()[moved]
         await pilot.press("ctrl+e")
         await app.workers.wait_for_complete()
         await pilot.pause()
@@ -376,29 +376,29 @@ async def test_a_key_is_not_held_back_by_the_no_overlap_pass(tmp_path, monkeypat
 
     Checked by order, not by the clock: the pass is held at its start (the real pass, gated
     by an event) until the key's move is on the screen. Run on the editor's own thread, the
-    pass would hold the key back instead, and end before the key is shown (the pass is now
-    the whole settle at rest, whose last step it is)."""
+    pass would hold the key back instead, and end before the key is shown."""
     import itertools
     import shutil
     import threading
 
-    from floatpage.tui.session import EditSession
+    from floatpage.physics.engine import Engine
 
     folder = tmp_path / "calendar-2027"
     shutil.copytree(Path(__file__).resolve().parents[2] / "sample_projects" / "calendar-2027",
                     folder)
     events: list[str] = []
     key_shown = threading.Event()
-    real_settle = EditSession.settle_copy
+    real_finalize = Engine.finalize
 
     passes = itertools.count(1)
 
-    def settle_after_the_key(session, page):
+    def finalize_after_the_key(engine, *args, **kwargs):
         number = next(passes)
         events.append(f"pass {number} begins")
         key_shown.wait(timeout=30)  # never reached on the editor's thread: the key waits
-        real_settle(session, page)
+        result = real_finalize(engine, *args, **kwargs)
         events.append(f"pass {number} ends")
+        return result
 
     async with editor(folder / "calendar-2027.toml", autostart=True) as (app, pilot):
         session, screen = app.session, screen_of(app)
@@ -408,7 +408,7 @@ async def test_a_key_is_not_held_back_by_the_no_overlap_pass(tmp_path, monkeypat
         screen.release_held()
         await settle_live(app, pilot)
         assert session.engine.quality().overlapping_pairs, "the page should be too full"
-        monkeypatch.setattr(EditSession, "settle_copy", settle_after_the_key)
+        monkeypatch.setattr(Engine, "finalize", finalize_after_the_key)
         screen.finish_settling()  # the pass starts again, as at every rest
         assert screen.passes_running == 1
         x, y = session.engine.positions()["jan-title"]
@@ -502,8 +502,9 @@ async def test_a_file_saved_once_the_page_is_still_is_a_fixed_point_of_settle(
     """Saved after a nudge, the greeting card's picture was snapped back onto the page's
     centre line by the next `floatpage settle`, 1.8 mm from where the editor had it, and the
     album's title and photos moved too: the editor's still page was the physics' rest, not
-    the settle's. Now the still page is the settle's answer, so a file saved then is one
-    `floatpage settle` leaves byte for byte (the real command, on the saved file)."""
+    the settle's. Now a save settles the pages edited since the last one as the command
+    does, so the file is one `floatpage settle` leaves byte for byte (the real command, on
+    the saved file)."""
     import shutil
     import subprocess
     import sys
