@@ -463,6 +463,20 @@ async def test_turning_the_page_answers_before_the_room_is_found(tmp_path):
         assert quality.overlapping_pairs == () and quality.off_page == ()
 
 
+def sample_or_starter(folder: Path, project: str) -> Path:
+    """A copy of the sample project of that name in ``folder``, or else the starter
+    `floatpage new` makes of that kind."""
+    import shutil
+
+    from floatpage.starters import create
+
+    if (ROOT / "sample_projects" / project).is_dir():
+        shutil.copytree(ROOT / "sample_projects" / project, folder / project)
+        return folder / project / f"{project}.toml"
+    create(project, folder / f"{project}.toml")
+    return folder / f"{project}.toml"
+
+
 @pytest.mark.parametrize("project", ["greeting-card", "card", "flyer", "album", "calendar"])
 async def test_a_turned_page_keeps_the_print_safe_margin(tmp_path, project):
     """`o` on the greeting card: its picture, 124 mm tall, on a page now 127 mm tall, kept
@@ -470,17 +484,8 @@ async def test_a_turned_page_keeps_the_print_safe_margin(tmp_path, project):
     room after a layout change looked for overlaps and items off the page only; now the items
     that kept the margin before the turn keep it after, if they are made smaller for it.
     The sample, and each starter `floatpage new` makes."""
-    import shutil
 
-    from floatpage.starters import create
-
-    if project == "greeting-card":
-        shutil.copytree(ROOT / "sample_projects" / project, tmp_path / project)
-        path = tmp_path / project / f"{project}.toml"
-    else:
-        path = tmp_path / f"{project}.toml"
-        create(project, path)
-    async with editor(path, autostart=True) as (app, pilot):
+    async with editor(sample_or_starter(tmp_path, project), autostart=True) as (app, pilot):
         await settle_live(app, pilot)
         engine = app.session.engine
         kept = {engine.ids[k] for k in range(len(engine.ids))} - {
@@ -505,19 +510,10 @@ async def test_a_file_saved_once_the_page_is_still_is_a_fixed_point_of_settle(
     the settle's. Now a save settles the pages edited since the last one as the command
     does, so the file is one `floatpage settle` leaves byte for byte (the real command, on
     the saved file)."""
-    import shutil
     import subprocess
     import sys
 
-    from floatpage.starters import create
-
-    if (ROOT / "sample_projects" / project).is_dir():
-        shutil.copytree(ROOT / "sample_projects" / project, tmp_path / project)
-        path = tmp_path / project / f"{project}.toml"
-    else:
-        path = tmp_path / f"{project}.toml"
-        create(project, path)
-    async with editor(path, autostart=True) as (app, pilot):
+    async with editor(sample_or_starter(tmp_path, project), autostart=True) as (app, pilot):
         await settle_live(app, pilot)
         await pilot.press(*keys)
         while app.session.held_id is not None:  # let go RELEASE_AFTER_S after the key
