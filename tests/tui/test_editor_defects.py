@@ -513,7 +513,8 @@ async def test_a_file_saved_once_the_page_is_still_is_a_fixed_point_of_settle(
     import subprocess
     import sys
 
-    async with editor(sample_or_starter(tmp_path, project), autostart=True) as (app, pilot):
+    path = sample_or_starter(tmp_path, project)
+    async with editor(path, autostart=True) as (app, pilot):
         await settle_live(app, pilot)
         await pilot.press(*keys)
         while app.session.held_id is not None:  # let go RELEASE_AFTER_S after the key
