@@ -163,7 +163,7 @@ def test_the_next_edit_offers_the_recovered_edits(tmp_path):
         editor.wait_exit(5.0)
     finally:
         editor.kill()
-    assert recovery_path(path).exists()
+    assert recovery_path(path).exists(), editor.screen[-3000:]
     moved_x = load_project(recovery_path(path)).pages[0].item("block").x
 
     again = Editor(path)
