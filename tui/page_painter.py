@@ -13,13 +13,16 @@ from pathlib import Path
 
 import numpy.ma  # noqa: F401  (imported with the editor, not on the first key: see below)
 
-from floatpage.model.calendar_month import month_name, month_weeks, weekday_names
+from floatpage.merge.placeholders import PlaceholderError, fields_in
 from floatpage.physics.guides import lines_met
 from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
+from floatpage.tui.calendar_cells import cells, month_lines, month_text
 from floatpage.tui.cell_text import graphemes, visual, wrap_cells
+from floatpage.tui.cell_text import width as cell_width
 from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
+from floatpage.tui.mark_places import beside_text, inside, mark_cell, occupancy, touched_cells
 from floatpage.tui.projection import Projection
 from floatpage.tui.thumbnails import thumbnail
 
@@ -35,6 +38,7 @@ GROUP: RGB = (255, 140, 0)  # the frame around the selected item's whole group
 MISSING_PICTURE: RGB = (150, 150, 150)
 WHITE: RGB = (255, 255, 255)
 TEXT_TINT = 0.12  # how much of its ink colour a text box's background takes
+SHADED_DAY = 0.18  # how much ink every other day's cells take, where days touch
 BLACK: RGB = (0, 0, 0)
 
 
@@ -99,16 +103,27 @@ def wrapped(text: str, width: int) -> tuple[str, ...]:
     return tuple(wrap_cells(text, width))
 
 
-def calendar_lines(item: CalendarItem) -> list[str]:
-    """Title, weekday heads and the day grid, as the typesetter will print them (localised)."""
+def picture_stand_in(path: str) -> str:
+    """What a picture the preview cannot show says instead: a merge template's picture,
+    named by its fields ("pictures/{photo}"), is filled in per record, and is not missing."""
     try:
-        title = f"{month_name(item.month, item.language)} {item.year}"
-        heads = " ".join(name[:2] for name in weekday_names(item.first_weekday, item.language))
-        weeks = month_weeks(item.year, item.month, item.first_weekday)
-    except ValueError:
-        return [f"calendar {item.year}-{item.month}"]
-    rows = [" ".join(f"{day:2d}" if day else "  " for day in week) for week in weeks]
-    return [title, heads, *rows]
+        if fields_in(path):
+            return f"one per record: {path}"
+    except PlaceholderError:
+        pass
+    return f"missing {path}"
+
+
+@lru_cache(maxsize=1024)
+def cut_short(line: str, cells: int) -> str:
+    """The line with "…" at its end, in at most ``cells`` cells: at 80x24 the flyer's
+    captions read "Sunfl" and "Coffe", as if that were all of them."""
+    kept, used = "", 0
+    for grapheme in graphemes(line.rstrip()):
+        if used + cell_width(grapheme) > cells - 1:
+            break
+        kept, used = kept + grapheme, used + cell_width(grapheme)
+    return kept + "\u2026"
 
 
 class PagePainter:
@@ -127,8 +142,11 @@ class PagePainter:
         for item in items:
             self._item(canvas, view, item, boxes[item.id])
         centres = {item.id: self._centre(item, view) for item in view.page.items}
+        cells = {item_id: touched_cells(box) for item_id, box in boxes.items()}
+        taken = occupancy((cells[item.id] for item in view.page.items if not item.decorative),
+                          canvas.cols, canvas.rows)
         for item in view.page.items:
-            self._anchor(canvas, item, centres)
+            self._anchor(canvas, item, centres, cells, taken)
         self._guides(canvas, view.guides)
         selected = next((item for item in view.page.items if item.id == view.selected_id), None)
         if selected is not None and selected.group:
@@ -211,7 +229,7 @@ class PagePainter:
             image = thumbnail(view.base_dir / item.path, x1 - x0, y1 - y0)
             if image is None:
                 canvas.fill(*box, MISSING_PICTURE)
-                self._body(canvas, box, [f"missing {item.path}"], BLACK, MISSING_PICTURE)
+                self._body(canvas, box, [picture_stand_in(item.path)], BLACK, MISSING_PICTURE)
             else:
                 canvas.blit(x0, y0, image)
             if view.labels:
@@ -238,8 +256,7 @@ class PagePainter:
             self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold,
                        below_label=labelled)
         elif isinstance(item, CalendarItem):
-            self._body(canvas, box, calendar_lines(item), ink, fill, wrap=False,
-                       below_label=labelled)
+            self._calendar(canvas, box, item, ink, fill, below_label=labelled)
 
     def _label(self, canvas: CellCanvas, item, box, fg: RGB, bg: RGB) -> None:
         """The item's id on its first full row (or the row holding its top, if it is thin)."""
@@ -249,26 +266,50 @@ class PagePainter:
         width = max(col1 - col0, 1)
         canvas.write(col0, row, text[:width], fg, bg, bold=True, end_col=col0 + width)
 
-    def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
-              *, bold: bool = False, wrap: bool = True, below_label: bool = True) -> None:
-        """As much of the text as fits the item's full cells (under the label row, if any).
-        A box with no full row (a caption a cell tall that straddles two rows, as most do at
-        some height) gets one line on the row holding its top, as the label does: the album's
-        captions, the flyer's and the multilingual card's lines showed as bare half-blocks."""
+    def _text_area(self, box, below_label: bool) -> tuple[int, int, int, int]:
+        """The cells a box's text may use, (col0, first row, col1, end row): its full cells,
+        under the label row if any. A box with no full row (a caption a cell tall that
+        straddles two rows, as most do at some height) gets the row holding its top, as the
+        label does: the album's captions, the flyer's and the multilingual card's lines
+        showed as bare half-blocks."""
         col0, row0, col1, row1 = self._cells(box)
         if row1 <= row0 and box[3] > box[1]:
             row0, row1 = box[1] // 2, box[1] // 2 + 1
-        width, first = col1 - col0, row0 + (1 if below_label else 0)
+        return col0, row0 + (1 if below_label else 0), col1, row1
+
+    def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
+              *, bold: bool = False, below_label: bool = True) -> None:
+        """As much of the text as fits the item's cells, word-wrapped."""
+        col0, first, col1, row1 = self._text_area(box, below_label)
+        width = col1 - col0
         if width < 1 or first >= row1:
             return
-        lines: list[str] = []
-        for paragraph in paragraphs:
-            if wrap:
-                lines += wrapped(paragraph, width)
-            else:
-                lines.append(visual(printable(paragraph)))
+        lines = [line for paragraph in paragraphs for line in wrapped(paragraph, width)]
+        rows = row1 - first
+        if len(lines) > rows:  # the last line shown ends in "…": the text goes on
+            lines = lines[:rows - 1] + [cut_short(lines[rows - 1], width)]
         for row, line in zip(range(first, row1), lines):
             canvas.write(col0, row, line, fg, bg, bold=bold, end_col=col1)
+
+    def _calendar(self, canvas: CellCanvas, box, item: CalendarItem, fg: RGB, bg: RGB,
+                  *, below_label: bool) -> None:
+        """Every day of the month, in the richest layout its cells hold (`calendar_cells`);
+        every other day shaded where the days stand with no space between."""
+        col0, first, col1, row1 = self._text_area(box, below_label)
+        if col1 <= col0 or first >= row1:
+            return
+        month = month_text(item.year, item.month, item.first_weekday, item.language)
+        if month is None:
+            canvas.write(col0, first, f"calendar {item.year}-{item.month}", fg, bg, end_col=col1)
+            return
+        shade = mix(bg, fg, SHADED_DAY)
+        lines, _whole = month_lines(month, col1 - col0, row1 - first)
+        for row, line in zip(range(first, row1), lines):
+            col = col0
+            for text, shaded in line:
+                canvas.write(col, row, visual(printable(text)), fg, shade if shaded else bg,
+                             end_col=col1)
+                col += cells(text)
 
     def _guides(self, canvas: CellCanvas, guides) -> None:
         """Dashed one-pixel lines across the page, on the pixels no text covers: the guides
@@ -289,29 +330,43 @@ class PagePainter:
                         if canvas.glyph_at(x, y // 2) is None:
                             canvas.pixels[y, x] = GUIDE
 
-    def _anchor(self, canvas: CellCanvas, item, centres) -> None:
-        start = self.projection.cell_of(*centres[item.id])
+    def _anchor(self, canvas: CellCanvas, item, centres, cells, taken) -> None:
+        """The item's anchor mark, or its follow link's two ends, where they read as marks
+        and hide nothing (`mark_places`), joined to the item by a dotted line."""
+        own = cells[item.id]
         if isinstance(item.anchor, PointAnchor):
-            end = self.projection.cell_of(item.anchor.x, item.anchor.y)
-            self._dots(canvas, start, end, ANCHOR)
-            under = canvas.glyph_at(*end)  # a letter of a text stays readable, on the anchor colour
-            char = under.char if under is not None else ("#" if item.anchor.hard else "+")
-            canvas.put(*end, Glyph(char, WHITE, ANCHOR, bold=True))
+            point = self.projection.cell_of(item.anchor.x, item.anchor.y)
+            under = canvas.glyph_at(*point)
+            if under is not None and under.char.strip() and inside(own, *point):
+                # a letter of its own text stays readable, on the anchor colour
+                canvas.put(*point, Glyph(under.char, WHITE, ANCHOR, bold=True))
+                return
+            end = mark_cell(canvas, own, point, taken)
+            if end is None:
+                return
+            canvas.put(*end, Glyph("#" if item.anchor.hard else "+", WHITE, ANCHOR, bold=True))
+            self._dots(canvas, self.projection.cell_of(*centres[item.id]), end, ANCHOR, [own])
         elif isinstance(item.anchor, ItemAnchor) and item.anchor.to in centres:
-            end = self.projection.cell_of(*centres[item.anchor.to])
-            self._dots(canvas, start, end, LINK)
-            for end_cell in (start, end):
-                if canvas.glyph_at(*end_cell) is None:  # labels stay readable
-                    canvas.put(*end_cell, Glyph("o", WHITE, LINK, bold=True))
+            followed = item.anchor.to
+            ends = []
+            for marked, toward in ((item.id, followed), (followed, item.id)):
+                end = mark_cell(canvas, cells[marked], self.projection.cell_of(*centres[toward]),
+                                taken)
+                if end is not None:
+                    canvas.put(*end, Glyph("o", WHITE, LINK, bold=True))
+                ends.append(end or self.projection.cell_of(*centres[marked]))
+            self._dots(canvas, ends[0], ends[1], LINK, [own, cells[followed]])
 
     @staticmethod
-    def _dots(canvas: CellCanvas, start, end, colour: RGB) -> None:
-        """A dotted line of cells from start to end (Bresenham), ends excluded."""
+    def _dots(canvas: CellCanvas, start, end, colour: RGB, skipped) -> None:
+        """A dotted line of cells from start to end (Bresenham), ends excluded, on no cell of
+        the `skipped` boxes (the items it joins) and beside no letter."""
         (c0, r0), (c1, r1) = start, end
         steps = max(abs(c1 - c0), abs(r1 - r0))
         for i in range(1, steps):
             col = round(c0 + (c1 - c0) * i / steps)
             row = round(r0 + (r1 - r0) * i / steps)
             if 0 <= row < canvas.rows and 0 <= col < canvas.cols \
-                    and canvas.glyph_at(col, row) is None:
+                    and canvas.glyph_at(col, row) is None and not beside_text(canvas, col, row) \
+                    and not any(inside(box, col, row) for box in skipped):
                 canvas.put(col, row, Glyph("\u00b7", colour, None, bold=True))

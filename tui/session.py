@@ -25,6 +25,7 @@ from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_
 from floatpage.model.page_sizes import page_dimensions
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
+from floatpage.physics.params import page_margin
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.reading_order import reading_order, step_through
 
@@ -97,6 +98,35 @@ def copy_into(picture: Path, folder: Path) -> Path:
     return candidate
 
 
+def detached_copy(page: Page) -> Page:
+    """A copy of the page a settle may change without touching the page: `copy_of` shares
+    the items' anchors, and a settle moves a hard anchor with its item (the search for room
+    ran in a thread on such a copy, and wrote into the live page's anchors)."""
+    page = copy_of(page)
+    for item in page.items:
+        item.anchor = copy.copy(item.anchor)
+    return page
+
+
+def layout_of(page: Page) -> dict[str, tuple[float, float]]:
+    return {item.id: (item.x, item.y) for item in page.items}
+
+
+def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float) -> None:
+    """Move the item, and its point anchor, just far enough that the item keeps the print-safe
+    margin where it fits inside it (centred where it does not). Scaled with a turned page, a
+    footer hard-anchored 5 mm above the bottom of an A4 flyer ended 2.9 mm above it, and no
+    settle could move it (issue 16)."""
+    def kept(centre: float, size: float, page: float) -> float:
+        low, high = margin_mm + size / 2, page - margin_mm - size / 2
+        return page / 2 if low > high else min(max(centre, low), high)
+
+    item.x, item.y = kept(item.x, item.w, width_mm), kept(item.y, item.h, height_mm)
+    if isinstance(item.anchor, PointAnchor):
+        item.anchor.x = kept(item.anchor.x, item.w, width_mm)
+        item.anchor.y = kept(item.anchor.y, item.h, height_mm)
+
+
 @dataclasses.dataclass(frozen=True)
 class RoomRequest:
     """Room wanted for ``ids`` (None: every item) on a page, as the document stood."""
@@ -104,6 +134,9 @@ class RoomRequest:
     version: int
     page_index: int
     ids: frozenset[str] | None
+    # the items that kept the print-safe margin before the change, which the room found must
+    # let them keep (issue 16): a turned greeting card left its picture 1.4 mm from the edge
+    margin_kept: frozenset[str] = frozenset()
 
 
 class EditSession:
@@ -112,6 +145,7 @@ class EditSession:
     def __init__(self, project: Project, *, seed: int = 0):
         self.project = project
         self.seed = seed
+        self.pages_edited: set[str] = set()  # page ids a save settles (settle_edited_pages)
         if not project.pages:
             width, height = page_dimensions("A4", "portrait")
             project.pages.append(Page(id="page-1", width_mm=width, height_mm=height))
@@ -159,6 +193,49 @@ class EditSession:
             engine.reheat()
         return engine
 
+    def resting_copy(self) -> Page:
+        """A copy of the page with the engine's positions, rounded as a save writes them."""
+        page = detached_copy(self.page)
+        write_back(page, self.engine)
+        return page
+
+    def settle_copy(self, page: Page) -> None:
+        """Settle a page (a copy: it is changed) as `floatpage settle` does, with the
+        project's own settings, so its answer is the file's fixed point."""
+        settle_page(page, self.project.physics)
+
+    def adopt_layout(self, page: Page) -> bool:
+        """Take the positions of a settled copy of the page, if they differ from the page's
+        own (rounded as a save writes them); the engine starts from them, at rest. Returns
+        whether they differed."""
+        settled = {item.id: item for item in page.items}
+        if all(settled[id_].x == x and settled[id_].y == y
+               for id_, (x, y) in layout_of(self.resting_copy()).items() if id_ in settled):
+            return False
+        for item in self.page.items:
+            if item.id in settled:
+                item.x, item.y = settled[item.id].x, settled[item.id].y
+                if isinstance(item.anchor, PointAnchor) and item.anchor.hard:
+                    item.anchor.x, item.anchor.y = item.x, item.y
+        self.engine = self._build_engine(check=False)
+        return True
+
+    def settle_edited_pages(self) -> None:
+        """Settle every page edited since the last save as `floatpage settle` would, the
+        current one through its engine (it takes the answer, at rest)."""
+        self.end_move()
+        current = self.page.id
+        for page in self.project.pages:
+            if page.id not in self.pages_edited:
+                continue
+            if page.id == current:
+                settled = self.resting_copy()
+                self.settle_copy(settled)
+                self.adopt_layout(settled)
+            else:
+                self.settle_copy(page)
+        self.pages_edited.clear()
+
     def sync_positions(self) -> None:
         """Copy the engine's live positions into the model's items."""
         write_back(self.page, self.engine)
@@ -191,6 +268,7 @@ class EditSession:
         """Record the state before an edit; the edit makes a new (unsaved) document state."""
         self.history.record(self._snapshot(label))
         self.version = next(self._versions)
+        self.pages_edited.add(self.page.id)
 
     def _restore(self, snapshot: Snapshot) -> None:
         self.held_id = None
@@ -199,6 +277,7 @@ class EditSession:
         self.selected_id = snapshot.selected_id
         self.version = snapshot.version
         self.engine = self._build_engine()
+        self.pages_edited.add(self.page.id)
 
     def undo(self) -> str:
         """Return to the state before the last edit; the name of the edit undone."""
@@ -249,13 +328,14 @@ class EditSession:
         self.selected_id = item.id
         return item.id
 
-    def want_room(self, ids: frozenset[str] | None = None) -> None:
+    def want_room(self, ids: frozenset[str] | None = None,
+                  margin_kept: frozenset[str] = frozenset()) -> None:
         """Ask for room for the items ``ids`` (all that take part, if None) after an insert or
         a page change: the caller runs ``room_scale`` on a copy of the page, off the UI
         thread, and hands the answer to ``make_room`` (issue 11: a fair start).  Run in the
         key's answer, it froze the editor for 0.8-2.3 s on an insert and 2.6-5.6 s on `o`
         (the calendar, load 7)."""
-        self.room_wanted = RoomRequest(self.version, self.page_index, ids)
+        self.room_wanted = RoomRequest(self.version, self.page_index, ids, margin_kept)
 
     def room_scale(self, page: Page, request: "RoomRequest") -> float:
         """How much the items of ``request`` must shrink for ``page`` (a copy: it is changed)
@@ -264,10 +344,12 @@ class EditSession:
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
         scale = 1.0
         for _ in range(MAKE_ROOM_ATTEMPTS):
-            trial = copy_of(page)
+            trial = detached_copy(page)
             settle_page(trial, settings, max_rounds=3)
-            quality = engine_for_page(trial, settings).quality()
-            if not (quality.overlapping_pairs or quality.off_page):
+            engine = engine_for_page(trial, settings)
+            quality = engine.quality()
+            in_margin = {engine.ids[k] for k in quality.in_margin} & request.margin_kept
+            if not (quality.overlapping_pairs or quality.off_page or in_margin):
                 break
             for item in page.items:
                 if not item.decorative and (request.ids is None or item.id in request.ids):
@@ -290,6 +372,7 @@ class EditSession:
             self.mark_unsaved()
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
+        self.pages_edited.add(self.page.id)
         return True
 
     def make_item(self, kind: str, **fields):
@@ -566,7 +649,9 @@ class EditSession:
                                                  page.height_mm):
             return
         self.checkpoint(label)
+        margin_kept = self.margin_keepers()
         sx, sy = width / page.width_mm, height / page.height_mm
+        margin = page_margin(self.project.physics.margin_mm, width, height)
         for item in page.items:
             item.x, item.y = item.x * sx, item.y * sy
             if item.decorative:  # a band across the page keeps spanning it: it stretches
@@ -574,12 +659,19 @@ class EditSession:
             item.w, item.h = min(item.w, width), min(item.h, height)
             if isinstance(item.anchor, PointAnchor):
                 item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
+            if not (item.decorative or item.group or getattr(item, "bleed", False)):
+                keep_inside_margin(item, width, height, margin)
         page.size, page.orientation = size, orientation
         page.width_mm, page.height_mm = width, height
         self.held_id = None
-        self.want_room()
+        self.want_room(margin_kept=margin_kept)
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
+
+    def margin_keepers(self) -> frozenset[str]:
+        """The ids of the page's items that keep their print-safe margin now."""
+        engine = self.engine
+        return frozenset(engine.ids) - {engine.ids[k] for k in engine.quality().in_margin}
 
     def toggle_orientation(self) -> str:
         page = self.page

@@ -163,7 +163,7 @@ def test_the_next_edit_offers_the_recovered_edits(tmp_path):
         editor.wait_exit(5.0)
     finally:
         editor.kill()
-    assert recovery_path(path).exists()
+    assert recovery_path(path).exists(), editor.screen[-3000:]
     moved_x = load_project(recovery_path(path)).pages[0].item("block").x
 
     again = Editor(path)
@@ -184,37 +184,38 @@ def test_the_next_edit_offers_the_recovered_edits(tmp_path):
     assert not recovery_path(path).exists()
 
 
-def test_one_key_answers_the_recovery_question(tmp_path):
+@pytest.fixture
+def offered_recovery(tmp_path):
+    """(project path, editor) with a recovery file beside the project, the editor asking
+    whether to restore it; the editor is killed and its pty closed afterwards."""
+    path = project_file(tmp_path)
+    recovery_path(path).write_bytes(path.read_bytes())
+    editor = Editor(path)
+    try:
+        editor.read_until(b"[d]iscard them")
+        yield path, editor
+    finally:
+        editor.kill()
+        os.close(editor.fd)
+
+
+def test_one_key_answers_the_recovery_question(offered_recovery):
     """"[r]estore them, [d]iscard them, or [q]uit": a user pressed r and nothing happened, as
     the question read a line and wanted Enter too. The key alone answers it."""
-    path = project_file(tmp_path)
-    recovery_path(path).write_bytes(path.read_bytes())
-    editor = Editor(path)
-    try:
-        editor.read_until(b"[d]iscard them")
-        editor.send(b"r")
-        editor.read_until(b"2 items")
-        editor.send(b"\x11")  # Ctrl+Q: the restored edits are unsaved, so it asks
-        editor.read_until(b"Quit without saving")
-    finally:
-        editor.kill()
-        os.close(editor.fd)
+    _path, editor = offered_recovery
+    editor.send(b"r")
+    editor.read_until(b"2 items")
+    editor.send(b"\x11")  # Ctrl+Q: the restored edits are unsaved, so it asks
+    editor.read_until(b"Quit without saving")
 
 
-def test_discarding_the_recovered_edits_deletes_them(tmp_path):
-    path = project_file(tmp_path)
-    recovery_path(path).write_bytes(path.read_bytes())
-    editor = Editor(path)
-    try:
-        editor.read_until(b"[d]iscard them")
-        editor.send(b"d\r")
-        editor.read_until(b"items")
-        assert not recovery_path(path).exists()
-        editor.send(b"\x11")
-        code, _ = editor.wait_exit(10.0)
-    finally:
-        editor.kill()
-        os.close(editor.fd)
+def test_discarding_the_recovered_edits_deletes_them(offered_recovery):
+    path, editor = offered_recovery
+    editor.send(b"d\r")
+    editor.read_until(b"items")
+    assert not recovery_path(path).exists()
+    editor.send(b"\x11")
+    code, _ = editor.wait_exit(10.0)
     assert code == 0
 
 

@@ -151,3 +151,21 @@ def test_a_spans_runs_are_the_rows_cells_cell_by_cell_or_by_numpy():
         assert start == (first + 1 if first in (6, 8) else first)  # a second half: left out
         assert got == at_col[start][:len(got)], (first, end)
         assert start + sum(count for _, count, *_ in runs) == (end + 1 if end in (6, 8) else end)
+
+
+def test_a_settled_copy_leaves_the_pages_anchors_alone():
+    """The search for room settled `copy_of` the page in a thread, and a settle writes a hard
+    anchor back with its item's rounded position: the copy shared its anchors with the live
+    page, so the thread wrote into the page being edited."""
+    from floatpage.model.document import BlockItem, Page, PhysicsSettings, PointAnchor
+    from floatpage.model.layout import settle_page
+    from floatpage.tui.session import detached_copy
+
+    page = Page(id="p", width_mm=100.0, height_mm=100.0, items=[
+        BlockItem(id="held", x=30.004, y=30.004, w=10.0, h=10.0,
+                  anchor=PointAnchor(x=30.004, y=30.004, hard=True)),
+        BlockItem(id="free", x=31.0, y=31.0, w=10.0, h=10.0)])
+    copy = detached_copy(page)
+    settle_page(copy, PhysicsSettings())
+    assert (copy.items[0].anchor.x, copy.items[0].anchor.y) != (30.004, 30.004)
+    assert (page.items[0].anchor.x, page.items[0].anchor.y) == (30.004, 30.004)

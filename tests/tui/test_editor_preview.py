@@ -85,13 +85,21 @@ async def test_anchors_and_links_are_visible(project_path):
         col, row = preview.projection.cell_of(74.0, 170.0)  # the month's anchor point
         assert canvas.glyphs[(row, col)].bg == ANCHOR  # over the calendar's text: its letter
         screen_of(app).selected_id = "block"
-        await pilot.press("a")  # a block shows no text: the anchor shows as '+'
-        col, row = preview.projection.cell_of(*app.session.engine.positions()["block"])
-        assert preview.canvas.glyphs[(row, col)].char == "+"
-        assert preview.canvas.glyphs[(row, col)].bg == ANCHOR
+        await pilot.press("a")  # a block shows no text: the anchor shows as '+', beside it
+        x0, y0, x1, y1 = item_pixel_box(app, "block")  # (on it, it hid a cell of the block)
+        pluses = [(col, row) for (row, col), glyph in preview.canvas.glyphs.items()
+                  if glyph.char == "+" and glyph.bg == ANCHOR]
+        beside = [(col, row) for col, row in pluses
+                  if x0 - 1 <= col <= x1 and y0 // 2 - 1 <= row <= (y1 + 1) // 2
+                  and not (x0 <= col < x1 and y0 // 2 <= row < (y1 + 1) // 2)]
+        assert beside, (pluses, (x0, y0, x1, y1))
+        ends = [g for g in preview.canvas.glyphs.values() if g.bg == LINK and g.char == "o"]
+        assert len(ends) == 2  # caption follows photo: an 'o' at each end
+        app.session.move_to("caption", 110.0, 190.0)  # far from its photo: a line between
+        screen_of(app).redraw()
         link_dots = [g for g in preview.canvas.glyphs.values()
                      if g.fg == LINK and g.char == "\u00b7"]
-        assert len(link_dots) >= 3  # caption follows photo: a dotted line between them
+        assert len(link_dots) >= 3
 
 
 async def test_the_preview_fits_an_80_by_24_terminal(project_path):
@@ -150,3 +158,31 @@ async def test_a_caption_a_cell_tall_shows_its_text_wherever_it_sits(tmp_path):
         assert len(captions) == 5, [item.id for item in app.session.page.items]
         for caption in captions:
             assert caption.text in text, (caption.text, text)
+
+
+async def test_a_merge_templates_picture_is_not_called_missing(tmp_path):
+    """The merge sample's picture is `pictures/{photo}`, one per record: the preview said
+    "missing pictures/{photo}", as for a file that is gone."""
+    import shutil
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[2]
+    shutil.copytree(root / "sample_projects" / "merge-offers", tmp_path / "offers")
+    async with editor(tmp_path / "offers" / "offer.toml", size=(100, 32)) as (app, pilot):
+        text = " ".join(preview_text(app).split())
+        assert "one per record:" in text and "{photo}" in text
+        assert "missing" not in text
+
+
+async def test_a_text_cut_short_ends_in_an_ellipsis(tmp_path):
+    """At 80x24 the flyer's captions read "Sunfl" and "Coffe", as if that were all of them;
+    a box that holds more text than its cells show ends its last line in "…"."""
+    from floatpage.starters import create
+
+    path = tmp_path / "flyer.toml"
+    create("flyer", path)
+    async with editor(path, size=(80, 24)) as (app, pilot):
+        text = preview_text(app)
+        for word in ("Sunflowers", "Coffee", "Lemons"):
+            assert word[:4] + "\u2026" in text, (word, text)
+        assert "Sunfl " not in text and "Coffe\n" not in text

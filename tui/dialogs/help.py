@@ -17,16 +17,24 @@ MOUSE = (("click", "Select an item (or nothing, on empty paper)"),
          ("drag", "Move the item; the others make way"))
 # Every mark the preview draws, and what it means (issue 11: they were explained nowhere).
 MARKS = (("~name", "a decoration's id (shown with n): it sits behind and is never pushed"),
-         ("+", "where an item is anchored to the page by a spring (magenta; on text, the "
-               "letter there turns magenta)"),
-         ("#", "where an item is anchored to the page hard: it does not move"),
+         ("+", "an item anchored to the page by a spring (magenta), at its anchor or, when "
+               "that is under the item, beside it; on text, the letter there turns magenta"),
+         ("#", "an item anchored to the page hard: it does not move (placed as +)"),
          ("· · ·", "the line from an item to its anchor, magenta; or to the item it follows, blue"),
-         ("o", "the two ends of a follow link (blue): the follower and the item it follows"),
+         ("o", "the two ends of a follow link (blue), beside the follower and the item it "
+               "follows"),
+         ("(none)", "a small item with no free cell beside it goes without its + # o, rather "
+                    "than have it hide the item or glue to a word; select it to see its anchor "
+                    "in the top bar"),
          ("frame", "the selected item, framed in yellow, with its id"),
          ("- - group", "the selected item's group, dashed orange: it moves as one (G joins or leaves)"),
          ("- - guide", "a dashed cyan line across the page, while the selected item moves: an "
                        "alignment guide it sits on"),
          ("- - name", "a region, dashed green: its items stay inside it; its edges are guides"),
+         ("1 2 3", "a calendar's days, every one of the month: where the panel is small, "
+                   "without weekday columns, or two cells a day, every other day shaded"),
+         ("…", "a text cut short: its box holds more than its cells show"),
+         ("Jan 1-31", "a calendar panel too small to show its days: its month and days"),
          ("▀ ▄", "half-block pixels: each cell shows two rows of the page"))
 
 

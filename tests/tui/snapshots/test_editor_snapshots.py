@@ -17,10 +17,12 @@ def frozen_app(project_path):
 
 def test_main_screen(project_path, snap_compare):
     """The front page of the test card, A5 portrait, centred on a dark surround: a faintly
-    pink box with 'Happy Birthday Anna' in dark red, the photo thumbnail (red over blue) with a
-    dotted blue link and 'o' ends down to its grey caption 'Summer', a green block framed in
+    pink box with 'Happy Birthday Anna' in dark red, the photo thumbnail (red over blue) and
+    its grey caption 'Summer' right under it, each with a blue 'o' beside it (the caption
+    follows the photo; the marks sit beside them, hiding neither), a green block framed in
     yellow and labelled 'block' (selected: only the selected item shows its id), and the
-    decorative yellow band behind the March 2027 grid, whose anchor shows as a magenta cell.
+    decorative yellow band behind the March 2027 grid (title and five weeks: every day),
+    whose anchor shows as a magenta digit.
     The top bar names the selected block, its size and where it is ('at 115, 85 mm'); the
     status lines speak words ('paused · Space resumes', 'no overlaps · gaps kept · v details'); the footer fits 100 columns: Help,
     Save, Export and Quit first, then the item commands while they fit."""
@@ -32,8 +34,10 @@ def test_main_screen(project_path, snap_compare):
 
 
 def test_main_screen_80x24(project_path, snap_compare):
-    """The same page in the smallest supported terminal: the whole page still fits, with ids
-    readable and the calendar grid cut to what fits; nothing is selected, so the footer starts
+    """The same page in the smallest supported terminal: the whole page still fits, and the
+    calendar shows every day of March in its 4 rows, two cells a day, every other day on a
+    darker shade (1-8, 9-16, 17-24, 25-31); the link's 'o' marks sit left of the photo and
+    of its caption; nothing is selected, so the footer starts
     with the page commands: '? Help', 'tab Next', 'itpbcg Insert', '][NDSo Page', Pause."""
     assert snap_compare(frozen_app(project_path), terminal_size=(80, 24))
 
