@@ -9,6 +9,7 @@ the recovery file and offers to restore or discard it.
 
 from __future__ import annotations
 
+import importlib
 import os
 import signal
 import threading
@@ -72,6 +73,12 @@ class HangupGuard:
         self.exit_app = exit_app
 
     def install(self) -> None:
+        # What write_recovery needs is imported now, not in the handler: tomlkit is imported
+        # lazily (model.save), and a hang-up that came while the main thread was importing it
+        # found it half initialised ("partially initialized module 'tomlkit' has no attribute
+        # 'dumps'"), and the edits were lost (one hang-up test in three).
+        importlib.import_module("tomlkit")
+        importlib.import_module("tomlkit.items")
         signal.signal(signal.SIGHUP, self.on_hangup)
         signal.signal(signal.SIGTERM, self.on_terminate)
 

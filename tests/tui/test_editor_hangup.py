@@ -233,3 +233,27 @@ def test_settle_refuses_while_the_editor_has_the_project(tmp_path):
     finally:
         editor.kill()
         os.close(editor.fd)
+
+
+def test_the_hang_up_handler_imports_nothing(tmp_path):
+    """The handler runs between two bytecodes of the main thread, which may be halfway
+    through a lazy import: tomlkit, imported there by the first save, was found half
+    initialised and the edits were lost (one run of the recovery test in three). Once the
+    guard is installed, writing the recovery file imports no module."""
+    path = project_file(tmp_path)
+    script = f"""
+import sys, types
+from floatpage.model import load_project
+from floatpage.tui.recovery import HangupGuard, write_recovery
+project = load_project({str(path)!r})
+session = types.SimpleNamespace(unsaved=True, project=project, sync_positions=lambda: None)
+HangupGuard(session, lambda: None).install()
+before = set(sys.modules)
+write_recovery(session)
+print(sorted(set(sys.modules) - before))
+"""
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         cwd=ROOT, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "[]"
+    assert recovery_path(path).exists()
