@@ -1,4 +1,5 @@
-"""The packages import in one direction only: physics <- model <- typeset, tui, starters <- cli.
+"""The packages import in one direction only: physics <- model <- typeset, starters, merge <- tui
+<- cli.
 
 physics knows nothing of files, LaTeX or terminals, so it can be tested and benchmarked alone
 and reused (the merge workers run it with no screen); the model knows nothing of LaTeX or the
@@ -17,7 +18,8 @@ MAY_IMPORT = {
     "latex_templates": set(),
     "typeset": {"physics", "model", "latex_templates"},
     "starters": {"physics", "model", "typeset"},
-    "tui": {"physics", "model", "typeset", "starters"},
+    # the editor reads a merge template's placeholders (merge.placeholders: plain text, no Dask)
+    "tui": {"physics", "model", "typeset", "starters", "merge"},
     "merge": {"physics", "model", "typeset"},
     "cli": {"physics", "model", "typeset", "tui", "starters", "merge"},
 }
