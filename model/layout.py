@@ -348,10 +348,18 @@ def soundness(page: Page, settings: PhysicsSettings) -> tuple:
 
 
 def copy_of(page: Page) -> Page:
-    """A page whose items can be moved without touching ``page``'s: a copy of each item,
-    sharing what no settle changes (a deep copy of 2,000 items took half a second a probe)."""
+    """A page whose items can be moved without touching ``page``'s: a copy of each item and of
+    its anchor (a settle writes a hard anchor back with its item's rounded position, so a
+    shared one was moved in the page being probed, or edited), sharing what no settle changes
+    (a deep copy of 2,000 items took half a second a probe)."""
     return Page(id=page.id, width_mm=page.width_mm, height_mm=page.height_mm,
-                items=[copy.copy(item) for item in page.items], regions=page.regions)
+                items=[_copy_item(item) for item in page.items], regions=page.regions)
+
+
+def _copy_item(item):
+    copied = copy.copy(item)
+    copied.anchor = copy.copy(item.anchor)
+    return copied
 
 
 def keeps_guarantees(layout: Quality, settled: Quality) -> bool:

@@ -157,8 +157,7 @@ def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,
     found: list[tuple[float, int, int]] = []
     for start in range(0, len(rows), CROSSING_BLOCK):  # a pile: a block of rows at a time
         block = np.arange(start, min(start + CROSSING_BLOCK, len(rows)))
-        gaps = (np.abs(centres[block][:, None, :] - centres[None, :, :])
-                - halves[block][:, None, :] - halves[None, :, :]).max(axis=2)
+        gaps = block_clearances(centres[block], halves[block], centres, halves)
         later = np.arange(len(rows))[None, :] > block[:, None]
         close = ((gaps < gutter_mm - TOLERANCE_MM) & later
                  & (roots[rows][block][:, None] != roots[rows][None, :]))
@@ -170,6 +169,14 @@ def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,
         found = sorted(found + [(float(g), int(rows[block[x]]), int(rows[y]))
                                 for g, x, y in zip(values, a, b)])[:LISTED]
     return [PinnedClash((a, b), gap) for gap, a, b in sorted(found)[:LISTED]]
+
+
+def block_clearances(centres_a: np.ndarray, halves_a: np.ndarray, centres_b: np.ndarray,
+                     halves_b: np.ndarray) -> np.ndarray:
+    """finalize.pair_clearances for every a (k rows) against every b (m rows), (k, m), in the
+    same arithmetic, so that a pair gets the same clearance either way."""
+    return (np.abs(centres_a[:, None] - centres_b[None]) - halves_a[:, None]
+            - halves_b[None]).max(axis=2)
 
 
 def _standing_outside(bodies: Bodies, pinned: np.ndarray, near: np.ndarray, far: np.ndarray,
@@ -379,8 +386,8 @@ def _standing_clear(bodies: Bodies, pinned: np.ndarray, units: list, lowest: np.
     halves = bodies.sizes / 2
     for start in range(0, len(members), CROSSING_BLOCK):
         rows = members[start:start + CROSSING_BLOCK]
-        gaps = (np.abs(bodies.centres[rows][:, None] - bodies.centres[obstacles][None])
-                - halves[rows][:, None] - halves[obstacles][None]).max(axis=2)
+        gaps = block_clearances(bodies.centres[rows], halves[rows], bodies.centres[obstacles],
+                                halves[obstacles])
         close = (gaps < gutter_mm - TOLERANCE_MM).any(axis=1)
         clear[owner[start:start + CROSSING_BLOCK][close]] = False
     return clear

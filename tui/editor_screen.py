@@ -29,6 +29,7 @@ from rich.cells import cell_len
 
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
+from floatpage.model.layout import copy_of
 from floatpage.tui import item_forms
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.direct_paint import draws_none_of, stale_lines_hidden
@@ -39,7 +40,7 @@ from floatpage.tui.keymap import ITEM_ACTIONS, ITEM_KEYS, bindings, footer_rank,
 from floatpage.tui.page_bar import PageBar
 from floatpage.tui.page_painter import PageView, shown_guides
 from floatpage.tui.page_preview import PagePreview
-from floatpage.tui.session import EditError, EditSession, detached_copy
+from floatpage.tui.session import EditError, EditSession
 from floatpage.physics.quality import GAP_TOLERANCE_MM
 from floatpage.tui.status_line import Status, StatusLine
 
@@ -399,7 +400,7 @@ class EditorScreen(Screen):
         request, self.session.room_wanted = self.session.room_wanted, None
         if request is not None:  # an insert or a page change: room is found off this thread
             self.room_searches += 1
-            self.room_worker(request, detached_copy(self.session.page))
+            self.room_worker(request, copy_of(self.session.page))
         if self.running and not self.session.engine.settled and not self.pacer.may_draw():
             self.wake()
             return

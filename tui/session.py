@@ -98,16 +98,6 @@ def copy_into(picture: Path, folder: Path) -> Path:
     return candidate
 
 
-def detached_copy(page: Page) -> Page:
-    """A copy of the page a settle may change without touching the page: `copy_of` shares
-    the items' anchors, and a settle moves a hard anchor with its item (the search for room
-    ran in a thread on such a copy, and wrote into the live page's anchors)."""
-    page = copy_of(page)
-    for item in page.items:
-        item.anchor = copy.copy(item.anchor)
-    return page
-
-
 def layout_of(page: Page) -> dict[str, tuple[float, float]]:
     return {item.id: (item.x, item.y) for item in page.items}
 
@@ -195,7 +185,7 @@ class EditSession:
 
     def resting_copy(self) -> Page:
         """A copy of the page with the engine's positions, rounded as a save writes them."""
-        page = detached_copy(self.page)
+        page = copy_of(self.page)
         write_back(page, self.engine)
         return page
 
@@ -344,7 +334,7 @@ class EditSession:
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
         scale = 1.0
         for _ in range(MAKE_ROOM_ATTEMPTS):
-            trial = detached_copy(page)
+            trial = copy_of(page)
             settle_page(trial, settings, max_rounds=3)
             engine = engine_for_page(trial, settings)
             quality = engine.quality()

@@ -158,14 +158,13 @@ def test_a_settled_copy_leaves_the_pages_anchors_alone():
     anchor back with its item's rounded position: the copy shared its anchors with the live
     page, so the thread wrote into the page being edited."""
     from floatpage.model.document import BlockItem, Page, PhysicsSettings, PointAnchor
-    from floatpage.model.layout import settle_page
-    from floatpage.tui.session import detached_copy
+    from floatpage.model.layout import copy_of, settle_page
 
     page = Page(id="p", width_mm=100.0, height_mm=100.0, items=[
         BlockItem(id="held", x=30.004, y=30.004, w=10.0, h=10.0,
                   anchor=PointAnchor(x=30.004, y=30.004, hard=True)),
         BlockItem(id="free", x=31.0, y=31.0, w=10.0, h=10.0)])
-    copy = detached_copy(page)
+    copy = copy_of(page)
     settle_page(copy, PhysicsSettings())
     assert (copy.items[0].anchor.x, copy.items[0].anchor.y) != (30.004, 30.004)
     assert (page.items[0].anchor.x, page.items[0].anchor.y) == (30.004, 30.004)
