@@ -54,13 +54,15 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
                 rng: np.random.Generator, roots: np.ndarray, movable: np.ndarray,
                 inverse_mass: np.ndarray, gap: float, skin: float,
                 margins: np.ndarray | float = 0.0,
-                far_margins: np.ndarray | float | None = None, align: bool = True) -> list[Force]:
+                far_margins: np.ndarray | float | None = None, align: bool = True,
+                saved: bool = False) -> list[Force]:
     """The forces the fast mode sums every step; a new force is one more entry here (the
     contacts come first: the step loop asks them whether any items still overlap).
     ``margins`` and ``far_margins`` are where the walls stand (Bodies.insets); ``align`` is
     False on a page too full to line up (geometry.lines_up), where alignment gives way (as
     the snap does, Engine.finalize): a guide's pull against a pressed crowd only kept it
-    creeping until the lines' hold stopped it."""
+    creeping until the lines' hold stopped it.  ``saved``: the run starts cold, testing a saved
+    layout, whose rounding the lines' hold allows for (guides.GuidePulls)."""
     halves = bodies.sizes / 2
     near = as_insets(margins)
     far = near if far_margins is None else as_insets(far_margins)
@@ -77,7 +79,8 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
         forces.append(AnchorPulls(bodies, anchored, params.beta))
     if align:
         forces += guide_pulls(bodies, roots, (page_w_mm, page_h_mm),
-                              page_margin(params.margin_mm, page_w_mm, page_h_mm), params.guides)
+                              page_margin(params.margin_mm, page_w_mm, page_h_mm), params.guides,
+                              saved)
     return forces
 
 
@@ -136,7 +139,8 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     settled_below = HOLD_HEAT if guides_on else np.inf
     count = bodies.count
     forces = fast_forces(bodies, page_w_mm, page_h_mm, params, rng, roots, movable,
-                         inverse_mass, gap, skin, near, far, align=aligns)
+                         inverse_mass, gap, skin, near, far, align=aligns,
+                         saved=heat < HOLD_HEAT and not spread_out)
     contacts = forces[0]
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))

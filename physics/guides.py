@@ -24,7 +24,10 @@ at rest) a line also *holds* a group with a feature on it, as a magnet holds: a 
 friction of up to ``hold`` against the other forces on that axis.  So a page whose items the
 snapping step (physics.snapping) put on lines against a slight push is at rest, and stays a
 fixed point; the hold is what lets that step align items the forces alone would not leave
-there.
+there.  A run that starts cold tests a saved layout (model.layout's probes), whose centres the
+save rounded to 0.01 mm: there a line holds what lies within ``ON_LINE_MM`` +
+``SAVED_SLACK_MM`` of it, or a feature the snap left 0.048 mm from its line, 0.052 mm after
+the save, slid away under a push the hold would have taken, in every probe.
 """
 
 from __future__ import annotations
@@ -40,6 +43,7 @@ GUIDE_HEAT = 0.3  # the guides pull below this heat, in full below half of it
 K_HOLD = 2.0  # a line's hold on a cold page, mm per step^2 on A4: about 10 mm of contact
 HOLD_HEAT = 0.05  # the hold acts below this heat: a probe's cold run, not the spreading
 ON_LINE_MM = 0.05  # a feature this close to its guide is on it (and held)
+SAVED_SLACK_MM = 0.01  # a saved file's centres are rounded to 0.01 mm (model.layout.write_back)
 PULL_EVERY = 4  # the pull comes as one push every 4th step, four times as strong
 REFRESH_STEPS = 64  # steps between two searches for each item's nearest guide
 PAGE = -1  # owner of the page's own guide lines
@@ -119,12 +123,15 @@ class GuidePulls:
     def __init__(self, centres: np.ndarray, sizes: np.ndarray, active: np.ndarray,
                  pulled: np.ndarray, page: tuple[float, float], margin_mm: float,
                  strength: float, roots: np.ndarray | None = None,
-                 regions: np.ndarray | None = None):
+                 regions: np.ndarray | None = None, saved: bool = False):
         self.halves = sizes / 2
         self.roots = np.arange(len(centres)) if roots is None else roots
         self.grouped = bool((self.roots != np.arange(len(centres))).any())
         self.flat_roots = (self.roots[:, None] * 2 + np.arange(2)).ravel()  # per flat slot
         self.hold = hold_strength(page, strength)
+        # A run that tests a saved layout (saved: it starts cold) holds what the snap left on
+        # a line even after the save's rounding moved it a little further.
+        self.holds_within = ON_LINE_MM + (SAVED_SLACK_MM if saved else 0.0)
         self.on_line = np.zeros(0, dtype=int)  # flat slots on their line at the last pull
         self.holding: np.ndarray | None = None  # flat slots, from on_line when first needed
         self.guides = np.flatnonzero(active)  # rows whose features are guides
@@ -220,7 +227,7 @@ class GuidePulls:
         acc.ravel()[self.own] += PULL_EVERY * self.k * share * pull
         # Which groups to hold is worked out only on a cold page (hold_on_lines): while the
         # page spreads it was a dozen NumPy calls a pull for nothing.
-        self.on_line, self.holding = self.own[np.abs(distance) <= ON_LINE_MM], None
+        self.on_line, self.holding = self.own[np.abs(distance) <= self.holds_within], None
 
     def hold_on_lines(self, acc: np.ndarray) -> None:
         """Static friction at a line: a group with a feature on its guide keeps its place on
@@ -245,7 +252,7 @@ class GuidePulls:
 
 
 def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],
-                margin_mm: float, strength: float) -> list[GuidePulls]:
+                margin_mm: float, strength: float, saved: bool = False) -> list[GuidePulls]:
     """The guide force for one page, as a list of zero or one force (none at strength 0).
 
     Free items and the followers of free items are pulled (a follower's pull moves its whole
@@ -255,7 +262,7 @@ def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],
         return []
     pulled = (bodies.free | bodies.followers & bodies.free[roots]) & ~bodies.held
     return [GuidePulls(bodies.centres, bodies.sizes, active, pulled, page, margin_mm, strength,
-                       roots, bodies.regions)]
+                       roots, bodies.regions, saved)]
 
 
 def hold_strength(page: tuple[float, float], strength: float) -> float:
