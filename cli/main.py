@@ -147,7 +147,7 @@ def settle_and_report(project, args: argparse.Namespace) -> int:
     with progress_line(args.quiet) as show:
         show(f"settling {len(project.pages)} page(s)…")
         started = time.perf_counter()
-        reports = settle_project(project)
+        reports = settle_project(project, jobs=jobs_of(args))
         elapsed = time.perf_counter() - started
     for page, report in zip(project.pages, reports):
         state = "settled" if report.settled else "NOT settled (stopped at the step limit)"
@@ -167,7 +167,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     with progress_line(args.quiet) as show:
         if not args.no_settle:
             show("settling the layout…")
-            settle_project(project)
+            settle_project(project, jobs=jobs_of(args))
         report = render_pdf(project, out, tex_out=Path(args.tex) if args.tex else None,
                             fragment_out=Path(args.fragment) if args.fragment else None,
                             progress=show, print_bleed_mm=args.bleed if args.print else None)
@@ -235,6 +235,28 @@ def pictures_outside(project) -> list[tuple[str, str]]:
     return found
 
 
+def jobs_option(command: argparse.ArgumentParser) -> None:
+    command.add_argument("-j", "--jobs", type=job_count, default=None, metavar="N",
+                         help="settle pages in N processes (default: one per core this "
+                              "process may use; the result is the same for any N)")
+
+
+def job_count(text: str) -> int:
+    try:
+        count = int(text)
+    except ValueError:
+        count = 0
+    if count < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of processes (1 or more)")
+    return count
+
+
+def jobs_of(args: argparse.Namespace) -> int:
+    from floatpage.model.page_pool import available_cores
+
+    return args.jobs if args.jobs is not None else available_cores()
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="floatpage",
@@ -267,6 +289,7 @@ def build_parser() -> argparse.ArgumentParser:
     settle.add_argument("path")
     settle.add_argument("--dry-run", action="store_true", help="report only; do not write the file")
     settle.add_argument("-q", "--quiet", action="store_true", help="no progress output")
+    jobs_option(settle)
     allow_outside_option(settle)
     settle.set_defaults(run=cmd_settle)
 
@@ -282,6 +305,7 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--bleed", type=bleed_length, default=3.0, metavar="MM",
                         help="bleed for --print, in mm (default 3)")
     render.add_argument("-q", "--quiet", action="store_true", help="no progress output")
+    jobs_option(render)
     allow_outside_option(render)
     render.set_defaults(run=cmd_render)
 

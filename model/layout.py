@@ -15,6 +15,7 @@ import numpy as np
 from floatpage.physics import Engine, Params, Quality, SettleReport
 from floatpage.physics.finalize import ROUNDING_MM
 from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover
+from floatpage.physics.page_limits import binding, page_limits
 from floatpage.physics.snapping import ESCAPE_REACH
 from floatpage.physics.stillness import PROBE_HEAT
 from floatpage.model.errors import FloatpageError
@@ -255,28 +256,37 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
 
 
 def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
-    """Whether the page's first probe is skipped for a full run at once: free items (no
-    anchor, group or region) that overlap, on a page where the no-overlap pass parts them
-    (they cover at most the GUTTER_FITS_COVER of the room that rectangles pack to, as
-    geometry.grown_cover measures it without a gutter).  There the probe's no-overlap pass leaves fewer overlaps
-    than the page has (10,000 scattered items: 6,290 -> 127), and then its answer is known:
-    not at rest (at rest keeps every overlap), not near rest (that needs none) and not stuck
-    (its result is sounder than the page), so the full run follows; on those 10,000 items the
-    probe was an eighth of the settle.  Only a probe whose pass jams, leaving as many
-    overlaps, would have answered otherwise and kept the page as it was; such a page now gets
-    the full run (with its second start) instead.  A page whose overlaps may stay (held by
-    anchors, groups or regions, or too full by area) is probed first, as before.  Where the
-    test was only whether the items fit by area (finalize.cannot_fit), the over-full page (40
-    items on 90 % of A4) was laid out anew from its own settled file, whose overlaps no pass
-    removes, and moved again every time."""
-    if any(item.anchor is not None or item.group or item.region for item in page.items):
+    """Whether the page's first probe is skipped for a full run at once: free items (no point
+    anchor, group or region; followers allowed) that overlap, on a page where the no-overlap
+    pass parts them (they cover at most the GUTTER_FITS_COVER of the room that rectangles pack
+    to, as geometry.grown_cover measures it without a gutter, and, with followers, no rigid
+    group is too large for its room: no binding physics.page_limits).  There the probe's
+    no-overlap pass leaves fewer overlaps than the page has (10,000 scattered items: 6,290 ->
+    127), and then its answer is known: not at rest (at rest keeps every overlap), not near
+    rest (that needs none) and not stuck (its result is sounder than the page), so the full
+    run follows, from the page as it was: skipping the probe changes no result.  On those
+    10,000 items the probe was an eighth of the settle; on an album page of photos with
+    captions that follow them, as long as the full run (a 200-page album: 46 s of CPU, about
+    half of it these probes).  Only a probe whose pass jams, leaving as many overlaps, would
+    have answered otherwise and kept the page as it was; such a page now gets the full run
+    (with its second start) instead.  A page whose overlaps may stay (held by point anchors,
+    groups or regions, a follower's group too large for its room, or too full by area) is
+    probed first, as before.  Where the test was only whether the items fit by area
+    (finalize.cannot_fit), the over-full page (40 items on 90 % of A4) was laid out anew from
+    its own settled file, whose overlaps no pass removes, and moved again every time."""
+    if any(isinstance(item.anchor, PointAnchor) or item.group or item.region
+           for item in page.items):
         return False
     engine = engine_for_page(page, settings)
     if engine.quality().overlap_count == 0:
         return False
-    near, far = engine.bodies.insets(engine.margin_mm, engine.page_w_mm, engine.page_h_mm)
-    return grown_cover(engine.bodies, near, far, engine.page_w_mm, engine.page_h_mm,
-                       0.0) <= GUTTER_FITS_COVER
+    bodies = engine.bodies
+    near, far = bodies.insets(engine.margin_mm, engine.page_w_mm, engine.page_h_mm)
+    if grown_cover(bodies, near, far, engine.page_w_mm, engine.page_h_mm,
+                   0.0) > GUTTER_FITS_COVER:
+        return False
+    return not (bodies.followers.any() and binding(page_limits(
+        bodies, engine.page_w_mm, engine.page_h_mm, engine.margin_mm, 0.0)))
 
 
 def proves_stuck(first: "Probe", settings: PhysicsSettings, max_steps: int) -> bool:
@@ -376,7 +386,13 @@ def keeps_guarantees(layout: Quality, settled: Quality) -> bool:
     return math.isinf(wanted) or layout.min_gap_mm >= wanted - ROUNDING_MM
 
 
-def settle_project(project: Project, *, max_steps: int = 200_000) -> list[SettleReport]:
+def settle_project(project: Project, *, max_steps: int = 200_000,
+                   jobs: int = 1) -> list[SettleReport]:
     """Headless: settle every page to its fixed point (see ``settle_page``), positions written
-    back.  Returns one report per page, in page order."""
+    back.  Returns one report per page, in page order.  With ``jobs`` above 1 a project large
+    enough settles its pages in that many processes (model.page_pool), to the same bytes."""
+    from floatpage.model.page_pool import settle_in_pool, worth_a_pool
+
+    if worth_a_pool(project.pages, jobs):
+        return settle_in_pool(project.pages, project.physics, max_steps, jobs)
     return [settle_page(page, project.physics, max_steps=max_steps) for page in project.pages]

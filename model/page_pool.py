@@ -1,0 +1,80 @@
+"""Settling a project's pages side by side, one process per core.
+
+A project's pages are independent: each settles in its own Engine, from its own items, with a
+generator seeded from the project's settings alone, so the order in which pages settle, and
+where, changes no byte of the result.  A 200-page album of 2,000 photos took 20 CPU seconds one
+page after another; over the cores it takes that time divided by their number.
+
+Processes, not threads: the physics is NumPy calls on small arrays, which hold the GIL most of
+the time.  The workers are forked from a fresh server process (multiprocessing's
+"forkserver"), not from the command itself: the command's progress spinner runs a thread, and
+a fork of a process with threads can inherit a lock another thread held.  The server imports
+the physics once, so a worker starts in milliseconds; the server's own start, about half a
+second of CPU, is why a small project settles in the command's own process.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import signal
+from concurrent.futures import ProcessPoolExecutor
+
+from floatpage.model.document import Item, Page, PhysicsSettings
+from floatpage.physics import SettleReport
+
+MIN_PAGES = 8  # fewer pages settle in the command's own process
+MIN_ITEMS = 200  # and so do fewer items in all: their settle takes about the server's start
+PRELOAD = ["floatpage.model.layout"]
+
+
+def available_cores() -> int:
+    """The cores this process may run on (a CI job's share, not the machine's count)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
+def worth_a_pool(pages: list[Page], jobs: int) -> bool:
+    """Whether ``jobs`` processes would settle ``pages`` sooner than this one alone."""
+    return (jobs > 1 and len(pages) >= MIN_PAGES
+            and sum(len(page.items) for page in pages) >= MIN_ITEMS)
+
+
+def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
+                   jobs: int) -> list[SettleReport]:
+    """Settle ``pages`` in ``jobs`` worker processes, each page's items written back as
+    ``settle_page`` writes them; one report per page, in page order.  An error a page raises
+    (a FloatpageError: the physics diverged, items piled up) is raised here, as it would be
+    in one process."""
+    context = multiprocessing.get_context("forkserver")
+    context.set_forkserver_preload(PRELOAD)
+    pool = ProcessPoolExecutor(max_workers=min(jobs, len(pages)), mp_context=context,
+                               initializer=leave_interrupts_to_the_command)
+    try:
+        settled = list(pool.map(settle_one, pages, [settings] * len(pages),
+                                [max_steps] * len(pages)))
+    except BaseException:  # an error, Ctrl+C, SIGTERM: no page more is started
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown()
+    for page, (items, _) in zip(pages, settled):
+        page.items = items
+    return [report for _, report in settled]
+
+
+def leave_interrupts_to_the_command() -> None:
+    """Ctrl+C reaches every process of the terminal's group: the command stops the pool and
+    says "interrupted"; a worker that also raised would print a traceback of its own."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def settle_one(page: Page, settings: PhysicsSettings,
+               max_steps: int) -> tuple[list[Item], SettleReport]:
+    """One page, in a worker: its settled items (the page itself stays in the worker) and
+    its report."""
+    from floatpage.model.layout import settle_page
+
+    report = settle_page(page, settings, max_steps=max_steps)
+    return page.items, report

@@ -1,0 +1,99 @@
+"""Pages settled side by side in worker processes (model.page_pool): the same bytes as one
+after another, errors and Ctrl+C reported as the command reports them.  Real processes, real
+files, a real `floatpage settle` for the interrupt."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from floatpage.model import load_project, save_project
+from floatpage.model.document import BlockItem, ItemAnchor, Page, Project, TextItem
+from floatpage.model.errors import FloatpageError
+from floatpage.model.layout import settle_project
+from floatpage.model.page_pool import MIN_ITEMS, MIN_PAGES, settle_in_pool, worth_a_pool
+
+
+def album(pages: int, photos: int, seed: int = 3) -> Project:
+    """Album pages of scattered photos, every third with a caption that follows it."""
+    rng = np.random.default_rng(seed)
+    made = []
+    for number in range(pages):
+        items = []
+        for k in range(photos):
+            w, h = (float(v) for v in rng.uniform(25, 60, 2).round(2))
+            items.append(BlockItem(id=f"p{number}-{k}", x=float(rng.uniform(20, 190)),
+                                   y=float(rng.uniform(20, 277)), w=w, h=h))
+            if k % 3 == 0:
+                items.append(TextItem(id=f"p{number}-{k}-caption", x=items[-1].x,
+                                      y=items[-1].y + h / 2 + 5, w=w, h=6.0, text="caption",
+                                      anchor=ItemAnchor(to=f"p{number}-{k}", dx=0.0,
+                                                        dy=round(h / 2 + 5.0, 2))))
+        made.append(Page(id=f"page-{number + 1}", items=items))
+    return Project(title="album", pages=made)
+
+
+def settled_bytes(tmp_path: Path, name: str, jobs: int) -> bytes:
+    """An album of small pages saved, loaded, settled with ``jobs`` worker processes (1: in
+    this process) and saved again: the file's bytes."""
+    path = tmp_path / f"{name}.toml"
+    save_project(album(4, 8), path)
+    project = load_project(path)
+    if jobs > 1:
+        settle_in_pool(project.pages, project.physics, 200_000, jobs)
+    else:
+        settle_project(project)
+    save_project(project)
+    return path.read_bytes()
+
+
+def test_pages_settled_in_worker_processes_are_the_same_bytes(tmp_path):
+    alone = settled_bytes(tmp_path, "alone", jobs=1)
+    pooled = settled_bytes(tmp_path, "pooled", jobs=2)
+    assert pooled == alone
+    assert load_project(tmp_path / "pooled.toml").pages[0].items[0].x != album(1, 8).pages[0].items[0].x
+
+
+def test_settle_project_pools_a_large_project():
+    assert worth_a_pool(album(MIN_PAGES, 25).pages, 2)
+
+
+def test_a_small_project_settles_in_the_commands_own_process():
+    small = album(MIN_PAGES - 1, 40).pages
+    assert not worth_a_pool(small, 8)  # too few pages
+    few_items = album(MIN_PAGES, 3).pages
+    assert sum(len(page.items) for page in few_items) < MIN_ITEMS
+    assert not worth_a_pool(few_items, 8)
+    assert not worth_a_pool(album(MIN_PAGES, 25).pages, 1)
+
+
+def test_an_error_on_one_page_in_a_worker_is_the_users_error():
+    project = album(3, 8)
+    project.pages[1].items = [BlockItem(id=f"b{k}", x=100.0, y=100.0, w=10.0, h=10.0)
+                              for k in range(700)]  # 244,650 pairs piled on one spot
+    with pytest.raises(FloatpageError, match='page "page-2".*piled on each other'):
+        settle_in_pool(project.pages, project.physics, 200_000, 2)
+
+
+def test_ctrl_c_stops_a_pooled_settle_with_one_message_and_the_file_untouched(tmp_path):
+    path = tmp_path / "album.toml"
+    save_project(album(120, 12), path)
+    before = path.read_bytes()
+    command = subprocess.Popen([sys.executable, "-m", "floatpage.cli.main", "settle", "-j", "2",
+                                str(path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True, start_new_session=True)
+    time.sleep(3.0)  # past the pool's start, into the pages
+    assert command.poll() is None, command.communicate()
+    os.killpg(command.pid, signal.SIGINT)  # as a terminal's Ctrl+C: the whole group
+    out, err = command.communicate(timeout=60)
+    assert command.returncode == 130, (out, err)
+    assert "interrupted" in err
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err, err
+    assert path.read_bytes() == before
