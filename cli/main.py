@@ -46,6 +46,7 @@ def cmd_new(args: argparse.Namespace) -> int:
         args.kind, Path(args.path), year=args.year,
         photos=Path(args.photos) if args.photos else None,
         first_weekday=args.first_weekday, lang=args.lang, orientation=args.orientation,
+        jobs=jobs_of(args),
     )
     items = sum(len(page.items) for page in project.pages)
     print(f"created {printable(str(project.path))}: {len(project.pages)} page(s), {items} item(s)")
@@ -274,6 +275,7 @@ def build_parser() -> argparse.ArgumentParser:
     new.add_argument("--lang", default="en", choices=CALENDAR_LANGUAGES,
                      help="language of month and day names")
     new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait")
+    jobs_option(new)
     new.set_defaults(run=cmd_new)
 
     edit = commands.add_parser("edit", help="open the editor", description="Open the terminal editor.")

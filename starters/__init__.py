@@ -52,8 +52,9 @@ def check_target(path: Path) -> Path:
 
 def create(kind: str, path: Path, *, year: int | None = None, photos: Path | None = None,
            first_weekday: str = "monday", lang: str = "en", orientation: str = "portrait",
-           settle: bool = True) -> Project:
-    """Build a starter project at `path`, settle it, save it and return it.
+           settle: bool = True, jobs: int = 1) -> Project:
+    """Build a starter project at `path`, settle it (its pages in `jobs` processes, see
+    model.page_pool), save it and return it.
 
     With `photos` the pictures in that folder are used, otherwise the bundled ones; either way
     they are copied into a `pictures/` folder beside the project, so the folder is complete.
@@ -71,6 +72,6 @@ def create(kind: str, path: Path, *, year: int | None = None, photos: Path | Non
     if settle:
         from floatpage.model.layout import settle_project  # the physics bridge; imported only when used
 
-        settle_project(project)
+        settle_project(project, jobs=jobs)
     save_project(project, path)
     return project
