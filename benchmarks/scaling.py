@@ -1,5 +1,8 @@
 """Scaling figures of issue 10: 10,000 items, 2,000 photos, a 2,000-anchor chain.
 
+The 2,000 photos come twice: on one page (a scene, below) and as a 200-page album file of
+ten photos a page, every third captioned (the command table), as a user would settle it.
+
 Each scene settles (`Engine.settle()`, the no-overlap pass included) in its own process, which
 reports its own peak memory (ru_maxrss), so each figure is that scene's alone.  Then the chain
 as a user meets it: a project file of 2,000 items anchored one to the next, and the wall time
@@ -11,6 +14,7 @@ time much less).  For the floor under render, the same commands on a file of one
 
     .venv/bin/python benchmarks/scaling.py            # every scene, each capped at 600 s
     .venv/bin/python benchmarks/scaling.py --commands [--small]   # the command table alone
+    .venv/bin/python benchmarks/scaling.py --album     # the 200-page album rows alone
 """
 
 from __future__ import annotations
@@ -75,6 +79,62 @@ def chain_project(folder: Path, count: int = 2_000) -> Path:
     return path
 
 
+def album_project(folder: Path, pages: int = 200, photos: int = 10) -> Path:
+    """A photo album as a user makes one: ``pages`` A4 pages of ``photos`` pictures each (small
+    JPEGs of six shapes, written into the folder), dropped anywhere on the page, every third
+    with a caption that follows it; not settled yet."""
+    from PIL import Image
+
+    from floatpage.model import save_project
+    from floatpage.model.document import ItemAnchor, Page, PictureItem, Project, TextItem
+
+    rng = np.random.default_rng(11)
+    (folder / "photos").mkdir()
+    made = []
+    for number in range(pages):
+        items = []
+        for k in range(photos):
+            name = f"photos/p{number:03d}-{k}.jpg"
+            aspect = float(rng.choice([1.5, 2 / 3, 1.0, 16 / 9, 9 / 16, 1.75]))
+            Image.new("RGB", (int(40 * aspect), 40), tuple(int(v) for v in rng.integers(0, 256, 3))
+                      ).save(folder / name, quality=60)
+            area = float(rng.uniform(1800, 3200))
+            w = round((area * aspect) ** 0.5, 2)
+            h = round(area / w, 2)
+            items.append(PictureItem(id=f"p{number}-{k}", x=float(rng.uniform(20, 190)),
+                                     y=float(rng.uniform(20, 277)), w=w, h=h, path=name))
+            if k % 3 == 0:
+                items.append(TextItem(id=f"p{number}-{k}-caption", x=items[-1].x,
+                                      y=items[-1].y + h / 2 + 6, w=w, h=7.0, text="A caption",
+                                      anchor=ItemAnchor(to=f"p{number}-{k}", dx=0.0,
+                                                        dy=round(h / 2 + 5.0, 2))))
+        made.append(Page(id=f"page-{number + 1}", items=items))
+    path = folder / "album.toml"
+    save_project(Project(title="album", pages=made), path)
+    return path
+
+
+def album_rows(folder: Path) -> None:
+    """`floatpage settle` of the unsettled album in one process and over every core
+    (-j default), from the same file: the wall time, and whether both wrote the same bytes.
+    The CPU column counts the command's own process and children it waited for: a worker of
+    the page pool is the child of a server process, so with more than one job it is left
+    out."""
+    import shutil
+
+    floatpage = Path(sys.executable).with_name("floatpage")
+    unsettled = album_project(folder)
+    written = []
+    for label, options in (("-j 1", ["-j", "1"]), ("default jobs", [])):
+        path = folder / f"album{len(written)}.toml"
+        shutil.copy(unsettled, path)
+        seconds, cpu, code = timed([str(floatpage), "settle", *options, str(path)])
+        written.append(path.read_bytes())
+        print(f"| 200-page album, 2,000 photos (file) | floatpage settle {label} | 30 s "
+              f"| {seconds:.1f} | {cpu:.1f} | exit {code} |", flush=True)
+    print(f"\nthe two settles wrote the same bytes: {'yes' if written[0] == written[1] else 'NO'}")
+
+
 def one_block_project(folder: Path) -> Path:
     """The floor: a project of one block on A4."""
     from floatpage.model import save_project
@@ -115,6 +175,7 @@ def command_rows(big: bool = True) -> None:
                 print(f"| {label} | floatpage {command[0]} | {goal} | {seconds:.2f} "
                       f"| {cpu:.2f} | exit {code} |", flush=True)
         if big:
+            album_rows(Path(folder))
             path = scene_project(mixed_scene(10_000, 0.3, seed=1), Path(folder) / "ten.toml")
             seconds, cpu, code = timed([str(floatpage), "settle", str(path)])
             print(f"| 10,000 items, 30 % (file) | floatpage settle | 60 s | {seconds:.1f} "
@@ -124,6 +185,11 @@ def command_rows(big: bool = True) -> None:
 def main() -> None:
     if len(sys.argv) > 2 and sys.argv[1] == "--one":
         print(json.dumps(run_scene(sys.argv[2])))
+        return
+    if len(sys.argv) > 1 and sys.argv[1] == "--album":
+        print("| file | command | goal | s | CPU s | |\n|---|---|---|---|---|---|")
+        with tempfile.TemporaryDirectory() as folder:
+            album_rows(Path(folder))
         return
     if len(sys.argv) > 1 and sys.argv[1] == "--commands":  # the command table alone
         print("| file | command | goal | s | CPU s | |\n|---|---|---|---|---|---|")
