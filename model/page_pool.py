@@ -19,8 +19,10 @@ import multiprocessing
 import os
 import signal
 from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
 
 from floatpage.model.document import Item, Page, PhysicsSettings
+from floatpage.model.errors import FloatpageError
 from floatpage.physics import SettleReport
 
 MIN_PAGES = 8  # fewer pages settle in the command's own process
@@ -48,13 +50,21 @@ def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
     ``settle_page`` writes them; one report per page, in page order.  An error a page raises
     (a FloatpageError: the physics diverged, items piled up) is raised here, as it would be
     in one process."""
-    context = multiprocessing.get_context("forkserver")
-    context.set_forkserver_preload(PRELOAD)
-    pool = ProcessPoolExecutor(max_workers=min(jobs, len(pages)), mp_context=context,
-                               initializer=leave_interrupts_to_the_command)
     try:
-        settled = list(pool.map(settle_one, pages, [settings] * len(pages),
-                                [max_steps] * len(pages)))
+        context = multiprocessing.get_context("forkserver")
+        context.set_forkserver_preload(PRELOAD)
+        pool = ProcessPoolExecutor(max_workers=min(jobs, len(pages)), mp_context=context,
+                                   initializer=leave_interrupts_to_the_command)
+        futures = [pool.submit(settle_one, page, settings, max_steps) for page in pages]
+    except (OSError, NotImplementedError, ValueError):  # no processes here (a sandbox
+        return settle_here(pages, settings, max_steps)  # without semaphores): one by one
+    try:
+        settled = [future.result() for future in futures]
+    except BrokenProcessPool:
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise FloatpageError(
+            "a process settling pages stopped without a word (out of memory?); nothing was "
+            "written. Run again with -j 1 to settle the pages one by one") from None
     except BaseException:  # an error, Ctrl+C, SIGTERM: no page more is started
         pool.shutdown(wait=False, cancel_futures=True)
         raise
@@ -62,6 +72,13 @@ def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
     for page, (items, _) in zip(pages, settled):
         page.items = items
     return [report for _, report in settled]
+
+
+def settle_here(pages: list[Page], settings: PhysicsSettings,
+                max_steps: int) -> list[SettleReport]:
+    from floatpage.model.layout import settle_page
+
+    return [settle_page(page, settings, max_steps=max_steps) for page in pages]
 
 
 def leave_interrupts_to_the_command() -> None:

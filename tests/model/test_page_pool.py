@@ -97,3 +97,21 @@ def test_ctrl_c_stops_a_pooled_settle_with_one_message_and_the_file_untouched(tm
     assert "interrupted" in err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err, err
     assert path.read_bytes() == before
+
+
+def test_where_no_worker_process_can_start_the_pages_settle_here(monkeypatch):
+    """A sandbox without POSIX semaphores refuses a process pool (OSError): the pages settle
+    one by one in this process, to the same positions, instead of failing."""
+    import floatpage.model.page_pool as page_pool
+
+    def no_processes(*args, **kwargs):
+        raise OSError(38, "Function not implemented")
+
+    expected = album(3, 8)
+    settle_project(expected)
+    project = album(3, 8)
+    monkeypatch.setattr(page_pool, "ProcessPoolExecutor", no_processes)
+    reports = settle_in_pool(project.pages, project.physics, 200_000, 2)
+    assert len(reports) == 3
+    assert [(i.x, i.y) for p in project.pages for i in p.items] == [
+        (i.x, i.y) for p in expected.pages for i in p.items]
