@@ -80,37 +80,28 @@ def chain_project(folder: Path, count: int = 2_000) -> Path:
 
 
 def album_project(folder: Path, pages: int = 200, photos: int = 10) -> Path:
-    """A photo album as a user makes one: ``pages`` A4 pages of ``photos`` pictures each (small
-    JPEGs of six shapes, written into the folder), dropped anywhere on the page, every third
-    with a caption that follows it; not settled yet."""
+    """seeded_scenes.album_pages as a file of pictures (small JPEGs of six shapes, written into
+    the folder); not settled yet."""
     from PIL import Image
 
     from floatpage.model import save_project
-    from floatpage.model.document import ItemAnchor, Page, PictureItem, Project, TextItem
+    from floatpage.model.document import PictureItem, Project
+    from seeded_scenes import album_pages
 
     rng = np.random.default_rng(11)
     (folder / "photos").mkdir()
-    made = []
-    for number in range(pages):
-        items = []
-        for k in range(photos):
-            name = f"photos/p{number:03d}-{k}.jpg"
-            aspect = float(rng.choice([1.5, 2 / 3, 1.0, 16 / 9, 9 / 16, 1.75]))
-            Image.new("RGB", (int(40 * aspect), 40), tuple(int(v) for v in rng.integers(0, 256, 3))
-                      ).save(folder / name, quality=60)
-            area = float(rng.uniform(1800, 3200))
-            w = round((area * aspect) ** 0.5, 2)
-            h = round(area / w, 2)
-            items.append(PictureItem(id=f"p{number}-{k}", x=float(rng.uniform(20, 190)),
-                                     y=float(rng.uniform(20, 277)), w=w, h=h, path=name))
-            if k % 3 == 0:
-                items.append(TextItem(id=f"p{number}-{k}-caption", x=items[-1].x,
-                                      y=items[-1].y + h / 2 + 6, w=w, h=7.0, text="A caption",
-                                      anchor=ItemAnchor(to=f"p{number}-{k}", dx=0.0,
-                                                        dy=round(h / 2 + 5.0, 2))))
-        made.append(Page(id=f"page-{number + 1}", items=items))
+
+    def picture(number: int, k: int, x: float, y: float) -> PictureItem:
+        name = f"photos/p{number:03d}-{k}.jpg"
+        aspect = float(rng.choice([1.5, 2 / 3, 1.0, 16 / 9, 9 / 16, 1.75]))
+        Image.new("RGB", (int(40 * aspect), 40), tuple(int(v) for v in rng.integers(0, 256, 3))
+                  ).save(folder / name, quality=60)
+        area = float(rng.uniform(1800, 3200))
+        w = round((area * aspect) ** 0.5, 2)
+        return PictureItem(id=f"p{number}-{k}", x=x, y=y, w=w, h=round(area / w, 2), path=name)
+
     path = folder / "album.toml"
-    save_project(Project(title="album", pages=made), path)
+    save_project(Project(title="album", pages=album_pages(pages, photos, picture, rng)), path)
     return path
 
 

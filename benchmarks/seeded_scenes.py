@@ -90,3 +90,24 @@ def load(engine, scene: Scene) -> None:
     """Insert every item of ``scene`` into ``engine`` (an Engine of the scene's page size)."""
     for item_id, (x, y), (w, h) in zip(scene.ids, scene.centres, scene.sizes):
         engine.insert(item_id, float(x), float(y), float(w), float(h))
+
+
+def album_pages(pages: int, photos: int, photo, rng: np.random.Generator) -> list:
+    """A photo album as a user starts one: ``pages`` A4 pages of ``photos`` photos dropped
+    anywhere, every third with a caption following it just below.  ``photo(page, k, x, y)``
+    makes the photo item (its id, size and kind are the caller's)."""
+    from floatpage.model.document import ItemAnchor, Page, TextItem
+
+    made = []
+    for number in range(pages):
+        items = []
+        for k in range(photos):
+            shot = photo(number, k, float(rng.uniform(20, 190)), float(rng.uniform(20, 277)))
+            items.append(shot)
+            if k % 3 == 0:
+                below = round(shot.h / 2 + 5.0, 2)
+                items.append(TextItem(id=f"{shot.id}-caption", x=shot.x, y=shot.y + below,
+                                      w=shot.w, h=6.0, text="A caption",
+                                      anchor=ItemAnchor(to=shot.id, dx=0.0, dy=below)))
+        made.append(Page(id=f"page-{number + 1}", items=items))
+    return made

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from floatpage.model import load_project, save_project
-from floatpage.model.document import BlockItem, ItemAnchor, Page, Project, TextItem
+from floatpage.model.document import BlockItem, Project
 from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import settle_project
 from floatpage.model.page_pool import MIN_ITEMS, MIN_PAGES, settle_in_pool, worth_a_pool
@@ -23,21 +23,15 @@ from floatpage.model.page_pool import MIN_ITEMS, MIN_PAGES, settle_in_pool, wort
 
 def album(pages: int, photos: int, seed: int = 3) -> Project:
     """Album pages of scattered photos, every third with a caption that follows it."""
+    from seeded_scenes import album_pages
+
     rng = np.random.default_rng(seed)
-    made = []
-    for number in range(pages):
-        items = []
-        for k in range(photos):
-            w, h = (float(v) for v in rng.uniform(25, 60, 2).round(2))
-            items.append(BlockItem(id=f"p{number}-{k}", x=float(rng.uniform(20, 190)),
-                                   y=float(rng.uniform(20, 277)), w=w, h=h))
-            if k % 3 == 0:
-                items.append(TextItem(id=f"p{number}-{k}-caption", x=items[-1].x,
-                                      y=items[-1].y + h / 2 + 5, w=w, h=6.0, text="caption",
-                                      anchor=ItemAnchor(to=f"p{number}-{k}", dx=0.0,
-                                                        dy=round(h / 2 + 5.0, 2))))
-        made.append(Page(id=f"page-{number + 1}", items=items))
-    return Project(title="album", pages=made)
+
+    def photo(number: int, k: int, x: float, y: float) -> BlockItem:
+        w, h = (float(v) for v in rng.uniform(25, 60, 2).round(2))
+        return BlockItem(id=f"p{number}-{k}", x=x, y=y, w=w, h=h)
+
+    return Project(title="album", pages=album_pages(pages, photos, photo, rng))
 
 
 def settled_bytes(tmp_path: Path, name: str, jobs: int) -> bytes:
