@@ -258,19 +258,19 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
 def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
     """Whether the page's first probe is skipped for a full run at once: free items (no point
     anchor, group or region; followers allowed) that overlap, on a page where the no-overlap
-    pass parts them (they cover at most the GUTTER_FITS_COVER of the room that rectangles pack
-    to, as geometry.grown_cover measures it without a gutter, and, with followers, no rigid
-    group is too large for its room: no binding physics.page_limits).  There the probe's
-    no-overlap pass leaves fewer overlaps than the page has (10,000 scattered items: 6,290 ->
-    127), and then its answer is known: not at rest (at rest keeps every overlap), not near
-    rest (that needs none) and not stuck (its result is sounder than the page), so the full
-    run follows, from the page as it was: skipping the probe changes no result.  On those
-    10,000 items the probe was an eighth of the settle; on an album page of photos with
-    captions that follow them, as long as the full run (a 200-page album: 46 s of CPU, about
-    half of it these probes).  Only a probe whose pass jams, leaving as many overlaps, would
-    have answered otherwise and kept the page as it was; such a page now gets the full run
-    (with its second start) instead.  A page whose overlaps may stay (held by point anchors,
-    groups or regions, a follower's group too large for its room, or too full by area) is
+    pass parts them.  For free items it is enough that they cover at most the
+    GUTTER_FITS_COVER of the room that rectangles pack to (geometry.grown_cover without a
+    gutter); with followers, also no binding physics.page_limits (a rigid group too large for
+    its room) and ``parts_some``.  There the probe's no-overlap pass leaves fewer overlaps than
+    the page has (10,000 scattered items: 6,290 -> 127), and then its answer is known: not at
+    rest (at rest keeps every overlap), not near rest (that needs none) and not stuck (its
+    result is sounder than the page), so the full run follows, from the page as it was:
+    skipping the probe changes no result.  On those 10,000 items the probe was an eighth of
+    the settle; on an album page of photos with captions that follow them it was as long as
+    the full run (a 200-page album: 46 s of CPU, half of it these probes).  Only a probe whose
+    pass jams, leaving as many overlaps, would have answered otherwise and kept the page as it
+    was; such a free page gets the full run (with its second start) instead.  A page whose
+    overlaps may stay (held by point anchors, groups or regions, or too full by area) is
     probed first, as before.  Where the test was only whether the items fit by area
     (finalize.cannot_fit), the over-full page (40 items on 90 % of A4) was laid out anew from
     its own settled file, whose overlaps no pass removes, and moved again every time."""
@@ -285,8 +285,23 @@ def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
     if grown_cover(bodies, near, far, engine.page_w_mm, engine.page_h_mm,
                    0.0) > GUTTER_FITS_COVER:
         return False
-    return not (bodies.followers.any() and binding(page_limits(
-        bodies, engine.page_w_mm, engine.page_h_mm, engine.margin_mm, 0.0)))
+    if not bodies.followers.any():
+        return True
+    if binding(page_limits(bodies, engine.page_w_mm, engine.page_h_mm, engine.margin_mm, 0.0)):
+        return False
+    return parts_some(engine)
+
+
+def parts_some(engine: Engine) -> bool:
+    """Whether the no-overlap pass, run on the page as it lies, leaves it with fewer overlaps:
+    for free items their fitting by area says so (the packing of the second start parts
+    them), but a page with followers has no second start, and a file settle wrote may keep
+    overlaps the pass cannot remove (random pages 25029 and 25045 of `anchored_pages.py
+    --kind follow`: settled again, they were laid out anew every time).  Those, like any page
+    whose pass leaves every overlap, are probed first."""
+    before = engine.quality().overlap_count
+    engine.finalize(fall_back=False, align=False)
+    return engine.quality().overlap_count < before
 
 
 def proves_stuck(first: "Probe", settings: PhysicsSettings, max_steps: int) -> bool:
