@@ -258,10 +258,10 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
 def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
     """Whether the page's first probe is skipped for a full run at once: free items (no point
     anchor, group or region; followers allowed) that overlap, on a page where the no-overlap
-    pass parts them.  For free items it is enough that they cover at most the
-    GUTTER_FITS_COVER of the room that rectangles pack to (geometry.grown_cover without a
-    gutter); with followers, also no binding physics.page_limits (a rigid group too large for
-    its room) and ``parts_some``.  There the probe's no-overlap pass leaves fewer overlaps than
+    pass parts them: they cover at most the GUTTER_FITS_COVER of the room that rectangles pack
+    to (geometry.grown_cover without a gutter), nothing rules zero overlap out (no binding
+    physics.page_limits: 3 items on A5, one 196 mm tall beside one 99 mm wide, must cross
+    whatever their area), and with followers ``parts_some``.  There the probe's no-overlap pass leaves fewer overlaps than
     the page has (10,000 scattered items: 6,290 -> 127), and then its answer is known: not at
     rest (at rest keeps every overlap), not near rest (that needs none) and not stuck (its
     result is sounder than the page), so the full run follows, from the page as it was:
@@ -285,11 +285,9 @@ def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
     if grown_cover(bodies, near, far, engine.page_w_mm, engine.page_h_mm,
                    0.0) > GUTTER_FITS_COVER:
         return False
-    if not bodies.followers.any():
-        return True
     if binding(page_limits(bodies, engine.page_w_mm, engine.page_h_mm, engine.margin_mm, 0.0)):
-        return False
-    return parts_some(engine)
+        return False  # the items themselves rule zero overlap out
+    return not bodies.followers.any() or parts_some(engine)
 
 
 def parts_some(engine: Engine) -> bool:
