@@ -333,8 +333,12 @@ class _Snapper:
         lowest, highest = self.limit_lists[axis]
         limits = [(min(lowest[row], at) - TOLERANCE_MM, max(highest[row], at) + TOLERANCE_MM)
                   for row, at in zip(rows, current)]
-        inside = [shift for shift in shifts
-                  if all(low <= at + shift <= high for at, (low, high) in zip(current, limits))]
+        if len(rows) == 1:  # most bodies: one row, no loop over members
+            (low, high), at = limits[0], current[0]
+            inside = [shift for shift in shifts if low <= at + shift <= high]
+        else:
+            inside = [shift for shift in shifts if all(
+                low <= at + shift <= high for at, (low, high) in zip(current, limits))]
         if not inside:
             return inside
         beside = centres[:, 1 - axis].tolist()
@@ -356,8 +360,10 @@ class _Snapper:
         fitting = []
         for shift in inside:
             moved = [at + shift for at in current]
-            if all(max(abs(there - moved[member]) - reach, across) >= needed
-                   for there, member, reach, across, needed in checks):
+            for there, member, reach, across, needed in checks:  # a loop: no generator's cost
+                if not max(abs(there - moved[member]) - reach, across) >= needed:
+                    break
+            else:
                 fitting.append(shift)
         return fitting
 
