@@ -236,15 +236,19 @@ class _Snapper:
         if known is not None:
             return known
         members = self.members[row]
-        lines = self.lines[axis][members]
-        gaps = self.theirs[axis][:, None] - self.paired_mine[axis][members][None]  # (n, m, 5)
-        on = (np.abs(gaps.reshape(len(gaps), -1)) <= ALIGNED_MM) @ trues(gaps[0].size)  # any
-        on &= self.active
+        if len(members) == 1:  # most groups: one row, read by plain indexing
+            features = self.lines[axis][row].tolist()
+            gaps = self.theirs[axis] - self.paired_mine[axis][row]  # (n, 5)
+        else:
+            features = self.lines[axis][members].ravel().tolist()
+            gaps = (self.theirs[axis][:, None] - self.paired_mine[axis][members][None]
+                    ).reshape(len(self.theirs[axis]), -1)  # (n, m * 5)
+        # any pairing on a line (an inactive row's are +inf: on none)
+        on = (np.abs(gaps) <= ALIGNED_MM) @ trues(gaps.shape[1])
         roots, is_mover = self.roots, self.is_mover
         line = [row] + sorted({root for root in roots[on].tolist() if is_mover[root]} - {row})
-        return self.memo.keep(("line", row), axis,
-                              float(np.minimum.reduce(lines, axis=None)) - ALIGNED_MM,
-                              float(np.maximum.reduce(lines, axis=None)) + ALIGNED_MM, line)
+        return self.memo.keep(("line", row), axis, min(features) - ALIGNED_MM,
+                              max(features) + ALIGNED_MM, line)
 
     def options(self, roots: list[int], axis: int) -> "Moves":
         """The moves along ``axis`` that would lower the near misses of the groups of
@@ -418,13 +422,15 @@ def trues(width: int) -> np.ndarray:
 def feature_table(centres: np.ndarray, halves: np.ndarray, active: np.ndarray, axis: int,
                   edges: np.ndarray, middles: np.ndarray) -> np.ndarray:
     """The snap's table of one axis (FEATURES, THEIRS_COLUMNS, MINE_COLUMNS, LOWS_COLUMN,
-    HIGHS_COLUMN), one row per item, then one per page line: an edge line paired with a
+    HIGHS_COLUMN), one row per item (an inactive one's lines at +inf, its edges out of every
+    range), then one per page line: an edge line paired with a
     body's low and high edges, a middle with its centre, +inf where a pairing does not exist
     (a distance no range holds) and always near (its low -inf, its high +inf).  A body's
     distances to the page's lines are then those to rows of the table, the same subtractions
     in the same floats as to each line."""
     lines = features(centres, halves, axis)
-    rows = np.column_stack([lines, lines[:, THEIRS], lines[:, MINE],
+    rows = np.column_stack([lines, np.where(active[:, None], lines[:, THEIRS], np.inf),
+                            lines[:, MINE],
                             np.where(active, lines[:, LOW], np.inf),
                             np.where(active, lines[:, HIGH], -np.inf)])
     page = np.full((len(edges) + len(middles), rows.shape[1]), np.nan)
