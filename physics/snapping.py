@@ -284,13 +284,12 @@ class _Snapper:
             ordered = (table[near, THEIRS_COLUMNS][None]
                        - self.paired_mine[axis][members][:, None]).ravel()
         ordered.sort()
-        shifts, missing, lined_up = candidate_shifts(ordered, self.bounds)
+        shifts, missing, lined_up, now = candidate_shifts(ordered, self.bounds)
         if len(shifts) > MAX_CANDIDATES:  # perhaps a crowded page: the nearest lines only
             shifts = sorted_unique(shifts)
             if len(shifts) > MAX_CANDIDATES:
                 shifts = shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]]
         scores = misses_after(ordered, shifts)
-        now = int(scores[0] if shifts[0] == 0 else scores[shifts.searchsorted(0.0)])
         if scores[scores.argmin()] < now:  # most calls find no better move
             better = (scores < now).nonzero()[0]
             found = Moves(roots, members, *best_first(shifts[better], scores[better], now),
@@ -473,14 +472,16 @@ def first_where(holds, guess: float) -> float:
     return d
 
 
-def candidate_shifts(ordered: np.ndarray, bounds: np.ndarray) -> tuple[np.ndarray, bool, bool]:
+def candidate_shifts(ordered: np.ndarray,
+                     bounds: np.ndarray) -> tuple[np.ndarray, bool, bool, int]:
     """Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
     within reach, or put it just out of a near miss with one (``ESCAPE_MM``) within
     ``farthest``; with 0 (staying) first.  The way out of a near miss may be long: two items
     of nearly the same width cannot line up both edges and centre, and one 1 mm from the
     other stays in near misses until it has moved 4-5 mm.  Also whether a feature misses a
     line now (a distance between ``ALIGNED_MM`` and ``NEAR_MM``), and whether one is on a
-    line (a distance within ``ALIGNED_MM``).  Each range of distances (``bounds``, from
+    line (a distance within ``ALIGNED_MM``), and the score of staying (as misses_after
+    gives it).  Each range of distances (``bounds``, from
     distance_bounds, with the reach and the farthest move there) is a slice of the sorted
     ones, so the escape moves need no test of their length."""
     found = ordered.searchsorted(bounds).tolist()
@@ -492,7 +493,9 @@ def candidate_shifts(ordered: np.ndarray, bounds: np.ndarray) -> tuple[np.ndarra
     shifts = np.concatenate((STAY, ordered[low[0]:high[0]], down - ESCAPE_MM, up + ESCAPE_MM))
     missing = low[2] > high[2] or low[3] > high[3]
     lined_up = high[3] > low[2]  # -ALIGNED_MM <= distance <= ALIGNED_MM
-    return shifts, bool(missing), bool(lined_up)
+    # staying's score (misses_after of 0): its four ends are among the ranges' ends
+    now = 2 * low[3] + 3 * low[2] - 2 * high[2] - 3 * high[3]
+    return shifts, bool(missing), bool(lined_up), now
 
 
 def misses_after(ordered: np.ndarray, shifts: np.ndarray) -> np.ndarray:
