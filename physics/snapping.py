@@ -138,24 +138,25 @@ class _Snapper:
         self.limit_lists = [(self.lowest[:, axis].tolist(), self.highest[:, axis].tolist())
                             for axis in (0, 1)]
         # per group and axis: too large to fit between its margins (it has no move to make)
-        too_large = self.lowest > self.highest
-        self.too_large = {row: too_large[members].any(axis=0)
-                          for row, members in self.members.items()}
+        too_large, bleed = (self.lowest > self.highest).tolist(), bodies.bleed.tolist()
+        member_lists = {row: members.tolist() for row, members in self.members.items()}
+        self.too_large = {row: [any(too_large[member][axis] for member in members)
+                                for axis in (0, 1)] for row, members in member_lists.items()}
         is_mover = np.zeros(bodies.count, dtype=bool)
         is_mover[self.movers] = True
         self.is_mover = is_mover.tolist()
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
-        self.bleeds = {row: bool(bodies.bleed[members].any())
-                       for row, members in self.members.items()}
-        lines = {bleed: [page_lines(*page, 0.0 if bleed else margin_mm, axis, bodies.regions)
-                         for axis in (0, 1)] for bleed in (False, True)}
+        self.bleeds = {row: any(bleed[member] for member in members)
+                       for row, members in member_lists.items()}
+        kinds = sorted(set(self.bleeds.values())) or [False]
+        lines = {kind: [page_lines(*page, 0.0 if kind else margin_mm, axis, bodies.regions)
+                        for axis in (0, 1)] for kind in kinds}
         # Per axis, one table holds every row's features and what options, line_of, near and
         # neighbours read of them (COLUMNS), so that a move updates it in one operation; below
         # the rows, the page's own lines as rows of their own (page_rows), always near, so that
         # a body's distances to its neighbours' lines and to the page's are one gather.  One
         # table per kind of page lines a mover needs ([bleed]), all kept in step.
-        kinds = sorted(set(self.bleeds.values())) or [False]
         tables = {bleed: [feature_table(bodies.centres, self.halves, self.active, axis,
                                         *lines[bleed][axis]) for axis in (0, 1)]
                   for bleed in kinds}
