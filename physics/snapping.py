@@ -193,12 +193,13 @@ class _Snapper:
         if not moved:
             return np.zeros(0, dtype=int)
         lines = self.lines[axis]
-        touched = np.zeros(self.bodies.count, dtype=bool)
-        for row in moved:
-            for spot in (self.moved_from[row], self.mine(row, axis)):
-                low = float(np.minimum.reduce(spot)) - self.window
-                high = float(np.maximum.reduce(spot)) + self.window
-                touched |= (lines[:, LOW] < high) & (lines[:, HIGH] > low)
+        spots = [spot.tolist() for row in moved
+                 for spot in (self.moved_from[row], self.mine(row, axis))]
+        lows = np.array([min(spot) - self.window for spot in spots])
+        highs = np.array([max(spot) + self.window for spot in spots])
+        # every spot at once (a row is touched if it reaches into any): (n, spots) @ Trues
+        touched = ((lines[:, LOW, None] < highs) & (lines[:, HIGH, None] > lows)) @ trues(
+            len(spots))
         touched = touched[self.roots] | touched  # and the groups of those rows
         return self.movers[touched[self.movers]]
 
