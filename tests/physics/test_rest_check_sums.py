@@ -5,7 +5,6 @@ same numbers bit for bit, or a snap would take other moves than the physics it c
 
 from __future__ import annotations
 
-
 import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
