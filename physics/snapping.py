@@ -466,6 +466,8 @@ def first_where(holds, guess: float) -> float:
     """The least float d for which ``holds(d)``, a test that holds from some float on (a
     comparison of a rounded sum that grows with d), searched a few floats either side of
     ``guess``: the exact end of a range the rounding of the sum blurs."""
+    if not math.isfinite(guess):  # no page makes one, but never loop on an infinity
+        return guess
     d = guess
     while holds(d):
         d = math.nextafter(d, -math.inf)
