@@ -25,12 +25,11 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import (
-    RADIAL_SHARE, blocked_axes, candidate_pairs, touching_pushes, wall_pushes_in, wall_rest_box,
+    RADIAL_SHARE, blocked_axes, candidate_pairs, pair_push, wall_rest_box,
 )
 from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
-from floatpage.physics.geometry import pair_sums, xy_slots
 from floatpage.physics.guides import ON_LINE_MM
 from floatpage.physics.stillness import PROBE_HEAT
 
@@ -90,23 +89,54 @@ class RestCheck:
         self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
         self.group_rows = group_members(roots, active)
         self.grouped = bool((roots != np.arange(count)).any())
-        self.reach_of: dict[bytes, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        # what the force sum (net) reads, as Python lists: per pair, its ends, its reach, its
+        # blocked axes and its ends' shares; per row, its rest box and its anchor spring
+        reach_x, reach_y = self.reach.T.tolist()
+        blocked_x, blocked_y = self.blocked.T.tolist() if len(i) else ([], [])
+        self.pair_lists = (i.tolist(), j.tolist(), reach_x, reach_y, blocked_x, blocked_y,
+                           self.share_i.tolist(), self.share_j.tolist())
+        self.row_lists = (self.rest_low[:, 0].tolist(), self.rest_low[:, 1].tolist(),
+                          self.rest_high[:, 0].tolist(), self.rest_high[:, 1].tolist(),
+                          self.anchor_k.tolist(), self.anchors[:, 0].tolist(),
+                          self.anchors[:, 1].tolist())
+        self.reach_of: dict[bytes, tuple[np.ndarray, list[int], list[int]]] = {}
         self.before: dict[bytes, tuple[np.ndarray | None, np.ndarray]] = {}
 
-    def net(self, rows: np.ndarray, pairs: np.ndarray, centres: np.ndarray) -> np.ndarray:
-        """Net acceleration (n, 2), right for ``rows`` (``pairs`` must hold every pair that
-        touches them), with the items at ``centres``."""
-        i, j = self.i[pairs], self.j[pairs]
-        touching, pushes = touching_pushes(centres, self.reach[pairs], i, j,
-                                           self.blocked[pairs], PROBE_RADIAL)
-        pushes *= K_CONTACT
-        pairs, i, j = pairs[touching], i[touching], j[touching]
-        acc = pair_sums(self.bodies.count, xy_slots(i), xy_slots(j),
-                        pushes * self.share_i[pairs][:, None], pushes * self.share_j[pairs][:, None])
-        acc[rows] += K_WALL * wall_pushes_in(centres[rows], self.rest_low[rows],
-                                             self.rest_high[rows])
-        acc[rows] += self.anchor_k[rows, None] * (self.anchors[rows] - centres[rows])
-        return acc
+    def net(self, rows: list[int], pairs: list[int], xs: list[float],
+            ys: list[float]) -> list[tuple[float, float]]:
+        """Net acceleration of each of ``rows`` (``pairs`` must hold every pair that touches
+        them), with the items' centres at ``xs, ys``.  The fast mode's sums (ContactPushes,
+        WallPushes, AnchorPulls at the probe's heat: pair_sums adds a row's pushes pair by
+        pair, as j and as i apart), worked in Python floats on the few pairs of one move
+        (fast_forces.pair_push): the same numbers bit for bit, for a tenth of the NumPy calls."""
+        ends_i, ends_j, reach_x, reach_y, blocked_x, blocked_y, share_i, share_j = \
+            self.pair_lists
+        as_j: dict[int, list[float]] = {}
+        as_i: dict[int, list[float]] = {}
+        for pair in pairs:
+            i, j = ends_i[pair], ends_j[pair]
+            push = pair_push(xs[j] - xs[i], ys[j] - ys[i], reach_x[pair], reach_y[pair],
+                             blocked_x[pair], blocked_y[pair], PROBE_RADIAL)
+            if push is None:
+                continue
+            push_x, push_y = push[0] * K_CONTACT, push[1] * K_CONTACT
+            for row, share, sums in ((j, share_j[pair], as_j), (i, share_i[pair], as_i)):
+                summed = sums.get(row)
+                if summed is None:
+                    summed = sums[row] = [0.0, 0.0]
+                summed[0] += push_x * share
+                summed[1] += push_y * share
+        low_x, low_y, high_x, high_y, anchor_k, anchor_x, anchor_y = self.row_lists
+        nothing = (0.0, 0.0)
+        found = []
+        for row in rows:
+            on_j, on_i = as_j.get(row, nothing), as_i.get(row, nothing)
+            x, y = xs[row], ys[row]
+            acc_x = on_j[0] - on_i[0] + K_WALL * (min(max(x, low_x[row]), high_x[row]) - x)
+            acc_y = on_j[1] - on_i[1] + K_WALL * (min(max(y, low_y[row]), high_y[row]) - y)
+            k = anchor_k[row]
+            found.append((acc_x + k * (anchor_x[row] - x), acc_y + k * (anchor_y[row] - y)))
+        return found
 
     def keeps_rest(self, members: np.ndarray, axis: int, shift: float) -> bool:
         """Whether moving the rigid body ``members`` by ``shift`` along ``axis`` leaves it and
@@ -119,21 +149,25 @@ class RestCheck:
         if len(groups) == 0:
             return True
         centres = self.bodies.centres
-        trial = centres.copy()
-        trial[members, axis] += shift
-        after_net = self.group_net(rows, pairs, trial, groups)
-        if np.abs(after_net).max() <= self.limit + 1e-9:
+        along, across = centres[:, axis].tolist(), centres[:, 1 - axis].tolist()
+        for row in members.tolist():
+            along[row] += shift
+        after_net = self.group_net(rows, pairs, *((along, across) if axis == 0
+                                                  else (across, along)), groups)
+        if np.maximum.reduce(np.abs(after_net), axis=None) <= self.limit + 1e-9:
             return True  # within the limit with no hold at all: which lines hold is moot
         held_before, before = self.as_it_is(members.tobytes(), groups, rows, pairs)
         held_after = None
         if self.hold > 0:
             # the move changes no feature across its axis: only ``axis`` is found again
+            trial = centres.copy()
+            trial[members, axis] += shift
             held_after = held_before.copy()
             held_after[:, axis] = self.on_lines(groups, trial, (axis,))[:, 0]
         after = self.unheld(after_net, held_after)
         return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
 
-    def reached_by(self, members: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def reached_by(self, members: np.ndarray) -> tuple[np.ndarray, list[int], list[int]]:
         """The movable groups that the rigid body ``members`` touches (itself among them), their
         rows and every pair that touches those: fixed by the pairs found at the start, so
         worked out once per body."""
@@ -147,18 +181,18 @@ class RestCheck:
             rows = np.concatenate([self.group_rows[g] for g in groups]) if len(groups) else groups
             pairs = (sorted_unique(np.concatenate([self.pairs_of[r] for r in rows]))
                      if len(groups) else groups)
-            found = self.reach_of[key] = (groups, rows, pairs)
+            found = self.reach_of[key] = (groups, rows.tolist(), pairs.tolist())
         return found
 
-    def as_it_is(self, key: bytes, groups: np.ndarray, rows: np.ndarray,
-                 pairs: np.ndarray) -> tuple[np.ndarray | None, np.ndarray]:
+    def as_it_is(self, key: bytes, groups: np.ndarray, rows: list[int],
+                 pairs: list[int]) -> tuple[np.ndarray | None, np.ndarray]:
         """For the groups a body touches, with the page as it is: whether a line holds each on
         each axis (None without a hold) and the push the hold leaves.  The same until an item
         moves (``moved``), so a body whose moves fail one after the other works it out once."""
         found = self.before.get(key)
         if found is None:
             held = self.on_lines(groups, self.bodies.centres, (0, 1)) if self.hold > 0 else None
-            net = self.group_net(rows, pairs, self.bodies.centres, groups)
+            net = self.group_net(rows, pairs, *self.bodies.centres.T.tolist(), groups)
             found = self.before[key] = (held, self.unheld(net, held))
         return found
 
@@ -170,9 +204,9 @@ class RestCheck:
         """Each group's largest push the lines' hold leaves where ``held`` (on a line, per
         group and axis), (len(groups),)."""
         size = np.abs(acc)
-        if held is None:
-            return size.max(axis=1)
-        return np.where(held, np.maximum(size - self.hold, 0.0), size).max(axis=1)
+        if held is not None:
+            size = np.where(held, np.maximum(size - self.hold, 0.0), size)
+        return np.maximum(size[:, 0], size[:, 1])  # a reduction's set-up costs more
 
     def on_lines(self, groups: np.ndarray, centres: np.ndarray,
                  axes: tuple[int, ...]) -> np.ndarray:
@@ -203,10 +237,10 @@ class RestCheck:
             held[:, column] = np.bincount(owner, on_edge | on_middle, len(groups)) > 0
         return held
 
-    def group_net(self, rows: np.ndarray, pairs: np.ndarray, centres: np.ndarray,
+    def group_net(self, rows: list[int], pairs: list[int], xs: list[float], ys: list[float],
                   groups: np.ndarray) -> np.ndarray:
         """Each group's net acceleration, (len(groups), 2)."""
-        per_row = self.net(rows, pairs, centres)[rows]
+        per_row = np.array(self.net(rows, pairs, xs, ys))
         if not self.grouped:  # every group one row: its own
             return per_row
         summed = np.zeros((self.bodies.count, 2))

@@ -30,6 +30,7 @@ way first and the step does not run.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -66,6 +67,10 @@ SCORE_WEIGHTS = np.array([2, 3, -2, -3])
 # edges, their centre with its centre
 THEIRS = np.array([LOW, HIGH, LOW, HIGH, CENTRE])
 MINE = np.array([LOW, LOW, HIGH, HIGH, CENTRE])
+# the columns of _Snapper's table per axis (feature_table): a row's features, them paired as
+# THEIRS and as MINE, its low and high edge (an inactive row's out of every range)
+FEATURES, THEIRS_COLUMNS, MINE_COLUMNS = slice(0, 3), slice(3, 8), slice(8, 13)
+LOWS_COLUMN, HIGHS_COLUMN = 13, 14
 
 
 def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params) -> int:
@@ -133,28 +138,36 @@ class _Snapper:
         self.limit_lists = [(self.lowest[:, axis].tolist(), self.highest[:, axis].tolist())
                             for axis in (0, 1)]
         # per group and axis: too large to fit between its margins (it has no move to make)
-        too_large = self.lowest > self.highest
-        self.too_large = {row: too_large[members].any(axis=0)
-                          for row, members in self.members.items()}
+        too_large, bleed = (self.lowest > self.highest).tolist(), bodies.bleed.tolist()
+        member_lists = {row: members.tolist() for row, members in self.members.items()}
+        self.too_large = {row: [any(too_large[member][axis] for member in members)
+                                for axis in (0, 1)] for row, members in member_lists.items()}
         is_mover = np.zeros(bodies.count, dtype=bool)
         is_mover[self.movers] = True
         self.is_mover = is_mover.tolist()
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
-        self.bleeds = {row: bool(bodies.bleed[members].any())
-                       for row, members in self.members.items()}
-        lines = {bleed: [page_lines(*page, 0.0 if bleed else margin_mm, axis, bodies.regions)
-                         for axis in (0, 1)] for bleed in (False, True)}
-        # [bleed][axis]: the page's lines and which of a body's features each is paired with
-        self.page_paired = {bleed: [paired_page_lines(*per_axis) for per_axis in lines[bleed]]
-                            for bleed in lines}
-        self.lines = [features(bodies.centres, self.halves, axis) for axis in (0, 1)]
-        # the same features, paired for options and line_of (THEIRS, MINE), and the edges
-        # alone with an inactive row's out of every range: kept in step with ``lines``
-        self.theirs = [lines[:, THEIRS] for lines in self.lines]
-        self.paired_mine = [lines[:, MINE] for lines in self.lines]
-        self.lows = [np.where(self.active, lines[:, LOW], np.inf) for lines in self.lines]
-        self.highs = [np.where(self.active, lines[:, HIGH], -np.inf) for lines in self.lines]
+        self.bleeds = {row: any(bleed[member] for member in members)
+                       for row, members in member_lists.items()}
+        kinds = sorted(set(self.bleeds.values())) or [False]
+        lines = {kind: [page_lines(*page, 0.0 if kind else margin_mm, axis, bodies.regions)
+                        for axis in (0, 1)] for kind in kinds}
+        # Per axis, one table holds every row's features and what options, line_of, near and
+        # neighbours read of them (COLUMNS), so that a move updates it in one operation; below
+        # the rows, the page's own lines as rows of their own (page_rows), always near, so that
+        # a body's distances to its neighbours' lines and to the page's are one gather.  One
+        # table per kind of page lines a mover needs ([bleed]), all kept in step.
+        tables = {bleed: [feature_table(bodies.centres, self.halves, self.active, axis,
+                                        *lines[bleed][axis]) for axis in (0, 1)]
+                  for bleed in kinds}
+        self.tables = tables  # [bleed][axis]: (rows + page lines, COLUMNS)
+        kept = tables[kinds[0]]
+        count = bodies.count
+        self.lines = [table[:count, FEATURES] for table in kept]
+        self.theirs = [table[:count, THEIRS_COLUMNS] for table in kept]
+        self.paired_mine = [table[:count, MINE_COLUMNS] for table in kept]
+        self.lows = [table[:count, LOWS_COLUMN] for table in kept]
+        self.highs = [table[:count, HIGHS_COLUMN] for table in kept]
         self.moved_from: dict[int, np.ndarray] = {}
         # Lines (roots, axis) whose move as one failed since the last move on the page: each of
         # their groups would try the same move of the same line again, to the same end.
@@ -165,11 +178,13 @@ class _Snapper:
         """The group's features on ``axis`` (low edge, centre, high edge per member)."""
         return self.lines[axis][self.members[row]].ravel()
 
-    def near_lines(self, axis: int, low: float, high: float) -> np.ndarray:
-        """Which active rows reach into ``(low, high)`` on ``axis`` (a new mask): their lines
-        are the ones near a body whose features lie a window inside it."""
-        near = self.lows[axis] < high
-        near &= self.highs[axis] > low
+    @staticmethod
+    def near_lines(table: np.ndarray, low: float, high: float) -> np.ndarray:
+        """Which rows of ``table`` (an axis's, with the page's lines) reach into ``(low,
+        high)`` (a new mask): the active rows whose lines are the ones near a body whose
+        features lie a window inside it, and the page's lines (always)."""
+        near = table[:, LOWS_COLUMN] < high
+        near &= table[:, HIGHS_COLUMN] > low
         return near
 
     def near(self, moved: list[int], axis: int) -> np.ndarray:
@@ -178,12 +193,14 @@ class _Snapper:
         if not moved:
             return np.zeros(0, dtype=int)
         lines = self.lines[axis]
-        touched = np.zeros(self.bodies.count, dtype=bool)
-        for row in moved:
-            for spot in (self.moved_from[row], self.mine(row, axis)):
-                low, high = spot.min() - self.window, spot.max() + self.window
-                touched |= (lines[:, LOW] < high) & (lines[:, HIGH] > low)
-        touched = np.isin(self.roots, np.flatnonzero(touched)) | touched
+        spots = [spot.tolist() for row in moved
+                 for spot in (self.moved_from[row], self.mine(row, axis))]
+        lows = np.array([min(spot) - self.window for spot in spots])
+        highs = np.array([max(spot) + self.window for spot in spots])
+        # every spot at once (a row is touched if it reaches into any): (n, spots) @ Trues
+        touched = ((lines[:, LOW, None] < highs) & (lines[:, HIGH, None] > lows)) @ trues(
+            len(spots))
+        touched = touched[self.roots] | touched  # and the groups of those rows
         return self.movers[touched[self.movers]]
 
     def improve(self, row: int, axis: int) -> list[int]:
@@ -221,14 +238,19 @@ class _Snapper:
         if known is not None:
             return known
         members = self.members[row]
-        lines = self.lines[axis][members]
-        gaps = self.theirs[axis][:, None] - self.paired_mine[axis][members][None]  # (n, m, 5)
-        on = (np.abs(gaps.reshape(len(gaps), -1)) <= ALIGNED_MM).any(axis=1)
-        on &= self.active
+        if len(members) == 1:  # most groups: one row, read by plain indexing
+            features = self.lines[axis][row].tolist()
+            gaps = self.theirs[axis] - self.paired_mine[axis][row]  # (n, 5)
+        else:
+            features = self.lines[axis][members].ravel().tolist()
+            gaps = (self.theirs[axis][:, None] - self.paired_mine[axis][members][None]
+                    ).reshape(len(self.theirs[axis]), -1)  # (n, m * 5)
+        # any pairing on a line (an inactive row's are +inf: on none)
+        on = (np.abs(gaps) <= ALIGNED_MM) @ trues(gaps.shape[1])
         roots, is_mover = self.roots, self.is_mover
         line = [row] + sorted({root for root in roots[on].tolist() if is_mover[root]} - {row})
-        return self.memo.keep(("line", row), axis, float(lines.min()) - ALIGNED_MM,
-                              float(lines.max()) + ALIGNED_MM, line)
+        return self.memo.keep(("line", row), axis, min(features) - ALIGNED_MM,
+                              max(features) + ALIGNED_MM, line)
 
     def options(self, roots: list[int], axis: int) -> "Moves":
         """The moves along ``axis`` that would lower the near misses of the groups of
@@ -247,35 +269,31 @@ class _Snapper:
         if known is not None:  # the same groups, perhaps named in another order
             return known if known.roots == roots else known._replace(roots=roots, members=members)
         lines = self.lines[axis]
-        page, paired = self.page_paired[all(self.bleeds[root] for root in roots)][axis]
+        table = self.tables[all(self.bleeds[root] for root in roots)][axis]
         if len(members) == 1:  # most calls: one row, read by plain indexing
             row = members[0]
-            mine = lines[row]
-            low_edge, _, high_edge = mine.tolist()
+            low_edge, _, high_edge = lines[row].tolist()
             low, high = low_edge - self.window, high_edge + self.window
-            near = self.near_lines(axis, low, high)
+            near = self.near_lines(table, low, high)
             near[row] = False
-            ordered = np.concatenate(((self.theirs[axis][near] - self.paired_mine[axis][row])
-                                      .ravel(), page - mine[paired]))
+            ordered = (table[near, THEIRS_COLUMNS] - self.paired_mine[axis][row]).ravel()
         else:
             mine = lines[members]
-            low = float(mine[:, LOW].min()) - self.window
-            high = float(mine[:, HIGH].max()) + self.window
-            near = self.near_lines(axis, low, high)
+            low = float(np.minimum.reduce(mine[:, LOW])) - self.window
+            high = float(np.maximum.reduce(mine[:, HIGH])) + self.window
+            near = self.near_lines(table, low, high)
             near[members] = False
-            ordered = np.concatenate((
-                (self.theirs[axis][near][None] - self.paired_mine[axis][members][:, None]).ravel(),
-                (page - mine[:, paired]).ravel()))
+            ordered = (table[near, THEIRS_COLUMNS][None]
+                       - self.paired_mine[axis][members][:, None]).ravel()
         ordered.sort()
-        shifts, missing, lined_up = candidate_shifts(ordered, self.bounds, self.farthest)
+        shifts, missing, lined_up, now = candidate_shifts(ordered, self.bounds)
         if len(shifts) > MAX_CANDIDATES:  # perhaps a crowded page: the nearest lines only
             shifts = sorted_unique(shifts)
             if len(shifts) > MAX_CANDIDATES:
                 shifts = shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]]
         scores = misses_after(ordered, shifts)
-        now = int(scores[0] if shifts[0] == 0 else scores[shifts.searchsorted(0.0)])
-        better = (scores < now).nonzero()[0]
-        if len(better):  # most calls have none
+        if scores[scores.argmin()] < now:  # most calls find no better move
+            better = (scores < now).nonzero()[0]
             found = Moves(roots, members, *best_first(shifts[better], scores[better], now),
                           missing, lined_up)
         else:
@@ -294,8 +312,8 @@ class _Snapper:
                     self.moved_from[root] = self.mine(root, axis)
                 before = self.lines[axis][members]
                 self.bodies.centres[members, axis] += shift
-                for kept in (self.lines, self.theirs, self.paired_mine, self.lows, self.highs):
-                    kept[axis][members] += shift
+                for tables in self.tables.values():
+                    tables[axis][members] += shift
                 self.memo.moved(axis, before, self.lines[axis][members])
                 if self.rest is not None:
                     self.rest.moved()
@@ -320,8 +338,12 @@ class _Snapper:
         lowest, highest = self.limit_lists[axis]
         limits = [(min(lowest[row], at) - TOLERANCE_MM, max(highest[row], at) + TOLERANCE_MM)
                   for row, at in zip(rows, current)]
-        inside = [shift for shift in shifts
-                  if all(low <= at + shift <= high for at, (low, high) in zip(current, limits))]
+        if len(rows) == 1:  # most bodies: one row, no loop over members
+            (low, high), at = limits[0], current[0]
+            inside = [shift for shift in shifts if low <= at + shift <= high]
+        else:
+            inside = [shift for shift in shifts if all(
+                low <= at + shift <= high for at, (low, high) in zip(current, limits))]
         if not inside:
             return inside
         beside = centres[:, 1 - axis].tolist()
@@ -343,8 +365,10 @@ class _Snapper:
         fitting = []
         for shift in inside:
             moved = [at + shift for at in current]
-            if all(max(abs(there - moved[member]) - reach, across) >= needed
-                   for there, member, reach, across, needed in checks):
+            for there, member, reach, across, needed in checks:  # a loop: no generator's cost
+                if not max(abs(there - moved[member]) - reach, across) >= needed:
+                    break
+            else:
                 fitting.append(shift)
         return fitting
 
@@ -360,8 +384,10 @@ class _Snapper:
                 self.lines[1 - axis][members[0]].tolist(), self.lines[axis][members[0]].tolist())
         else:
             across, along = self.lines[1 - axis][members], self.lines[axis][members]
-            low_across, high_across = float(across[:, LOW].min()), float(across[:, HIGH].max())
-            low, high = float(along[:, LOW].min()), float(along[:, HIGH].max())
+            low_across = float(np.minimum.reduce(across[:, LOW]))
+            high_across = float(np.maximum.reduce(across[:, HIGH]))
+            low = float(np.minimum.reduce(along[:, LOW]))
+            high = float(np.maximum.reduce(along[:, HIGH]))
         lows, highs = self.lows, self.highs  # an inactive row's are out of every range
         near = lows[1 - axis] < high_across + spare
         near &= highs[1 - axis] > low_across - spare
@@ -382,12 +408,40 @@ class Moves(NamedTuple):
     lined_up: bool  # whether they are on a line now (within ALIGNED_MM)
 
 
-def paired_page_lines(edges: np.ndarray, middles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The page's lines on one axis as options pairs them with a body's features: each edge
-    line once for its low edges and once for its high edges, each middle for its centres;
-    (lines, the feature of the body each is paired with)."""
-    return (np.concatenate([edges, edges, middles]),
-            np.repeat([LOW, HIGH, CENTRE], [len(edges), len(edges), len(middles)]))
+_TRUES: dict[int, np.ndarray] = {}
+
+
+def trues(width: int) -> np.ndarray:
+    """A kept vector of ``width`` Trues: a boolean (k, width) table @ it is each row's any(),
+    in one call without the set-up of a NumPy reduction (about twice its cost here)."""
+    found = _TRUES.get(width)
+    if found is None:
+        found = _TRUES[width] = np.ones(width, dtype=bool)
+    return found
+
+
+def feature_table(centres: np.ndarray, halves: np.ndarray, active: np.ndarray, axis: int,
+                  edges: np.ndarray, middles: np.ndarray) -> np.ndarray:
+    """The snap's table of one axis (FEATURES, THEIRS_COLUMNS, MINE_COLUMNS, LOWS_COLUMN,
+    HIGHS_COLUMN), one row per item (an inactive one's lines at +inf, its edges out of every
+    range), then one per page line: an edge line paired with a
+    body's low and high edges, a middle with its centre, +inf where a pairing does not exist
+    (a distance no range holds) and always near (its low -inf, its high +inf).  A body's
+    distances to the page's lines are then those to rows of the table, the same subtractions
+    in the same floats as to each line."""
+    lines = features(centres, halves, axis)
+    rows = np.column_stack([lines, np.where(active[:, None], lines[:, THEIRS], np.inf),
+                            lines[:, MINE],
+                            np.where(active, lines[:, LOW], np.inf),
+                            np.where(active, lines[:, HIGH], -np.inf)])
+    page = np.full((len(edges) + len(middles), rows.shape[1]), np.nan)
+    theirs = page[:, THEIRS_COLUMNS]
+    theirs[:] = np.inf
+    for column in np.flatnonzero(THEIRS == LOW):  # their low edge: paired with my low, high
+        theirs[:len(edges), column] = edges
+    theirs[len(edges):, THEIRS == CENTRE] = middles[:, None]
+    page[:, LOWS_COLUMN], page[:, HIGHS_COLUMN] = -np.inf, np.inf
+    return np.concatenate([rows, page])
 
 
 def distance_bounds(reach: float, farthest: float) -> np.ndarray:
@@ -395,30 +449,57 @@ def distance_bounds(reach: float, farthest: float) -> np.ndarray:
     np.searchsorted from the left: four lower ends (|distance| <= ``reach``, |distance| <
     ``farthest`` + ``ESCAPE_MM``, -``NEAR_MM`` < distance < -``ALIGNED_MM``, ``ALIGNED_MM`` <
     distance < ``NEAR_MM``), then their four upper ends, each found from the right: "d <= x"
-    is "d < the next float after x"."""
+    is "d < the next float after x"; then the ends of the distances whose escape moves,
+    d - ``ESCAPE_MM`` and d + ``ESCAPE_MM`` as floats, are at most ``farthest`` long: the
+    first distance at which each comes within it and the first at which it is past it."""
     escape = farthest + ESCAPE_MM
+    escapes = [first_where(lambda d, way=way: way(d) >= -farthest, -farthest - way(0.0))
+               if end == 0 else
+               first_where(lambda d, way=way: way(d) > farthest, farthest - way(0.0))
+               for way in (lambda d: d - ESCAPE_MM, lambda d: d + ESCAPE_MM) for end in (0, 1)]
     return np.concatenate([[-reach, escape, -ALIGNED_MM, NEAR_MM],
-                           np.nextafter([reach, -escape, -NEAR_MM, ALIGNED_MM], np.inf)])
+                           np.nextafter([reach, -escape, -NEAR_MM, ALIGNED_MM], np.inf),
+                           escapes])
 
 
-def candidate_shifts(ordered: np.ndarray, bounds: np.ndarray, farthest: float) -> tuple[np.ndarray, bool, bool]:
+def first_where(holds, guess: float) -> float:
+    """The least float d for which ``holds(d)``, a test that holds from some float on (a
+    comparison of a rounded sum that grows with d), searched a few floats either side of
+    ``guess``: the exact end of a range the rounding of the sum blurs."""
+    if not math.isfinite(guess):  # no page makes one, but never loop on an infinity
+        return guess
+    d = guess
+    while holds(d):
+        d = math.nextafter(d, -math.inf)
+    while not holds(d):
+        d = math.nextafter(d, math.inf)
+    return d
+
+
+def candidate_shifts(ordered: np.ndarray,
+                     bounds: np.ndarray) -> tuple[np.ndarray, bool, bool, int]:
     """Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
     within reach, or put it just out of a near miss with one (``ESCAPE_MM``) within
-    ``farthest``; sorted, with 0 (staying) among them.  The way out of a near miss may be
-    long: two items of nearly the same width cannot line up both edges and centre, and one
-    1 mm from the other stays in near misses until it has moved 4-5 mm.  Also whether a
-    feature misses a line now (a distance between ``ALIGNED_MM`` and ``NEAR_MM``), and
-    whether one is on a line (a distance within ``ALIGNED_MM``).  Each range of distances
-    (``bounds``, from distance_bounds) is a slice of the sorted ones."""
+    ``farthest``; with 0 (staying) first.  The way out of a near miss may be long: two items
+    of nearly the same width cannot line up both edges and centre, and one 1 mm from the
+    other stays in near misses until it has moved 4-5 mm.  Also whether a feature misses a
+    line now (a distance between ``ALIGNED_MM`` and ``NEAR_MM``), and whether one is on a
+    line (a distance within ``ALIGNED_MM``), and the score of staying (as misses_after
+    gives it).  Each range of distances (``bounds``, from
+    distance_bounds, with the reach and the farthest move there) is a slice of the sorted
+    ones, so the escape moves need no test of their length."""
     found = ordered.searchsorted(bounds).tolist()
-    low, high = found[:4], found[4:]
-    near = ordered[high[1]:low[1]]  # |distance| < farthest + ESCAPE_MM
+    low, high = found[:4], found[4:8]
+    # |distance| < farthest + ESCAPE_MM, and of those, the ones whose escape stays in reach
+    down = ordered[max(high[1], found[8]):min(low[1], found[9])]
+    up = ordered[max(high[1], found[10]):min(low[1], found[11])]
     # |distance| <= reach (reach < farthest), just out of reach of those within farthest, 0
-    shifts = np.concatenate((STAY, ordered[low[0]:high[0]], near - ESCAPE_MM, near + ESCAPE_MM))
-    shifts = shifts[np.abs(shifts) <= farthest]
+    shifts = np.concatenate((STAY, ordered[low[0]:high[0]], down - ESCAPE_MM, up + ESCAPE_MM))
     missing = low[2] > high[2] or low[3] > high[3]
     lined_up = high[3] > low[2]  # -ALIGNED_MM <= distance <= ALIGNED_MM
-    return shifts, bool(missing), bool(lined_up)
+    # staying's score (misses_after of 0): its four ends are among the ranges' ends
+    now = 2 * low[3] + 3 * low[2] - 2 * high[2] - 3 * high[3]
+    return shifts, bool(missing), bool(lined_up), now
 
 
 def misses_after(ordered: np.ndarray, shifts: np.ndarray) -> np.ndarray:

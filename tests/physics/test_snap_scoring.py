@@ -10,9 +10,10 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from floatpage.physics.guides import CENTRE, HIGH, LOW, features
 from floatpage.physics.snapping import (
-    ALIGNED_MM, ESCAPE_MM, MAX_TRIES, NEAR_MM, best_first, candidate_shifts, distance_bounds,
-    misses_after,
+    ALIGNED_MM, ESCAPE_MM, MAX_TRIES, MINE, NEAR_MM, THEIRS, THEIRS_COLUMNS, best_first,
+    candidate_shifts, distance_bounds, feature_table, misses_after,
 )
 
 REACH, FARTHEST = 4.0, 12.0
@@ -48,9 +49,9 @@ def test_candidates_and_the_ranges_read_off_one_bisection(others, on_lines):
     ordered = np.sort(np.array(others + on_lines + on_lines + [
         REACH, -REACH, ALIGNED_MM, -ALIGNED_MM, NEAR_MM, -NEAR_MM, FARTHEST + ESCAPE_MM,
         -FARTHEST - ESCAPE_MM], dtype=float))
-    shifts, missing, lined_up = candidate_shifts(ordered, distance_bounds(REACH, FARTHEST),
-                                                 FARTHEST)
+    shifts, missing, lined_up, now = candidate_shifts(ordered, distance_bounds(REACH, FARTHEST))
     assert shifts[0] == 0.0  # staying comes first
+    assert now == misses_after(ordered, np.zeros(1))[0]
     within_reach = ordered[np.abs(ordered) <= REACH]
     escaping = ordered[np.abs(ordered) < FARTHEST + ESCAPE_MM]
     away = np.concatenate([escaping - ESCAPE_MM, escaping + ESCAPE_MM])
@@ -77,3 +78,63 @@ def test_the_best_moves_come_first_each_once(score_of, named):
     unique = sorted({(score_of[which], abs(SHIFTS[which]), SHIFTS[which]) for which in named})
     assert list(chosen) == [shift for _, _, shift in unique][:MAX_TRIES]
     assert gain == (now - unique[0][0]) / 2
+
+
+def escape_ends(farthest: float) -> list[float]:
+    """Distances around the four ends where an escape move, d - ESCAPE_MM or d + ESCAPE_MM
+    as a float, comes within ``farthest`` or goes past it: each end and the floats beside it."""
+    ends = []
+    for end in (farthest + ESCAPE_MM, farthest - ESCAPE_MM, -farthest + ESCAPE_MM,
+                -farthest - ESCAPE_MM):
+        for steps in range(-3, 4):
+            d = end
+            for _ in range(abs(steps)):
+                d = float(np.nextafter(d, np.inf if steps > 0 else -np.inf))
+            ends.append(d)
+    return ends
+
+
+@settings(max_examples=100, deadline=None)
+@given(distances, st.sampled_from([4.0, 1.0 / 3.0, 3.7, 12.5, 2.0 ** -3 * 7]))
+def test_escape_moves_are_cut_where_their_float_leaves_the_reach(others, reach):
+    """The escape moves' length is read off the bisection at ends found float by float
+    (distance_bounds): the moves kept, in their order, are exactly the ones whose rounded
+    d -/+ ESCAPE_MM is at most ``farthest`` long (fails with the ends taken as the plain sums
+    farthest +/- ESCAPE_MM, which the rounding misses by a float on some reaches)."""
+    farthest = 3 * reach
+    ordered = np.sort(np.array(others + escape_ends(farthest), dtype=float))
+    shifts, *_ = candidate_shifts(ordered, distance_bounds(reach, farthest))
+    within_reach = ordered[np.abs(ordered) <= reach]
+    escaping = ordered[np.abs(ordered) < farthest + ESCAPE_MM]
+    down, up = escaping - ESCAPE_MM, escaping + ESCAPE_MM
+    expected = np.concatenate([[0.0], within_reach, down[np.abs(down) <= farthest],
+                               up[np.abs(up) <= farthest]])
+    assert np.array_equal(shifts, expected)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.tuples(st.floats(0.0, 300.0), st.floats(0.5, 80.0)), min_size=1,
+                max_size=6),
+       st.lists(st.floats(0.0, 300.0), max_size=5), st.lists(st.floats(0.0, 300.0),
+                                                             min_size=1, max_size=2),
+       st.integers(0, 1))
+def test_the_page_lines_as_rows_give_the_distances_to_each_line(items, edges, middles, axis):
+    """A body's distances to the page's lines, read as rows of its axis's table (a row per
+    line, +inf where a pairing does not exist), are the distances to each line of its kind,
+    the same floats: each edge line to its low and its high edge, each middle to its centre;
+    an inactive item's lines are at +inf."""
+    centres = np.array([[c, c] for c, _ in items])
+    halves = np.array([[h, h] for _, h in items])
+    active = np.arange(len(items)) % 3 != 2
+    edges, middles = np.array(edges, dtype=float), np.array(middles, dtype=float)
+    table = feature_table(centres, halves, active, axis, edges, middles)
+    mine = features(centres, halves, axis)
+    page_rows = table[len(items):, THEIRS_COLUMNS]
+    for row in range(len(items)):
+        found = (page_rows - mine[row, MINE]).ravel()
+        expected = np.concatenate([edges - mine[row, LOW], edges - mine[row, HIGH],
+                                   middles - mine[row, CENTRE]])
+        assert np.array_equal(np.sort(found[np.isfinite(found)]), np.sort(expected))
+        theirs = table[row, THEIRS_COLUMNS]
+        assert np.array_equal(theirs, mine[row, THEIRS]) if active[row] else \
+            np.isinf(theirs).all()
