@@ -6,22 +6,25 @@ axis, 0.5-4 mm apart) is put down to what keeps the snap from closing it.
     .venv/bin/python benchmarks/near_miss_causes.py                  # the eleven scenes up to 60 %
     .venv/bin/python benchmarks/near_miss_causes.py --only "50 items" --pairs
     .venv/bin/python benchmarks/near_miss_causes.py --seeds 14       # and 14 fresh seeded pages
+    .venv/bin/python benchmarks/near_miss_causes.py --seeds 30 --first-seed 900 --only "seed "
 
-For each side of a pair (the group of each item, alone and as its line: physics.snapping's
-movers) the settled page's snapper is asked, with nothing cut short (every candidate move,
-not only the nearest 64 and the best 8), which of that body's moves on the pair's axis would
-lower its score, and where the best of them stops:
+The saved page is snapped once more first (the save's rounding to 0.01 mm opens slips that
+the snap closes with nudges), so the causes are read where the snap itself stops.  For each
+side of a pair (the group of each item, alone and as its line: physics.snapping's movers)
+every candidate move on the pair's axis is scored, with nothing cut short (not only the
+nearest 64 and the best 8); of the moves that *resolve* the pair (close it to within 0.05 mm,
+or open it to 4 mm or more), the ones that lower the side's count are followed through the
+snap's own checks:
 
 - ``one group``: both items follow one root; no move of the snap parts them;
 - ``fixed``: neither item's group may move (held, hard-anchored);
-- ``no gain``: no move of either side alone lowers its count (a local minimum of single
+- ``no gain``: no resolving move of either side lowers its count (a local minimum of single
   moves: every place within reach trades the miss for another); ``no gain, trade`` when a
-  move that leaves the count as it is exists (what a chain of two moves could start from);
-- ``margin``: a move would gain but leaves the print-safe margin;
+  resolving move leaves the count as it is (what a chain of two moves could start from);
+- ``margin``: a resolving move would gain but leaves the print-safe margin;
 - ``clearance``: it stays inside the margin but comes closer to a neighbour than the gutter;
 - ``rest``: it fits but the rest check refuses it (the page would not stay at rest);
-- ``would move``: a move passes every check (the snap stopped short: its candidate or try
-  limits, or the saved file's 0.01 mm rounding).
+- ``would move``: a move passes every check (the snap stopped short of it).
 
 A pair's cause is the furthest any of its sides gets, in the order above.
 """
@@ -38,8 +41,8 @@ from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM, measure_alignment
 from floatpage.physics.guides import CENTRE, HIGH, LOW
 from floatpage.physics.snapping import (
-    ALIGNED_MM as SNAP_ALIGNED_MM, NUDGE_MM, TOLERANCE_MM, _Snapper, candidate_shifts, misses_after, snap_limits,
-    snap_to_guides,
+    ALIGNED_MM as SNAP_ALIGNED_MM, NUDGE_MM, TOLERANCE_MM, _Snapper, candidate_shifts,
+    misses_after, snap_limits, snap_to_guides,
 )
 from alignment import benchmark_scenes, random_scenes, scene_project
 from guide_cost import fresh_scenes

@@ -121,8 +121,8 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
             moves += len(moved)
             moved_any = moved_any or bool(moved)
         if not moved_any:
-            lesser = [[root for row in snapper.movers for root in snapper.try_lesser(int(row), axis)]
-                      for axis in (0, 1)]
+            lesser = [[root for row in snapper.movers
+                       for root in snapper.try_lesser(int(row), axis)] for axis in (0, 1)]
             if not lesser[0] and not lesser[1]:
                 break
             todo = [snapper.near(lesser[axis], axis) for axis in (0, 1)]

@@ -11,8 +11,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from floatpage.physics.snapping import (
-    ALIGNED_MM, ESCAPE_MM, EVERY_MOVE, MAX_TRIES, NEAR_MM, best_first, candidate_shifts, distance_bounds,
-    misses_after,
+    ALIGNED_MM, ESCAPE_MM, EVERY_MOVE, MAX_TRIES, NEAR_MM, best_first, candidate_shifts,
+    distance_bounds, misses_after,
 )
 
 REACH, FARTHEST = 4.0, 12.0
