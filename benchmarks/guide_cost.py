@@ -114,15 +114,18 @@ def settle_only(name: str, guides: float, times: int) -> None:
         settle_project(copy.deepcopy(project))
 
 
-def fresh_scenes(count: int):
-    rng = np.random.default_rng(2026)
+def fresh_scenes(count: int, first_seed: int = 500):
+    """``count`` seeded pages of 8-60 items covering 25-60 % of five page sizes, seeds from
+    ``first_seed`` on (500 gives the pages every session has measured; another first seed,
+    pages of other counts and coverages too)."""
+    rng = np.random.default_rng(2026 + first_seed - 500)
     chosen = []
-    for seed in range(count):
+    for seed in range(first_seed, first_seed + count):
         items = int(rng.integers(8, 61))
         coverage = float(rng.uniform(0.25, 0.6))
         w, h = SIZES[seed % len(SIZES)]
-        scene = mixed_scene(items, coverage, seed=500 + seed, page_w_mm=w, page_h_mm=h)
-        chosen.append(replace(scene, name=f"seed {500 + seed}: {items} items, {coverage:.0%}, "
+        scene = mixed_scene(items, coverage, seed=seed, page_w_mm=w, page_h_mm=h)
+        chosen.append(replace(scene, name=f"seed {seed}: {items} items, {coverage:.0%}, "
                                            f"{w:g}x{h:g} mm"))
     return chosen
 
@@ -132,6 +135,7 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--only", default="")
     parser.add_argument("--seeds", type=int, default=0, help="fresh seeded pages to add")
+    parser.add_argument("--first-seed", type=int, default=500, help="the fresh pages' first seed")
     parser.add_argument("--settle", default="", help="only settle this scene --times times")
     parser.add_argument("--guides", type=float, default=1.0)
     parser.add_argument("--times", type=int, default=1)
@@ -144,7 +148,7 @@ def main() -> None:
         return
     TALLY.install()
     scenes = [s for s in benchmark_scenes(True) if s.coverage <= 0.6] + random_scenes()
-    scenes += fresh_scenes(args.seeds)
+    scenes += fresh_scenes(args.seeds, args.first_seed)
     print("| scene | off s | on s | on/off | snap s | on less snap / off "
           "| settles off → on | steps off → on | near misses/item off → on | ok |")
     print("|---|---|---|---|---|---|---|---|---|---|")

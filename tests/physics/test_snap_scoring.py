@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 
 from floatpage.physics.guides import CENTRE, HIGH, LOW, features
 from floatpage.physics.snapping import (
-    ALIGNED_MM, ESCAPE_MM, MAX_TRIES, MINE, NEAR_MM, THEIRS, THEIRS_COLUMNS, best_first,
-    candidate_shifts, distance_bounds, feature_table, misses_after,
+    ALIGNED_MM, ESCAPE_MM, EVERY_MOVE, MAX_TRIES, MINE, NEAR_MM, THEIRS, THEIRS_COLUMNS,
+    best_first, candidate_shifts, distance_bounds, feature_table, misses_after,
 )
 
 REACH, FARTHEST = 4.0, 12.0
@@ -66,17 +66,22 @@ SHIFTS = [-3.0, -1.5, -0.5, 0.5, 1.5, 2.0, 3.0, 7.25]  # pairs of equal length a
 
 @settings(max_examples=200, deadline=None)
 @given(st.lists(st.integers(-6, 3), min_size=len(SHIFTS), max_size=len(SHIFTS)),
-       st.lists(st.integers(0, len(SHIFTS) - 1), min_size=1, max_size=30))
-def test_the_best_moves_come_first_each_once(score_of, named):
+       st.lists(st.integers(0, len(SHIFTS) - 1), min_size=1, max_size=30),
+       st.sampled_from([None, 1, 3, EVERY_MOVE]))
+def test_the_best_moves_come_first_each_once(score_of, named, tries):
     """Moves of equal score and length (a shift and its opposite) and moves named twice (a
-    shift's score is a function of the shift)."""
+    shift's score is a function of the shift); at most ``MAX_TRIES`` of them unless told
+    otherwise (_Snapper.try_lesser asks for every move)."""
     shifts = np.array([SHIFTS[which] for which in named])
     scores = np.array([score_of[which] for which in named])
     now = 4
-    chosen, gain = best_first(shifts, scores, now)
+    if tries is None:
+        chosen, gain = best_first(shifts, scores, now)
+    else:
+        chosen, gain = best_first(shifts, scores, now, tries)
     # the plain definition: each shift once, sorted by score, then length, then value
     unique = sorted({(score_of[which], abs(SHIFTS[which]), SHIFTS[which]) for which in named})
-    assert list(chosen) == [shift for _, _, shift in unique][:MAX_TRIES]
+    assert list(chosen) == [shift for _, _, shift in unique][:tries or MAX_TRIES]
     assert gain == (now - unique[0][0]) / 2
 
 
