@@ -27,7 +27,7 @@ from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover, lines_up
 from floatpage.physics.guides import snap_range
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
-from floatpage.physics.page_limits import binding, page_limits
+from floatpage.physics.page_limits import capping, page_limits
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
 from floatpage.physics.relocation import (
@@ -442,10 +442,11 @@ class Engine:
                 and self.grown_cover() <= GUTTER_FITS_COVER and not self._forced_short())
 
     def _forced_short(self) -> bool:
-        """Whether the items themselves rule the gutter out (physics.page_limits: pinned items
-        on each other, a pair that cannot be parted, a group too large for its room); no move
-        helps there, and each try was seconds of a settle."""
-        return bool(binding(page_limits(self._bodies, self.page_w_mm, self.page_h_mm,
+        """Whether the items themselves rule the gutter out for the items that move
+        (physics.page_limits.capping: a pair that cannot be parted, a unit with no room, a
+        group too large for its room); no move helps there, and each try was seconds of a
+        settle.  Pinned items on each other are not such a reason: the pass leaves them out."""
+        return bool(capping(page_limits(self._bodies, self.page_w_mm, self.page_h_mm,
                                         self.margin_mm, self.params.gutter_mm)))
 
     def _relocate_jammed(self) -> bool:
