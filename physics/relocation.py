@@ -163,8 +163,7 @@ def placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: f
     """Centres (n, 2) for a page the moves above could not free: the items that do not move
     stay, and the units are set down anew one by one (PLACEMENT_TRIES, PROMOTIONS), each in
     the place nearest its goal that keeps the gutter from every item set down before it.  The
-    gutter
-    holds by construction, around hard anchors too, where the packed second start
+    gutter holds by construction, around hard anchors too, where the packed second start
     (physics.packing) knows no obstacles; None if every try left a unit without room.
     Deterministic: the same page gives the same centres."""
     if int(bodies.active.sum()) > MAX_ITEMS:
