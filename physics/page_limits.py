@@ -48,6 +48,9 @@ SWEEP_BUDGET = 10_000_000  # neighbour-search candidates (about 300 MB) before b
 # items that does not already stand clear of them: pages beyond this budget (thousands of
 # items jammed among hundreds of anchors) are not searched, so that check stays quick.
 NO_ROOM_BUDGET = 2e9
+# A settle keeps the widest gap a page's limits leave to within two roundings of a saved
+# position (Engine._relocate_to_cap aims 0.02 mm inside it): a pair this near it is explained.
+WIDEST_GAP_SLACK_MM = 0.03
 GAP_STEPS = 16  # bisection steps for the widest gap a unit can keep from the pinned items
 
 
@@ -165,7 +168,7 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
         elif isinstance(limit, NoRoom):
             named += [min(a, b) * count + max(a, b) for a in limit.rows for b in limit.pinned]
     named_keys = np.array(named, dtype=np.int64)
-    cap = widest_gap(limits) - TOLERANCE_MM
+    cap = widest_gap(limits) - WIDEST_GAP_SLACK_MM
 
     def unexplained(a: np.ndarray, b: np.ndarray, gaps: np.ndarray) -> np.ndarray:
         keys = np.minimum(a, b).astype(np.int64) * count + np.maximum(a, b)
