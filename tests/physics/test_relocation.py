@@ -28,7 +28,9 @@ def test_a_page_that_jammed_keeps_the_gutter_and_stays_a_fixed_point(tmp_path, n
     does not apply: its soft anchors pull their items back into the jam).  Where the items
     themselves rule the gutter out (pinned-clash-*: two hard anchors on each other; stack-*:
     items that must stack, taller than the room by more than the gutters) every pair they do
-    not name keeps the gutter, or the widest gap they leave, and every item its margin."""
+    not name keeps the gutter, or the widest gap they leave, and every item its margin;
+    where they need more room with the gutter than rectangles pack to but not without it
+    (crowd-*), no two overlap and every item keeps its margin."""
     path = tmp_path / name
     shutil.copy(JAMS / name, path)
     project = load_project(path)
@@ -38,9 +40,13 @@ def test_a_page_that_jammed_keeps_the_gutter_and_stays_a_fixed_point(tmp_path, n
     for page in project.pages:
         engine = engine_for_page(page, project.physics)
         quality = engine.quality()
-        assert not quality.in_margin and not quality.off_page, quality.summary()
+        decorations = {k for k, item in enumerate(page.items) if item.decorative}
+        assert not quality.in_margin and set(quality.off_page) <= decorations, quality.summary()
         limits = page_limits(engine.bodies, page.width_mm, page.height_mm, engine.margin_mm,
                              gutter)
+        if name.startswith("crowd"):
+            assert not quality.overlap_count, quality.summary()
+            continue
         assert unexplained_pairs(engine.bodies, limits, gutter) == [], quality.summary()
         if name.startswith("stack"):
             assert not quality.overlap_count
