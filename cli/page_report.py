@@ -58,11 +58,12 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
         need = engine.grown_cover()
         if need > GUTTER_FITS_COVER:
             lines.append(
-                f"  note: the {gutter_mm:g} mm gutter cannot fit on page {page.id}: its items, "
-                f"each grown by the gutter, need {need:.0%} of the room inside the margins "
-                f"(more than the {GUTTER_FITS_COVER:.0%} rectangles pack to), so settle keeps "
-                f"the widest gap that fits; make items smaller, move some to another page or "
-                f"lower gutter_mm or margin_mm to keep it")
+                f"  note: the {gutter_mm:g} mm gutter may not fit on page {page.id}: its "
+                f"items, each grown by the gutter, need {need:.0%} of the room inside the "
+                f"margins, more than the {GUTTER_FITS_COVER:.0%} up to which settle promises "
+                f"it (rectangles of mixed shapes seldom pack tighter), so settle keeps the "
+                f"widest gap it finds; make items smaller, move some to another page or lower "
+                f"gutter_mm or margin_mm to keep it")
         else:
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
