@@ -24,6 +24,9 @@ that no settle will help, and what to change instead:
   exact for one rectangle among fixed ones).
 
 The area test (Engine.grown_cover) stays the reason for a crowd of small items.
+
+A reason is true only for what it accounts for: ``unexplained_pairs`` lists the pairs closer
+than the gutter that no limit here explains, and `check` sends those back to `settle`.
 """
 
 from __future__ import annotations

@@ -25,8 +25,9 @@ Where a few such moves do not free the page (the room it needs is spread in sliv
 items), every unit is set down anew (``placed_anew``), the largest first, each in the
 free place nearest where it lay (or, where that leaves one without room, nearest a corner,
 in a few orders, and with the unit left without room set down first), around the items that
-stay: the gutter holds by construction, and Engine
-then lets a gentle run spread the items from there.
+stay: the gutter holds by construction, and Engine then lets a gentle run spread the items
+from there.  Engine also aims this at a narrower gap: the widest a page's own items leave
+(physics.page_limits.widest_gap), or none on a page too full for the gutter.
 """
 
 from __future__ import annotations
