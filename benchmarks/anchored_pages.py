@@ -27,7 +27,9 @@ import numpy as np
 from floatpage.model import load_project, save_project
 from floatpage.model.document import BlockItem, ItemAnchor, Page, PointAnchor, Project
 from floatpage.model.layout import engine_for_page
-from floatpage.physics.page_limits import page_limits
+from floatpage.physics.page_limits import (
+    PinnedOutside, TooLarge, page_limits, unexplained_pairs, widest_gap,
+)
 from floatpage.physics.geometry import GUTTER_FITS_COVER
 from fixed_point import settle_file as settle_and_save
 
@@ -89,21 +91,34 @@ def settle_file(path: Path) -> float:
 
 
 def verdict(path: Path) -> tuple[bool, str]:
-    """(keeps every guarantee, the reason `check` gives where it does not)."""
+    """(keeps every guarantee, the reason `check` gives where it does not).  A reason counts
+    only where it accounts for every miss: each pair closer than the gutter is two pinned
+    items, named by a limit, or no closer than the widest gap the limits leave the page
+    (page_limits.unexplained_pairs), or, on a page whose items grown by the gutter need more
+    than GUTTER_FITS_COVER of the room, apart; each item in the margin or off the page is
+    named, or the page is too full for its margins.  (Until the ninth session any limit on
+    the page counted, even one naming two other items.)"""
     project = load_project(path)
     page = project.pages[0]
     engine = engine_for_page(page, project.physics)
     quality = engine.quality()
     if quality.ok:
         return True, ""
-    limits = page_limits(engine.bodies, page.width_mm, page.height_mm, engine.margin_mm,
-                         project.physics.gutter_mm)
-    if limits:
-        return False, ", ".join(sorted({type(limit).__name__ for limit in limits}))
+    gutter = project.physics.gutter_mm
+    limits = page_limits(engine.bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter)
     need = engine.grown_cover()
-    if need > GUTTER_FITS_COVER:
-        return False, f"area ({need:.0%})"
-    return False, "UNEXPLAINED"
+    crowded = need > GUTTER_FITS_COVER
+    loose = [gap for _, _, gap in unexplained_pairs(engine.bodies, limits, gutter)
+             if gap < 0 or not crowded]
+    named = {row for limit in limits if isinstance(limit, (PinnedOutside, TooLarge))
+             for row in getattr(limit, "rows", (getattr(limit, "row", -1),))}
+    pressed = crowded or widest_gap(limits) < 0  # the margin gives way only on such a page
+    outside = [row for row in set(quality.in_margin) | set(quality.off_page)
+               if row not in named and not pressed]
+    if loose or outside:
+        return False, "UNEXPLAINED"
+    reasons = sorted({type(limit).__name__ for limit in limits})
+    return False, ", ".join(reasons + ([f"area ({need:.0%})"] if crowded else []))
 
 
 def main() -> None:

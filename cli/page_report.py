@@ -12,10 +12,9 @@ from floatpage.model.errors import printable
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
     Crossing, Limit, NoRoom, PinnedClash, PinnedOutside, Stack, TooLarge, binding,
-    page_limits,
+    page_limits, unexplained_pairs,
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER
-from floatpage.physics.quality import GAP_TOLERANCE_MM
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -47,25 +46,24 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                      + "make items smaller, mark items that may touch the edge `bleed = true`, "
                      "or lower margin_mm in [physics]")
     lines += _explain(limits, name, gutter_mm, engine.margin_mm)
-    forced = any(isinstance(limit, (PinnedClash, Crossing, Stack, NoRoom)) and limit_gap(limit) < 0
-                 for limit in limits)
-    if quality.overlap_count and not forced:
-        pairs = _some([f"{name(a)} and {name(b)}"
-                       for a, b in quality.overlapping_pairs[:SHOWN]], quality.overlap_count)
+    loose = unexplained_pairs(bodies, limits, gutter_mm) if not quality.ok else []
+    overlapping = [(a, b) for a, b, gap in loose if gap < 0]
+    if overlapping:
+        pairs = _some([f"{name(a)} and {name(b)}" for a, b in overlapping[:SHOWN]],
+                      len(overlapping))
         lines.append(f"  overlapping: {pairs}; run `floatpage settle`; if they still "
                      "overlap after it, hard anchors or anchored groups box them in: move an "
                      "anchor, make items smaller, or move some to another page")
-    short_gap = (not quality.overlap_count
-                 and quality.min_gap_mm < gutter_mm - GAP_TOLERANCE_MM)
-    if short_gap and not binding(limits):
+    elif loose:
         need = engine.grown_cover()
         if need > GUTTER_FITS_COVER:
             lines.append(
-                f"  note: the {gutter_mm:g} mm gutter cannot fit on page {page.id}: its items, "
-                f"each grown by the gutter, need {need:.0%} of the room inside the margins "
-                f"(more than the {GUTTER_FITS_COVER:.0%} rectangles pack to), so settle keeps "
-                f"the widest gap that fits; make items smaller, move some to another page or "
-                f"lower gutter_mm or margin_mm to keep it")
+                f"  note: the {gutter_mm:g} mm gutter may not fit on page {page.id}: its "
+                f"items, each grown by the gutter, need {need:.0%} of the room inside the "
+                f"margins, more than the {GUTTER_FITS_COVER:.0%} up to which settle promises "
+                f"it (rectangles of mixed shapes seldom pack tighter), so settle keeps the "
+                f"widest gap it finds; make items smaller, move some to another page or lower "
+                f"gutter_mm or margin_mm to keep it")
         else:
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
@@ -79,10 +77,6 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
 def _some(shown: list[str], total: int) -> str:
     """The first of ``total`` things, and how many more there are."""
     return ", ".join(shown) + (f" and {total - len(shown)} more" if total > len(shown) else "")
-
-
-def limit_gap(limit: Limit) -> float:
-    return limit.gap_mm if isinstance(limit, PinnedClash) else limit.widest_gap_mm
 
 
 def _namer(page):

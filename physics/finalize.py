@@ -170,8 +170,16 @@ class _Projection:
             self.bodies.velocities[self.bodies.decorative] = 0.0
 
     def pairs(self, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The pairs within ``reach``, with the axes each may part along.  A pair of which
+        neither item moves (hard anchors, held items, what follows them) is left out: no
+        projection parts it, and counted in, its gap capped the whole page's.  A page with
+        two hard anchors 25 mm into each other let a free item lie 28.6 mm into one of them,
+        and gave up the margin for three more (physics.page_limits names such a pair)."""
         i, j = candidate_pairs(self.bodies.centres, self.halves, self.rows_active, self.roots,
                                reach)
+        if self.constrained:
+            moves = (self.inverse_mass.take(i) > 0) | (self.inverse_mass.take(j) > 0)
+            i, j = i[moves], j[moves]
         return i, j, blocked_axes(self.bodies.sizes, i, j, *self.page, self.gutter_mm,
                                   self.insets)
 

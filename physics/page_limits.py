@@ -24,12 +24,15 @@ that no settle will help, and what to change instead:
   exact for one rectangle among fixed ones).
 
 The area test (Engine.grown_cover) stays the reason for a crowd of small items.
+
+A reason is true only for what it accounts for: ``unexplained_pairs`` lists the pairs closer
+than the gutter that no limit here explains, and `check` sends those back to `settle`.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Union
+from typing import Callable, Union
 
 import numpy as np
 
@@ -48,6 +51,9 @@ SWEEP_BUDGET = 10_000_000  # neighbour-search candidates (about 300 MB) before b
 # items that does not already stand clear of them: pages beyond this budget (thousands of
 # items jammed among hundreds of anchors) are not searched, so that check stays quick.
 NO_ROOM_BUDGET = 2e9
+# A settle keeps the widest gap a page's limits leave to within two roundings of a saved
+# position (Engine._relocate_to_cap aims 0.02 mm inside it): a pair this near it is explained.
+WIDEST_GAP_SLACK_MM = 0.03
 GAP_STEPS = 16  # bisection steps for the widest gap a unit can keep from the pinned items
 
 
@@ -128,6 +134,51 @@ def binding(limits: list[Limit]) -> list[Limit]:
             if not (isinstance(limit, PinnedOutside) and limit.decoration)]
 
 
+def capping(limits: list[Limit]) -> list[Limit]:
+    """The limits that cap the gap the items that move can keep: items that cannot be parted
+    (Crossing, Stack), a unit with no room among the pinned ones (NoRoom), a group too large
+    for its room.  Two pinned items on each other (PinnedClash), or one past its wall, say
+    nothing of the rest of the page: the no-overlap pass leaves such a pair out, and every
+    other pair can still keep the gutter."""
+    return [limit for limit in limits if isinstance(limit, (TooLarge, Crossing, Stack, NoRoom))]
+
+
+def widest_gap(limits: list[Limit]) -> float:
+    """The widest gap the limits leave the page's closest pair: the page's gap can be no
+    wider than any Crossing's, Stack's or NoRoom's widest; inf where none caps it."""
+    return min((limit.widest_gap_mm for limit in limits
+                if isinstance(limit, (Crossing, Stack, NoRoom))), default=np.inf)
+
+
+def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
+                      ) -> list[tuple[int, int, float]]:
+    """Pairs (a, b, clearance) of active items of different groups closer than the gutter
+    that the limits do not account for: not two pinned items (PinnedClash), not a pair a
+    Crossing, Stack or NoRoom names, and closer than the widest gap the limits leave the page
+    (widest_gap; a settle that cannot keep the gutter keeps the widest gap that fits, on
+    every pair).  A reason `check` gives is true only for the pairs it explains: a page
+    with two hard anchors on each other had a free item 28.6 mm into one of them, and the
+    clash was given as the reason.  Closest first, at most LISTED."""
+    roots, _ = bodies.group_roots()
+    pinned = _pinned(bodies, roots)
+    count = bodies.count
+    named: list[int] = []  # pairs as a * count + b, a < b
+    for limit in limits:
+        if isinstance(limit, Crossing):
+            named.append(limit.rows[0] * count + limit.rows[1])
+        elif isinstance(limit, Stack):
+            named += [a * count + b for a in limit.rows for b in limit.rows if a < b]
+        elif isinstance(limit, NoRoom):
+            named += [min(a, b) * count + max(a, b) for a in limit.rows for b in limit.pinned]
+    named_keys = np.array(named, dtype=np.int64)
+    cap = widest_gap(limits) - WIDEST_GAP_SLACK_MM
+
+    def unexplained(a: np.ndarray, b: np.ndarray, gaps: np.ndarray) -> np.ndarray:
+        keys = np.minimum(a, b).astype(np.int64) * count + np.maximum(a, b)
+        return ~(pinned[a] & pinned[b]) & (gaps < cap) & ~np.isin(keys, named_keys)
+    return close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter_mm, unexplained)
+
+
 def _pinned(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
     """Rows that no push moves: hard anchors and held items, and everything following one or
     following a decoration (a decoration is never moved, so neither is a caption set beside
@@ -139,9 +190,19 @@ def _pinned(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
 def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,
                     gutter_mm: float) -> list[Limit]:
     """Pairs of pinned items of different groups closer than the gutter, closest first, at
-    most ``LISTED``; compared a block of rows at a time, so that a file of thousands of
-    pinned items is measured in bounded memory."""
-    rows = np.flatnonzero(pinned)
+    most ``LISTED``."""
+    return [PinnedClash((a, b), gap) for a, b, gap in
+            close_pairs(bodies, np.flatnonzero(pinned), roots, gutter_mm)]
+
+
+def close_pairs(bodies: Bodies, rows: np.ndarray, roots: np.ndarray, gutter_mm: float,
+                keep: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray] | None = None
+                ) -> list[tuple[int, int, float]]:
+    """Pairs (a, b, clearance), a < b, of ``rows`` in different groups closer than the gutter
+    and, if given, that ``keep`` (rows a, rows b, clearances -> bool mask) keeps: closest
+    first, at most ``LISTED``.  Compared a block of rows at a time where the neighbour search
+    would meet too many candidates, so that a file of thousands of items piled on one spot
+    is measured in bounded memory."""
     centres, halves = bodies.centres[rows], bodies.sizes[rows] / 2
     if len(rows) < 2:
         return []
@@ -151,9 +212,11 @@ def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,
         i, j = candidate_pairs(bodies.centres, bodies.sizes / 2, rows, roots, gutter_mm)
         gaps = pair_clearances(bodies.centres, bodies.sizes / 2, i, j)
         close = gaps < gutter_mm - TOLERANCE_MM
-        order = np.lexsort((j[close], i[close], gaps[close]))[:LISTED]
-        return [PinnedClash((int(a), int(b)), float(g)) for a, b, g in
-                zip(i[close][order], j[close][order], gaps[close][order])]
+        if keep is not None:
+            close[close] = keep(i[close], j[close], gaps[close])
+        i, j, gaps = np.minimum(i, j)[close], np.maximum(i, j)[close], gaps[close]
+        order = np.lexsort((j, i, gaps))[:LISTED]
+        return [(int(a), int(b), float(g)) for a, b, g in zip(i[order], j[order], gaps[order])]
     found: list[tuple[float, int, int]] = []
     for start in range(0, len(rows), CROSSING_BLOCK):  # a pile: a block of rows at a time
         block = np.arange(start, min(start + CROSSING_BLOCK, len(rows)))
@@ -161,14 +224,17 @@ def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,
         later = np.arange(len(rows))[None, :] > block[:, None]
         close = ((gaps < gutter_mm - TOLERANCE_MM) & later
                  & (roots[rows][block][:, None] != roots[rows][None, :]))
-        a, b = np.nonzero(close)
-        values = gaps[a, b]
+        x, y = np.nonzero(close)
+        a, b, values = rows[block[x]], rows[y], gaps[x, y]
+        if keep is not None:
+            kept = keep(a, b, values)
+            a, b, values = a[kept], b[kept], values[kept]
         if len(values) > LISTED:  # a pile: keep the closest, not millions of tuples
-            keep = np.argpartition(values, LISTED)[:LISTED]
-            a, b, values = a[keep], b[keep], values[keep]
-        found = sorted(found + [(float(g), int(rows[block[x]]), int(rows[y]))
-                                for g, x, y in zip(values, a, b)])[:LISTED]
-    return [PinnedClash((a, b), gap) for gap, a, b in sorted(found)[:LISTED]]
+            part = np.argpartition(values, LISTED)[:LISTED]
+            a, b, values = a[part], b[part], values[part]
+        found = sorted(found + [(float(g), int(min(p, q)), int(max(p, q)))
+                                for g, p, q in zip(values, a, b)])[:LISTED]
+    return [(a, b, gap) for gap, a, b in sorted(found)[:LISTED]]
 
 
 def block_clearances(centres_a: np.ndarray, halves_a: np.ndarray, centres_b: np.ndarray,

@@ -24,8 +24,10 @@ Held items, hard anchors and the groups that hold one stay where they are.
 Where a few such moves do not free the page (the room it needs is spread in slivers between
 items), every unit is set down anew (``placed_anew``), the largest first, each in the
 free place nearest where it lay (or, where that leaves one without room, nearest a corner,
-in a few orders), around the items that stay: the gutter holds by construction, and Engine
-then lets a gentle run spread the items from there.
+in a few orders, and with the unit left without room set down first), around the items that
+stay: the gutter holds by construction, and Engine then lets a gentle run spread the items
+from there.  Engine also aims this at a narrower gap: the widest a page's own items leave
+(physics.page_limits.widest_gap), or none on a page too full for the gutter.
 """
 
 from __future__ import annotations
@@ -150,14 +152,19 @@ def jammed_units(bodies: Bodies, clearance: float, units: list[Unit]) -> list[in
 # the page as it was, moved least; the corners pack tighter where it left a unit no room.
 PLACEMENT_TRIES = (("area", "own"), ("area", (0, 0)), ("side", (0, 0)), ("area", (1, 0)),
                    ("area", (0, 1)), ("area", (1, 1)), ("side", (1, 1)))
+# A try that leaves a unit without room is tried again with that unit set down first, this
+# many times, before the next try: the units set down before it took the room only it needs
+# (random page 7054: a photo and its caption, 147 mm wide together, fit only across the page
+# above a hard anchor, where a tall pair of items set down first, being larger, had stood).
+PROMOTIONS = 2
 
 
 def placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                 margin_mm: float) -> np.ndarray | None:
     """Centres (n, 2) for a page the moves above could not free: the items that do not move
-    stay, and the units are set down anew one by one (PLACEMENT_TRIES), each in the place
-    nearest its goal that keeps the gutter from every item set down before it.  The gutter
-    holds by construction, around hard anchors too, where the packed second start
+    stay, and the units are set down anew one by one (PLACEMENT_TRIES, PROMOTIONS), each in
+    the place nearest its goal that keeps the gutter from every item set down before it.  The
+    gutter holds by construction, around hard anchors too, where the packed second start
     (physics.packing) knows no obstacles; None if every try left a unit without room.
     Deterministic: the same page gives the same centres."""
     if int(bodies.active.sum()) > MAX_ITEMS:
@@ -166,17 +173,24 @@ def placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: f
     if not units:
         return None
     lowest, highest = unit_bounds(bodies, units, page_w_mm, page_h_mm, margin_mm)
+    roots = np.array([unit.root for unit in units])
     for order, goal in PLACEMENT_TRIES:
-        centres = _placed_anew(bodies, units, lowest, highest, gutter_mm, order, goal)
-        if centres is not None:
-            return centres
+        sequence = [int(k) for k in np.lexsort((roots, -_unit_sizes(bodies, units, order)))]
+        for _ in range(PROMOTIONS + 1):
+            centres = _placed_anew(bodies, units, lowest, highest, gutter_mm, sequence, goal)
+            if isinstance(centres, np.ndarray):
+                return centres
+            sequence.remove(centres)  # the unit left without room goes first (PROMOTIONS)
+            sequence.insert(0, centres)
     return None
 
 
 def _placed_anew(bodies: Bodies, units: list[Unit], lowest: np.ndarray, highest: np.ndarray,
-                 gutter_mm: float, order: str, goal) -> np.ndarray | None:
-    """placed_anew's one try (see PLACEMENT_TRIES): ``goal`` "own", or a corner of the room
-    as (0 left / 1 right, 0 top / 1 bottom)."""
+                 gutter_mm: float, sequence: list[int], goal) -> np.ndarray | int:
+    """placed_anew's one try (see PLACEMENT_TRIES): the units set down in ``sequence`` (indices
+    into ``units``), each nearest ``goal``: "own", or a corner of the room as (0 left / 1
+    right, 0 top / 1 bottom).  The centres, or the index of the first unit left without
+    room."""
     clearance = gutter_mm + 2 * ROUNDING_MM
     placed = bodies.active.copy()
     for unit in units:
@@ -184,8 +198,7 @@ def _placed_anew(bodies: Bodies, units: list[Unit], lowest: np.ndarray, highest:
     centres = bodies.centres.copy()
     work = Bodies(centres=centres, sizes=bodies.sizes, anchors=bodies.anchors,
                   decorative=~placed)
-    roots = np.array([unit.root for unit in units])
-    for k in np.lexsort((roots, -_unit_sizes(bodies, units, order))):
+    for k in sequence:
         unit = units[k]
         work.decorative = ~placed  # what is not yet set down takes no room
         work.decorative[unit.members] = False
@@ -193,7 +206,7 @@ def _placed_anew(bodies: Bodies, units: list[Unit], lowest: np.ndarray, highest:
         spot = room_for(work, unit, clearance, lowest[k], highest[k], clear_only=True,
                         goal=corner)
         if spot is None:
-            return None
+            return k
         unit.place(centres, spot)
         placed[unit.members] = True
     return centres

@@ -118,6 +118,29 @@ def test_check_says_why_no_settle_can_fix_a_page(tmp_path):
     assert "overlapping:" not in out, "explained overlaps are not sent back to settle"
 
 
+def test_check_gives_a_pinned_clash_as_the_reason_for_that_pair_only(tmp_path):
+    """Two hard anchors on each other explain their own overlap, not a free item's lying on
+    one of them: `check` names the clash and sends the free pair back to `settle` (it said
+    nothing of the free item, on a random page whose settle left one 28.6 mm into a hard
+    anchor, seed 11030)."""
+    from floatpage.model.document import PointAnchor
+
+    items = [BlockItem(id="logo", x=60.0, y=60.0, w=40.0, h=30.0,
+                       anchor=PointAnchor(x=60.0, y=60.0, hard=True)),
+             BlockItem(id="badge", x=80.0, y=70.0, w=30.0, h=30.0,
+                       anchor=PointAnchor(x=80.0, y=70.0, hard=True)),
+             BlockItem(id="note", x=50.0, y=55.0, w=20.0, h=20.0)]
+    path = tmp_path / "clash.toml"
+    save_project(Project(title="Clash", pages=[Page(id="front", items=items)]), path)
+    out = run("check", str(path)).stdout
+    assert 'items "logo" and "badge" cannot move' in out
+    assert 'overlapping: "logo" and "note"; run `floatpage settle`' in out
+    assert run("settle", str(path)).returncode == 0
+    out = run("check", str(path)).stdout
+    assert 'items "logo" and "badge" cannot move' in out
+    assert "overlapping:" not in out and "in margin" not in out and "gutter fits" not in out
+
+
 def test_check_names_an_item_with_no_room_among_hard_anchors(tmp_path):
     """Two hard-anchored pictures on a Letter page leave no place for a 108 x 73 mm block (a
     random page's, seed 1005): `check` names it and the anchored items, and says that no

@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from floatpage.physics import Engine, Params
+from floatpage.physics.finalize import pair_clearances
 from floatpage.physics.quality import measure_quality
 
 A4 = (210.0, 297.0)
@@ -34,6 +35,25 @@ def test_held_item_stays_put():
     assert engine.finalize()
     assert engine.positions()["a"] == (50.0, 50.0)
     assert 73.0 < engine.positions()["b"][0] < 73.5
+
+
+def test_two_pinned_items_on_each_other_leave_the_rest_the_gutter_and_the_margin():
+    """No move parts two held items, so the pass leaves that pair out: counted in, their
+    overlap capped the page's gap, and a free item lying on one of them was left there (and
+    the margin given up, as on a page too full)."""
+    engine = Engine(100.0, 100.0, Params(gutter_mm=3.0, guides=0.0))
+    engine.insert("a", 40, 40, 30, 30)
+    engine.insert("b", 50, 45, 30, 30)
+    engine.insert("free", 35, 35, 20, 20)
+    engine.hold("a")
+    engine.hold("b")
+    assert engine.finalize()
+    quality = engine.quality()
+    assert quality.overlapping_pairs == ((0, 1),) and not quality.in_margin
+    assert engine.positions()["a"] == (40.0, 40.0) and engine.positions()["b"] == (50.0, 45.0)
+    bodies = engine.bodies
+    gaps = pair_clearances(bodies.centres, bodies.sizes / 2, np.array([0, 1]), np.array([2, 2]))
+    assert (gaps >= 3.0).all()
 
 
 def test_items_are_brought_inside_the_page():
