@@ -4,6 +4,7 @@ and run by node (installed with `npm ci` on first use); the test suite never nee
 
     .venv/bin/python benchmarks/physics.py                 # everything (about 15 minutes)
     .venv/bin/python benchmarks/physics.py --paper-cap 10  # shorter runs of the slow references
+    .venv/bin/python benchmarks/physics.py --fresh 16      # 20 scenes no one tuned on, against d3
 
 The machine is shared and noisy, so compare ratios within one run rather than figures across
 runs.  Times are wall-clock (time.perf_counter) around the whole headless settle, the final
@@ -30,7 +31,7 @@ import subprocess
 import statistics
 import sys
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -60,6 +61,26 @@ class Run:
     lost: int  # items whose centre is off the page
     in_margin: int = 0  # items inside the print-safe margin
     final_share: float = 0.0  # share of the time spent in the final pass (and the snap)
+
+
+def fresh_scenes(count: int, first_seed: int = 3000) -> list[Scene]:
+    """Scenes no one tuned on: ``count`` seeded pages of 8 to 300 items covering 25-60 % of
+    five page sizes, then 20 and 8 items dropped on one point and two pages with one item
+    larger than half the page."""
+    sizes = ((210.0, 297.0), (297.0, 210.0), (148.0, 210.0), (215.9, 279.4), (297.0, 420.0))
+    rng = np.random.default_rng(4242)
+    chosen = []
+    for k in range(count):
+        items = int(rng.choice([8, 15, 30, 40, 60, 80, 120, 300]))
+        coverage = float(rng.uniform(0.25, 0.6))
+        w, h = sizes[k % len(sizes)]
+        chosen.append(replace(mixed_scene(items, coverage, seed=first_seed + k, page_w_mm=w,
+                                          page_h_mm=h),
+                              name=f"seed {first_seed + k}: {items} items, {w:g}x{h:g} mm"))
+    return chosen + [replace(dropped_scene(20, seed=7), name="20 dropped on one point, seed 7"),
+                     replace(dropped_scene(8, seed=8), name="8 dropped on one point, seed 8"),
+                     replace(big_item_scene(seed=5), name="one item > half the page, seed 5"),
+                     replace(big_item_scene(seed=6), name="one item > half the page, seed 6")]
 
 
 def scenes() -> list[Scene]:
@@ -246,6 +267,24 @@ def row(name: str, run: Run) -> str:
             f"{run.evenness:.2f} | {run.final_share:.0%} |")
 
 
+def fresh_rows(chosen: list[Scene]) -> None:
+    """One row per scene: floatpage's settle with and without guides and d3's, best of three
+    each, d3 over floatpage, the overlap each leaves and floatpage's final pass share."""
+    d3_ready()
+    print("| scene | floatpage s | guides off s | d3 s | d3 ÷ floatpage | d3 ÷ guides off "
+          "| overlap floatpage | overlap d3 | final pass share |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    ratios = []
+    for scene in chosen:
+        fast, off, peer = run_fast(scene), run_fast(scene, params=Params(guides=0.0)), run_d3(scene)
+        ratios.append(peer.seconds / fast.seconds)
+        print(f"| {scene.name} ({scene.coverage:.0%}) | {fast.seconds:.3f} | {off.seconds:.3f} "
+              f"| {peer.seconds:.3f} | {ratios[-1]:.2f} | {peer.seconds / off.seconds:.2f} "
+              f"| {fast.overlap:.2%} | {peer.overlap:.2%} | {fast.final_share:.0%} |", flush=True)
+    print(f"\nd3 ÷ floatpage: median {np.median(ratios):.2f}, lowest {min(ratios):.2f}, "
+          f"{sum(ratio < 1 for ratio in ratios)} of {len(ratios)} scenes below 1")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--paper-cap", type=float, default=60.0,
@@ -255,7 +294,13 @@ def main() -> None:
                         help="run only the scenes whose name contains TEXT, e.g. '50 items'")
     parser.add_argument("--no-live", action="store_true", help="skip the live editor figures")
     parser.add_argument("--no-d3", action="store_true", help="skip the d3-force peer (needs node)")
+    parser.add_argument("--fresh", type=int, metavar="N", default=0,
+                        help="instead: N fresh seeded scenes (and four more), floatpage with "
+                             "and without guides against d3, one row each")
     args = parser.parse_args()
+    if args.fresh:
+        fresh_rows(fresh_scenes(args.fresh))
+        return
 
     print("| scene | mode | s | steps | settled | overlap | off page | in margin | lost | "
           "min gap mm | even | final pass |")
