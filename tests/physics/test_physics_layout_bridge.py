@@ -102,6 +102,20 @@ def test_plainly_scattered_pages_are_free_overlapping_items_that_fit():
     assert not plainly_scattered(full, settings)
 
 
+def settled_twice(path) -> list[bytes]:
+    """The project file's bytes after a settle, and after a second settle of what the first
+    saved (a fixed point gives the same twice)."""
+    from floatpage.model import load_project, save_project
+
+    settled = []
+    for _ in range(2):
+        project = load_project(path)
+        settle_project(project)
+        save_project(project)
+        settled.append(path.read_bytes())
+    return settled
+
+
 def test_an_over_full_page_settled_is_a_fixed_point(tmp_path):
     """40 items on 90 % of A4 keep overlaps no pass removes; its settled file, whose items fit
     by area, was taken for a scattered page and laid out anew by every settle (a different
@@ -113,12 +127,7 @@ def test_an_over_full_page_settled_is_a_fixed_point(tmp_path):
 
     path = tmp_path / "full.toml"
     save_project(Project(pages=[scene_page(mixed_scene(40, 0.9, seed=1))]), path)
-    settled = []
-    for _ in range(2):
-        project = load_project(path)
-        settle_project(project)
-        save_project(project)
-        settled.append(path.read_bytes())
+    settled = settled_twice(path)
     assert settled[1] == settled[0]
     assert not plainly_scattered(load_project(path).pages[0], PhysicsSettings())
 
@@ -173,12 +182,7 @@ def test_a_settled_page_with_overlaps_it_keeps_is_a_fixed_point(tmp_path, seed):
 
     path = tmp_path / "follow.toml"
     save_project(random_project(seed, "follow"), path)
-    settled = []
-    for _ in range(2):
-        project = load_project(path)
-        settle_project(project)
-        save_project(project)
-        settled.append(path.read_bytes())
+    settled = settled_twice(path)
     assert settled[1] == settled[0]
     project = load_project(path)
     page = project.pages[0]
