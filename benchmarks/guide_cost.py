@@ -31,7 +31,6 @@ from dataclasses import replace
 import numpy as np
 
 import floatpage.physics.engine as engine_module
-import floatpage.physics.fast_mode as fast_module
 from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics.alignment import measure_alignment
 from alignment import benchmark_scenes, random_scenes, scene_project

@@ -67,9 +67,10 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
         else:
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
-                f"need {need:.0%} of the room inside the margins) but is not kept: run `floatpage settle`; if "
-                f"a settled page still misses it, its anchors or the order its items lie in "
-                f"jam it: move an anchored item or nudge items apart, and settle again")
+                f"need {need:.0%} of the room inside the margins) but is not kept: run "
+                f"`floatpage settle`; if a settled page still misses it, its anchors or the "
+                f"order its items lie in jam it: move an anchored item or nudge items apart, "
+                f"and settle again")
             problems += 1
     return lines, problems
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from floatpage.physics import Engine, Params, Quality, SettleReport
 from floatpage.physics.finalize import ROUNDING_MM
-from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover
+from floatpage.physics.geometry import GUTTER_FITS_COVER
 from floatpage.physics.page_limits import binding, page_limits
 from floatpage.physics.snapping import ESCAPE_REACH
 from floatpage.physics.stillness import PROBE_HEAT
@@ -261,10 +261,11 @@ def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
     pass parts them: they cover at most the GUTTER_FITS_COVER of the room that rectangles pack
     to (geometry.grown_cover without a gutter), nothing rules zero overlap out (no binding
     physics.page_limits: 3 items on A5, one 196 mm tall beside one 99 mm wide, must cross
-    whatever their area), and with followers ``parts_some``.  There the probe's no-overlap pass leaves fewer overlaps than
-    the page has (10,000 scattered items: 6,290 -> 127), and then its answer is known: not at
-    rest (at rest keeps every overlap), not near rest (that needs none) and not stuck (its
-    result is sounder than the page), so the full run follows, from the page as it was:
+    whatever their area), and with followers ``parts_some``.  There the probe's no-overlap
+    pass leaves fewer overlaps than the page has (10,000 scattered items: 6,290 -> 127), and
+    then its answer is known: not at rest (at rest keeps every overlap), not near rest (that
+    needs none) and not stuck (its result is sounder than the page), so the full run follows,
+    from the page as it was:
     skipping the probe changes no result.  On those 10,000 items the probe was an eighth of
     the settle; on an album page of photos with captions that follow them it was as long as
     the full run (a 200-page album: 46 s of CPU, half of it these probes).  Only a probe whose
@@ -280,11 +281,9 @@ def plainly_scattered(page: Page, settings: PhysicsSettings) -> bool:
     engine = engine_for_page(page, settings)
     if engine.quality().overlap_count == 0:
         return False
-    bodies = engine.bodies
-    near, far = bodies.insets(engine.margin_mm, engine.page_w_mm, engine.page_h_mm)
-    if grown_cover(bodies, near, far, engine.page_w_mm, engine.page_h_mm,
-                   0.0) > GUTTER_FITS_COVER:
+    if engine.grown_cover(0.0) > GUTTER_FITS_COVER:
         return False
+    bodies = engine.bodies
     if binding(page_limits(bodies, engine.page_w_mm, engine.page_h_mm, engine.margin_mm, 0.0)):
         return False  # the items themselves rule zero overlap out
     return not bodies.followers.any() or parts_some(engine)
@@ -296,7 +295,7 @@ def parts_some(engine: Engine) -> bool:
     them), but a page with followers has no second start, and a file settle wrote may keep
     overlaps the pass cannot remove (random pages 25029 and 25045 of `anchored_pages.py
     --kind follow`: settled again, they were laid out anew every time).  Those, like any page
-    whose pass leaves every overlap, are probed first."""
+    whose pass leaves every overlap, are probed first.  It moves the engine's items."""
     before = engine.quality().overlap_count
     engine.finalize(fall_back=False, align=False)
     return engine.quality().overlap_count < before
@@ -404,8 +403,8 @@ def settle_project(project: Project, *, max_steps: int = 200_000,
     """Headless: settle every page to its fixed point (see ``settle_page``), positions written
     back.  Returns one report per page, in page order.  With ``jobs`` above 1 a project large
     enough settles its pages in that many processes (model.page_pool), to the same bytes."""
-    from floatpage.model.page_pool import settle_in_pool, worth_a_pool
+    from floatpage.model.page_pool import settle_here, settle_in_pool, worth_a_pool
 
     if worth_a_pool(project.pages, jobs):
         return settle_in_pool(project.pages, project.physics, max_steps, jobs)
-    return [settle_page(page, project.physics, max_steps=max_steps) for page in project.pages]
+    return settle_here(project.pages, project.physics, max_steps)

@@ -76,6 +76,7 @@ def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
 
 def settle_here(pages: list[Page], settings: PhysicsSettings,
                 max_steps: int) -> list[SettleReport]:
+    """The pages one by one in this process (a small project, or no worker can start)."""
     from floatpage.model.layout import settle_page
 
     return [settle_page(page, settings, max_steps=max_steps) for page in pages]

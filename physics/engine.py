@@ -447,10 +447,8 @@ class Engine:
         out of the jam (physics.relocation): the fast mode, a page where that gap fits (each
         item grown by it, at most GUTTER_FITS_COVER of the room), few enough items."""
         count = int(self._bodies.active.sum())
-        near, far = self._bodies.insets(self.margin_mm, self.page_w_mm, self.page_h_mm)
         return (self.params.mode == "fast" and 2 <= count <= RELOCATE_MAX_ITEMS
-                and grown_cover(self._bodies, near, far, self.page_w_mm, self.page_h_mm,
-                                gutter_mm) <= GUTTER_FITS_COVER)
+                and self.grown_cover(gutter_mm) <= GUTTER_FITS_COVER)
 
     def _part_crowd(self) -> None:
         """A page too full for the gutter but not for its items alone, left overlapping by
@@ -502,13 +500,14 @@ class Engine:
         misses an item before it, 17.3 after) at the cost of two thirds of the settle."""
         return lines_up(self.grown_cover(), int(self._bodies.active.sum()))
 
-    def grown_cover(self) -> float:
+    def grown_cover(self, gutter_mm: float | None = None) -> float:
         """How tight the page is (geometry.grown_cover): the share of the room inside its
-        walls the items need, each grown by the gutter.  Up to GUTTER_FITS_COVER the settle
-        keeps the gutter, and `check` says so; the same number decides both."""
+        walls the items need, each grown by the gutter (or by ``gutter_mm``: 0 asks whether
+        they fit at all).  Up to GUTTER_FITS_COVER the settle keeps the gutter, and `check`
+        says so; the same number decides both."""
         near, far = self._bodies.insets(self.margin_mm, self.page_w_mm, self.page_h_mm)
         return grown_cover(self._bodies, near, far, self.page_w_mm, self.page_h_mm,
-                           self.params.gutter_mm)
+                           self.params.gutter_mm if gutter_mm is None else gutter_mm)
 
     def settle(self, max_steps: int = 200_000, *, finalize: bool = True,
                align_within_mm: float = math.inf) -> SettleReport:

@@ -202,11 +202,10 @@ class EditSession:
         if all(settled[id_].x == x and settled[id_].y == y
                for id_, (x, y) in layout_of(self.resting_copy()).items() if id_ in settled):
             return False
-        for item in self.page.items:
+        for item in self.page.items:  # a hard anchor as write_back left it, with its item
             if item.id in settled:
-                item.x, item.y = settled[item.id].x, settled[item.id].y
-                if isinstance(item.anchor, PointAnchor) and item.anchor.hard:
-                    item.anchor.x, item.anchor.y = item.x, item.y
+                done = settled[item.id]
+                item.x, item.y, item.anchor = done.x, done.y, done.anchor
         self.engine = self._build_engine(check=False)
         return True
 
