@@ -41,7 +41,7 @@ from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM, measure_alignment
 from floatpage.physics.guides import CENTRE, HIGH, LOW
 from floatpage.physics.snapping import (
-    ALIGNED_MM as SNAP_ALIGNED_MM, NUDGE_MM, TOLERANCE_MM, _Snapper, candidate_shifts,
+    ALIGNED_MM as SNAP_ALIGNED_MM, NUDGE_MM, TOLERANCE_MM, _Snapper, THEIRS_COLUMNS, candidate_shifts,
     misses_after, snap_limits, snap_to_guides,
 )
 from alignment import benchmark_scenes, random_scenes, scene_project
@@ -80,14 +80,13 @@ def side_cause(snapper: _Snapper, roots: list[int], axis: int, delta: float) -> 
     members = np.concatenate([snapper.members[root] for root in roots])
     if any(snapper.too_large[root][axis] for root in roots):
         return "margin"
-    others = snapper.active.copy()
+    # every other row's lines and the page's own (the rows below the items: _Snapper.tables)
+    table = snapper.tables[all(snapper.bleeds[root] for root in roots)][axis]
+    others = np.ones(len(table), dtype=bool)
     others[members] = False
-    page, paired = snapper.page_paired[all(snapper.bleeds[root] for root in roots)][axis]
-    mine = snapper.lines[axis][members]
-    ordered = np.sort(np.concatenate([
-        (snapper.theirs[axis][others][None] - snapper.paired_mine[axis][members][:, None]).ravel(),
-        (page - mine[:, paired]).ravel()]))
-    shifts, _, _ = candidate_shifts(ordered, snapper.bounds, snapper.farthest)
+    ordered = np.sort((table[others, THEIRS_COLUMNS][None]
+                       - snapper.paired_mine[axis][members][:, None]).ravel())
+    shifts, _, _, _ = candidate_shifts(ordered, snapper.bounds)
     resolving = (np.abs(delta - shifts) <= SNAP_ALIGNED_MM) | (np.abs(delta - shifts) >= NEAR_MM)
     scores = misses_after(ordered, shifts)
     now = int(scores[0])
