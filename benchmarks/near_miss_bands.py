@@ -6,6 +6,7 @@ of different items by distance, and near misses for several windows, guides off 
 
     .venv/bin/python benchmarks/near_miss_bands.py              # the eleven scenes up to 60 %
     .venv/bin/python benchmarks/near_miss_bands.py --seeds 10   # and 10 fresh seeded pages
+    .venv/bin/python benchmarks/near_miss_bands.py --seeds 16 --first-seed 2000 --fresh-only
 
 Each page is settled the `floatpage settle` way (model.layout.settle_project).
 """
@@ -49,9 +50,12 @@ def page_figures(centres: np.ndarray, sizes: np.ndarray) -> tuple[np.ndarray, np
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", type=int, default=0, help="fresh seeded pages to add")
+    parser.add_argument("--first-seed", type=int, default=500, help="the fresh pages' first seed")
+    parser.add_argument("--fresh-only", action="store_true", help="only the fresh seeded pages")
     args = parser.parse_args()
-    scenes = [s for s in benchmark_scenes(True) + random_scenes() if s.coverage <= 0.6]
-    scenes += fresh_scenes(args.seeds)
+    scenes = [] if args.fresh_only else [
+        s for s in benchmark_scenes(True) + random_scenes() if s.coverage <= 0.6]
+    scenes += fresh_scenes(args.seeds, args.first_seed)
     header = " | ".join(f"{low:g}-{high:g} mm" for low, high in WINDOWS)
     print(f"| page | guides | {header} |")
     print("|---|---|" + "---|" * len(WINDOWS))
