@@ -5,10 +5,12 @@ The guide force (physics.guides) brings features close; contacts and rounding le
 fraction of a millimetre apart, and an edge that misses another by 1 mm looks worse than one
 that misses it by 20.  So once the page has settled and the no-overlap pass has run, each free
 item (with the items that follow it, as one rigid group) in turn tries, on each axis, the moves
-that would put one of its features exactly on a guide line within the snap range (another
-item's edge or centre, a margin line, or for a bleed item the page's edge, the page's middle),
-and the moves that would open a near miss it cannot close to just beyond what the eye reads as
-one (``ESCAPE_MM``).  It may also move as its *line*, with every group lined up with it on
+that would put one of its features exactly on a guide line within two snap ranges
+(``ALIGN_REACH``: another item's edge or centre, a margin line, or for a bleed item the page's
+edge, the page's middle), and the moves that would open a near miss it cannot close to just
+beyond what the eye reads as one (``ESCAPE_MM``).  Two ranges, not one: a pair such a move
+opened lies just beyond one range, and a column of two photos of one width stayed 4.05 mm
+apart for good, though the later move that lines them up fit (the photo album's sample).  It may also move as its *line*, with every group lined up with it on
 that axis (a column of pictures reaches a band's edge only as a column).  It takes the move
 that leaves it the fewest near misses with the rest of the page (each exact alignment
 counting as half a miss less), the smallest such move first, and only if the move
@@ -52,6 +54,7 @@ ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
 ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
 NUDGE_MM = 0.5  # moves this small need no rest check: pairs this close count as aligned anyway
 MAX_SWEEPS = 50
+ALIGN_REACH = 2.0  # a move onto a line goes up to 2 snap ranges (8 mm on A4): see _Snapper
 ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm on A4)
 MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
 MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
@@ -154,7 +157,7 @@ class _Snapper:
         self.reach = snap_range(*page)
         self.farthest = ESCAPE_REACH * self.reach  # the longest move
         self.window = max(self.farthest, NEAR_MM) + NEAR_MM  # further apart cannot matter
-        self.bounds = distance_bounds(self.reach, self.farthest)
+        self.bounds = distance_bounds(ALIGN_REACH * self.reach, self.farthest)
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
         self.half_lists = [self.halves[:, axis].tolist() for axis in (0, 1)]
         self.limit_lists = [(self.lowest[:, axis].tolist(), self.highest[:, axis].tolist())
