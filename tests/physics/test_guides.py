@@ -61,6 +61,17 @@ def test_two_tops_2_mm_apart_are_put_on_one_line():
     assert abs(top[0] - top[1]) < 1e-9
 
 
+def test_a_column_a_way_out_of_a_near_miss_left_just_beyond_the_range_is_lined_up():
+    # Two photos of one width, one above the other, their left edges 4.05 mm apart: where the
+    # snap's own way out of a near miss leaves a pair (ESCAPE_MM), a hair beyond one snap
+    # range.  Nothing is a near miss, but lining them up gains three alignments and fits:
+    # a line up to two ranges away is a candidate (ALIGN_REACH), so the column lines up.
+    bodies = bodies_of((57.5, 73.25, 83.52, 55.72), (53.45, 156.25, 83.52, 55.72))
+    assert snap(bodies) > 0
+    left = bodies.centres[:, 0] - bodies.sizes[:, 0] / 2
+    assert abs(left[0] - left[1]) < 1e-9
+
+
 def test_an_edge_near_the_margin_line_goes_onto_it_and_a_bleed_edge_onto_the_page_edge():
     bodies = bodies_of((27.0, 150, 40, 30), (190, 240, 40, 30), bleed=(1,))
     snap(bodies)
