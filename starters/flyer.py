@@ -76,7 +76,8 @@ def build(options: Options, pictures: list[Picture]) -> Project:
     products = pictures[:MAX_PRODUCTS]
     region = Region(MARGIN_MM, HEADER_H_MM + 12.0, page.width_mm - MARGIN_MM,
                     page.height_mm - FOOTER_H_MM - 8.0)
-    rects = grid(region, [p.aspect for p in products], fill=0.96, gap=6.0, below=TAG_GAP_MM + TAG_H_MM)
+    rects = grid(region, [p.aspect for p in products], fill=0.96, gap=6.0, below=TAG_GAP_MM + TAG_H_MM,
+                 on_a_shelf=True)
     for index, (picture, (x, y, w, h)) in enumerate(zip(products, rects), start=1):
         photo = PictureItem(id=f"product-{index}", x=x, y=y, w=w, h=h, path=picture.path,
                             anchor=PointAnchor(x=x, y=y, gamma=SLOT_GAMMA))

@@ -142,6 +142,39 @@ def test_flyer_price_tags_follow_their_products(tmp_path):
     assert page.background is not None and page.background.color
 
 
+def test_flyer_products_stand_on_one_line_per_row_so_their_tags_line_up(tmp_path):
+    """Products of eight shapes: each row's pictures share their bottom edge, so the tags under
+    them share a line (centred in their cells, a square beside a tall one left its tag 4-9 mm
+    off its neighbours', which no move of the snap could line up)."""
+    shapes = [(1, 1), (3, 4), (4, 3), (2, 3), (3, 2), (1, 1), (9, 16), (4, 5)]
+    project = starters.build("flyer", Options(year=2027),
+                             [Picture(f"pictures/{n}.jpg", w, h) for n, (w, h) in enumerate(shapes)])
+    [page] = project.pages
+    products = [i for i in page.items if isinstance(i, PictureItem)]
+    rows: dict[float, list[PictureItem]] = {}
+    for product in products:  # a row is the products whose boxes overlap it vertically
+        row = next((key for key in rows if abs(key - product.y) < product.h / 2), product.y)
+        rows.setdefault(row, []).append(product)
+    assert len(rows) == 2
+    for row in rows.values():
+        assert len({round(product.y + product.h / 2, 9) for product in row}) == 1, row
+        # on one line, boxes of near heights would have tops 1-4 mm apart: one height
+        heights = sorted(product.h for product in row)
+        for low, high in zip(heights, heights[1:]):
+            assert high == low or high > low / 0.85, heights
+    tags = {round(page.item(f"{product.id}-price").y, 9) for product in products}
+    assert len(tags) == len(rows)
+
+
+def test_the_shipped_flyer_tags_line_up_along_each_row():
+    """The sample as settled (physics, no-overlap pass and snap): each row's tags on one line."""
+    path = Path(__file__).resolve().parents[2] / "sample_projects" / "shop-flyer" / "shop-flyer.toml"
+    page = load_project(path).pages[0]
+    tags = [item for item in page.items if item.id.endswith("-price")]
+    lines = sorted({round(tag.y, 2) for tag in tags})
+    assert len(lines) == 2, lines
+
+
 def test_each_month_panel_is_the_right_month():
     """The builder's panels, checked against Python's calendar: every month once, in order."""
     project = starters.build("calendar", Options(year=2100), [Picture("pictures/a.jpg", 4, 3)])
