@@ -304,16 +304,21 @@ class _Snapper:
         the same kind near them, by bisection: which moves to score, their scores, whether the
         body misses a line now.  Most calls (on the 50-item page, three in five) find no move
         that helps, so a call is a few dozen small NumPy operations, and each one counts."""
-        members = (self.members[roots[0]] if len(roots) == 1
-                   else np.concatenate([self.members[root] for root in roots]))
-        if any(self.too_large[root][axis] for root in roots):
+        if len(roots) == 1:  # most calls: one group, nothing to gather
+            root = roots[0]
+            members, too_large, key = self.members[root], self.too_large[root][axis], (root,)
+            bleed = self.bleeds[root]
+        else:
+            members = np.concatenate([self.members[root] for root in roots])
+            too_large = any(self.too_large[root][axis] for root in roots)
+            key, bleed = tuple(sorted(roots)), all(self.bleeds[root] for root in roots)
+        if too_large:
             return Moves(roots, members, NO_SHIFTS, 0.0, False, False)
-        key = tuple(sorted(roots))
         known = self.memo.recall(key, axis)
         if known is not None:  # the same groups, perhaps named in another order
             return known if known.roots == roots else known._replace(roots=roots, members=members)
         lines = self.lines[axis]
-        table = self.tables[all(self.bleeds[root] for root in roots)][axis]
+        table = self.tables[bleed][axis]
         if len(members) == 1:  # most calls: one row, read by plain indexing
             row = members[0]
             low_edge, _, high_edge = lines[row].tolist()
@@ -332,11 +337,9 @@ class _Snapper:
         ordered.sort()
         shifts, missing, lined_up, now = candidate_shifts(ordered, self.bounds)
         if len(shifts) > MAX_CANDIDATES:  # perhaps a crowded page: the nearest lines only
-            shifts = sorted_unique(shifts)
-            if len(shifts) > MAX_CANDIDATES:
-                shifts = shifts[np.argsort(np.abs(shifts), kind="stable")[:MAX_CANDIDATES]]
+            shifts = nearest_shifts(sorted_unique(shifts))
         scores = misses_after(ordered, shifts)
-        if scores[scores.argmin()] < now:  # most calls find no better move
+        if scores.min() < now:  # most calls find no better move
             better = (scores < now).nonzero()[0]
             found = Moves(roots, members,
                           *best_first(shifts[better], scores[better], now, self.tries),
@@ -558,6 +561,23 @@ def misses_after(ordered: np.ndarray, shifts: np.ndarray) -> np.ndarray:
     np.nextafter(ends[2:], np.inf, out=ends[2:])
     # twice (near misses and alignments, less the alignments, ALIGN_GAIN more off each)
     return SCORE_WEIGHTS @ ordered.searchsorted(ends)
+
+
+def nearest_shifts(distinct: np.ndarray, count: int = MAX_CANDIDATES) -> np.ndarray:
+    """The ``count`` shifts of ``distinct`` (sorted, each once) nearest to 0, of two as near
+    the lower first, in ascending order (a sort by distance from 0 chose them: on the lines of
+    a crowded page's columns, 500 candidates, that sort was a fifth of scoring one).  The
+    nearest values of a sorted array are a run of it: the first run whose left end is no
+    farther from 0 than the value just past its right end, found by bisection."""
+    values = distinct.tolist()
+    low, high = 0, max(len(values) - count, 0)
+    while low < high:
+        middle = (low + high) // 2
+        if abs(values[middle]) > abs(values[middle + count]):
+            low = middle + 1
+        else:
+            high = middle
+    return distinct[low:low + count]
 
 
 def best_first(shifts: np.ndarray, scores: np.ndarray, now: int,
