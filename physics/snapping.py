@@ -364,7 +364,7 @@ class _Snapper:
                     tables[axis][members] += shift
                 self.memo.moved(axis, before, self.lines[axis][members])
                 if self.rest is not None:
-                    self.rest.moved()
+                    self.rest.moved(members)
                 return True
         return False
 

@@ -18,6 +18,7 @@ from floatpage.physics.geometry import pair_sums, xy_slots
 from floatpage.physics.guides import hold_strength, page_lines, snap_range
 from floatpage.physics.params import page_margin, page_scale
 from floatpage.physics.rest_check import PROBE_RADIAL, RestCheck
+from floatpage.physics.snapping import snap_limits, snap_to_guides
 
 from seeded_scenes import load, mixed_scene
 
@@ -93,3 +94,31 @@ def test_the_rest_checks_sums_are_the_fast_modes_bit_for_bit():
                 assert found.tobytes() == expected.tobytes(), (scene.name, row, shift)
                 touched += int(np.any(found != 0.0))
         assert touched > count  # the pages are pressed: most sums are not zero
+
+
+class SummedTwice(RestCheck):
+    """The snap's rest check, each sum of a move being tried also made with every push worked
+    out afresh: the pushes it keeps between checks must be the page's as it is."""
+
+    def net(self, rows, pairs, xs, ys, moving=None):
+        found = super().net(rows, pairs, xs, ys, moving)
+        if moving is not None:
+            afresh = super().net(rows, pairs, xs, ys)
+            assert np.array(found).tobytes() == np.array(afresh).tobytes(), (rows, moving)
+            self.compared += 1
+        return found
+
+
+def test_the_pushes_kept_between_rest_checks_are_the_pages_own():
+    """A roomy page's snap (120 items on A4 landscape, 80 on A5: hundreds of moves, each
+    making the pushes of its pairs stale) with every sum checked against one afresh."""
+    for count, seed, page in ((120, 3001, (297.0, 210.0)), (80, 3002, (148.0, 210.0))):
+        scene = mixed_scene(count, 0.4, seed=seed, page_w_mm=page[0], page_h_mm=page[1])
+        engine = Engine(*page, Params())
+        load(engine, scene)
+        engine.settle(finalize=False)
+        bodies, params = engine.bodies, engine.params
+        clearance, margin, rest = snap_limits(bodies, *page, params)
+        rest.__class__, rest.compared = SummedTwice, 0
+        moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest)
+        assert moves > 50 and rest.compared > 50, (scene.name, moves, rest.compared)

@@ -13,10 +13,22 @@ from hypothesis import strategies as st
 from floatpage.physics.guides import CENTRE, HIGH, LOW, features
 from floatpage.physics.snapping import (
     ALIGNED_MM, ESCAPE_MM, EVERY_MOVE, MAX_TRIES, MINE, NEAR_MM, THEIRS, THEIRS_COLUMNS,
-    best_first, candidate_shifts, distance_bounds, feature_table, misses_after,
+    best_first, candidate_shifts, distance_bounds, feature_table, misses_after, nearest_shifts,
 )
 
 REACH, FARTHEST = 4.0, 12.0
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.integers(-40, 40), min_size=1, max_size=120),
+       st.sampled_from([0.05, 0.25, 1.0]), st.integers(1, 70))
+def test_the_nearest_shifts_are_the_first_by_distance_from_zero(steps, unit, count):
+    """The cut to the shifts nearest 0 (of two as near, the lower) is the one a stable sort
+    by distance from 0 makes, on values with many ties (a shift and its negative, 0, -0)."""
+    distinct = np.unique(np.array(steps, dtype=float) * unit + 0.0)
+    by_distance = distinct[np.argsort(np.abs(distinct), kind="stable")[:count]]
+    chosen = nearest_shifts(distinct, count)
+    assert np.array_equal(chosen, np.sort(by_distance))
 
 
 def on_the_ends(shifts: list[float], others: list[float]) -> np.ndarray:
