@@ -5,6 +5,7 @@ and the Engine.settle way (benchmarks/physics.py).
     .venv/bin/python benchmarks/snap_speed.py              # best of 3 per snap
     .venv/bin/python benchmarks/snap_speed.py --repeats 1 --only "50 items"
     .venv/bin/python benchmarks/snap_speed.py --repeats 2 --only "50 items" --engine-only
+    .venv/bin/python benchmarks/snap_speed.py --roomy --engine-only   # and the roomy pages
 
 Each snap's input (the bodies after the no-overlap pass) is kept, then snapped again on a copy:
 CPU seconds (time.process_time) per scene, best of --repeats, the moves made, and a hash of the
@@ -13,6 +14,11 @@ makes the same moves (the hash is the same) and what it saves.  Under callgrind 
 the instruction counts do not depend on the machine's load: the run with --repeats 2 less
 the run with --repeats 1 is one snap of each input (--engine-only: the Engine.settle snaps
 alone, one per scene).
+
+--roomy adds the pages of issues #10 and #16, where the snap was most of the settle: the
+fresh scenes of benchmarks/physics.py (--fresh 16) of 60 to 120 items, seeds 3001, 3002,
+3008, 3009, and those of the same kinds from seed 5100 on, which no one tuned on (Engine.settle
+snaps only: they are engine scenes).
 """
 
 from __future__ import annotations
@@ -29,7 +35,10 @@ from floatpage.physics import Engine, Params
 from floatpage.physics.snapping import snap_page
 
 from alignment import benchmark_scenes, random_scenes, scene_project
+from physics import fresh_scenes
 from seeded_scenes import Scene, load
+
+ROOMY_ITEMS = (60, 80, 120)  # the mid-size pages of fresh_scenes, where the snap costs most
 
 
 def loaded(scene: Scene) -> Engine:
@@ -40,7 +49,15 @@ def loaded(scene: Scene) -> Engine:
     return engine
 
 
-def captured_snaps(only: str, engine_only: bool = False) -> list[tuple[str, tuple]]:
+def roomy_scenes() -> list[Scene]:
+    """The fresh scenes of 60-120 items: benchmarks/physics.py's (seed 3000 on) and as many
+    again from seed 5100 on."""
+    return [scene for first_seed in (3000, 5100) for scene in fresh_scenes(16, first_seed)[:16]
+            if scene.name.startswith("seed ") and len(scene.centres) in ROOMY_ITEMS]
+
+
+def captured_snaps(only: str, engine_only: bool = False,
+                   roomy: bool = False) -> list[tuple[str, tuple]]:
     """(label, snap_page's arguments) for every snap the settles ask for."""
     captured: list[tuple[str, tuple]] = []
     label = [""]
@@ -51,10 +68,11 @@ def captured_snaps(only: str, engine_only: bool = False) -> list[tuple[str, tupl
 
     engine_module.snap_page = keep
     try:
-        for scene in benchmark_scenes(quick=True) + random_scenes():
+        engine_scenes = roomy_scenes() if roomy else []
+        for scene in benchmark_scenes(quick=True) + random_scenes() + engine_scenes:
             if only not in scene.name:
                 continue
-            if not engine_only:
+            if not engine_only and not any(scene is kept for kept in engine_scenes):
                 label[0] = f"settle {scene.name}"
                 settle_project(scene_project(scene))
             label[0] = f"Engine.settle {scene.name}"
@@ -70,11 +88,14 @@ def main() -> None:
     parser.add_argument("--only", default="", help="only the scenes whose name contains this")
     parser.add_argument("--engine-only", action="store_true",
                         help="only the snaps of Engine.settle (benchmarks/physics.py's way)")
+    parser.add_argument("--roomy", action="store_true",
+                        help="also the fresh pages of 60-120 items (issues #10 and #16)")
     args = parser.parse_args()
     seconds: dict[str, float] = defaultdict(float)
     moves: dict[str, int] = defaultdict(int)
     snapped = hashlib.sha256()
-    for label, (bodies, page_w_mm, page_h_mm, params) in captured_snaps(args.only, args.engine_only):
+    captured = captured_snaps(args.only, args.engine_only, args.roomy)
+    for label, (bodies, page_w_mm, page_h_mm, params) in captured:
         best = float("inf")
         for _ in range(args.repeats):
             trial = copy.deepcopy(bodies)
