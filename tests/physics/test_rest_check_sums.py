@@ -69,14 +69,21 @@ def vectorised_net(rest: RestCheck, rows: list[int], pairs: list[int],
     return acc[rows]
 
 
+def settled(count: int, coverage: float, seed: int, page: tuple[float, float]) -> Engine:
+    """A seeded page settled without the final pass (Engine.finalize): pressed contacts,
+    items on the walls, near misses for a snap to close."""
+    scene = mixed_scene(count, coverage, seed=seed, page_w_mm=page[0], page_h_mm=page[1])
+    engine = Engine(*page, Params())
+    load(engine, scene)
+    engine.settle(finalize=False)
+    return engine
+
+
 def test_the_rest_checks_sums_are_the_fast_modes_bit_for_bit():
     """On settled seeded pages (pressed contacts, items on the walls), before and after a
     trial move of each item, as keeps_rest asks."""
     for count, seed, page in ((30, 7, (210.0, 297.0)), (16, 3, (148.0, 210.0))):
-        scene = mixed_scene(count, 0.55, seed=seed, page_w_mm=page[0], page_h_mm=page[1])
-        engine = Engine(*page, Params())
-        load(engine, scene)
-        engine.settle(finalize=False)
+        engine = settled(count, 0.55, seed, page)
         bodies, params = engine.bodies, engine.params
         margin = page_margin(params.margin_mm, *page)
         gap = target_gap(bodies.sizes[bodies.active], *page, params.gutter_mm)
@@ -91,7 +98,7 @@ def test_the_rest_checks_sums_are_the_fast_modes_bit_for_bit():
                 centres[row, 0] += shift
                 found = np.array(rest.net(rows, pairs, *centres.T.tolist())).reshape(-1, 2)
                 expected = vectorised_net(rest, rows, pairs, centres)
-                assert found.tobytes() == expected.tobytes(), (scene.name, row, shift)
+                assert found.tobytes() == expected.tobytes(), (count, seed, row, shift)
                 touched += int(np.any(found != 0.0))
         assert touched > count  # the pages are pressed: most sums are not zero
 
@@ -113,12 +120,9 @@ def test_the_pushes_kept_between_rest_checks_are_the_pages_own():
     """A roomy page's snap (120 items on A4 landscape, 80 on A5: hundreds of moves, each
     making the pushes of its pairs stale) with every sum checked against one afresh."""
     for count, seed, page in ((120, 3001, (297.0, 210.0)), (80, 3002, (148.0, 210.0))):
-        scene = mixed_scene(count, 0.4, seed=seed, page_w_mm=page[0], page_h_mm=page[1])
-        engine = Engine(*page, Params())
-        load(engine, scene)
-        engine.settle(finalize=False)
+        engine = settled(count, 0.4, seed, page)
         bodies, params = engine.bodies, engine.params
         clearance, margin, rest = snap_limits(bodies, *page, params)
         rest.__class__, rest.compared = SummedTwice, 0
         moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest)
-        assert moves > 50 and rest.compared > 50, (scene.name, moves, rest.compared)
+        assert moves > 50 and rest.compared > 50, (count, seed, moves, rest.compared)
