@@ -31,7 +31,7 @@ import subprocess
 import statistics
 import sys
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -39,7 +39,7 @@ import numpy as np
 
 from floatpage.physics import Engine, Params, measure_quality
 from floatpage.physics.params import A4_W_MM, page_margin
-from seeded_scenes import Scene, big_item_scene, dropped_scene, load, mixed_scene
+from seeded_scenes import Scene, big_item_scene, dropped_scene, fresh_scenes, load, mixed_scene
 
 FRAME_RATE = 30  # the editor's frames per second
 try:  # the editor's physics budget per frame, so the live figures follow the editor
@@ -61,26 +61,6 @@ class Run:
     lost: int  # items whose centre is off the page
     in_margin: int = 0  # items inside the print-safe margin
     final_share: float = 0.0  # share of the time spent in the final pass (and the snap)
-
-
-def fresh_scenes(count: int, first_seed: int = 3000) -> list[Scene]:
-    """Scenes no one tuned on: ``count`` seeded pages of 8 to 300 items covering 25-60 % of
-    five page sizes, then 20 and 8 items dropped on one point and two pages with one item
-    larger than half the page."""
-    sizes = ((210.0, 297.0), (297.0, 210.0), (148.0, 210.0), (215.9, 279.4), (297.0, 420.0))
-    rng = np.random.default_rng(4242)
-    chosen = []
-    for k in range(count):
-        items = int(rng.choice([8, 15, 30, 40, 60, 80, 120, 300]))
-        coverage = float(rng.uniform(0.25, 0.6))
-        w, h = sizes[k % len(sizes)]
-        chosen.append(replace(mixed_scene(items, coverage, seed=first_seed + k, page_w_mm=w,
-                                          page_h_mm=h),
-                              name=f"seed {first_seed + k}: {items} items, {w:g}x{h:g} mm"))
-    return chosen + [replace(dropped_scene(20, seed=7), name="20 dropped on one point, seed 7"),
-                     replace(dropped_scene(8, seed=8), name="8 dropped on one point, seed 8"),
-                     replace(big_item_scene(seed=5), name="one item > half the page, seed 5"),
-                     replace(big_item_scene(seed=6), name="one item > half the page, seed 6")]
 
 
 def scenes() -> list[Scene]:

@@ -7,7 +7,7 @@ that both talk about the same pages; not part of the installed package.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -111,3 +111,23 @@ def album_pages(pages: int, photos: int, photo, rng: np.random.Generator) -> lis
                                       anchor=ItemAnchor(to=shot.id, dx=0.0, dy=below)))
         made.append(Page(id=f"page-{number + 1}", items=items))
     return made
+
+
+def fresh_scenes(count: int, first_seed: int = 3000) -> list[Scene]:
+    """Scenes no one tuned on: ``count`` seeded pages of 8 to 300 items covering 25-60 % of
+    five page sizes, then 20 and 8 items dropped on one point and two pages with one item
+    larger than half the page."""
+    sizes = ((210.0, 297.0), (297.0, 210.0), (148.0, 210.0), (215.9, 279.4), (297.0, 420.0))
+    rng = np.random.default_rng(4242)
+    chosen = []
+    for k in range(count):
+        items = int(rng.choice([8, 15, 30, 40, 60, 80, 120, 300]))
+        coverage = float(rng.uniform(0.25, 0.6))
+        w, h = sizes[k % len(sizes)]
+        chosen.append(replace(mixed_scene(items, coverage, seed=first_seed + k, page_w_mm=w,
+                                          page_h_mm=h),
+                              name=f"seed {first_seed + k}: {items} items, {w:g}x{h:g} mm"))
+    return chosen + [replace(dropped_scene(20, seed=7), name="20 dropped on one point, seed 7"),
+                     replace(dropped_scene(8, seed=8), name="8 dropped on one point, seed 8"),
+                     replace(big_item_scene(seed=5), name="one item > half the page, seed 5"),
+                     replace(big_item_scene(seed=6), name="one item > half the page, seed 6")]

@@ -35,8 +35,7 @@ from floatpage.physics import Engine, Params
 from floatpage.physics.snapping import snap_page
 
 from alignment import benchmark_scenes, random_scenes, scene_project
-from physics import fresh_scenes
-from seeded_scenes import Scene, load
+from seeded_scenes import Scene, fresh_scenes, load
 
 ROOMY_ITEMS = (60, 80, 120)  # the mid-size pages of fresh_scenes, where the snap costs most
 

@@ -55,19 +55,25 @@ def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
         context.set_forkserver_preload(PRELOAD)
         pool = ProcessPoolExecutor(max_workers=min(jobs, len(pages)), mp_context=context,
                                    initializer=leave_interrupts_to_the_command)
-        futures = [pool.submit(settle_one, page, settings, max_steps) for page in pages]
     except (OSError, NotImplementedError, ValueError):  # no processes here (a sandbox
         return settle_here(pages, settings, max_steps)  # without semaphores): one by one
+    # From here on, whatever stops the command (Ctrl+C, SIGTERM, a page's error) stops the
+    # pool with it, in the workers' start too: a Ctrl+C there, on a loaded CI machine, left
+    # the command's exit waiting for every page it had handed out.
     try:
+        try:
+            futures = [pool.submit(settle_one, page, settings, max_steps) for page in pages]
+        except (OSError, NotImplementedError, ValueError):  # no worker could start
+            stop_pool(pool)
+            return settle_here(pages, settings, max_steps)
         settled = [future.result() for future in futures]
     except BrokenProcessPool:
-        pool.shutdown(wait=False, cancel_futures=True)
+        stop_pool(pool)
         raise FloatpageError(
             "a process settling pages stopped without a word (out of memory?); nothing was "
             "written. Run again with -j 1 to settle the pages one by one") from None
-    except BaseException:  # an error, Ctrl+C, SIGTERM: no page more is started, and the
-        stop_workers(pool)  # pages under way are dropped (before shutdown forgets the workers)
-        pool.shutdown(wait=False, cancel_futures=True)
+    except BaseException:  # no page more is started, and the pages under way are dropped
+        stop_pool(pool)
         raise
     pool.shutdown()
     for page, (items, _) in zip(pages, settled):
@@ -75,14 +81,16 @@ def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
     return [report for _, report in settled]
 
 
-def stop_workers(pool: ProcessPoolExecutor) -> None:
-    """Stop the workers at once: they ignore Ctrl+C (leave_interrupts_to_the_command), and
-    the interpreter's exit would otherwise wait for the pages they are settling and those
-    already queued to them (at load 6 the command stopped 13-40 s after the key).  The pool
-    keeps its processes in ``_processes`` (Python 3.8-3.13; 3.14 has terminate_workers)."""
+def stop_pool(pool: ProcessPoolExecutor) -> None:
+    """Stop the workers at once, then the pool: the workers ignore Ctrl+C
+    (leave_interrupts_to_the_command), and the interpreter's exit would otherwise wait for
+    the pages they are settling and those already queued to them (at load 6 the command
+    stopped 13-40 s after the key).  The pool keeps its processes in ``_processes`` (Python
+    3.8-3.13; 3.14 has terminate_workers), and forgets them on shutdown: they go first."""
     for process in list((getattr(pool, "_processes", None) or {}).values()):
         if process.is_alive():
             process.terminate()
+    pool.shutdown(wait=False, cancel_futures=True)
 
 
 def settle_here(pages: list[Page], settings: PhysicsSettings,

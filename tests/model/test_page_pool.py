@@ -76,6 +76,20 @@ def test_an_error_on_one_page_in_a_worker_is_the_users_error():
         settle_in_pool(project.pages, project.physics, 200_000, 2)
 
 
+def session_members(session: int) -> list[int]:
+    """The processes of a session (/proc/PID/stat's sixth field), as a terminal sees its job."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:  # gone meanwhile
+                continue
+            if int(stat[stat.rindex(")") + 2:].split()[3]) == session:
+                found.append(int(entry.name))
+    return found
+
+
 def test_ctrl_c_stops_a_pooled_settle_with_one_message_and_the_file_untouched(tmp_path):
     path = tmp_path / "album.toml"
     save_project(album(120, 12), path)
@@ -83,7 +97,14 @@ def test_ctrl_c_stops_a_pooled_settle_with_one_message_and_the_file_untouched(tm
     command = subprocess.Popen([sys.executable, "-m", "floatpage.cli.main", "settle", "-j", "2",
                                 str(path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                text=True, start_new_session=True)
-    time.sleep(3.0)  # past the pool's start, into the pages
+    # into the pages: the command, multiprocessing's resource tracker and forkserver, and the
+    # two workers in the command's session (a fixed 3 s fell in the pool's start on a loaded
+    # CI machine)
+    started = time.monotonic()
+    while len(session_members(command.pid)) < 5 and time.monotonic() - started < 60:
+        assert command.poll() is None, command.communicate()
+        time.sleep(0.1)
+    time.sleep(1.0)
     assert command.poll() is None, command.communicate()
     os.killpg(command.pid, signal.SIGINT)  # as a terminal's Ctrl+C: the whole group
     # at once, not after the pages under way: the workers ignore Ctrl+C, and the command's
