@@ -99,7 +99,13 @@ def verdict(path: Path) -> tuple[bool, str]:
     named, or the page is too full for its margins.  (Until the ninth session any limit on
     the page counted, even one naming two other items.)"""
     project = load_project(path)
-    page = project.pages[0]
+    return page_verdict(project, project.pages[0])
+
+
+def page_verdict(project: Project, page: Page) -> tuple[bool, str]:
+    """``verdict`` of one page of a loaded project.  An item outside the region it is
+    confined to is never explained: no limit speaks of regions, and check sends it back to
+    `settle`."""
     engine = engine_for_page(page, project.physics)
     quality = engine.quality()
     if quality.ok:
@@ -108,17 +114,19 @@ def verdict(path: Path) -> tuple[bool, str]:
     limits = page_limits(engine.bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter)
     need = engine.grown_cover()
     crowded = need > GUTTER_FITS_COVER
+    packed = engine.grown_cover(0.0) > GUTTER_FITS_COVER  # check: they may not fit at all
     loose = [gap for _, _, gap in unexplained_pairs(engine.bodies, limits, gutter)
-             if gap < 0 or not crowded]
+             if (gap < 0 and not packed) or not crowded]
     named = {row for limit in limits if isinstance(limit, (PinnedOutside, TooLarge))
              for row in getattr(limit, "rows", (getattr(limit, "row", -1),))}
     pressed = crowded or widest_gap(limits) < 0  # the margin gives way only on such a page
     outside = [row for row in set(quality.in_margin) | set(quality.off_page)
                if row not in named and not pressed]
-    if loose or outside:
+    if loose or outside or quality.outside_region:
         return False, "UNEXPLAINED"
     reasons = sorted({type(limit).__name__ for limit in limits})
-    return False, ", ".join(reasons + ([f"area ({need:.0%})"] if crowded else []))
+    return False, ", ".join(reasons + ([f"area ({need:.0%})"] if crowded else [])
+                            + (["area without the gutter"] if packed else []))
 
 
 def main() -> None:
