@@ -46,6 +46,13 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                      + "make items smaller, mark items that may touch the edge `bleed = true`, "
                      "or lower margin_mm in [physics]")
     lines += _explain(limits, name, gutter_mm, engine.margin_mm)
+    named = {row for limit in limits if isinstance(limit, (PinnedOutside, TooLarge))
+             for row in getattr(limit, "rows", (getattr(limit, "row", -1),))}
+    off = [k for k in quality.off_page if k not in named]
+    if off:  # every item off the page is named, by a limit or here: never a bare count
+        lines.append(f"  {len(off)} item(s) reach past the page's edge: "
+                     f"{_some([name(k) for k in off[:SHOWN]], len(off))}; run `floatpage "
+                     "settle`, or move them onto the page")
     loose = unexplained_pairs(bodies, limits, gutter_mm) if not quality.ok else []
     overlapping = [(a, b) for a, b, gap in loose if gap < 0]
     if overlapping:
