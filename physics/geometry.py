@@ -71,17 +71,31 @@ def grown_cover(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
                 page_h_mm: float, gutter_mm: float) -> float:
     """The share of the room inside the walls (``near``, ``far`` as Bodies.insets) that the
     active items cover once each is grown by the gutter, the room grown by it too since items
-    may touch the walls: how tight a page is.  The room is the page less the widest walls, so
-    a region makes a page look fuller than it is, which errs on the side of care."""
+    may touch the walls: how tight a page is.  A page with regions has several rooms: the
+    page inside the walls of its free items, holding every item, and each region, holding the
+    items confined to it; the page is as tight as its tightest room.  (Until the tenth
+    session the page's room was the page less the widest walls of any item: two regions that
+    split a page left it no room, and `check` said its items needed 10^15 % of it, and a
+    page with regions was never aligned, re-started or relocated.)"""
     active = bodies.active
     if not active.any():
         return 0.0
     near, far = (np.broadcast_to(np.asarray(side, float), bodies.sizes.shape)
                  for side in (near, far))
-    room = (np.array([page_w_mm, page_h_mm]) - np.max(near[active], axis=0)
-            - np.max(far[active], axis=0))
-    grown = float(((bodies.sizes[active] + gutter_mm).prod(axis=1)).sum())
-    return grown / max(float((np.maximum(room, 0.0) + gutter_mm).prod()), 1e-9)
+    grown = (bodies.sizes + gutter_mm).prod(axis=1)
+    confined = ~np.isnan(bodies.regions[:, 0])
+    free = active & ~confined
+    rooms = [(np.flatnonzero(active), free if free.any() else active)]
+    for region in np.unique(bodies.regions[active & confined], axis=0):
+        rows = np.flatnonzero(active & (bodies.regions == region).all(axis=1))
+        rooms.append((rows, rows))
+    extent = np.array([page_w_mm, page_h_mm])
+    covers = []
+    for rows, walls in rooms:
+        room = extent - np.max(near[walls], axis=0) - np.max(far[walls], axis=0)
+        covers.append(float(grown[rows].sum())
+                      / max(float((np.maximum(room, 0.0) + gutter_mm).prod()), 1e-9))
+    return max(covers)
 
 
 def lines_up(cover: float, count: int) -> bool:
