@@ -42,7 +42,8 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
         lines.append(f"  {len(quality.in_margin)} item(s) inside the {quality.margin_mm:.1f} mm "
                      f"print-safe margin: {shown}; where a page is too full the gutter gives "
                      "way first, then the margin: "
-                     + ("" if binding(limits) else "run `floatpage settle`, ")
+                     + ("" if binding(limits) or engine.grown_cover() > GUTTER_FITS_COVER
+                        else "run `floatpage settle`, ")
                      + "make items smaller, mark items that may touch the edge `bleed = true`, "
                      "or lower margin_mm in [physics]")
     lines += _explain(limits, name, gutter_mm, engine.margin_mm)
@@ -58,9 +59,17 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     if overlapping:
         pairs = _some([f"{name(a)} and {name(b)}" for a, b in overlapping[:SHOWN]],
                       len(overlapping))
-        lines.append(f"  overlapping: {pairs}; run `floatpage settle`; if they still "
-                     "overlap after it, hard anchors or anchored groups box them in: move an "
-                     "anchor, make items smaller, or move some to another page")
+        packed = engine.grown_cover(0.0)
+        if packed > GUTTER_FITS_COVER:
+            lines.append(
+                f"  overlapping: {pairs}; the items may not fit on page {page.id} at all: "
+                f"even without the gutter they need {packed:.0%} of the room inside the "
+                f"margins, more than the {GUTTER_FITS_COVER:.0%} rectangles of mixed shapes "
+                "seldom pack tighter than; make items smaller, or move some to another page")
+        else:
+            lines.append(f"  overlapping: {pairs}; run `floatpage settle`; if they still "
+                         "overlap after it, hard anchors or anchored groups box them in: move "
+                         "an anchor, make items smaller, or move some to another page")
     elif loose:
         need = engine.grown_cover()
         if need > GUTTER_FITS_COVER:
