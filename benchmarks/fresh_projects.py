@@ -259,8 +259,10 @@ def place_unit(draw: PageDraw, parts: dict, regions: list[Region]) -> None:
         lead = TextItem(id=lead_id, x=x, y=y, w=w, h=h, text=parts["text"], anchor=anchor,
                         font=str(rng.choice(["serif", "sans", "display"])),
                         bold=bool(rng.random() < 0.3), **common)
-    elif parts["kind"] == "calendar":
-        lead = CalendarItem(id=lead_id, x=x, y=y, w=max(w, 30.0), h=max(h, 25.0),
+    elif parts["kind"] == "calendar":  # large enough for its days, where its room allows
+        left, top, right, bottom = box or (0.0, 0.0, draw.width, draw.height)
+        lead = CalendarItem(id=lead_id, x=x, y=y, w=max(w, min(30.0, 0.95 * (right - left))),
+                            h=max(h, min(25.0, 0.95 * (bottom - top))),
                             month=int(rng.integers(1, 13)), anchor=anchor, **common)
     else:
         lead = BlockItem(id=lead_id, x=x, y=y, w=w, h=h, color=str(rng.choice(COLOURS)),
