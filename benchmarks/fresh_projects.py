@@ -320,9 +320,25 @@ def miss_reasons(path: Path, check_output: str) -> list[str]:
     return misses
 
 
-TEX_BLOCK = re.compile(r"% \[fp:\d+\] item \"([^\"]+)\" on page \"[^\"]+\"\n"
-                       r"(?:\\fpblock\{[^}]*\}\{[^}]*\}\{([-\d.]+)\}\{([-\d.]+)\}"
-                       r"|\\node\[[^\]]*\] at \(([-\d.]+), ([-\d.]+)\))")
+TEX_BLOCK = re.compile(r"% \[fp:\d+\] item \"([^\"]+)\" on page \"[^\"]+\"[^\n]*\n"
+                       r"(?:\\fpblock\{[^}]*\}\{[^}]*\}\{([-\d.]+)\}\{([-\d.]+)\}\{([-\d.]+)\}"
+                       r"\{([-\d.]+)\}|\\node\[[^\]]*\] at \(([-\d.]+), ([-\d.]+)\) "
+                       r"\{\\includegraphics\[width=([-\d.]+)mm, height=([-\d.]+)mm\])")
+
+
+def typeset_centres(tex: str) -> dict[str, tuple[float, float]]:
+    """The centre of every block and picture in a .tex `render --tex` wrote, by item id (a
+    picture that keeps its aspect ratio is centred in its box)."""
+    centres = {}
+    for match in TEX_BLOCK.finditer(tex):
+        numbers = [float(value) for value in match.groups()[1:] if value is not None]
+        if match.group(2) is not None:
+            left, top, right, bottom = numbers
+        else:
+            left, top, width, height = numbers
+            right, bottom = left + width, top + height
+        centres[match.group(1)] = ((left + right) / 2, (top + bottom) / 2)
+    return centres
 
 
 def render_moves(path: Path, work: Path) -> tuple[list[str], float]:
@@ -337,13 +353,15 @@ def render_moves(path: Path, work: Path) -> tuple[list[str], float]:
     misses = [] if path.read_bytes() == before else ["render changed the file"]
     project = load_project(path)
     items = {item.id: item for page in project.pages for item in page.items}
-    for match in TEX_BLOCK.finditer(tex.read_text()):
-        item = items[match.group(1)]
-        left = float(match.group(2) or match.group(4))
-        top = float(match.group(3) or match.group(5))
-        if abs(abs(left) - item.left) > 0.02 or abs(abs(top) - item.top) > 0.02:
-            misses.append(f"render moved {item.id} to ({left}, {top}) from "
-                          f"({item.left:.2f}, {item.top:.2f})")
+    centres = typeset_centres(tex.read_text())
+    shown = [item for item in items.values() if item.kind in ("block", "picture")]
+    if len(centres) != len(shown):
+        misses.append(f"render typeset {len(centres)} of {len(shown)} blocks and pictures")
+    for item_id, (x, y) in centres.items():
+        item = items[item_id]
+        if abs(x - item.x) > 0.02 or abs(y - item.y) > 0.02:
+            misses.append(f"render moved {item_id} to ({x:.2f}, {y:.2f}) from "
+                          f"({item.x:.2f}, {item.y:.2f})")
     return misses, cpu
 
 
