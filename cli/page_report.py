@@ -177,7 +177,8 @@ def _stack_sentence(limit: Stack, name, gutter_mm: float) -> str:
     size_word, _ = AXIS_WORDS[1 - limit.axis]
     place = "one above another" if limit.axis == 1 else "side by side"
     along = "tall" if limit.axis == 1 else "wide"
-    return (f"items {who} are each too {size_word} to stand beside another of them with the "
+    beside = "beside" if limit.axis == 1 else "above"
+    return (f"items {who} are each too {size_word} to stand {beside} another of them with the "
             f"{gutter_mm:g} mm gutter, so they must stand {place}, and that is "
             f"{limit.needs_mm:.1f} mm {along}, more than the {limit.room_mm:.1f} mm inside the "
             f"margins; {_fate(limit, 'the widest gap they can keep is at most')}; make one "

@@ -41,3 +41,17 @@ def test_a_settled_fresh_project_keeps_its_promises(tmp_path, name):
             check.stdout
     else:
         assert check.returncode == 0, check.stdout
+
+
+def test_check_names_captioned_photos_that_must_stand_in_one_row(tmp_path):
+    """Each photo with its caption is taller than half the card: no two stand one above the
+    other, and the four side by side are wider than the card.  check names the four groups
+    by their photos, and says they cannot stand above each other (it said "beside", and
+    then "so they must stand side by side")."""
+    name = "limit-stacked-groups-19.toml"
+    shutil.copy(FILES / name, tmp_path / name)
+    settle(name, tmp_path)
+    check = floatpage("check", name, cwd=tmp_path)
+    assert ('items "p1-grouped5", "p1-captioned2", "p1-captioned0", "p1-photo4" are each too '
+            "tall to stand above another of them with the 3 mm gutter, so they must stand "
+            "side by side, and that is 159.1 mm wide") in check.stdout, check.stdout
