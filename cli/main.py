@@ -182,16 +182,18 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
-    from floatpage.cli.page_report import page_report
+    from floatpage.cli.page_report import page_report, settle_may_help
     from floatpage.model.layout import engine_for_page
 
     print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
+    settle_helps = False
     for page in project.pages:
         lines, problems = page_report(page, engine_for_page(page, project.physics),
                                       project.physics.gutter_mm)
         print("\n".join(lines))
         issues += problems
+        settle_helps = settle_helps or settle_may_help(lines)
     from floatpage.typeset import text_fit_warnings
     from floatpage.typeset.render import picture_warnings
 
@@ -201,7 +203,9 @@ def cmd_check(args: argparse.Namespace) -> int:
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
-        print(f"{issues} layout problem(s); run `floatpage settle {printable(args.path)}` to fix overlaps")
+        print(f"{issues} layout problem(s); " + (
+            f"run `floatpage settle {printable(args.path)}` to fix overlaps" if settle_helps
+            else "no settle fixes them: see the reasons above"))
         return EXIT_USER_ERROR
     return EXIT_OK
 

@@ -18,11 +18,13 @@ from floatpage.physics.geometry import GUTTER_FITS_COVER
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
+SETTLE = "run `floatpage settle`"  # the advice for a miss a settle may fix (and only for one)
 
 
 def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     """The lines `check` prints for ``page`` (settled or not, as it lies in the file) and the
-    number of layout problems it counts for ``--strict``."""
+    number of layout problems it counts for ``--strict``.  Only the misses no reason explains
+    carry the advice SETTLE (``settle_may_help``)."""
     quality = engine.quality()
     bodies = engine.bodies
     lines = [f"page {page.id}: {quality.summary()}",
@@ -33,8 +35,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     for k in quality.outside_region:
         item = page.items[k]
         lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
-                     f'"{printable(item.region)}": run `floatpage settle`, or make the region '
-                     "larger")
+                     f'"{printable(item.region)}": {SETTLE}, or make the region larger')
     limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
               if not quality.ok else [])
     if quality.in_margin:
@@ -43,7 +44,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                      f"print-safe margin: {shown}; where a page is too full the gutter gives "
                      "way first, then the margin: "
                      + ("" if binding(limits) or engine.grown_cover() > GUTTER_FITS_COVER
-                        else "run `floatpage settle`, ")
+                        else f"{SETTLE}, ")
                      + "make items smaller, mark items that may touch the edge `bleed = true`, "
                      "or lower margin_mm in [physics]")
     lines += _explain(limits, name, gutter_mm, engine.margin_mm)
@@ -52,8 +53,8 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     off = [k for k in quality.off_page if k not in named]
     if off:  # every item off the page is named, by a limit or here: never a bare count
         lines.append(f"  {len(off)} item(s) reach past the page's edge: "
-                     f"{_some([name(k) for k in off[:SHOWN]], len(off))}; run `floatpage "
-                     "settle`, or move them onto the page")
+                     f"{_some([name(k) for k in off[:SHOWN]], len(off))}; {SETTLE}, or move "
+                     "them onto the page")
     loose = unexplained_pairs(bodies, limits, gutter_mm) if not quality.ok else []
     overlapping = [(a, b) for a, b, gap in loose if gap < 0]
     if overlapping:
@@ -67,7 +68,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                 f"margins, more than the {GUTTER_FITS_COVER:.0%} rectangles of mixed shapes "
                 "seldom pack tighter than; make items smaller, or move some to another page")
         else:
-            lines.append(f"  overlapping: {pairs}; run `floatpage settle`; if they still "
+            lines.append(f"  overlapping: {pairs}; {SETTLE}; if they still "
                          "overlap after it, hard anchors or anchored groups box them in: move "
                          "an anchor, make items smaller, or move some to another page")
     elif loose:
@@ -83,12 +84,19 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
         else:
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
-                f"need {need:.0%} of the room inside the margins) but is not kept: run "
-                f"`floatpage settle`; if a settled page still misses it, its anchors or the "
+                f"need {need:.0%} of the room inside the margins) but is not kept: {SETTLE}; "
+                f"if a settled page still misses it, its anchors or the "
                 f"order its items lie in jam it: move an anchored item or nudge items apart, "
                 f"and settle again")
             problems += 1
     return lines, problems
+
+
+def settle_may_help(lines: list[str]) -> bool:
+    """Whether any of page_report's ``lines`` sends the user to `settle`: `check`'s closing
+    line repeats that advice only then (it said "run `floatpage settle` to fix overlaps"
+    below a page whose every miss was named as one no settle can fix)."""
+    return any(SETTLE in line for line in lines)
 
 
 def _some(shown: list[str], total: int) -> str:
