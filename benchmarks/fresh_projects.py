@@ -390,7 +390,8 @@ def sweep_one(seed: int, work: Path, render: bool) -> tuple[str, list[str], floa
     if render:
         found, _ = render_moves(path, folder)
         misses += found
-    shutil.rmtree(folder, ignore_errors=True) if not misses else None
+    if not misses:  # a file that misses is kept for a look
+        shutil.rmtree(folder, ignore_errors=True)
     return shape, misses, cpu
 
 
