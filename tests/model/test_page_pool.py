@@ -76,6 +76,14 @@ def test_an_error_on_one_page_in_a_worker_is_the_users_error():
         settle_in_pool(project.pages, project.physics, 200_000, 2)
 
 
+def ctrl_c_live() -> None:
+    """In the command's process before it starts: Ctrl+C as a terminal has it.  A job that
+    a script puts in the background (`cmd &`, as CI runners and `setsid bash -c '... &'` do)
+    starts with SIGINT ignored, every process below it inherits that, and Python then leaves
+    it ignored: the command settled all 12 pages and exited 0 (the fresh-clone CI run)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def session_members(session: int) -> list[int]:
     """The processes of a session (/proc/PID/stat's sixth field), as a terminal sees its job."""
     found = []
@@ -96,7 +104,7 @@ def test_ctrl_c_stops_a_pooled_settle_with_one_message_and_the_file_untouched(tm
     before = path.read_bytes()
     command = subprocess.Popen([sys.executable, "-m", "floatpage.cli.main", "settle", "-j", "2",
                                 str(path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                               text=True, start_new_session=True)
+                               text=True, start_new_session=True, preexec_fn=ctrl_c_live)
     # into the pages: the command, multiprocessing's resource tracker and forkserver, and the
     # two workers in the command's session (a fixed 3 s fell in the pool's start on a loaded
     # CI machine)
