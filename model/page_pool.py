@@ -58,8 +58,8 @@ def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
     except (OSError, NotImplementedError, ValueError):  # no processes here (a sandbox
         return settle_here(pages, settings, max_steps)  # without semaphores): one by one
     # From here on, whatever stops the command (Ctrl+C, SIGTERM, a page's error) stops the
-    # pool with it, in the workers' start too: a Ctrl+C there, on a loaded CI machine, left
-    # the command's exit waiting for every page it had handed out.
+    # pool with it, in the workers' start too: otherwise the command's exit waits for every
+    # page it has handed out.
     try:
         try:
             futures = [pool.submit(settle_one, page, settings, max_steps) for page in pages]

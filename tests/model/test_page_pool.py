@@ -106,8 +106,8 @@ def test_ctrl_c_stops_a_pooled_settle_with_one_message_and_the_file_untouched(tm
                                 str(path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                text=True, start_new_session=True, preexec_fn=ctrl_c_live)
     # into the pages: the command, multiprocessing's resource tracker and forkserver, and the
-    # two workers in the command's session (a fixed 3 s fell in the pool's start on a loaded
-    # CI machine)
+    # two workers in the command's session (rather than a fixed 3 s, which a loaded machine
+    # may spend starting them)
     started = time.monotonic()
     while len(session_members(command.pid)) < 5 and time.monotonic() - started < 60:
         assert command.poll() is None, command.communicate()
