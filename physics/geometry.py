@@ -144,8 +144,8 @@ def group_bounds(bodies: Bodies, rows: np.ndarray, roots: np.ndarray, root_offse
     highest = extent - high[rows] - far[rows]
     edges = bodies.insets(0.0, page_w_mm, page_h_mm)  # the walls without the margin
     squeezed(lowest, highest, -low[rows] + edges[0][rows], extent - high[rows] - edges[1][rows])
-    confine_followers(bodies, roots, root_offsets, rows, lowest, highest, near, far, extent,
-                      edges)
+    confine_followers(bodies, roots, root_offsets, (low, high), rows, lowest, highest, near,
+                      far, extent, edges)
     return lowest, highest
 
 
@@ -176,19 +176,21 @@ def as_insets(margins: np.ndarray | float) -> np.ndarray | float:
 
 
 def confine_followers(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray,
+                      extents: tuple[np.ndarray, np.ndarray],
                       rows: np.ndarray, lowest: np.ndarray, highest: np.ndarray,
                       near: np.ndarray, far: np.ndarray, extent: np.ndarray,
                       edges: tuple[np.ndarray, np.ndarray]) -> None:
     """Narrow the roots' bounds (for ``rows``) in place so that followers confined to a region
     keep inside it too.  Only followers with a region need this; the rest share their root's
-    page margins, which group_extents already counts.  ``edges`` are the walls without the
-    margin (Bodies.insets at 0), for a group too large for its walls (``squeezed``)."""
+    page margins, which group_extents already counts (``extents``: its answer, which the
+    caller has).  ``edges`` are the walls without the margin (Bodies.insets at 0), for a group
+    too large for its walls (``squeezed``)."""
     followers = np.flatnonzero(bodies.followers & ~np.isnan(bodies.regions[:, 0]))
     if not len(followers):
         return
     position = {int(row): k for k, row in enumerate(rows)}
     halves = bodies.sizes / 2
-    low, high = group_extents(bodies, roots, root_offsets)
+    low, high = extents
     for member in followers:
         k = position.get(int(roots[member]))
         if k is None:

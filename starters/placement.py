@@ -104,9 +104,7 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
 def on_shelves(rects: list[Rect]) -> list[Rect]:
     """``rects`` from ``grid``, each row's boxes moved down onto one line, the bottom of the
     row's tallest box (which stays centred in its cell, so the rows keep their places)."""
-    shelf: dict[float, float] = {}
-    for _, y, _, h in rects:
-        shelf[y] = max(shelf.get(y, y), y + h / 2)
+    shelf = {y: y + max(heights) / 2 for y, heights in row_heights(rects).items()}
     return [(x, shelf[y] - h / 2, w, h) for x, y, w, h in rects]
 
 
@@ -119,13 +117,20 @@ def one_height_per_row(rects: list[Rect], aspects: list[float]) -> list[Rect]:
     one's.  A row whose heights differ by more than ``ONE_HEIGHT_WITHIN`` (a tall photo beside
     wide ones) keeps them: cut to one height, the tall one would shrink to a stamp, and edges
     that far apart are no near miss."""
-    lowest: dict[float, float] = {}
-    highest: dict[float, float] = {}
-    for _, y, _, h in rects:
-        lowest[y], highest[y] = min(h, lowest.get(y, h)), max(h, highest.get(y, h))
+    rows = row_heights(rects)
+    lowest = {y: min(heights) for y, heights in rows.items()}
+    highest = {y: max(heights) for y, heights in rows.items()}
     return [(x, y, aspect * lowest[y], lowest[y])
             if lowest[y] >= (1 - ONE_HEIGHT_WITHIN) * highest[y] else (x, y, w, h)
             for aspect, (x, y, w, h) in zip(aspects, rects)]
+
+
+def row_heights(rects: list[Rect]) -> dict[float, list[float]]:
+    """The heights of ``grid``'s boxes by row (a row's boxes share the centre line ``y``)."""
+    rows: dict[float, list[float]] = {}
+    for _, y, _, h in rects:
+        rows.setdefault(y, []).append(h)
+    return rows
 
 
 def near_heights_as_one(rects: list[Rect], aspects: list[float]) -> list[Rect]:
@@ -134,11 +139,8 @@ def near_heights_as_one(rects: list[Rect], aspects: list[float]) -> list[Rect]:
     on a shelf (``on_shelves``) boxes of near heights have tops 1-4 mm apart, a near miss no
     move can close, while a tall sunflower beside three squares stands clear of them.  Unlike
     ``one_height_per_row`` a row may keep several heights."""
-    heights: dict[float, list[float]] = {}
-    for _, y, _, h in rects:
-        heights.setdefault(y, []).append(h)
     cut: dict[tuple[float, float], float] = {}  # (row, height) -> the height it is cut to
-    for y, row in heights.items():
+    for y, row in row_heights(rects).items():
         lowest = None
         for h in sorted(row):
             if lowest is None or lowest < (1 - ONE_HEIGHT_WITHIN) * h:
