@@ -36,7 +36,7 @@ def test_the_wheel_has_floatpage_as_its_only_top_level_package(tmp_path: Path) -
     bundled = {Path(name).name for name in names if name.startswith("floatpage/starters/bundled/")}
     assert bundled == {path.name for path in (ROOT / "starters" / "bundled").iterdir()}
     entry_points = next(n for n in names if n.endswith(".dist-info/entry_points.txt"))
-    assert "floatpage = floatpage.cli.main:main" in zipfile.ZipFile(wheel).read(entry_points).decode()
+    assert "floatpage = floatpage.cli.entry:main" in zipfile.ZipFile(wheel).read(entry_points).decode()
 
 
 def test_no_module_imports_a_part_by_its_bare_folder_name() -> None:
