@@ -162,16 +162,21 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
     from floatpage.model.layout import settle_project
     from floatpage.typeset import render_pdf
+    from floatpage.typeset.while_settling import render_while_settling
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
+    options = dict(tex_out=Path(args.tex) if args.tex else None,
+                   fragment_out=Path(args.fragment) if args.fragment else None,
+                   print_bleed_mm=args.bleed if args.print else None)
     with progress_line(args.quiet) as show:
-        if not args.no_settle:
-            show("settling the layout…")
-            settle_project(project, jobs=jobs_of(args))
-        report = render_pdf(project, out, tex_out=Path(args.tex) if args.tex else None,
-                            fragment_out=Path(args.fragment) if args.fragment else None,
-                            progress=show, print_bleed_mm=args.bleed if args.print else None)
+        if args.no_settle:
+            report = render_pdf(project, out, progress=show, **options)
+        else:
+            jobs = jobs_of(args)
+            report = render_while_settling(
+                project, out, lambda settled: settle_project(settled, jobs=jobs), jobs=jobs,
+                progress=show, **options)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
