@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import Callable
 
 from floatpage.model.document import Project
+from floatpage.model.errors import FloatpageError
 from floatpage.model.page_pool import available_cores, worth_a_pool
 from floatpage.typeset.render import (
     PreparedRender, RenderReport, TypesetPdf, prepare_render, render_pdf, typeset_prepared,
@@ -107,13 +108,22 @@ def render_while_settling(project: Project, out_pdf: Path, settle: Callable[[Pro
     (``overlap``: always, never, or None for where ``worth_overlapping``).  The report's
     ``typeset_while_settling`` says whether the PDF is the overlapped run's."""
     say = progress or (lambda message: None)
-    options = dict(tex_out=tex_out, fragment_out=fragment_out, print_bleed_mm=print_bleed_mm)
-    if not (worth_overlapping(project, jobs) if overlap is None else overlap):
+    options = dict(tex_out=tex_out, fragment_out=fragment_out, print_bleed_mm=print_bleed_mm,
+                   timeout_s=timeout_s, progress=progress)
+
+    def one_after_the_other() -> RenderReport:
         say("settling the layout…")
         settle(project)
-        return render_pdf(project, out_pdf, timeout_s=timeout_s, progress=progress, **options)
+        return render_pdf(project, out_pdf, **options)
+
+    if not (worth_overlapping(project, jobs) if overlap is None else overlap):
+        return one_after_the_other()
     saved = layout_of(project)
-    prepared = prepare_render(project, out_pdf, progress=progress, **options)
+    try:
+        prepared = prepare_render(project, out_pdf, tex_out=tex_out, fragment_out=fragment_out,
+                                  progress=progress, print_bleed_mm=print_bleed_mm)
+    except FloatpageError:  # reported as the render one after the other reports it
+        return one_after_the_other()
     run = EngineRun(prepared, timeout_s).start()
     try:
         say("settling the layout…")
@@ -124,7 +134,7 @@ def render_while_settling(project: Project, out_pdf: Path, settle: Callable[[Pro
         raise
     if not unchanged:  # the file was not settled: typeset what the settle made of it
         run.stop()
-        return render_pdf(project, out_pdf, timeout_s=timeout_s, progress=progress, **options)
+        return render_pdf(project, out_pdf, **options)
     say("typesetting with LuaLaTeX")
     try:
         typeset = run.outcome()
