@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any, Literal, Union
 
 from floatpage.model.key_specs import (
-    CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, WEEKDAYS, at_most_chars, between, colour,
+    CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, TEXT_ALIGNMENTS, WEEKDAYS, at_most_chars, between, colour,
     finite, item_id, name_or_empty, one_of, positive, spec,
 )
 from floatpage.physics.params import DISTANCES, MODES, Params, out_of_range
@@ -28,6 +28,7 @@ FORMAT_VERSION = 1
 
 Orientation = Literal["portrait", "landscape"]
 FontFamily = Literal["serif", "sans", "display"]
+TextAlignment = Literal["left", "centre", "right"]
 ITEM_KINDS = ("text", "picture", "block", "calendar")
 COLOUR_LABEL = "Colour (#rrggbb)"
 MONTH_CHOICES = tuple((calendar.month_name[number], number) for number in range(1, 13))
@@ -107,6 +108,12 @@ class TextItem(ItemBase):
     color: str = field(default="#000000", metadata=spec("str", colour, label=COLOUR_LABEL))
     bold: bool = field(default=False, metadata=spec("bool", label="Bold"))
     italic: bool = field(default=False, metadata=spec("bool", label="Italic"))
+    # Where each line sits across the box. A title centred on the page keeps its full box (its
+    # edges on the page's lines) and still prints centred, where a box hugging its words
+    # puts its edges wherever the words end, a few mm from other items' edges.
+    align: TextAlignment = field(default="left", metadata=spec(
+        "str", one_of(*TEXT_ALIGNMENTS), label="Alignment",
+        choices=(("Left", "left"), ("Centred", "centre"), ("Right", "right"))))
 
     kind = "text"
 

@@ -17,6 +17,7 @@ from typing import Any, Callable
 HEX_COLOUR = re.compile(r"^#[0-9a-fA-F]{6}$")
 CALENDAR_LANGUAGES = ("en", "de", "fr", "es", "it", "pt", "nl")
 FONT_FAMILIES = ("serif", "sans", "display")
+TEXT_ALIGNMENTS = ("left", "centre", "right")  # where a text box sets its lines
 WEEKDAYS = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
 # What the typesetter reads: JPEG, PNG and PDF go to LaTeX as they are, the rest are converted.
 PICTURE_SUFFIXES = (".jpg", ".jpeg", ".png", ".pdf", ".webp", ".gif", ".bmp", ".tif", ".tiff")

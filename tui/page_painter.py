@@ -19,7 +19,7 @@ from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
 from floatpage.tui.calendar_cells import cells, month_lines, month_text
-from floatpage.tui.cell_text import graphemes, visual, wrap_cells
+from floatpage.tui.cell_text import graphemes, visual, width as cell_width, wrap_cells
 from floatpage.tui.cell_text import width as cell_width
 from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
 from floatpage.tui.mark_places import beside_text, inside, mark_cell, occupancy, touched_cells
@@ -254,7 +254,7 @@ class PagePainter:
             self._label(canvas, item, box, mix(readable_on(fill), fill, 0.45), fill)
         if isinstance(item, TextItem):
             self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold,
-                       below_label=labelled)
+                       below_label=labelled, align=item.align)
         elif isinstance(item, CalendarItem):
             self._calendar(canvas, box, item, ink, fill, below_label=labelled)
 
@@ -278,8 +278,9 @@ class PagePainter:
         return col0, row0 + (1 if below_label else 0), col1, row1
 
     def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
-              *, bold: bool = False, below_label: bool = True) -> None:
-        """As much of the text as fits the item's cells, word-wrapped."""
+              *, bold: bool = False, below_label: bool = True, align: str = "left") -> None:
+        """As much of the text as fits the item's cells, word-wrapped, each line where the
+        box's ``align`` sets it in the PDF."""
         col0, first, col1, row1 = self._text_area(box, below_label)
         width = col1 - col0
         if width < 1 or first >= row1:
@@ -288,8 +289,10 @@ class PagePainter:
         rows = row1 - first
         if len(lines) > rows:  # the last line shown ends in "…": the text goes on
             lines = lines[:rows - 1] + [cut_short(lines[rows - 1], width)]
+        share = {"left": 0.0, "centre": 0.5, "right": 1.0}.get(align, 0.0)
         for row, line in zip(range(first, row1), lines):
-            canvas.write(col0, row, line, fg, bg, bold=bold, end_col=col1)
+            spare = max(width - sum(cell_width(g) for g in graphemes(line)), 0)
+            canvas.write(col0 + int(spare * share), row, line, fg, bg, bold=bold, end_col=col1)
 
     def _calendar(self, canvas: CellCanvas, box, item: CalendarItem, fg: RGB, bg: RGB,
                   *, below_label: bool) -> None:

@@ -121,7 +121,8 @@ def place_text(item: TextItem, label: str, warnings: list[str]) -> PlacedText | 
     warnings += fit_warnings(label, face, fit, missing)
     if not fit.lines:
         return None
-    runs = place_lines(fit, None, item.x - item.w / 2, item.y - item.h / 2, item.h)
+    runs = place_lines(fit, None, item.x - item.w / 2, item.y - item.h / 2, item.h,
+                       widths_mm=item.w, align=item.align)
     return PlacedText(item.id, label, (RunGroup(face, fit.font_pt, item.color, runs),))
 
 

@@ -124,9 +124,14 @@ def printable_text(text: str, metrics: FontMetrics) -> tuple[str, list[str]]:
 
 
 def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: float,
-                h_mm: float, *, widths_mm: float | None = None, centre: bool = False) -> tuple[Run, ...]:
-    """Runs for fitted lines: block centred vertically in the box, lines left-aligned
-    (or centred in a box `widths_mm` wide)."""
+                h_mm: float, *, widths_mm: float | None = None, centre: bool = False,
+                align: str = "left") -> tuple[Run, ...]:
+    """Runs for fitted lines: block centred vertically in the box, lines left-aligned, or
+    centred (``centre``, or ``align`` "centre") or right-aligned (``align`` "right") in a box
+    ``widths_mm`` wide."""
+    if centre:
+        align = "centre"
+    share = {"left": 0.0, "centre": 0.5, "right": 1.0}[align] if widths_mm is not None else 0.0
     size = fit.font_pt
     spare_mm = max(0.0, h_mm - fit.height_pt * MM_PER_PT) / 2
     first_baseline_mm = top_mm + spare_mm + size * fit.top_em * MM_PER_PT
@@ -136,8 +141,8 @@ def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: floa
     for index, (line, width_pt, offset_pt) in enumerate(zip(fit.lines, fit.line_widths_pt,
                                                             offsets)):
         x_mm = left_mm + offset_pt * MM_PER_PT
-        if centre and widths_mm is not None:
-            x_mm += max(0.0, widths_mm - width_pt * MM_PER_PT) / 2
+        if share:
+            x_mm += max(0.0, widths_mm - width_pt * MM_PER_PT) * share
         y_mm = first_baseline_mm + index * fit.leading * size * MM_PER_PT
         runs.append(Run(x_mm, y_mm, line, width_pt, direction))
     return tuple(runs)
