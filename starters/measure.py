@@ -20,12 +20,15 @@ def widest_line_mm(item: TextItem) -> float | None:
 
     None when the fonts cannot be read (no TeX fonts installed): the caller keeps its box.
     """
-    try:
-        from floatpage.typeset.text_layout import face_for, fit_in_box
+    from floatpage.typeset.text_layout import face_for, fit_in_box
 
-        fit, _ = fit_in_box(item.text, face_for(item.font, item.bold, item.italic), item.w, item.h)
+    try:
+        fitted = fit_in_box(item.text, face_for(item.font, item.bold, item.italic), item.w, item.h)
     except Exception:  # noqa: BLE001 - failing to load fonts only means "don't measure"
         return None
+    # Unpacked outside the try: a change of fit_in_box's result must fail loudly here, not
+    # quietly leave every title left-aligned in a box wider than its words (as it once did).
+    fit = fitted[0]
     if not fit.line_widths_pt:
         return None
     return max(fit.line_widths_pt) * MM_PER_PT * SLACK
