@@ -137,9 +137,26 @@ def cmd_settle(args: argparse.Namespace) -> int:
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         read = Positions.of(project)
         settle_and_report(project, args)
+        before = file_identity(project.path)
         save_settled(project, read)
-    print(f"wrote positions to {printable(str(project.path))}")
+        written = file_identity(project.path) != before
+    # A settled file is left as it is (its mtime too, so make sees nothing new): say so
+    # rather than claim a write that never happened.
+    if written:
+        print(f"wrote positions to {printable(str(project.path))}")
+    else:
+        print(f"{printable(str(project.path))}: already settled, nothing to write")
     return EXIT_OK
+
+
+def file_identity(path) -> tuple[int, int, int] | None:
+    """What changes when a file is written: the atomic rename's new inode, or (a hard-linked
+    project saved in place) its modification time and size."""
+    try:
+        status = os.stat(path)
+    except OSError:
+        return None
+    return status.st_ino, status.st_mtime_ns, status.st_size
 
 
 def settle_and_report(project, args: argparse.Namespace) -> int:

@@ -55,6 +55,20 @@ def test_settle_removes_overlaps_and_writes_back(crowded_project):
     assert crowded_project.read_text() == settled
 
 
+def test_settle_says_whether_it_wrote_the_file(crowded_project):
+    """A Makefile log must not claim a write that did not happen: the second settle of a
+    settled file writes nothing (the mtime stays), so it says the file was already settled."""
+    first = run("settle", str(crowded_project))
+    assert first.returncode == 0, first.stderr
+    assert f"wrote positions to {crowded_project}" in first.stdout
+    written = crowded_project.stat().st_mtime_ns
+    again = run("settle", str(crowded_project))
+    assert again.returncode == 0, again.stderr
+    assert crowded_project.stat().st_mtime_ns == written
+    assert "wrote" not in again.stdout
+    assert f"{crowded_project}: already settled, nothing to write" in again.stdout
+
+
 def test_settle_dry_run_writes_nothing(crowded_project):
     before = crowded_project.read_text()
     result = run("settle", "--dry-run", str(crowded_project))
