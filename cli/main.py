@@ -45,9 +45,16 @@ def cmd_new(args: argparse.Namespace) -> int:
     project = starters.create(
         args.kind, Path(args.path), year=args.year,
         photos=Path(args.photos) if args.photos else None,
-        first_weekday=args.first_weekday, lang=args.lang, orientation=args.orientation,
-        jobs=jobs_of(args),
+        first_weekday=args.first_weekday or "monday", lang=args.lang,
+        orientation=args.orientation, jobs=jobs_of(args),
     )
+    # Only a calendar has a year and weeks: a Makefile that asked another kind for them
+    # (meaning `calendar`) hears so, instead of a card that quietly took no notice.
+    unused = [name for name, value in (("--year", args.year), ("--first-weekday", args.first_weekday))
+              if value is not None]
+    if unused and args.kind != "calendar":
+        print(f"note: {' and '.join(unused)} only {'shape' if len(unused) > 1 else 'shapes'} a "
+              f"calendar; ignored for `new {args.kind}`", file=sys.stderr)
     items = sum(len(page.items) for page in project.pages)
     print(f"created {printable(str(project.path))}: {len(project.pages)} page(s), {items} item(s)")
     print(f"next: floatpage edit {printable(str(project.path))}")
@@ -292,7 +299,8 @@ def build_parser() -> argparse.ArgumentParser:
     new.add_argument("path", help="the .toml file to create (refuses to overwrite)")
     new.add_argument("--year", type=int, help="calendar year (default: next year)")
     new.add_argument("--photos", metavar="DIR", help="use the pictures in DIR")
-    new.add_argument("--first-weekday", choices=WEEKDAYS, default="monday")
+    new.add_argument("--first-weekday", choices=WEEKDAYS, help="calendar: the first day of "
+                     "each week (default: monday)")
     new.add_argument("--lang", default="en", choices=CALENDAR_LANGUAGES,
                      help="language of month and day names")
     new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait")

@@ -50,3 +50,29 @@ def test_edit_on_a_broken_file_fails_before_taking_the_screen(tmp_path):
     assert result.returncode == 1
     assert '"pages" must be an array of tables' in result.stderr
     assert "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("kind, options, named", [
+    ("card", ["--year", "2030"], "--year"),
+    ("flyer", ["--first-weekday", "sunday"], "--first-weekday"),
+    ("album", ["--year", "2030", "--first-weekday", "sunday"], "--year and --first-weekday"),
+])
+def test_new_says_when_a_calendar_option_shapes_nothing(tmp_path, kind, options, named):
+    """`floatpage new card x.toml --year 2030` made a card and said nothing of the year: a
+    Makefile that meant `calendar` never learnt. The project is still made (exit 0)."""
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", kind,
+                             str(tmp_path / "x.toml"), *options, "-j", "1"],
+                            capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert (tmp_path / "x.toml").is_file()
+    verb = "shape" if " and " in named else "shapes"
+    assert f"note: {named} only {verb} a calendar; ignored for `new {kind}`" in result.stderr
+
+
+def test_new_calendar_takes_its_options_without_a_note(tmp_path):
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "calendar",
+                             str(tmp_path / "x.toml"), "--year", "2030", "--first-weekday",
+                             "sunday", "-j", "1"], capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert "note:" not in result.stderr
+    assert 'first_weekday = "sunday"' in (tmp_path / "x.toml").read_text()
