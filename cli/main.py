@@ -195,7 +195,9 @@ def cmd_render(args: argparse.Namespace) -> int:
             settle_project(project, jobs=jobs_of(args))
         report = render_pdf(project, out, tex_out=Path(args.tex) if args.tex else None,
                             fragment_out=Path(args.fragment) if args.fragment else None,
-                            progress=show, print_bleed_mm=args.bleed if args.print else None)
+                            progress=show,
+                            print_bleed_mm=(3.0 if args.bleed is None else args.bleed)
+                            if args.print else None)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
@@ -333,12 +335,12 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--no-settle", action="store_true", help="render the positions as saved")
     render.add_argument("--print", action="store_true",
                         help="for a print shop: bleed, crop marks, TrimBox and BleedBox")
-    render.add_argument("--bleed", type=bleed_length, default=3.0, metavar="MM",
+    render.add_argument("--bleed", type=bleed_length, default=None, metavar="MM",
                         help="bleed for --print, in mm (default 3)")
     render.add_argument("-q", "--quiet", action="store_true", help="no progress output")
     jobs_option(render)
     allow_outside_option(render)
-    render.set_defaults(run=cmd_render)
+    render.set_defaults(run=cmd_render, command_parser=render)
 
     check = commands.add_parser("check", help="validate and report layout quality",
                                 description="Validate a project file and report overlaps, items off "
@@ -363,6 +365,11 @@ def stop_on_terminate(signum, frame) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if getattr(args, "bleed", None) is not None and not args.print:
+        # --bleed alone made a plain PDF, no bleed at all: a file meant for the print shop
+        # went out without it, and nothing said so.
+        args.command_parser.error("argument --bleed: only shapes a --print sheet; add --print "
+                                  "(crop marks, TrimBox and BleedBox), or leave --bleed out")
     import signal
 
     for stop in (signal.SIGTERM, signal.SIGHUP):

@@ -76,3 +76,16 @@ def test_new_calendar_takes_its_options_without_a_note(tmp_path):
     assert result.returncode == 0, result.stderr
     assert "note:" not in result.stderr
     assert 'first_weekday = "sunday"' in (tmp_path / "x.toml").read_text()
+
+
+def test_render_bleed_without_print_is_a_mistyped_command_line(tmp_path):
+    """`floatpage render x.toml --bleed 5` wrote a plain PDF with no bleed at all (--bleed
+    only shapes --print's sheet), so a file meant for the print shop went out without it."""
+    from floatpage.model import Page, Project, save_project
+
+    path = tmp_path / "x.toml"
+    save_project(Project(pages=[Page(id="p")]), path)
+    result = run("render", str(path), "--bleed", "5", "-o", str(tmp_path / "x.pdf"))
+    assert result.returncode == 2
+    assert "--bleed" in result.stderr and "--print" in result.stderr
+    assert not (tmp_path / "x.pdf").exists()
