@@ -200,6 +200,10 @@ def cmd_render(args: argparse.Namespace) -> int:
                             if args.print else None)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
+    from floatpage.typeset.render import resolution_notes
+
+    for note in resolution_notes(project):
+        print(f"note: {printable(note)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
 
@@ -226,6 +230,10 @@ def cmd_check(args: argparse.Namespace) -> int:
     for warning in text_fit_warnings(project) + picture_warnings(project):
         print(f"warning: {printable(warning)}")
         issues += 1
+    from floatpage.typeset.render import resolution_notes
+
+    for note in resolution_notes(project):  # a note, not a problem: --strict still passes
+        print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
