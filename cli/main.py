@@ -296,11 +296,31 @@ def jobs_of(args: argparse.Namespace) -> int:
     return args.jobs if args.jobs is not None else available_cores()
 
 
+class ShowVersion(argparse.Action):
+    """`--version`: the installed package's version, looked up only when asked (reading the
+    package metadata costs every other command its start-up time)."""
+
+    def __init__(self, option_strings, dest, help=None):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            found = version("floatpage")
+        except PackageNotFoundError:  # run from a checkout that was never installed
+            found = "(not installed)"
+        print(f"floatpage {found}")
+        parser.exit()
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="floatpage",
         description="Free-form pages whose items arrange themselves by physics, typeset by LaTeX.",
     )
+    parser.add_argument("--version", action=ShowVersion,
+                        help="show the installed version (for a bug report) and exit")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     new = commands.add_parser("new", help="start a project from a starter",

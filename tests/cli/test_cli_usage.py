@@ -89,3 +89,13 @@ def test_render_bleed_without_print_is_a_mistyped_command_line(tmp_path):
     assert result.returncode == 2
     assert "--bleed" in result.stderr and "--print" in result.stderr
     assert not (tmp_path / "x.pdf").exists()
+
+
+def test_version_names_the_installed_floatpage():
+    """`floatpage --version` said 'the following arguments are required: COMMAND' (exit 2),
+    though a bug report (the crash message asks for one) wants the version."""
+    from importlib.metadata import version
+
+    result = run("--version")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == f"floatpage {version('floatpage')}"
