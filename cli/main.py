@@ -187,8 +187,9 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.model.layout import settle_project
     from floatpage.typeset import render_pdf
 
-    project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
+    refuse_other_format(out)
+    project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     with progress_line(args.quiet) as show:
         if not args.no_settle:
             show("settling the layout…")
@@ -206,6 +207,22 @@ def cmd_render(args: argparse.Namespace) -> int:
         print(f"note: {printable(note)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
+
+
+# Output names that promise another format: `render -o card.png` wrote a PDF called card.png.
+# (A .toml is left to render's own check, which says when it is the project itself.)
+NOT_PDF = {".png": "pdftoppm -png", ".jpg": "pdftoppm -jpeg", ".jpeg": "pdftoppm -jpeg",
+           ".svg": "pdftocairo -svg", ".tex": "--tex", ".eps": "pdftops -eps"}
+
+
+def refuse_other_format(out: Path) -> None:
+    suffix = out.suffix.lower()
+    if suffix not in NOT_PDF:
+        return
+    how = NOT_PDF[suffix]
+    tip = (f"; for the .tex as well, add --tex {out.name}" if how == "--tex" else
+           f"; for a {suffix[1:].upper()}, convert the PDF with `{how}`")
+    raise FloatpageError(f"{out}: render writes a PDF; name it .pdf{tip}")
 
 
 def cmd_check(args: argparse.Namespace) -> int:

@@ -111,12 +111,16 @@ def print_dpi(path: Path, w_mm: float, h_mm: float) -> tuple[tuple[int, int], fl
     """(pixel size, dots per inch) of a raster picture printed in a w x h mm box, or None for
     what has no pixels to count (a PDF) or cannot be read (load and render say why). Sides
     are matched long to long, so a photo turned by its EXIF tag counts the same."""
+    import warnings
+
     from PIL import Image, UnidentifiedImageError
 
     try:
-        with Image.open(path) as image:
-            size = image.size
-    except (OSError, UnidentifiedImageError, ValueError):
+        with warnings.catch_warnings():  # a 90-megapixel photo is the loader's to judge
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
+            with Image.open(path) as image:
+                size = image.size
+    except (OSError, UnidentifiedImageError, ValueError, Image.DecompressionBombError):
         return None
     if min(w_mm, h_mm) <= 0:
         return None

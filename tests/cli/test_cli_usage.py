@@ -99,3 +99,17 @@ def test_version_names_the_installed_floatpage():
     result = run("--version")
     assert result.returncode == 0, result.stderr
     assert result.stdout.strip() == f"floatpage {version('floatpage')}"
+
+
+@pytest.mark.parametrize("name", ["card.png", "card.JPG", "card.svg", "card.tex"])
+def test_render_refuses_an_output_named_as_another_format(tmp_path, name):
+    """`render -o card.png` wrote a PDF named card.png (a Makefile's %.png rule then shipped a
+    file no image viewer opens). Such a name is refused, with how to get that format."""
+    from floatpage.model import Page, Project, save_project
+
+    path = tmp_path / "card.toml"
+    save_project(Project(pages=[Page(id="p")]), path)
+    result = run("render", str(path), "-o", str(tmp_path / name))
+    assert result.returncode == 1
+    assert name in result.stderr and ".pdf" in result.stderr
+    assert not (tmp_path / name).exists()
