@@ -45,9 +45,16 @@ def cmd_new(args: argparse.Namespace) -> int:
     project = starters.create(
         args.kind, Path(args.path), year=args.year,
         photos=Path(args.photos) if args.photos else None,
-        first_weekday=args.first_weekday, lang=args.lang, orientation=args.orientation,
-        jobs=jobs_of(args),
+        first_weekday=args.first_weekday or "monday", lang=args.lang,
+        orientation=args.orientation, jobs=jobs_of(args),
     )
+    # Only a calendar has a year and weeks: a Makefile that asked another kind for them
+    # (meaning `calendar`) hears so, instead of a card that quietly took no notice.
+    unused = [name for name, value in (("--year", args.year), ("--first-weekday", args.first_weekday))
+              if value is not None]
+    if unused and args.kind != "calendar":
+        print(f"note: {' and '.join(unused)} only {'shape' if len(unused) > 1 else 'shapes'} a "
+              f"calendar; ignored for `new {args.kind}`", file=sys.stderr)
     items = sum(len(page.items) for page in project.pages)
     print(f"created {printable(str(project.path))}: {len(project.pages)} page(s), {items} item(s)")
     print(f"next: floatpage edit {printable(str(project.path))}")
@@ -137,9 +144,26 @@ def cmd_settle(args: argparse.Namespace) -> int:
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         read = Positions.of(project)
         settle_and_report(project, args)
+        before = file_identity(project.path)
         save_settled(project, read)
-    print(f"wrote positions to {printable(str(project.path))}")
+        written = file_identity(project.path) != before
+    # A settled file is left as it is (its mtime too, so make sees nothing new): say so
+    # rather than claim a write that never happened.
+    if written:
+        print(f"wrote positions to {printable(str(project.path))}")
+    else:
+        print(f"{printable(str(project.path))}: already settled, nothing to write")
     return EXIT_OK
+
+
+def file_identity(path) -> tuple[int, int, int] | None:
+    """What changes when a file is written: the atomic rename's new inode, or (a hard-linked
+    project saved in place) its modification time and size."""
+    try:
+        status = os.stat(path)
+    except OSError:
+        return None
+    return status.st_ino, status.st_mtime_ns, status.st_size
 
 
 def settle_and_report(project, args: argparse.Namespace) -> int:
@@ -164,11 +188,13 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.typeset import render_pdf
     from floatpage.typeset.while_settling import render_while_settling
 
-    project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
+    refuse_other_format(out)
+    project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     options = dict(tex_out=Path(args.tex) if args.tex else None,
                    fragment_out=Path(args.fragment) if args.fragment else None,
-                   print_bleed_mm=args.bleed if args.print else None)
+                   print_bleed_mm=(3.0 if args.bleed is None else args.bleed)
+                   if args.print else None)
     with progress_line(args.quiet) as show:
         if args.no_settle:
             report = render_pdf(project, out, progress=show, **options)
@@ -179,8 +205,28 @@ def cmd_render(args: argparse.Namespace) -> int:
                 progress=show, **options)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
+    from floatpage.typeset.render import resolution_notes
+
+    for note in resolution_notes(project):
+        print(f"note: {printable(note)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
+
+
+# Output names that promise another format: `render -o card.png` wrote a PDF called card.png.
+# (A .toml is left to render's own check, which says when it is the project itself.)
+NOT_PDF = {".png": "pdftoppm -png", ".jpg": "pdftoppm -jpeg", ".jpeg": "pdftoppm -jpeg",
+           ".svg": "pdftocairo -svg", ".tex": "--tex", ".eps": "pdftops -eps"}
+
+
+def refuse_other_format(out: Path) -> None:
+    suffix = out.suffix.lower()
+    if suffix not in NOT_PDF:
+        return
+    how = NOT_PDF[suffix]
+    tip = (f"; for the .tex as well, add --tex {out.name}" if how == "--tex" else
+           f"; for a {suffix[1:].upper()}, convert the PDF with `{how}`")
+    raise FloatpageError(f"{out}: render writes a PDF; name it .pdf{tip}")
 
 
 def cmd_check(args: argparse.Namespace) -> int:
@@ -205,6 +251,10 @@ def cmd_check(args: argparse.Namespace) -> int:
     for warning in text_fit_warnings(project) + picture_warnings(project):
         print(f"warning: {printable(warning)}")
         issues += 1
+    from floatpage.typeset.render import resolution_notes
+
+    for note in resolution_notes(project):  # a note, not a problem: --strict still passes
+        print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
@@ -267,11 +317,31 @@ def jobs_of(args: argparse.Namespace) -> int:
     return args.jobs if args.jobs is not None else available_cores()
 
 
+class ShowVersion(argparse.Action):
+    """`--version`: the installed package's version, looked up only when asked (reading the
+    package metadata costs every other command its start-up time)."""
+
+    def __init__(self, option_strings, dest, help=None):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            found = version("floatpage")
+        except PackageNotFoundError:  # run from a checkout that was never installed
+            found = "(not installed)"
+        print(f"floatpage {found}")
+        parser.exit()
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="floatpage",
         description="Free-form pages whose items arrange themselves by physics, typeset by LaTeX.",
     )
+    parser.add_argument("--version", action=ShowVersion,
+                        help="show the installed version (for a bug report) and exit")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     new = commands.add_parser("new", help="start a project from a starter",
@@ -280,7 +350,8 @@ def build_parser() -> argparse.ArgumentParser:
     new.add_argument("path", help="the .toml file to create (refuses to overwrite)")
     new.add_argument("--year", type=int, help="calendar year (default: next year)")
     new.add_argument("--photos", metavar="DIR", help="use the pictures in DIR")
-    new.add_argument("--first-weekday", choices=WEEKDAYS, default="monday")
+    new.add_argument("--first-weekday", choices=WEEKDAYS, help="calendar: the first day of "
+                     "each week (default: monday)")
     new.add_argument("--lang", default="en", choices=CALENDAR_LANGUAGES,
                      help="language of month and day names")
     new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait")
@@ -313,12 +384,12 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--no-settle", action="store_true", help="render the positions as saved")
     render.add_argument("--print", action="store_true",
                         help="for a print shop: bleed, crop marks, TrimBox and BleedBox")
-    render.add_argument("--bleed", type=bleed_length, default=3.0, metavar="MM",
+    render.add_argument("--bleed", type=bleed_length, default=None, metavar="MM",
                         help="bleed for --print, in mm (default 3)")
     render.add_argument("-q", "--quiet", action="store_true", help="no progress output")
     jobs_option(render)
     allow_outside_option(render)
-    render.set_defaults(run=cmd_render)
+    render.set_defaults(run=cmd_render, command_parser=render)
 
     check = commands.add_parser("check", help="validate and report layout quality",
                                 description="Validate a project file and report overlaps, items off "
@@ -343,6 +414,11 @@ def stop_on_terminate(signum, frame) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if getattr(args, "bleed", None) is not None and not args.print:
+        # --bleed alone made a plain PDF, no bleed at all: a file meant for the print shop
+        # went out without it, and nothing said so.
+        args.command_parser.error("argument --bleed: only shapes a --print sheet; add --print "
+                                  "(crop marks, TrimBox and BleedBox), or leave --bleed out")
     import signal
 
     for stop in (signal.SIGTERM, signal.SIGHUP):

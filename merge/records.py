@@ -24,6 +24,13 @@ READ_LIMIT_CHARS = 64 << 20
 csv.field_size_limit(READ_LIMIT_CHARS)
 
 
+JSON_LINES = (".jsonl", ".ndjson")
+# Files read as CSV would turn into nonsense columns (a JSON array's first line, a project's
+# first comment): refused before any work, saying what to give instead.
+NOT_RECORDS = {".json": "a .json file is one JSON document, not records",
+               ".toml": "a .toml file is a project, not records"}
+
+
 @dataclass
 class Record:
     number: int  # 1-based record number, in file order
@@ -39,7 +46,12 @@ class DataFile:
         self.path = Path(path)
         if not self.path.is_file():
             raise FloatpageError(f"{self.path}: no such data file (give a .csv or .jsonl file)")
-        self.kind = "jsonl" if self.path.suffix.lower() in (".jsonl", ".ndjson") else "csv"
+        suffix = self.path.suffix.lower()
+        if suffix in NOT_RECORDS:
+            raise FloatpageError(f"{self.path}: {NOT_RECORDS[suffix]}; give the records as a .csv "
+                                 "file with a header line, or a .jsonl file (one JSON object "
+                                 "per line)")
+        self.kind = "jsonl" if suffix in JSON_LINES else "csv"
         self.columns = self.read_columns()
 
     def read_columns(self) -> list[str]:

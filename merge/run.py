@@ -21,8 +21,9 @@ from floatpage.merge.chunk_job import ChunkTask, RecordResult, TemplateSource, i
 from floatpage.merge.outputs import COMBINED, Names, OutputFolder, Report, name_fields
 from floatpage.merge.placeholders import fill
 from floatpage.merge.pools import cores, dask_results, local_results
-from floatpage.merge.records import DataFile, Record
+from floatpage.merge.records import JSON_LINES, DataFile, Record
 from floatpage.merge.template import MergeTemplate
+from floatpage.model.errors import FloatpageError
 from floatpage.model.picture_files import is_outside
 from floatpage.typeset.compile import engine_path
 from floatpage.typeset.pdf_split import concatenate
@@ -103,9 +104,23 @@ def file_bytes(path: Path) -> bytes | None:
         return handle.read()
 
 
+def refuse_swapped_arguments(template: Path, data: Path) -> None:
+    """A data file where the template goes: say so, rather than report its first line as a
+    TOML syntax error (a user who wrote `merge customers.csv offer.toml` saw exactly that)."""
+    if template.suffix.lower() not in (".csv", ".tsv", ".txt") + JSON_LINES:
+        return
+    usage = "floatpage merge TEMPLATE.toml DATA.csv -o OUTDIR"
+    if data.suffix.lower() == ".toml":
+        raise FloatpageError(f"{template} and {data} are the wrong way round: the template "
+                             f"project (.toml) comes first, then the records ({usage})")
+    raise FloatpageError(f"{template}: the first file is the template, a project (.toml) with "
+                         f"{{column}} placeholders; the records come second ({usage})")
+
+
 class Merge:
     def __init__(self, options: MergeOptions):
         self.options = options
+        refuse_swapped_arguments(options.template, options.data)
         engine_path()  # no TeX: say so once, not once per record
         self.template = MergeTemplate(options.template,
                                       allow_outside_files=options.allow_outside_files)

@@ -228,8 +228,9 @@ class _Reader:
         page.size = size
         page.orientation = values.get("orientation", "portrait")
         if size == CUSTOM and not ("width_mm" in values and "height_mm" in values):
-            self.add(page_line, label, "a custom page needs width_mm and height_mm",
-                     "add both, in millimetres")
+            if not ("width_mm" in table and "height_mm" in table):  # else: a bad value, said
+                self.add(page_line, label, "a custom page needs width_mm and height_mm",
+                         "add both, in millimetres")
             size = page.size = "A4"
         page.width_mm, page.height_mm = page_dimensions(size, page.orientation,
                                                         values.get("width_mm"), values.get("height_mm"))

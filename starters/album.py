@@ -32,9 +32,10 @@ def caption_for(photo: PictureItem, picture: Picture) -> TextItem:
     """The caption under `photo`, following it at a fixed offset."""
     dy = photo.h / 2 + CAPTION_GAP_MM + CAPTION_H_MM / 2
     w = max(photo.w, 40.0)
-    return hug(TextItem(id=f"{photo.id}-caption", x=photo.x, y=photo.y + dy, w=w, h=CAPTION_H_MM,
-                        text=readable(picture.stem), font="serif", italic=True, color=INK,
-                        anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy)), w)
+    dx = (w - photo.w) / 2  # flush left with the photo, also when the photo is narrower
+    return TextItem(id=f"{photo.id}-caption", x=photo.x + dx, y=photo.y + dy, w=w, h=CAPTION_H_MM,
+                    text=readable(picture.stem), font="serif", italic=True, color=INK,
+                    anchor=ItemAnchor(to=photo.id, dx=dx, dy=dy))
 
 
 def photo_region(width: float, height: float, with_title: bool) -> Region:

@@ -20,8 +20,10 @@ CREAM, WARM, ROSE, INK = "#fdf4e6", "#f2b84b", "#c4473a", "#3b3027"
 
 
 def band(item_id: str, x: float, y: float, w: float, h: float) -> BlockItem:
-    """A decorative strip of warm colour, behind everything else."""
-    return BlockItem(id=item_id, x=x, y=y, w=w, h=h, color=WARM, opacity=0.55, decorative=True, z=-1)
+    """A decorative strip of warm colour, behind everything else. Every band meets the page's
+    edge, so it bleeds: `render --print` carries it past the trim (no white hairline)."""
+    return BlockItem(id=item_id, x=x, y=y, w=w, h=h, color=WARM, opacity=0.55, decorative=True, z=-1,
+                     bleed=True)
 
 
 def picture_in(item_id: str, picture: Picture, region: Region) -> PictureItem:

@@ -36,9 +36,9 @@ def price_tag(photo: PictureItem, name: str, cents: int, lang: str) -> TextItem:
     """Name and price under the product picture, following it."""
     dy = photo.h / 2 + TAG_GAP_MM + TAG_H_MM / 2
     w = max(photo.w, 36.0)
-    return hug(TextItem(id=f"{photo.id}-price", x=photo.x, y=photo.y + dy, w=w, h=TAG_H_MM,
-                        text=f"{name}\n{price(cents, lang)}", font="sans", bold=True, color=RED,
-                        anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy)), w)
+    return TextItem(id=f"{photo.id}-price", x=photo.x, y=photo.y + dy, w=w, h=TAG_H_MM,
+                    text=f"{name}\n{price(cents, lang)}", font="sans", bold=True, color=RED,
+                    anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy))
 
 
 def header(page, lang: str) -> list:

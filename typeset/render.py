@@ -104,6 +104,50 @@ def picture_warnings(project: Project) -> list[str]:
     return found
 
 
+# Below this a picture shows its pixels on paper (print wants about 300 dpi; the bundled
+# photos print at 125-300 in the samples, soft but not blocky).
+BLOCKY_DPI = 100
+
+
+def print_dpi(path: Path, w_mm: float, h_mm: float) -> tuple[tuple[int, int], float] | None:
+    """(pixel size, dots per inch) of a raster picture printed in a w x h mm box, or None for
+    what has no pixels to count (a PDF) or cannot be read (load and render say why). Sides
+    are matched long to long, so a photo turned by its EXIF tag counts the same."""
+    import warnings
+
+    from PIL import Image, UnidentifiedImageError
+
+    try:
+        with warnings.catch_warnings():  # a 90-megapixel photo is the loader's to judge
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
+            with Image.open(path) as image:
+                size = image.size
+    except (OSError, UnidentifiedImageError, ValueError, Image.DecompressionBombError):
+        return None
+    if min(w_mm, h_mm) <= 0:
+        return None
+    dpi = min(max(size) / (max(w_mm, h_mm) / 25.4), min(size) / (min(w_mm, h_mm) / 25.4))
+    return size, dpi
+
+
+def resolution_notes(project: Project) -> list[str]:
+    """Pictures that print below BLOCKY_DPI at their size, each with its item, its pixels and
+    its dpi: a thumbnail stretched over half a page prints as squares, and nothing said so."""
+    notes = []
+    for page in project.pages:
+        for item in page.items:
+            if item.kind != "picture" or is_merge_placeholder(item.path):
+                continue
+            found = print_dpi(project.base_dir / item.path, item.w, item.h)
+            if found is not None and found[1] < BLOCKY_DPI:
+                (px_w, px_h), dpi = found
+                notes.append(f'item "{item.id}" on page "{page.id}": picture "{item.path}" has '
+                             f"{px_w}×{px_h} pixels for {item.w:.0f}×{item.h:.0f} mm, so it "
+                             f"prints at {dpi:.0f} dpi and will look blocky (about 300 dpi is "
+                             "sharp: use a larger picture, or make the item smaller)")
+    return notes
+
+
 def write_output(path: Path, data: bytes) -> None:
     """Atomically replace `path` (a new file gets the umask's permissions, as any new file)."""
     atomic_write(path, data, backup=False)

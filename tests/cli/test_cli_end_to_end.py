@@ -55,6 +55,20 @@ def test_settle_removes_overlaps_and_writes_back(crowded_project):
     assert crowded_project.read_text() == settled
 
 
+def test_settle_says_whether_it_wrote_the_file(crowded_project):
+    """A Makefile log must not claim a write that did not happen: the second settle of a
+    settled file writes nothing (the mtime stays), so it says the file was already settled."""
+    first = run("settle", str(crowded_project))
+    assert first.returncode == 0, first.stderr
+    assert f"wrote positions to {crowded_project}" in first.stdout
+    written = crowded_project.stat().st_mtime_ns
+    again = run("settle", str(crowded_project))
+    assert again.returncode == 0, again.stderr
+    assert crowded_project.stat().st_mtime_ns == written
+    assert "wrote" not in again.stdout
+    assert f"{crowded_project}: already settled, nothing to write" in again.stdout
+
+
 def test_settle_dry_run_writes_nothing(crowded_project):
     before = crowded_project.read_text()
     result = run("settle", "--dry-run", str(crowded_project))
@@ -179,3 +193,31 @@ def test_check_names_items_that_must_stack_taller_than_the_page(tmp_path):
     assert "they must stand one above another, and that is 146.3 mm tall" in out
     assert "the widest gap they can keep is at most 1.4 mm" in out
     assert "run `floatpage settle`" not in out
+
+
+def test_a_picture_too_small_for_its_box_is_named_with_its_print_resolution(tmp_path):
+    """A 40-pixel photo printed 60 mm wide is 17 dpi, a mosaic of squares on paper; check and
+    render said nothing (an album from a phone's thumbnails printed blocky). Both now name the
+    item, its pixels and its dpi, as a note: check --strict still passes on it."""
+    from PIL import Image
+
+    from floatpage.model import PictureItem
+
+    (tmp_path / "pictures").mkdir()
+    Image.new("RGB", (40, 40), (200, 60, 60)).save(tmp_path / "pictures" / "thumb.png")
+    Image.new("RGB", (900, 900), (60, 60, 200)).save(tmp_path / "pictures" / "sharp.png")
+    page = Page(id="front", items=[
+        PictureItem(id="thumb", x=60.0, y=60.0, w=60.0, h=60.0, path="pictures/thumb.png"),
+        PictureItem(id="sharp", x=150.0, y=200.0, w=60.0, h=60.0, path="pictures/sharp.png")])
+    path = tmp_path / "album.toml"
+    save_project(Project(title="Album", pages=[page]), path)
+    checked = run("check", "--strict", str(path))
+    assert checked.returncode == 0, checked.stdout + checked.stderr
+    notes = [line for line in checked.stdout.splitlines() if "dpi" in line]
+    assert len(notes) == 1, checked.stdout
+    assert notes[0].startswith("note:") and '"thumb"' in notes[0] and "40×40 pixels" in notes[0]
+    assert "17 dpi" in notes[0]
+    rendered = run("render", str(path), "-o", str(tmp_path / "album.pdf"))
+    assert rendered.returncode == 0, rendered.stderr
+    assert '"thumb"' in rendered.stderr and "17 dpi" in rendered.stderr
+    assert '"sharp"' not in rendered.stderr

@@ -50,3 +50,66 @@ def test_edit_on_a_broken_file_fails_before_taking_the_screen(tmp_path):
     assert result.returncode == 1
     assert '"pages" must be an array of tables' in result.stderr
     assert "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize("kind, options, named", [
+    ("card", ["--year", "2030"], "--year"),
+    ("flyer", ["--first-weekday", "sunday"], "--first-weekday"),
+    ("album", ["--year", "2030", "--first-weekday", "sunday"], "--year and --first-weekday"),
+])
+def test_new_says_when_a_calendar_option_shapes_nothing(tmp_path, kind, options, named):
+    """`floatpage new card x.toml --year 2030` made a card and said nothing of the year: a
+    Makefile that meant `calendar` never learnt. The project is still made (exit 0)."""
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", kind,
+                             str(tmp_path / "x.toml"), *options, "-j", "1"],
+                            capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert (tmp_path / "x.toml").is_file()
+    verb = "shape" if " and " in named else "shapes"
+    assert f"note: {named} only {verb} a calendar; ignored for `new {kind}`" in result.stderr
+
+
+def test_new_calendar_takes_its_options_without_a_note(tmp_path):
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "calendar",
+                             str(tmp_path / "x.toml"), "--year", "2030", "--first-weekday",
+                             "sunday", "-j", "1"], capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert "note:" not in result.stderr
+    assert 'first_weekday = "sunday"' in (tmp_path / "x.toml").read_text()
+
+
+def test_render_bleed_without_print_is_a_mistyped_command_line(tmp_path):
+    """`floatpage render x.toml --bleed 5` wrote a plain PDF with no bleed at all (--bleed
+    only shapes --print's sheet), so a file meant for the print shop went out without it."""
+    from floatpage.model import Page, Project, save_project
+
+    path = tmp_path / "x.toml"
+    save_project(Project(pages=[Page(id="p")]), path)
+    result = run("render", str(path), "--bleed", "5", "-o", str(tmp_path / "x.pdf"))
+    assert result.returncode == 2
+    assert "--bleed" in result.stderr and "--print" in result.stderr
+    assert not (tmp_path / "x.pdf").exists()
+
+
+def test_version_names_the_installed_floatpage():
+    """`floatpage --version` said 'the following arguments are required: COMMAND' (exit 2),
+    though a bug report (the crash message asks for one) wants the version."""
+    from importlib.metadata import version
+
+    result = run("--version")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == f"floatpage {version('floatpage')}"
+
+
+@pytest.mark.parametrize("name", ["card.png", "card.JPG", "card.svg", "card.tex"])
+def test_render_refuses_an_output_named_as_another_format(tmp_path, name):
+    """`render -o card.png` wrote a PDF named card.png (a Makefile's %.png rule then shipped a
+    file no image viewer opens). Such a name is refused, with how to get that format."""
+    from floatpage.model import Page, Project, save_project
+
+    path = tmp_path / "card.toml"
+    save_project(Project(pages=[Page(id="p")]), path)
+    result = run("render", str(path), "-o", str(tmp_path / name))
+    assert result.returncode == 1
+    assert name in result.stderr and ".pdf" in result.stderr
+    assert not (tmp_path / name).exists()

@@ -338,3 +338,29 @@ def test_a_terminal_gets_a_progress_bar_with_rate_and_eta(merge_folder):
     assert process.returncode == 0, text
     assert "records/s" in text and "ETA" in text and "merging" in text
     assert "merge: " not in text  # the plain lines are for pipes
+
+
+def test_swapped_template_and_data_are_named_as_swapped(merge_folder):
+    """`floatpage merge customers.csv offer.toml` used to answer with a TOML syntax error
+    about the CSV file's first line; it now says the two are the wrong way round."""
+    data = write_csv(merge_folder / "customers.csv", rows(2))
+    done = subprocess.run([FLOATPAGE, "merge", str(data), str(merge_folder / "offer.toml"),
+                           "-o", str(merge_folder / "out")], capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 1
+    assert "TOML syntax error" not in done.stderr
+    assert "customers.csv" in done.stderr and "the wrong way round" in done.stderr
+    assert "floatpage merge TEMPLATE.toml DATA" in done.stderr
+    assert not (merge_folder / "out").exists()
+
+
+def test_a_json_or_toml_data_file_is_refused_with_what_to_give_instead(merge_folder):
+    """A .json array (or any .json/.toml file) was read as CSV: its first line became the
+    column names, e.g. '[{"id":1}]'. It is refused, naming the formats read."""
+    (merge_folder / "records.json").write_text('[{"id": 1001, "first_name": "Ann"}]\n')
+    done = merge(merge_folder, merge_folder / "records.json")
+    assert done.returncode == 1
+    assert "the columns are" not in done.stderr
+    assert "records.json" in done.stderr and ".jsonl" in done.stderr and ".csv" in done.stderr
+    assert "one JSON object per line" in done.stderr
+    assert not (merge_folder / "out").exists()

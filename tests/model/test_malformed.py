@@ -83,3 +83,17 @@ def test_the_installed_command_exits_1_without_traceback(stem):
 def test_a_missing_file_is_a_user_error(tmp_path, capsys):
     assert main(["check", str(tmp_path / "nope.toml")]) == 1
     assert "no such file" in capsys.readouterr().err
+
+
+def test_a_custom_width_out_of_range_is_one_message_not_also_a_missing_key(tmp_path):
+    """`width_mm = 1e9` on a custom page said both that width_mm must be between 10 and 5000
+    and that the page needs width_mm (add both): the second sent the user looking for a key
+    that is there."""
+    path = tmp_path / "big.toml"
+    path.write_text('format = 1\n[[pages]]\nid = "p"\nsize = "custom"\nwidth_mm = 1e9\n'
+                    'height_mm = 100\n')
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "check", str(path)],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 1
+    assert '"width_mm" must be between' in result.stderr
+    assert "needs width_mm and height_mm" not in result.stderr

@@ -486,3 +486,20 @@ def test_the_editor_has_imported_numpy_ma_before_the_first_arrow(tmp_path):
     result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
                             timeout=120, cwd=tmp_path)
     assert result.stdout.strip() == "True", result.stderr
+
+
+async def test_a_dialog_error_wraps_instead_of_being_cut_at_the_dialog_edge(project_path):
+    """The background dialog's 'must be written as #rrggbb, e.g. "#1f77b4"' was cut after
+    'e.g.' at the dialog's edge (a one-line label), so the example never showed; the
+    picture dialog's list of formats likewise. The error label now wraps inside the dialog."""
+    async with editor(project_path, size=(120, 40)) as (app, pilot):
+        await pilot.press("b", "ctrl+a", "ctrl+k")
+        await type_text(pilot, "red")
+        await pilot.press("enter")
+        await pilot.pause()
+        error = app.screen.query_one("#form-error")
+        message = str(error.render())
+        assert "#1f77b4" in message
+        shown = "".join(error.render_line(y).text for y in range(error.size.height))
+        assert "#1f77b4" in shown, shown
+        assert error.region.right <= error.parent.content_region.right
