@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from floatpage.model.document import Background, ItemAnchor, PictureItem, PointAnchor, Project, TextItem
 from floatpage.model.page_sizes import page_dimensions
-from floatpage.starters.measure import hug
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
 from floatpage.starters.placement import Region, grid, new_page
@@ -74,10 +73,10 @@ def album_page(number: int, pictures: list[Picture], options: Options, with_titl
     W, H = page.width_mm, page.height_mm
     if with_title:
         y = MARGIN_MM + TITLE_H_MM / 2
-        page.items.append(hug(TextItem(id="album-title", x=W / 2, y=y, w=W * 0.7, h=TITLE_H_MM,
-                                       text=phrase("album_title", options.lang), font="display",
-                                       color=ACCENT, bold=True,
-                                       anchor=PointAnchor(x=W / 2, y=y, gamma=1.0)), W * 0.7))
+        page.items.append(TextItem(id="album-title", x=W / 2, y=y, w=W * 0.7, h=TITLE_H_MM,
+                                   text=phrase("album_title", options.lang), font="display",
+                                   color=ACCENT, bold=True, align="centre",
+                                   anchor=PointAnchor(x=W / 2, y=y, gamma=1.0)))
     rects = photo_rects(photo_region(W, H, with_title), pictures)
     for index, (picture, (x, y, w, h)) in enumerate(zip(pictures, rects), start=1):
         photo = PictureItem(id=f"p{number}-photo-{index}", x=x, y=y, w=w, h=h, path=picture.path)

@@ -13,7 +13,6 @@ from __future__ import annotations
 import math
 
 from floatpage.model.document import Background, CalendarItem, PictureItem, PointAnchor, Project, TextItem
-from floatpage.starters.measure import hug
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
 from floatpage.starters.placement import Region, grid, new_page
@@ -88,9 +87,10 @@ def build(options: Options, pictures: list[Picture]) -> Project:
         title_rect, panel_rect, region = layout_regions(page.width_mm, page.height_mm,
                                                         options.orientation)
         x, y, w, h = title_rect
-        page.items.append(hug(TextItem(
+        page.items.append(TextItem(
             id=f"{mid}-title", x=x, y=y, w=w, h=h, text=month_name(month, options.lang),
-            font="display", color=accent, bold=True, anchor=PointAnchor(x=x, y=y, hard=True)), w))
+            font="display", color=accent, bold=True, align="centre",
+            anchor=PointAnchor(x=x, y=y, hard=True)))
         x, y, w, h = panel_rect
         page.items.append(CalendarItem(
             id=f"{mid}-month", x=x, y=y, w=w, h=h, year=options.year, month=month,

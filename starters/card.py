@@ -10,7 +10,6 @@ from __future__ import annotations
 from floatpage.model.document import Background, BlockItem, PictureItem, PointAnchor, Project, TextItem
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
-from floatpage.starters.measure import hug
 from floatpage.starters.placement import Region, fit, new_page
 from floatpage.starters.words import phrase
 
@@ -34,9 +33,9 @@ def picture_in(item_id: str, picture: Picture, region: Region) -> PictureItem:
 
 
 def anchored_text(item_id: str, text: str, x: float, y: float, w: float, h: float, **style) -> TextItem:
-    """A short text held near (x, y) by a spring, its box narrowed to its words."""
-    return hug(TextItem(id=item_id, x=x, y=y, w=w, h=h, text=text,
-                        anchor=PointAnchor(x=x, y=y, gamma=1.0), **style))
+    """A short text held near (x, y) by a spring, its lines centred in its box."""
+    return TextItem(id=item_id, x=x, y=y, w=w, h=h, text=text, align="centre",
+                    anchor=PointAnchor(x=x, y=y, gamma=1.0), **style)
 
 
 def front(options: Options, picture: Picture):

@@ -12,7 +12,6 @@ from floatpage.model.document import (
 )
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
-from floatpage.starters.measure import hug
 from floatpage.starters.placement import Region, grid, new_page
 from floatpage.starters.words import phrase, price, product_name
 
@@ -49,12 +48,12 @@ def header(page, lang: str) -> list:
                   decorative=True, z=-1, bleed=True),
         BlockItem(id="header-stripe", x=W / 2, y=HEADER_H_MM + 2.0, w=W, h=4.0, color="#f2b84b",
                   decorative=True, z=-1, bleed=True),
-        hug(TextItem(id="shop-title", x=W / 2, y=title_y, w=W - 40.0, h=26.0,
-                     text=phrase("flyer_title", lang), font="display", bold=True, color=CREAM,
-                     anchor=PointAnchor(x=W / 2, y=title_y, hard=True)), W - 40.0),
-        hug(TextItem(id="shop-subtitle", x=W / 2, y=subtitle_y, w=W - 60.0, h=10.0,
-                     text=phrase("flyer_subtitle", lang), font="sans", italic=True, color=CREAM,
-                     anchor=PointAnchor(x=W / 2, y=subtitle_y, hard=True)), W - 60.0),
+        TextItem(id="shop-title", x=W / 2, y=title_y, w=W - 40.0, h=26.0,
+                 text=phrase("flyer_title", lang), font="display", bold=True, color=CREAM,
+                 align="centre", anchor=PointAnchor(x=W / 2, y=title_y, hard=True)),
+        TextItem(id="shop-subtitle", x=W / 2, y=subtitle_y, w=W - 60.0, h=10.0,
+                 text=phrase("flyer_subtitle", lang), font="sans", italic=True, color=CREAM,
+                 align="centre", anchor=PointAnchor(x=W / 2, y=subtitle_y, hard=True)),
     ]
 
 
@@ -64,8 +63,8 @@ def footer(page, lang: str) -> list:
     return [
         BlockItem(id="footer-band", x=W / 2, y=y, w=W, h=FOOTER_H_MM, color=GREEN, decorative=True, z=-1,
                   bleed=True),
-        hug(TextItem(id="shop-footer", x=W / 2, y=y, w=W - 30.0, h=7.0, text=phrase("flyer_footer", lang),
-                     font="sans", color=CREAM, anchor=PointAnchor(x=W / 2, y=y, hard=True)), W - 30.0),
+        TextItem(id="shop-footer", x=W / 2, y=y, w=W - 30.0, h=7.0, text=phrase("flyer_footer", lang),
+                 font="sans", color=CREAM, align="centre", anchor=PointAnchor(x=W / 2, y=y, hard=True)),
     ]
 
 

@@ -1,9 +1,9 @@
 """Titles, subtitles and footers a starter centres on the page come out centred in the PDF.
 
-The typesetter sets lines left-aligned, so a starter narrows each such box to its words
-(starters/measure.py, `hug`). The check reads the words back from the PDF that `floatpage new`
-and `floatpage render` make, and measures where the printed line sits, independently of the
-box in the project file.
+A starter gives each such box `align = "centre"` (it once narrowed the box to its words, and a
+change elsewhere left every one left-aligned in its full box, 20 mm off centre, unnoticed). The
+check reads the words back from the PDF that `floatpage new` and `floatpage render` make, and
+measures where the printed line sits, independently of the box in the project file.
 """
 
 from __future__ import annotations
