@@ -11,7 +11,7 @@ from floatpage.model.document import Background, ItemAnchor, PictureItem, PointA
 from floatpage.model.page_sizes import page_dimensions
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
-from floatpage.starters.placement import Region, grid, new_page
+from floatpage.starters.placement import Region, grid, new_page, near_widths_as_one
 from floatpage.starters.words import phrase, readable
 
 PAGE_SIZE = "A4"
@@ -43,9 +43,12 @@ def photo_region(width: float, height: float, with_title: bool) -> Region:
 
 
 def photo_rects(region: Region, pictures: list[Picture]) -> list:
-    """Each row's photos at one height (placement.one_height_per_row)."""
-    return grid(region, [p.aspect for p in pictures], fill=0.96, gap=8.0,
-                below=CAPTION_GAP_MM + CAPTION_H_MM, rows_of_one_height=True)
+    """Each row's photos at one height (placement.one_height_per_row), each column's of near
+    widths at one width (placement.near_widths_as_one)."""
+    aspects = [p.aspect for p in pictures]
+    return near_widths_as_one(grid(region, aspects, fill=0.96, gap=8.0,
+                                   below=CAPTION_GAP_MM + CAPTION_H_MM, rows_of_one_height=True),
+                              aspects)
 
 
 def paginate(pictures: list[Picture], width: float, height: float) -> list[list[Picture]]:
