@@ -53,7 +53,7 @@ ALIGNED_MM = 0.05  # features this close are aligned (positions are saved to 0.0
 ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
 ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
 NUDGE_MM = 0.5  # moves this small need no rest check: pairs this close count as aligned anyway
-MAX_SWEEPS = 100  # alone and with lines (snap_to_guides): the most a page needed was 28
+MAX_SWEEPS = 50
 ALIGN_REACH = 2.0  # a move onto a line goes up to 2 snap ranges (8 mm on A4): see _Snapper
 ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm on A4)
 MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
@@ -108,16 +108,6 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
     The first sweep tries every free item on both axes; a later one only the items with a
     feature near one that moved on that axis (nothing else can have a better move now).
 
-    Lines come second.  The sweeps first move groups alone; only once a sweep moves nothing
-    does one sweep also try lines (``_Snapper.with_lines``: each group with its line, improve), and
-    only for the groups near a move since the last such sweep; if it moves, the sweeps go on
-    alone.  A line's move is what a group needs when its own moves would break its alignments
-    (a column 3 mm off a band), so it is asked for where single moves have stopped.  Tried at
-    every turn, lines were half the snap's time on the roomy pages of issues #10 and #16 (120
-    items, seed 3001: finding the line and scoring it, 1,021 and 871 calls, most of them to
-    find no move, for 101 line moves among 702) for as many near misses at the end
-    (docs/benchmarks.md, eleventh session, snap-search).
-
     A sweep tries each body's ``MAX_TRIES`` best moves (by the count they leave): on a crowded
     page a body has dozens that would help, and trying each costs a clearance test and a rest
     check.  Once the sweeps end, each body whose best moves were that many tries the lesser
@@ -125,16 +115,12 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
     best moves are all blocked, a lesser one (a nudge of 0.16 mm that closes a slip, say) often
     is not.  Without this the snap stopped where a move that lowers the count still passed
     every check (benchmarks/near_miss_causes.py, "would move": 11 near-miss pairs of the
-    60-item page).  The snap ends where a sweep alone, a sweep with lines and the lesser moves
-    all move nothing: the page is where each of them finds no move, so a second snap from it
-    finds none either."""
+    60-item page)."""
     if strength <= 0:
         return 0
     snapper = _Snapper(bodies, (page_w_mm, page_h_mm), clearance_mm, margin_mm, rest)
     moves = 0
     todo = [snapper.movers, snapper.movers]
-    # per axis, the groups near a move since the last sweep with lines (all, at first)
-    unlined = [set(snapper.movers.tolist()), set(snapper.movers.tolist())]
     for _ in range(MAX_SWEEPS):
         moved_any = False
         for axis in (0, 1):
@@ -142,25 +128,13 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
             todo[axis] = snapper.near(moved, axis)
             moves += len(moved)
             moved_any = moved_any or bool(moved)
-        if snapper.with_lines:
-            snapper.with_lines = False
-            unlined = [set(), set()]
-        for axis in (0, 1):
-            unlined[axis].update(todo[axis].tolist())
-        if moved_any:
-            continue
-        if unlined[0] or unlined[1]:  # single moves have stopped: now the lines
-            snapper.with_lines = True
-            todo = [np.array(sorted(rows), dtype=int) for rows in unlined]
-            continue
-        lesser = [[root for row in snapper.movers
-                   for root in snapper.try_lesser(int(row), axis)] for axis in (0, 1)]
-        if not lesser[0] and not lesser[1]:
-            break
-        todo = [snapper.near(lesser[axis], axis) for axis in (0, 1)]
-        for axis in (0, 1):
-            unlined[axis].update(todo[axis].tolist())
-        moves += len(lesser[0]) + len(lesser[1])
+        if not moved_any:
+            lesser = [[root for row in snapper.movers
+                       for root in snapper.try_lesser(int(row), axis)] for axis in (0, 1)]
+            if not lesser[0] and not lesser[1]:
+                break
+            todo = [snapper.near(lesser[axis], axis) for axis in (0, 1)]
+            moves += len(lesser[0]) + len(lesser[1])
     return moves
 
 
@@ -225,7 +199,6 @@ class _Snapper:
         self.stuck_lines: set[tuple[tuple[int, ...], int]] = set()
         self.memo = AxisMemo()  # the lines and scores read off one axis, until a move there
         self.tries = MAX_TRIES  # moves a body tries per axis (options), but see try_lesser
-        self.with_lines = False  # whether improve tries lines too (snap_to_guides: not at first)
 
     def mine(self, row: int, axis: int) -> np.ndarray:
         """The group's features on ``axis`` (low edge, centre, high edge per member)."""
@@ -267,7 +240,7 @@ class _Snapper:
         choices = [alone]
         # a group on no near miss gains nothing from its line's move, and one on no line
         # has none (line_of would find it alone)
-        if self.with_lines and alone.missing and alone.lined_up:
+        if alone.missing and alone.lined_up:
             line = self.line_of(row, axis)
             line_key = (tuple(sorted(line)), axis)
             if len(line) > 1 and line_key not in self.stuck_lines:
