@@ -447,9 +447,12 @@ class Engine:
         it is (held, for the while): whether the whole page keeps the gutter in the end.
         A room's own limits cap what it aims at (page_limits.room_caps), and its own cover
         says whether the gutter, or no overlap, fits there (``_relocate_room``).  A page of
-        one room is relocated as a whole, as before.  Taken as a whole, three month panels
-        that must overlap in a words region stopped the relocation of the photos region above
-        it, which kept 15.8 mm overlaps it had room to part (fresh_projects seed 9)."""
+        one room, or one whose rooms all leave a gap, is relocated as a whole first, as it
+        always was (room by room, a free photo among two regions held where they stood found
+        no room that the whole page's relocation had found: fresh_projects seed 14).  Taken
+        as a whole, three panels that must overlap in a words region stopped the relocation
+        of the photos region above it, which kept three overlaps of up to 19 mm it had room
+        to part (tests/physics/rooms/rooms-7054.toml)."""
         bodies = self._bodies
         gutter = self.params.gutter_mm
         limits = capping(page_limits(bodies, self.page_w_mm, self.page_h_mm, self.margin_mm,
@@ -465,14 +468,18 @@ class Engine:
         near, far = bodies.insets(self.margin_mm, self.page_w_mm, self.page_h_mm)
         covers = room_covers(bodies, near, far, self.page_w_mm, self.page_h_mm, gutter)
         packed = room_covers(bodies, near, far, self.page_w_mm, self.page_h_mm, 0.0)
-        if len(caps) == 1:
-            return self._relocate_room(caps[0], limited[0], forced[0], covers[0], packed[0])
+        if caps.min() >= 0:  # the page as a whole first, as it always was
+            fits = self._relocate_room(caps.min(), limited.any(), forced.any(), covers.max(),
+                                       packed.max())
+            if fits or len(caps) == 1 or not unexplained_pairs(bodies, limits, gutter):
+                return fits
         held = bodies.held.copy()
         try:
             for room in [*range(1, len(caps)), 0]:  # the free items last, around the regions
                 bodies.held[:] = held | (bodies.active & (rooms != room))
                 # only the room's own pairs count now (page_limits: held items are pinned)
-                if unexplained_pairs(bodies, [], min(caps[room], gutter) - WIDEST_GAP_SLACK_MM):
+                aim = min(caps[room], gutter)
+                if unexplained_pairs(bodies, [], aim - WIDEST_GAP_SLACK_MM if aim >= 0 else 0.0):
                     self._relocate_room(caps[room], limited[room], forced[room], covers[room],
                                         packed[room])
         finally:

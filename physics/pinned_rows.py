@@ -21,6 +21,7 @@ import numpy as np
 
 MAX_MEMBERS = 8  # 3^8 steps at most for every set of the free items (rows_fit)
 GAP_STEPS = 16  # bisection steps for the widest gap (to the largest size / 2**16)
+SEARCH_BUDGET = 200_000  # blockers x items x 2^items: one search of that many steps
 
 
 def is_row(widths: np.ndarray, room_across: float, gap_mm: float) -> bool:
@@ -107,7 +108,17 @@ def widest_gap(lengths: np.ndarray, widths: np.ndarray, room: tuple[float, float
     their rows (``rows_fit``), by bisection: an upper bound on the gap any layout keeps
     between them and the blockers.  None where they fit with the gutter, or are too many to
     search."""
-    if len(lengths) > MAX_MEMBERS or rows_fit(lengths, widths, room, blockers, gutter_mm):
+    if len(lengths) > MAX_MEMBERS:
+        return None
+    # only blockers some item cannot pass at the gutter matter (at a narrower gap, fewer)
+    above = blockers[:, 2] - gutter_mm - room[2]
+    below = room[3] - blockers[:, 3] - gutter_mm
+    blockers = blockers[(widths.max() > above) & (widths.max() > below)
+                        & (blockers[:, 0] < room[1] + gutter_mm)
+                        & (blockers[:, 1] > room[0] - gutter_mm)]
+    if len(blockers) * len(lengths) << len(lengths) > SEARCH_BUDGET:
+        return None  # a hostile page of thousands of anchors: not searched, check stays quick
+    if rows_fit(lengths, widths, room, blockers, gutter_mm):
         return None
     low = -float(max(lengths.max(), widths.max()))
     high = gutter_mm
