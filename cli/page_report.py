@@ -214,6 +214,13 @@ def _pinned_stack_sentence(limit: PinnedStack, name, gutter_mm: float) -> str:
     place = "one above another" if limit.axis == 1 else "side by side"
     beside = "beside" if limit.axis == 1 else "above"
     passing = "beside" if limit.axis == 1 else "above or below"
+    if not limit.pinned:  # items of several rooms (regions, or free), each in its own
+        return (f"items {who} are too {size_word} to stand {beside} one another with the "
+                f"{gutter_mm:g} mm gutter, each inside its region or the margins, so they "
+                f"must stand {place}, and no such row of them fits in the "
+                f"{limit.room_mm:.1f} mm they span; "
+                f"{_fate(limit, 'the widest gap they can keep is at most')}; make one "
+                "smaller, or move one to another page")
     return (f"items {who} are too {size_word} to stand {beside} one another with the "
             f"{gutter_mm:g} mm gutter, so they must stand {place}, and the items that cannot "
             f"move ({pinned}) leave no such row of the {limit.room_mm:.1f} mm inside the "

@@ -497,7 +497,8 @@ class Engine:
         overlap is ``forced`` even then.  Whether the gutter was kept."""
         if cover <= GUTTER_FITS_COVER and cap_mm >= 0:
             if limited:
-                self._relocate_to_cap(cap_mm)
+                if not self._relocate_to_cap(cap_mm):
+                    self._part_crowd()  # no move kept that gap: no overlap, at least
                 return False
             if self._relocate_jammed(self.params.gutter_mm):
                 return True
@@ -526,7 +527,7 @@ class Engine:
             if self.margin_mm <= 0:
                 return
 
-    def _relocate_to_cap(self, cap_mm: float) -> None:
+    def _relocate_to_cap(self, cap_mm: float) -> bool:
         """A page whose own items rule the gutter out (physics.page_limits.capping: a pair
         that cannot be parted, items that must stack, a unit with no room) keeps the widest
         gap they leave, ``cap_mm``, where the pass fell short of it: physics.relocation aims
@@ -534,11 +535,17 @@ class Engine:
         keeps it to 0.02 mm.  Four items that must stack on Letter, a perfect packing to
         0.27 mm, were left 81.6 mm into each other by the pass alone (benchmarks/gutter_fits.py
         --seed 23).  A page already within WIDEST_GAP_SLACK_MM of the gap is left as it is, so
-        that a settled page stays a fixed point."""
-        if cap_mm < 0 or not np.isfinite(cap_mm):
-            return  # overlap is forced: the margin gives way first (finalize.remove_overlaps)
-        if unexplained_pairs(self._bodies, [], cap_mm - WIDEST_GAP_SLACK_MM):
-            self._relocate_jammed(cap_mm - 2 * ROUNDING_MM)
+        that a settled page stays a fixed point.  Whether the page keeps that gap (where no
+        limit caps it, ``cap_mm`` inf, there is nothing to aim at: True).  Where it does not,
+        the caller aims at no overlap next: four items of three rooms on a banner that had to
+        stand in one row 0.07 mm too long for the gutter kept the pass's two overlaps of
+        13.9 mm (fresh_projects seed 118, tests/cli/fresh_projects/row-across-rooms-118)."""
+        if cap_mm < 0:
+            return False  # overlap is forced: the margin gives way first (finalize.remove_overlaps)
+        if not np.isfinite(cap_mm) or not unexplained_pairs(self._bodies, [],
+                                                            cap_mm - WIDEST_GAP_SLACK_MM):
+            return True
+        return self._relocate_jammed(cap_mm - 2 * ROUNDING_MM)
 
     def _relocate_jammed(self, gutter_mm: float, margin_mm: float | None = None) -> bool:
         """physics.relocation from the widest arrangement the pass reached, aiming at

@@ -135,7 +135,7 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
     found += _crossings(bodies, roots, pinned, near, far, page_w_mm, page_h_mm, gutter_mm)
     found += _stacks(bodies, roots, offsets, near, far, page_w_mm, page_h_mm, gutter_mm)
     found += _no_room(bodies, pinned, margin_mm, page_w_mm, page_h_mm, gutter_mm)
-    if pinned.any():
+    if pinned.any() or not np.isnan(bodies.regions[:, 0]).all():
         page_walls = bodies.insets(0.0, page_w_mm, page_h_mm)
         found += _pinned_stacks(bodies, roots, offsets, pinned, (near, far), page_walls,
                                 page_w_mm, page_h_mm, gutter_mm)
@@ -221,7 +221,7 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
         elif isinstance(limit, PinnedStack):  # its groups, with each other and the pinned
             members = np.flatnonzero(np.isin(roots, roots[list(limit.rows)]))
             named += [min(a, b) * count + max(a, b) for a in members
-                      for b in np.concatenate([members, limit.pinned])
+                      for b in np.concatenate([members, np.array(limit.pinned, dtype=int)])
                       if a != b and roots[a] != roots[b]]
     named_keys = np.array(named, dtype=np.int64)
     rooms = rooms_of(bodies)
@@ -512,51 +512,67 @@ def _pinned_stacks(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray,
                    pinned: np.ndarray, walls: tuple[np.ndarray, np.ndarray],
                    page_walls: tuple[np.ndarray, np.ndarray], page_w_mm: float,
                    page_h_mm: float, gutter_mm: float) -> list[Limit]:
-    """Free items that must stand in one row (no two fit one above the other in their room:
-    the sets ``_stacks`` tries) and cannot all find a stretch of it beside the items that
-    cannot move (physics.pinned_rows): one limit for each room and axis where those items
-    matter (without them the row fits, or a Stack already says it does not)."""
+    """Free items that must stand in one row (no two fit one above the other inside their
+    walls) and cannot all find a stretch of it beside each other and the items that cannot
+    move (physics.pinned_rows): for each room and axis the set ``_stacks`` would try, where
+    the pinned items matter (without them the row fits, or a Stack already says it does
+    not); and for each axis the items of several rooms (regions and the free items) wide in
+    their own, which no Stack looks at (fresh_projects seed 118: a words region's text, a
+    free text and two photos of the photos region, on a banner, each too tall to stand above
+    another, 0.07 mm too wide for one row with the gutter)."""
     extent = np.array([page_w_mm, page_h_mm])
     near, far = walls
     rows = np.flatnonzero(bodies.active)
     rooms = np.concatenate([near[rows], far[rows]], axis=1).round(6)
     halves = bodies.sizes / 2
     obstacles = np.flatnonzero(pinned)
+    free_rows = rows[~pinned[rows]]
     found: list[Limit] = []
-    for room in np.unique(rooms, axis=0):
-        mine = rows[(np.abs(rooms - room) < 1e-6).all(axis=1)]
-        free = mine[~pinned[mine]]
-        if len(free) < 2:
-            continue
-        for across in (0, 1):
-            along = 1 - across
-            sizes, units = solid_units(bodies, roots, offsets, free, across, gutter_mm)
-            picked = _row_candidate(sizes, roots, units, across,
-                                    extent - room[:2] - room[2:], gutter_mm)
-            if picked is None:
-                continue
+    for across in (0, 1):
+        along = 1 - across
+        boxes = np.stack([bodies.centres[obstacles, along] - halves[obstacles, along],
+                          bodies.centres[obstacles, along] + halves[obstacles, along],
+                          bodies.centres[obstacles, across] - halves[obstacles, across],
+                          bodies.centres[obstacles, across] + halves[obstacles, across]], axis=1)
+
+        def walls_of(picked: np.ndarray, low: np.ndarray, high: np.ndarray) -> np.ndarray:
+            return np.stack([low[picked, along], extent[along] - high[picked, along],
+                             low[picked, across], extent[across] - high[picked, across]],
+                            axis=1)
+
+        candidates = []
+        for room in np.unique(rooms, axis=0):
+            mine = rows[(np.abs(rooms - room) < 1e-6).all(axis=1)]
+            free = mine[~pinned[mine]]
+            if len(free) >= 2:
+                sizes, units = solid_units(bodies, roots, offsets, free, across, gutter_mm)
+                picked = _row_candidate(sizes, roots, units, across,
+                                        extent - room[:2] - room[2:], gutter_mm)
+                if picked is not None:
+                    candidates.append((sizes, picked, False))
+        if len(free_rows) >= 2:
+            sizes, units = solid_units(bodies, roots, offsets, free_rows, across, gutter_mm)
+            own = extent[across] - near[units, across] - far[units, across]
+            wide = _one_per_group(units[sizes[units, across] > (own - gutter_mm) / 2],
+                                  sizes[units[sizes[units, across] > (own - gutter_mm) / 2],
+                                        along], roots)
+            wide = wide[np.argsort(-sizes[wide, along], kind="stable")][:pinned_rows.MAX_MEMBERS]
+            if len(np.unique(rooms[np.searchsorted(rows, wide)], axis=0)) >= 2:
+                candidates.append((sizes, np.sort(wide), True))
+        for sizes, picked, mixed in candidates:
             lengths, widths = sizes[picked, along], sizes[picked, across]
-            box = (room[along], extent[along] - room[2 + along], room[across],
-                   extent[across] - room[2 + across])
-            blockers = np.stack([bodies.centres[obstacles, along] - halves[obstacles, along],
-                                 bodies.centres[obstacles, along] + halves[obstacles, along],
-                                 bodies.centres[obstacles, across] - halves[obstacles, across],
-                                 bodies.centres[obstacles, across] + halves[obstacles, across]],
-                                axis=1)
-            widest = pinned_rows.widest_gap(lengths, widths, box, blockers, gutter_mm)
-            if widest is None or not pinned_rows.rows_fit(lengths, widths, box, blockers[:0],
-                                                          gutter_mm):
+            box = walls_of(picked, near, far)
+            widest = pinned_rows.widest_gap(lengths, widths, box, boxes, gutter_mm)
+            if widest is None or not mixed and not pinned_rows.rows_fit(
+                    lengths, widths, box, boxes[:0], gutter_mm):
                 continue  # they fit, or do not even without the pinned items (a Stack)
-            row = picked[0]
-            page_low, page_high = page_walls[0][row], extent - page_walls[1][row]
-            page_box = (page_low[along], page_high[along], page_low[across], page_high[across])
-            in_way = ((widths.max() > blockers[:, 2] - gutter_mm - box[2])
-                      & (widths.max() > box[3] - blockers[:, 3] - gutter_mm)
-                      & (blockers[:, 0] < box[1]) & (blockers[:, 1] > box[0]))
+            page_box = walls_of(picked, *page_walls)
+            in_way = pinned_rows.in_the_way(widths, box, boxes, gutter_mm)
             found.append(PinnedStack(
                 tuple(int(r) for r in picked[np.argsort(-lengths, kind="stable")]),
-                tuple(int(r) for r in obstacles[in_way]), along, float(box[1] - box[0]),
-                float(widest), pinned_rows.rows_fit(lengths, widths, page_box, blockers, 0.0)))
+                tuple(int(r) for r in obstacles[in_way]), along,
+                float(box[:, 1].max() - box[:, 0].min()), float(widest),
+                pinned_rows.rows_fit(lengths, widths, page_box, boxes, 0.0)))
     return found
 
 

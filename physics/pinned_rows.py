@@ -24,40 +24,43 @@ GAP_STEPS = 16  # bisection steps for the widest gap (to the largest size / 2**1
 SEARCH_BUDGET = 200_000  # blockers x items x 2^items: one search of that many steps
 
 
-def is_row(widths: np.ndarray, room_across: float, gap_mm: float) -> bool:
+def is_row(widths: np.ndarray, rooms: np.ndarray, gap_mm: float) -> bool:
     """Whether no two of the items (``widths`` across the row, the side on which they would
-    stand above each other) fit one above the other with ``gap_mm`` inside ``room_across``."""
+    stand above each other; ``rooms`` (m, 4) each one's walls, as in ``fits``) fit one above
+    the other with ``gap_mm``: from the near wall of one to the far wall of the other, in the
+    better order (page_limits._spans)."""
     if len(widths) < 2:
         return True
-    pairs = widths[:, None] + widths[None, :] + gap_mm > room_across
+    span = np.maximum(rooms[None, :, 3] - rooms[:, None, 2], rooms[:, None, 3] - rooms[None, :, 2])
+    pairs = widths[:, None] + widths[None, :] + gap_mm > span
     np.fill_diagonal(pairs, True)
     return bool(pairs.all())
 
 
-def fits(lengths: np.ndarray, widths: np.ndarray, room: tuple[float, float, float, float],
-         blockers: np.ndarray, gap_mm: float) -> bool:
-    """Whether the items (``lengths`` along the row, ``widths`` across it) fit side by side in
-    the room (low and high along, low and high across), each ``gap_mm`` from the next and
-    from each blocker (k, 4: low and high along, low and high across) it cannot pass above or
-    below.  False only where no placement exists; True too where they need not stand in one
-    row at all (``is_row``)."""
-    low, high, across_low, across_high = room
-    if not is_row(widths, across_high - across_low, gap_mm):
+def fits(lengths: np.ndarray, widths: np.ndarray, rooms: np.ndarray, blockers: np.ndarray,
+         gap_mm: float) -> bool:
+    """Whether the items (``lengths`` along the row, ``widths`` across it) fit side by side,
+    each inside its walls (``rooms`` (m, 4): low and high along, low and high across; a
+    region's, or the page's inside the margins), each ``gap_mm`` from the next and from each
+    blocker (k, 4, the same columns) it cannot pass above or below.  False only where no
+    placement exists; True too where they need not stand in one row at all (``is_row``)."""
+    if not is_row(widths, rooms, gap_mm):
         return True
     count = len(lengths)
-    # each item's stretches it may not start in: a blocker it cannot pass above or below
-    above = blockers[:, 2] - gap_mm - across_low
-    below = across_high - blockers[:, 3] - gap_mm
-    banned = []
+    banned = []  # each item's stretches it may not start in: the blockers it cannot pass
     for k in range(count):
+        above = blockers[:, 2] - gap_mm - rooms[k, 2]
+        below = rooms[k, 3] - blockers[:, 3] - gap_mm
         blocking = (widths[k] > above) & (widths[k] > below)
         starts = blockers[blocking, 0] - gap_mm - lengths[k]
         ends = blockers[blocking, 1] + gap_mm
         order = np.argsort(starts)
         banned.append(list(zip(starts[order].tolist(), ends[order].tolist())))
-    last = [high - float(length) for length in lengths]
+    first = rooms[:, 0].tolist()
+    last = (rooms[:, 1] - lengths).tolist()
 
     def earliest(k: int, start: float) -> float:
+        start = max(start, first[k])
         moved = True
         while moved:
             moved = False
@@ -73,15 +76,14 @@ def fits(lengths: np.ndarray, widths: np.ndarray, room: tuple[float, float, floa
         for k in range(count):
             bit = 1 << k
             if mask & bit and ends[mask ^ bit] < np.inf:
-                before = ends[mask ^ bit]
-                start = earliest(k, low if before == -np.inf else before + gap_mm)
+                start = earliest(k, ends[mask ^ bit] + gap_mm)
                 best = min(best, start + float(lengths[k]))
         ends[mask] = best
     return bool(ends[-1] < np.inf)
 
 
-def rows_fit(lengths: np.ndarray, widths: np.ndarray, room: tuple[float, float, float, float],
-             blockers: np.ndarray, gap_mm: float) -> bool:
+def rows_fit(lengths: np.ndarray, widths: np.ndarray, rooms: np.ndarray, blockers: np.ndarray,
+             gap_mm: float) -> bool:
     """``fits`` for every set of two or more of the items that stand in one row at this gap:
     at a narrower gap two of them may fit one above the other (so the whole set need not
     stand in one row), but the rest still must.  Only the largest such sets are searched (a
@@ -94,16 +96,27 @@ def rows_fit(lengths: np.ndarray, widths: np.ndarray, room: tuple[float, float, 
         if bin(mask).count("1") < 2 or any(mask & done == mask for done in searched):
             continue
         chosen = np.array([k for k in range(count) if mask >> k & 1])
-        if not is_row(widths[chosen], room[3] - room[2], gap_mm):
+        if not is_row(widths[chosen], rooms[chosen], gap_mm):
             continue
         searched.append(mask)
-        if not fits(lengths[chosen], widths[chosen], room, blockers, gap_mm):
+        if not fits(lengths[chosen], widths[chosen], rooms[chosen], blockers, gap_mm):
             return False
     return True
 
 
-def widest_gap(lengths: np.ndarray, widths: np.ndarray, room: tuple[float, float, float, float],
-               blockers: np.ndarray, gutter_mm: float) -> float | None:
+def in_the_way(widths: np.ndarray, rooms: np.ndarray, blockers: np.ndarray,
+               gap_mm: float) -> np.ndarray:
+    """Which blockers (k,) some item cannot pass above or below with ``gap_mm``, inside the
+    reach of its walls along the row."""
+    above = blockers[None, :, 2] - gap_mm - rooms[:, None, 2]
+    below = rooms[:, None, 3] - blockers[None, :, 3] - gap_mm
+    reach = ((blockers[None, :, 0] < rooms[:, None, 1] + gap_mm)
+             & (blockers[None, :, 1] > rooms[:, None, 0] - gap_mm))
+    return ((widths[:, None] > above) & (widths[:, None] > below) & reach).any(axis=0)
+
+
+def widest_gap(lengths: np.ndarray, widths: np.ndarray, rooms: np.ndarray, blockers: np.ndarray,
+               gutter_mm: float) -> float | None:
     """The widest gap (negative: the least overlap) at which the items may still fit in
     their rows (``rows_fit``), by bisection: an upper bound on the gap any layout keeps
     between them and the blockers.  None where they fit with the gutter, or are too many to
@@ -111,20 +124,16 @@ def widest_gap(lengths: np.ndarray, widths: np.ndarray, room: tuple[float, float
     if len(lengths) > MAX_MEMBERS:
         return None
     # only blockers some item cannot pass at the gutter matter (at a narrower gap, fewer)
-    above = blockers[:, 2] - gutter_mm - room[2]
-    below = room[3] - blockers[:, 3] - gutter_mm
-    blockers = blockers[(widths.max() > above) & (widths.max() > below)
-                        & (blockers[:, 0] < room[1] + gutter_mm)
-                        & (blockers[:, 1] > room[0] - gutter_mm)]
+    blockers = blockers[in_the_way(widths, rooms, blockers, gutter_mm)]
     if len(blockers) * len(lengths) << len(lengths) > SEARCH_BUDGET:
         return None  # a hostile page of thousands of anchors: not searched, check stays quick
-    if rows_fit(lengths, widths, room, blockers, gutter_mm):
+    if rows_fit(lengths, widths, rooms, blockers, gutter_mm):
         return None
     low = -float(max(lengths.max(), widths.max()))
     high = gutter_mm
     for _ in range(GAP_STEPS):
         middle = (low + high) / 2
-        if rows_fit(lengths, widths, room, blockers, middle):
+        if rows_fit(lengths, widths, rooms, blockers, middle):
             low = middle
         else:
             high = middle

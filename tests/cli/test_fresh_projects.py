@@ -72,3 +72,19 @@ def test_check_names_a_row_that_hard_anchors_leave_no_room_for(tmp_path):
             "the margins: none of them passes above or below those; they can be parted only by "
             "giving up the margin") in check.stdout, check.stdout
     assert "page p2: 0 overlaps" in check.stdout, check.stdout
+
+
+def test_check_names_a_row_across_regions_and_settle_parts_it(tmp_path):
+    """A words region's text, a free text and two items of the photos region, each too tall
+    to stand above another, must stand in one row: check names the four (it named false
+    Crossings between items of the two regions), and settle keeps them apart (the pass left
+    two overlaps of 13.9 mm)."""
+    name = "row-across-rooms-118.toml"
+    shutil.copy(FILES / name, tmp_path / name)
+    settle(name, tmp_path)
+    check = floatpage("check", name, cwd=tmp_path)
+    assert ('items "p1-text2", "p1-grouped0", "p1-photo3", "p1-text4" are too tall to stand '
+            "above one another with the 3 mm gutter, each inside its region or the margins, so "
+            "they must stand side by side, and no such row of them fits in the 283.4 mm they "
+            "span") in check.stdout, check.stdout
+    assert "page p1: 0 overlaps" in check.stdout and "cannot both fit" not in check.stdout

@@ -156,7 +156,8 @@ def test_a_row_among_blockers_fits_exactly_where_brute_force_finds_a_place(seed)
         blockers.append((x, x + w, y, y + h))
     blockers = np.array(blockers, dtype=float).reshape(-1, 4)
     gap = 2.0
-    assert pinned_rows.fits(lengths, widths, room, blockers, gap) == brute_row_fits(
+    rooms = np.tile(room, (count, 1))
+    assert pinned_rows.fits(lengths, widths, rooms, blockers, gap) == brute_row_fits(
         lengths, widths, room, blockers, gap)
 
 
@@ -196,7 +197,8 @@ def test_a_row_the_pinned_items_leave_no_room_for_is_named():
                                      0.05)
                       for size in range(2, len(rows) + 1)
                       for chosen in map(list, itertools.combinations(range(len(rows)), size))
-                      if pinned_rows.is_row(sizes[chosen, 1], room[3] - room[2], gap)]
+                      if pinned_rows.is_row(sizes[chosen, 1], np.tile(room, (len(chosen), 1)),
+                                            gap)]
         assert rows_found and all(rows_found) == fits
 
 
