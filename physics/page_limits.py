@@ -21,7 +21,13 @@ that no settle will help, and what to change instead:
   all must stand one above another, taller together than the room (or the same across);
 - ``NoRoom``: a free item (with the items following it) that has no place inside its walls
   keeping the gutter from the items that cannot move (physics.relocation.room_for's search,
-  exact for one rectangle among fixed ones).
+  exact for one rectangle among fixed ones);
+- ``PinnedStack``: free items that must stand in one row (no two fit one above the other
+  inside their walls), which the items that cannot move, or the row's length across several
+  rooms, leave no place for (physics.pinned_rows, exact for the row).
+
+A limit caps the gap of its own room only (``rooms_of``: each region, and the free items):
+what the items of one region rule out says nothing of another's.
 
 The area test (Engine.grown_cover) stays the reason for a crowd of small items.
 
