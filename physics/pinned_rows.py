@@ -9,10 +9,11 @@ inside the room, a gap from each other's, and a gap from each pinned item's stre
 pass.  Set down from the left, each item as far left as it goes, the right end of a set of
 items is least for some order of them, and the least over all orders follows from the least
 of each smaller set (``fits``): exact, in 2^m steps for m items.  (The axes swap for items
-that must stand one above another.)  On a banner 300 x 100 mm, six photos that had to stand
-in one row between two hard-anchored ones overlapped by 18.8 mm and check found no reason
-(fresh_projects seed 51); on a postcard, three did beside a hard block and a hard photo
-(seed 17).
+that must stand one above another.)  On a banner 300 x 100 mm, five items that must stand in
+one row between two hard-anchored photos overlap by at least 8.7 mm wherever they go, and
+check found no reason for their 18.8 mm (fresh_projects seed 51; a text beside the row,
+9.1 mm into one of it, is still not explained); on a postcard, three did beside a hard
+block and a hard photo (seed 17), where dropping the margin parts them.
 """
 
 from __future__ import annotations
