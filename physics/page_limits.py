@@ -206,8 +206,10 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
     that the limits do not account for: not two pinned items (PinnedClash), not a pair a
     Crossing, Stack or NoRoom names, and closer than the widest gap the limits leave their
     room (room_caps; a settle that cannot keep the gutter keeps the widest gap that fits, on
-    every pair of the room; a pair of two rooms, the wider of their two gaps: an item that
-    can leave the crowded room need not crowd it).  A reason `check` gives is true only for
+    every pair of the room; a pair of two rooms, the wider of the gaps of the rooms of its
+    items that move: an item that can leave the crowded room need not crowd it, and one
+    beside a hard-anchored header of another room keeps its own room's gap,
+    fresh_projects seed 1080).  A reason `check` gives is true only for
     the pairs it explains: a page with two hard anchors on each other had a free item
     28.6 mm into one of them, and the clash was given as the reason.  Closest first, at most
     LISTED."""
@@ -235,7 +237,11 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
 
     def unexplained(a: np.ndarray, b: np.ndarray, gaps: np.ndarray) -> np.ndarray:
         keys = np.minimum(a, b).astype(np.int64) * count + np.maximum(a, b)
-        cap = np.maximum(caps[rooms[a]], caps[rooms[b]])
+        # a pair of two rooms keeps the wider cap of the rooms of the items that move: an
+        # item beside a pinned one is held to its own room's cap (the relocation of that room
+        # aims there); one that can leave a crowded room need not crowd it
+        cap = np.maximum(np.where(pinned[a], -np.inf, caps[rooms[a]]),
+                         np.where(pinned[b], -np.inf, caps[rooms[b]]))
         return ~(pinned[a] & pinned[b]) & (gaps < cap) & ~np.isin(keys, named_keys)
     return close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter_mm, unexplained)
 
