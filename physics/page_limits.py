@@ -187,10 +187,11 @@ def rooms_of(bodies: Bodies) -> np.ndarray:
 def room_caps(bodies: Bodies, limits: list[Limit], rooms: np.ndarray | None = None
               ) -> np.ndarray:
     """The widest gap the limits leave each room (``rooms_of``), (rooms,): widest_gap of the
-    Crossings, Stacks and NoRooms that name an item of it; inf where none does.  Three month
-    panels that must overlap in a words region cap that region, not the photos region above
-    it (fresh_projects seed 9: the page-wide cap of -6.4 mm left the photos region 15.8 mm
-    overlaps that room elsewhere in it could part)."""
+    Crossings, Stacks, NoRooms and PinnedStacks that name an item of it; inf where none
+    does.  Three month panels that must overlap in a words region cap that region, not the
+    photos region above it (fresh_projects seed 9: the page-wide cap of -6.4 mm excused any
+    overlap of the photos region up to 6.4 mm deep, and stopped its relocation:
+    tests/physics/rooms/rooms-7054.toml is such a page where the photos region has room)."""
     rooms = rooms_of(bodies) if rooms is None else rooms
     caps = np.full(int(rooms.max(initial=0)) + 1, np.inf)
     for limit in limits:
