@@ -11,7 +11,7 @@ from __future__ import annotations
 from floatpage.model.errors import printable
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
-    Crossing, Limit, NoRoom, PinnedClash, PinnedOutside, Stack, TooLarge, binding,
+    Crossing, Limit, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack, TooLarge, binding,
     page_limits, unexplained_pairs,
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER
@@ -114,7 +114,7 @@ def _namer(page):
 
 def _explain(limits: list[Limit], name, gutter_mm: float, margin_mm: float) -> list[str]:
     lines: list[str] = []
-    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom):
+    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack):
         mine = [limit for limit in limits if isinstance(limit, kind)]
         for limit in mine[:SHOWN]:
             lines.append("  " + _sentence(limit, name, gutter_mm, margin_mm))
@@ -160,6 +160,8 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
         return _stack_sentence(limit, name, gutter_mm)
     if isinstance(limit, NoRoom):
         return _no_room_sentence(limit, name, gutter_mm)
+    if isinstance(limit, PinnedStack):
+        return _pinned_stack_sentence(limit, name, gutter_mm)
     a, b = (name(row) for row in limit.rows)
     (side, above), (room_w, room_h) = limit.needs_mm, limit.room_mm
     fate = _fate(limit, "the widest gap they can keep is")
@@ -169,7 +171,7 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
             "another page")
 
 
-def _fate(limit: Crossing | Stack | NoRoom, widest: str,
+def _fate(limit: Crossing | Stack | NoRoom | PinnedStack, widest: str,
           overlap: str = "they overlap wherever they go on this page") -> str:
     if not limit.fits_page:
         return overlap
@@ -203,3 +205,26 @@ def _no_room_sentence(limit: NoRoom, name, gutter_mm: float) -> str:
     return (f"{who} has no place inside the margins that keeps the {gutter_mm:g} mm gutter "
             f"from the items that cannot move ({pinned}); {fate}; move one of their anchors "
             "or make one soft (hard = false), make it smaller, or move it to another page")
+
+
+def _pinned_stack_sentence(limit: PinnedStack, name, gutter_mm: float) -> str:
+    who = _some([name(row) for row in limit.rows[:SHOWN]], len(limit.rows))
+    pinned = _some([name(row) for row in limit.pinned[:SHOWN]], len(limit.pinned))
+    size_word, _ = AXIS_WORDS[1 - limit.axis]
+    place = "one above another" if limit.axis == 1 else "side by side"
+    beside = "beside" if limit.axis == 1 else "above"
+    passing = "beside" if limit.axis == 1 else "above or below"
+    if not limit.pinned:  # items of several rooms (regions, or free), each in its own
+        return (f"items {who} are too {size_word} to stand {beside} one another with the "
+                f"{gutter_mm:g} mm gutter, each inside its region or the margins, so they "
+                f"must stand {place}, and no such row of them fits in the "
+                f"{limit.room_mm:.1f} mm they span; "
+                f"{_fate(limit, 'the widest gap they can keep is at most')}; make one "
+                "smaller, or move one to another page")
+    return (f"items {who} are too {size_word} to stand {beside} one another with the "
+            f"{gutter_mm:g} mm gutter, so they must stand {place}, and the items that cannot "
+            f"move ({pinned}) leave no such row of the {limit.room_mm:.1f} mm inside the "
+            f"margins: none of them passes {passing} those; "
+            f"{_fate(limit, 'the widest gap they can keep is at most')}; move one of the "
+            "anchors or make one soft (hard = false), make one smaller, or move one to another "
+            "page")

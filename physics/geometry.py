@@ -77,25 +77,39 @@ def grown_cover(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
     session the page's room was the page less the widest walls of any item: two regions that
     split a page left it no room, and `check` said its items needed 10^15 % of it, and a
     page with regions was never aligned, re-started or relocated.)"""
+    covers = room_covers(bodies, near, far, page_w_mm, page_h_mm, gutter_mm)
+    return float(covers.max()) if len(covers) else 0.0
+
+
+def room_covers(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: float,
+                page_h_mm: float, gutter_mm: float) -> np.ndarray:
+    """``grown_cover`` of each room, (rooms,): the page's first, then each region's, in the
+    order of page_limits.rooms_of (empty on a page with no active item)."""
     active = bodies.active
     if not active.any():
-        return 0.0
+        return np.zeros(0)
     near, far = (np.broadcast_to(np.asarray(side, float), bodies.sizes.shape)
                  for side in (near, far))
     grown = (bodies.sizes + gutter_mm).prod(axis=1)
     confined = ~np.isnan(bodies.regions[:, 0])
     free = active & ~confined
-    rooms = [(np.flatnonzero(active), free if free.any() else active)]
+    # A page whose every item is confined has no room of free items: its page room (walls of
+    # every item, the words region's top and the photos region's bottom) was 0 mm tall, and a
+    # page of two regions "needed 9,416 % of it" (check gave that as the reason)
+    rooms = [(np.flatnonzero(active), free)] if free.any() else [(np.zeros(0, int), active)]
     for region in np.unique(bodies.regions[active & confined], axis=0):
         rows = np.flatnonzero(active & (bodies.regions == region).all(axis=1))
         rooms.append((rows, rows))
     extent = np.array([page_w_mm, page_h_mm])
     covers = []
     for rows, walls in rooms:
+        if not len(rows):
+            covers.append(0.0)
+            continue
         room = extent - np.max(near[walls], axis=0) - np.max(far[walls], axis=0)
         covers.append(float(grown[rows].sum())
                       / max(float((np.maximum(room, 0.0) + gutter_mm).prod()), 1e-9))
-    return max(covers)
+    return np.array(covers)
 
 
 def lines_up(cover: float, count: int) -> bool:

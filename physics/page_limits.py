@@ -21,7 +21,13 @@ that no settle will help, and what to change instead:
   all must stand one above another, taller together than the room (or the same across);
 - ``NoRoom``: a free item (with the items following it) that has no place inside its walls
   keeping the gutter from the items that cannot move (physics.relocation.room_for's search,
-  exact for one rectangle among fixed ones).
+  exact for one rectangle among fixed ones);
+- ``PinnedStack``: free items that must stand in one row (no two fit one above the other
+  inside their walls), which the items that cannot move, or the row's length across several
+  rooms, leave no place for (physics.pinned_rows, exact for the row).
+
+A limit caps the gap of its own room only (``rooms_of``: each region, and the free items):
+what the items of one region rule out says nothing of another's.
 
 The area test (Engine.grown_cover) stays the reason for a crowd of small items.
 
@@ -36,6 +42,7 @@ from typing import Callable, Union
 
 import numpy as np
 
+from floatpage.physics import pinned_rows
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import candidate_pairs
 from floatpage.physics.finalize import pair_clearances
@@ -107,7 +114,17 @@ class NoRoom:
     fits_page: bool  # whether it can stand clear of them at all if the margins give way
 
 
-Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom]
+@dataclass(frozen=True)
+class PinnedStack:
+    rows: tuple[int, ...]  # free items of which no two stand beside each other (or above)
+    pinned: tuple[int, ...]  # the items that cannot move that one of them cannot pass
+    axis: int  # the axis they must stand along: 1 one above another, 0 side by side
+    room_mm: float  # inside the margins, along it
+    widest_gap_mm: float  # at most this gap between them and those items (< 0: overlap)
+    fits_page: bool  # whether they can be parted at all if the margins give way
+
+
+Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack]
 
 
 def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float,
@@ -124,6 +141,10 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
     found += _crossings(bodies, roots, pinned, near, far, page_w_mm, page_h_mm, gutter_mm)
     found += _stacks(bodies, roots, offsets, near, far, page_w_mm, page_h_mm, gutter_mm)
     found += _no_room(bodies, pinned, margin_mm, page_w_mm, page_h_mm, gutter_mm)
+    if pinned.any() or not np.isnan(bodies.regions[:, 0]).all():
+        page_walls = bodies.insets(0.0, page_w_mm, page_h_mm)
+        found += _pinned_stacks(bodies, roots, offsets, pinned, (near, far), page_walls,
+                                page_w_mm, page_h_mm, gutter_mm)
     return found
 
 
@@ -140,25 +161,59 @@ def capping(limits: list[Limit]) -> list[Limit]:
     for its room.  Two pinned items on each other (PinnedClash), or one past its wall, say
     nothing of the rest of the page: the no-overlap pass leaves such a pair out, and every
     other pair can still keep the gutter."""
-    return [limit for limit in limits if isinstance(limit, (TooLarge, Crossing, Stack, NoRoom))]
+    return [limit for limit in limits
+            if isinstance(limit, (TooLarge, Crossing, Stack, NoRoom, PinnedStack))]
 
 
 def widest_gap(limits: list[Limit]) -> float:
     """The widest gap the limits leave the page's closest pair: the page's gap can be no
     wider than any Crossing's, Stack's or NoRoom's widest; inf where none caps it."""
     return min((limit.widest_gap_mm for limit in limits
-                if isinstance(limit, (Crossing, Stack, NoRoom))), default=np.inf)
+                if isinstance(limit, (Crossing, Stack, NoRoom, PinnedStack))), default=np.inf)
+
+
+def rooms_of(bodies: Bodies) -> np.ndarray:
+    """The room of each row, (n,) int: 0 for the items free to go anywhere on the page, k > 0
+    for those confined to the k-th region (geometry.grown_cover's rooms).  Items of two
+    regions never meet, so what the items of one room rule out says nothing of another's."""
+    rooms = np.zeros(bodies.count, dtype=int)
+    confined = bodies.active & ~np.isnan(bodies.regions[:, 0])
+    if confined.any():
+        _, inverse = np.unique(bodies.regions[confined], axis=0, return_inverse=True)
+        rooms[confined] = inverse.ravel() + 1
+    return rooms
+
+
+def room_caps(bodies: Bodies, limits: list[Limit], rooms: np.ndarray | None = None
+              ) -> np.ndarray:
+    """The widest gap the limits leave each room (``rooms_of``), (rooms,): widest_gap of the
+    Crossings, Stacks, NoRooms and PinnedStacks that name an item of it; inf where none
+    does.  Three month panels that must overlap in a words region cap that region, not the
+    photos region above it (fresh_projects seed 9: the page-wide cap of -6.4 mm excused any
+    overlap of the photos region up to 6.4 mm deep, and stopped its relocation:
+    tests/physics/rooms/rooms-7054.toml is such a page where the photos region has room)."""
+    rooms = rooms_of(bodies) if rooms is None else rooms
+    caps = np.full(int(rooms.max(initial=0)) + 1, np.inf)
+    for limit in limits:
+        if isinstance(limit, (Crossing, Stack, NoRoom, PinnedStack)):
+            touched = np.unique(rooms[list(limit.rows)])
+            caps[touched] = np.minimum(caps[touched], limit.widest_gap_mm)
+    return caps
 
 
 def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
                       ) -> list[tuple[int, int, float]]:
     """Pairs (a, b, clearance) of active items of different groups closer than the gutter
     that the limits do not account for: not two pinned items (PinnedClash), not a pair a
-    Crossing, Stack or NoRoom names, and closer than the widest gap the limits leave the page
-    (widest_gap; a settle that cannot keep the gutter keeps the widest gap that fits, on
-    every pair).  A reason `check` gives is true only for the pairs it explains: a page
-    with two hard anchors on each other had a free item 28.6 mm into one of them, and the
-    clash was given as the reason.  Closest first, at most LISTED."""
+    Crossing, Stack or NoRoom names, and closer than the widest gap the limits leave their
+    room (room_caps; a settle that cannot keep the gutter keeps the widest gap that fits, on
+    every pair of the room; a pair of two rooms, the wider of the gaps of the rooms of its
+    items that move: an item that can leave the crowded room need not crowd it, and one
+    beside a hard-anchored header of another room keeps its own room's gap,
+    fresh_projects seed 1080).  A reason `check` gives is true only for
+    the pairs it explains: a page with two hard anchors on each other had a free item
+    28.6 mm into one of them, and the clash was given as the reason.  Closest first, at most
+    LISTED."""
     roots, _ = bodies.group_roots()
     pinned = _pinned(bodies, roots)
     count = bodies.count
@@ -172,11 +227,22 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
                       if a < b and roots[a] != roots[b]]
         elif isinstance(limit, NoRoom):
             named += [min(a, b) * count + max(a, b) for a in limit.rows for b in limit.pinned]
+        elif isinstance(limit, PinnedStack):  # its groups, with each other and the pinned
+            members = np.flatnonzero(np.isin(roots, roots[list(limit.rows)]))
+            named += [min(a, b) * count + max(a, b) for a in members
+                      for b in np.concatenate([members, np.array(limit.pinned, dtype=int)])
+                      if a != b and roots[a] != roots[b]]
     named_keys = np.array(named, dtype=np.int64)
-    cap = widest_gap(limits) - WIDEST_GAP_SLACK_MM
+    rooms = rooms_of(bodies)
+    caps = room_caps(bodies, limits, rooms) - WIDEST_GAP_SLACK_MM
 
     def unexplained(a: np.ndarray, b: np.ndarray, gaps: np.ndarray) -> np.ndarray:
         keys = np.minimum(a, b).astype(np.int64) * count + np.maximum(a, b)
+        # a pair of two rooms keeps the wider cap of the rooms of the items that move: an
+        # item beside a pinned one is held to its own room's cap (the relocation of that room
+        # aims there); one that can leave a crowded room need not crowd it
+        cap = np.maximum(np.where(pinned[a], -np.inf, caps[rooms[a]]),
+                         np.where(pinned[b], -np.inf, caps[rooms[b]]))
         return ~(pinned[a] & pinned[b]) & (gaps < cap) & ~np.isin(keys, named_keys)
     return close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter_mm, unexplained)
 
@@ -306,12 +372,15 @@ def _crossings(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray, near: np.n
     if len(rows) < 2:
         return []
     sizes = bodies.sizes[rows]
-    room = extent - near[rows] - far[rows]  # each item's own room, (m, 2)
+    low, high = near[rows], extent - far[rows]  # each item's walls, (m, 2)
+    room = high - low
+    # A pair needs an item wider than half its own room less the gutter (its span, below, is
+    # at least the mean of the two rooms), so only those are compared with the rest.
     wide = np.flatnonzero(sizes[:, 0] > (room[:, 0] - gutter_mm) / 2)
     found: list[Limit] = []
     for start in range(0, len(wide), CROSSING_BLOCK):
         first = wide[start:start + CROSSING_BLOCK]
-        shared = np.minimum(room[first][:, None, :], room[None, :, :])  # (k, m, 2)
+        shared = _spans(low[first], high[first], low, high)  # (k, m, 2)
         needs = sizes[first][:, None, :] + sizes[None, :, :]
         spare = (shared - needs).max(axis=2)  # the widest gap inside the margins
         spare_page = (extent - needs).max(axis=2)
@@ -329,6 +398,17 @@ def _crossings(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray, near: np.n
                                   float(spare[k, m]), bool(spare_page[k, m] >= 0)))
     found.sort(key=lambda limit: limit.widest_gap_mm)
     return found
+
+
+def _spans(low_a: np.ndarray, high_a: np.ndarray, low_b: np.ndarray, high_b: np.ndarray
+           ) -> np.ndarray:
+    """The room each pair (k of a by m of b) has to stand side by side in, along each axis,
+    (k, m, 2): from the near wall of the one to the far wall of the other, in the better of
+    the two orders.  Two items of one room have that room; two of different regions have the
+    span the two regions cover together.  (Taken as the smaller of the two rooms, a calendar
+    in a words region and a photo in the photos region above it "could not be parted" where
+    the split between the regions parts them: fresh_projects seed 9.)"""
+    return np.maximum(high_b[None, :, :] - low_a[:, None, :], high_a[:, None, :] - low_b[None, :, :])
 
 
 def _stacks(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray, near: np.ndarray,
@@ -439,6 +519,92 @@ def _stack_limit(sizes: np.ndarray, stack: np.ndarray, across: int, room: np.nda
                                                                  kind="stable")]),
                  along, float(tall.sum() + gutter_mm * (count - 1)), float(room[along]),
                  float(widest(room)), bool(widest(extent) >= 0))
+
+
+def _pinned_stacks(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray,
+                   pinned: np.ndarray, walls: tuple[np.ndarray, np.ndarray],
+                   page_walls: tuple[np.ndarray, np.ndarray], page_w_mm: float,
+                   page_h_mm: float, gutter_mm: float) -> list[Limit]:
+    """Free items that must stand in one row (no two fit one above the other inside their
+    walls) and cannot all find a stretch of it beside each other and the items that cannot
+    move (physics.pinned_rows): for each room and axis the set ``_stacks`` would try, where
+    the pinned items matter (without them the row fits, or a Stack already says it does
+    not); and for each axis the items of several rooms (regions and the free items) wide in
+    their own, which no Stack looks at (fresh_projects seed 118: a words region's text, a
+    free text and two photos of the photos region, on a banner, each too tall to stand above
+    another, 0.07 mm too wide for one row with the gutter)."""
+    extent = np.array([page_w_mm, page_h_mm])
+    near, far = walls
+    rows = np.flatnonzero(bodies.active)
+    rooms = np.concatenate([near[rows], far[rows]], axis=1).round(6)
+    halves = bodies.sizes / 2
+    obstacles = np.flatnonzero(pinned)
+    free_rows = rows[~pinned[rows]]
+    found: list[Limit] = []
+    for across in (0, 1):
+        along = 1 - across
+        boxes = np.stack([bodies.centres[obstacles, along] - halves[obstacles, along],
+                          bodies.centres[obstacles, along] + halves[obstacles, along],
+                          bodies.centres[obstacles, across] - halves[obstacles, across],
+                          bodies.centres[obstacles, across] + halves[obstacles, across]], axis=1)
+
+        def walls_of(picked: np.ndarray, low: np.ndarray, high: np.ndarray) -> np.ndarray:
+            return np.stack([low[picked, along], extent[along] - high[picked, along],
+                             low[picked, across], extent[across] - high[picked, across]],
+                            axis=1)
+
+        candidates = []
+        for room in np.unique(rooms, axis=0):
+            mine = rows[(np.abs(rooms - room) < 1e-6).all(axis=1)]
+            free = mine[~pinned[mine]]
+            if len(free) >= 2:
+                sizes, units = solid_units(bodies, roots, offsets, free, across, gutter_mm)
+                picked = _row_candidate(sizes, roots, units, across,
+                                        extent - room[:2] - room[2:], gutter_mm)
+                if picked is not None:
+                    candidates.append((sizes, picked, False))
+        if len(free_rows) >= 2:
+            sizes, units = solid_units(bodies, roots, offsets, free_rows, across, gutter_mm)
+            own = extent[across] - near[units, across] - far[units, across]
+            wide = _one_per_group(units[sizes[units, across] > (own - gutter_mm) / 2],
+                                  sizes[units[sizes[units, across] > (own - gutter_mm) / 2],
+                                        along], roots)
+            wide = wide[np.argsort(-sizes[wide, along], kind="stable")][:pinned_rows.MAX_MEMBERS]
+            if len(np.unique(rooms[np.searchsorted(rows, wide)], axis=0)) >= 2:
+                candidates.append((sizes, np.sort(wide), True))
+        for sizes, picked, mixed in candidates:
+            lengths, widths = sizes[picked, along], sizes[picked, across]
+            box = walls_of(picked, near, far)
+            widest = pinned_rows.widest_gap(lengths, widths, box, boxes, gutter_mm)
+            if widest is None or not mixed and not pinned_rows.rows_fit(
+                    lengths, widths, box, boxes[:0], gutter_mm):
+                continue  # they fit, or do not even without the pinned items (a Stack)
+            page_box = walls_of(picked, *page_walls)
+            in_way = pinned_rows.in_the_way(widths, box, boxes, gutter_mm)
+            found.append(PinnedStack(
+                tuple(int(r) for r in picked[np.argsort(-lengths, kind="stable")]),
+                tuple(int(r) for r in obstacles[in_way]), along,
+                float(box[:, 1].max() - box[:, 0].min()), float(widest),
+                pinned_rows.rows_fit(lengths, widths, page_box, boxes, 0.0)))
+    return found
+
+
+def _row_candidate(sizes: np.ndarray, roots: np.ndarray, rows: np.ndarray, across: int,
+                   room: np.ndarray, gutter_mm: float) -> np.ndarray | None:
+    """The largest set of ``rows`` (one per group) of which no two fit one above the other
+    across the room with the gutter (the sets ``_tallest_stack`` tries), or None if none has
+    two."""
+    spare = room[across] - gutter_mm + TOLERANCE_MM
+    widths, heights = sizes[rows, across], sizes[rows, 1 - across]
+    wide = widths > spare / 2
+    choices = [wide] + [wide & (widths > spare - widths[k]) | (np.arange(len(rows)) == k)
+                        for k in np.flatnonzero(~wide & (widths > spare - widths.max()))]
+    best = None
+    for chosen in choices:
+        picked = _one_per_group(rows[chosen], heights[chosen], roots)
+        if len(picked) >= 2 and (best is None or len(picked) > len(best)):
+            best = picked
+    return best
 
 
 def _no_room(bodies: Bodies, pinned: np.ndarray, margin_mm: float, page_w_mm: float,

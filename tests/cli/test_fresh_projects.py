@@ -55,3 +55,36 @@ def test_check_names_captioned_photos_that_must_stand_in_one_row(tmp_path):
     assert ('items "p1-grouped5", "p1-captioned2", "p1-captioned0", "p1-photo4" are each too '
             "tall to stand above another of them with the 3 mm gutter, so they must stand "
             "side by side, and that is 159.1 mm wide") in check.stdout, check.stdout
+
+
+def test_check_names_a_row_that_hard_anchors_leave_no_room_for(tmp_path):
+    """Three photos too tall for two to stand one above the other, and a hard block and a
+    hard photo in their row: check names the row and the anchors in its way, says the margin
+    must give way (not overlap), and settle keeps them apart (it left 16.8 mm of overlap and
+    check sent the page back to settle)."""
+    name = "limit-pinned-stack-17.toml"
+    shutil.copy(FILES / name, tmp_path / name)
+    settle(name, tmp_path)
+    check = floatpage("check", name, cwd=tmp_path)
+    assert ('items "p2-grouped8", "p2-photo3", "p2-captioned1" are too tall to stand above one '
+            "another with the 4 mm gutter, so they must stand side by side, and the items that "
+            'cannot move ("p2-block4", "p2-grouped5") leave no such row of the 136.0 mm inside '
+            "the margins: none of them passes above or below those; they can be parted only by "
+            "giving up the margin") in check.stdout, check.stdout
+    assert "page p2: 0 overlaps" in check.stdout, check.stdout
+
+
+def test_check_names_a_row_across_regions_and_settle_parts_it(tmp_path):
+    """A words region's text, a free text and two items of the photos region, each too tall
+    to stand above another, must stand in one row: check names the four (it named false
+    Crossings between items of the two regions), and settle keeps them apart (the pass left
+    two overlaps of 13.9 mm)."""
+    name = "row-across-rooms-118.toml"
+    shutil.copy(FILES / name, tmp_path / name)
+    settle(name, tmp_path)
+    check = floatpage("check", name, cwd=tmp_path)
+    assert ('items "p1-text2", "p1-grouped0", "p1-photo3", "p1-text4" are too tall to stand '
+            "above one another with the 3 mm gutter, each inside its region or the margins, so "
+            "they must stand side by side, and no such row of them fits in the 283.4 mm they "
+            "span") in check.stdout, check.stdout
+    assert "page p1: 0 overlaps" in check.stdout and "cannot both fit" not in check.stdout
