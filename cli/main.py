@@ -186,23 +186,19 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
     from floatpage.model.layout import settle_project
     from floatpage.typeset import render_pdf
-    from floatpage.typeset.while_settling import render_while_settling
 
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
     refuse_other_format(out)
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
-    options = dict(tex_out=Path(args.tex) if args.tex else None,
-                   fragment_out=Path(args.fragment) if args.fragment else None,
-                   print_bleed_mm=(3.0 if args.bleed is None else args.bleed)
-                   if args.print else None)
     with progress_line(args.quiet) as show:
-        if args.no_settle:
-            report = render_pdf(project, out, progress=show, **options)
-        else:
-            jobs = jobs_of(args)
-            report = render_while_settling(
-                project, out, lambda settled: settle_project(settled, jobs=jobs), jobs=jobs,
-                progress=show, **options)
+        if not args.no_settle:
+            show("settling the layout…")
+            settle_project(project, jobs=jobs_of(args))
+        report = render_pdf(project, out, tex_out=Path(args.tex) if args.tex else None,
+                            fragment_out=Path(args.fragment) if args.fragment else None,
+                            progress=show,
+                            print_bleed_mm=(3.0 if args.bleed is None else args.bleed)
+                            if args.print else None)
     for warning in report.warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)
     from floatpage.typeset.render import resolution_notes

@@ -21,7 +21,6 @@ import signal
 import subprocess
 import time
 from pathlib import Path
-from typing import Callable
 
 from floatpage.typeset.errors import LatexCompileError, LogError, RenderError, TexNotFoundError
 from floatpage.typeset.latex_log import errors_with_items
@@ -95,20 +94,15 @@ def engine_environment(picture_dir: Path | None) -> dict[str, str]:
     return env
 
 
-def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = None,
-               on_start: Callable[[subprocess.Popen], None] | None = None
+def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = None
                ) -> tuple[int | None, float]:
-    """Run the engine on build_dir/main.tex; (exit code or None on timeout, seconds).
-    ``on_start`` is handed the engine's process as soon as it runs (so that another thread
-    can stop it: typeset.while_settling)."""
+    """Run the engine on build_dir/main.tex; (exit code or None on timeout, seconds)."""
     memory_bytes = engine_memory_mb() << 20
     start = time.perf_counter()
     process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                env=engine_environment(picture_dir), start_new_session=True,
                                preexec_fn=lambda: limit_engine(memory_bytes))
-    if on_start is not None:
-        on_start(process)
     try:
         code = process.wait(timeout=timeout_s)
     except subprocess.TimeoutExpired:
@@ -124,8 +118,7 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
 
 def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
                 timeout_s: float = 120.0, picture_dir: Path | None = None,
-                keep_log: Path | None = None,
-                on_start: Callable[[subprocess.Popen], None] | None = None) -> Path:
+                keep_log: Path | None = None) -> Path:
     """Compile `tex` in `build_dir` with one engine run; return the PDF's path there.
 
     On failure raise LatexCompileError with the log's errors tied to their items;
@@ -133,8 +126,7 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
     """
     build_dir = Path(build_dir)
     (build_dir / MAIN).write_text(tex, encoding="utf-8")
-    code, _ = run_engine(build_dir, timeout_s=timeout_s, picture_dir=picture_dir,
-                         on_start=on_start)
+    code, _ = run_engine(build_dir, timeout_s=timeout_s, picture_dir=picture_dir)
     pdf = build_dir / "main.pdf"
     log_file = build_dir / "main.log"
     if code == 0 and pdf.is_file():

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import hashlib
 import re
-import subprocess
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -38,7 +37,6 @@ class RenderReport:
     warnings: list[str] = field(default_factory=list)
     seconds: float = 0.0
     engine_seconds: float = 0.0
-    typeset_while_settling: bool = False  # typeset.while_settling's run was kept
 
 
 def placed_document(project: Project) -> PlacedDocument:
@@ -158,37 +156,14 @@ def log_path_for(out_pdf: Path) -> Path:
     return out_pdf.with_name(out_pdf.name + ".log")
 
 
-@dataclass
-class PreparedRender:
-    """Everything a render writes, worked out before LuaLaTeX runs: the outputs' paths and
-    the .tex (and fragment) to compile, from the project's positions at that moment."""
+def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
+               fragment_out: Path | None = None, timeout_s: float = 120.0,
+               progress: Callable[[str], None] | None = None,
+               print_bleed_mm: float | None = None) -> RenderReport:
+    """Typeset the project into `out_pdf` with one LuaLaTeX run; keep the .tex if asked.
 
-    out_pdf: Path
-    tex_out: Path | None
-    fragment_out: Path | None
-    tex: str
-    fragment: str
-    labels: list[str]
-    page_count: int
-    warnings: list[str]
-    started: float
-
-
-@dataclass
-class TypesetPdf:
-    """What one LuaLaTeX run made of a PreparedRender, before anything is written out."""
-
-    data: bytes
-    pages: int
-    engine_seconds: float
-
-
-def prepare_render(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
-                   fragment_out: Path | None = None,
-                   progress: Callable[[str], None] | None = None,
-                   print_bleed_mm: float | None = None) -> PreparedRender:
-    """Check the outputs, fit the texts, convert the pictures and write the .tex in memory:
-    the render up to the engine's run (see ``render_pdf``)."""
+    ``print_bleed_mm`` makes the PDF a print shop's (`render --print`): bleed, crop marks,
+    TrimBox and BleedBox (see typeset.print_marks); the fragment stays the bare page."""
     started = time.perf_counter()
     say = progress or (lambda message: None)
     out_pdf = Path(out_pdf)
@@ -211,49 +186,23 @@ def prepare_render(project: Project, out_pdf: Path, *, tex_out: Path | None = No
     fragment = tex_from_placed(document, fragment=True) if fragment_out is not None else ""
     if print_bleed_mm is not None:
         document = for_print(document, project, print_bleed_mm)
-    return PreparedRender(out_pdf, Path(tex_out) if tex_out else None,
-                          Path(fragment_out) if fragment_out else None,
-                          tex_from_placed(document), fragment, document.labels,
-                          len(document.pages), document.warnings, started)
-
-
-def typeset_prepared(prepared: PreparedRender, *, timeout_s: float = 120.0,
-                     on_start: Callable[[subprocess.Popen], None] | None = None) -> TypesetPdf:
-    """One LuaLaTeX run on the prepared .tex in a fresh build folder; nothing is written out
-    (``on_start``: see compile.run_engine)."""
+    tex = tex_from_placed(document)
+    say("typesetting with LuaLaTeX")
     engine_started = time.perf_counter()
     with build_folder() as build:
-        pdf = compile_pdf(prepared.tex, Path(build), labels=prepared.labels, timeout_s=timeout_s,
-                          picture_dir=cache_dir(), keep_log=log_path_for(prepared.out_pdf),
-                          on_start=on_start)
+        pdf = compile_pdf(tex, Path(build), labels=document.labels, timeout_s=timeout_s,
+                          picture_dir=cache_dir(),
+                          keep_log=log_path_for(out_pdf))
         data = pdf.read_bytes()
-        pages = count_pages(Path(build), prepared.page_count)
-    return TypesetPdf(data, pages, time.perf_counter() - engine_started)
-
-
-def write_render(prepared: PreparedRender, typeset: TypesetPdf,
-                 progress: Callable[[str], None] | None = None) -> RenderReport:
-    """Only now, with the PDF made, is anything replaced: a failed render overwrites nothing."""
-    if prepared.tex_out is not None:
-        write_output(prepared.tex_out, prepared.tex.encode("utf-8"))
-    if prepared.fragment_out is not None:
-        write_output(prepared.fragment_out, prepared.fragment.encode("utf-8"))
-    write_output(prepared.out_pdf, typeset.data)
-    log_path_for(prepared.out_pdf).unlink(missing_ok=True)  # a failed render's log is stale
-    (progress or (lambda message: None))(f"wrote {prepared.out_pdf}")
-    return RenderReport(prepared.out_pdf, typeset.pages, prepared.warnings,
-                        time.perf_counter() - prepared.started, typeset.engine_seconds)
-
-
-def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
-               fragment_out: Path | None = None, timeout_s: float = 120.0,
-               progress: Callable[[str], None] | None = None,
-               print_bleed_mm: float | None = None) -> RenderReport:
-    """Typeset the project into `out_pdf` with one LuaLaTeX run; keep the .tex if asked.
-
-    ``print_bleed_mm`` makes the PDF a print shop's (`render --print`): bleed, crop marks,
-    TrimBox and BleedBox (see typeset.print_marks); the fragment stays the bare page."""
-    prepared = prepare_render(project, out_pdf, tex_out=tex_out, fragment_out=fragment_out,
-                              progress=progress, print_bleed_mm=print_bleed_mm)
-    (progress or (lambda message: None))("typesetting with LuaLaTeX")
-    return write_render(prepared, typeset_prepared(prepared, timeout_s=timeout_s), progress)
+        pages = count_pages(Path(build), len(document.pages))
+    engine_seconds = time.perf_counter() - engine_started
+    # Only now, with the PDF made, is anything replaced: a failed render overwrites nothing.
+    if tex_out is not None:
+        write_output(Path(tex_out), tex.encode("utf-8"))
+    if fragment_out is not None:
+        write_output(Path(fragment_out), fragment.encode("utf-8"))
+    write_output(out_pdf, data)
+    log_path_for(out_pdf).unlink(missing_ok=True)  # a failed render's log is now stale
+    say(f"wrote {out_pdf}")
+    return RenderReport(out_pdf, pages, document.warnings,
+                        time.perf_counter() - started, engine_seconds)
