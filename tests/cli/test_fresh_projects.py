@@ -25,6 +25,13 @@ def settle(name: str, folder: Path) -> None:
     assert done.returncode == 0, done.stdout + done.stderr
 
 
+def settled_and_checked(name: str, folder: Path):
+    """The cut-down file copied into ``folder``, settled and checked: check's result."""
+    shutil.copy(FILES / name, folder / name)
+    settle(name, folder)
+    return floatpage("check", name, cwd=folder)
+
+
 @pytest.mark.parametrize("name", sorted(path.name for path in FILES.glob("*.toml")))
 def test_a_settled_fresh_project_keeps_its_promises(tmp_path, name):
     path = tmp_path / name
@@ -49,9 +56,7 @@ def test_check_names_captioned_photos_that_must_stand_in_one_row(tmp_path):
     by their photos, and says they cannot stand above each other (it said "beside", and
     then "so they must stand side by side")."""
     name = "limit-stacked-groups-19.toml"
-    shutil.copy(FILES / name, tmp_path / name)
-    settle(name, tmp_path)
-    check = floatpage("check", name, cwd=tmp_path)
+    check = settled_and_checked(name, tmp_path)
     assert ('items "p1-grouped5", "p1-captioned2", "p1-captioned0", "p1-photo4" are each too '
             "tall to stand above another of them with the 3 mm gutter, so they must stand "
             "side by side, and that is 159.1 mm wide") in check.stdout, check.stdout
@@ -63,9 +68,7 @@ def test_check_names_a_row_that_hard_anchors_leave_no_room_for(tmp_path):
     must give way (not overlap), and settle keeps them apart (it left 16.8 mm of overlap and
     check sent the page back to settle)."""
     name = "limit-pinned-stack-17.toml"
-    shutil.copy(FILES / name, tmp_path / name)
-    settle(name, tmp_path)
-    check = floatpage("check", name, cwd=tmp_path)
+    check = settled_and_checked(name, tmp_path)
     assert ('items "p2-grouped8", "p2-photo3", "p2-captioned1" are too tall to stand above one '
             "another with the 4 mm gutter, so they must stand side by side, and the items that "
             'cannot move ("p2-block4", "p2-grouped5") leave no such row of the 136.0 mm inside '
@@ -80,9 +83,7 @@ def test_check_names_a_row_across_regions_and_settle_parts_it(tmp_path):
     Crossings between items of the two regions), and settle keeps them apart (the pass left
     two overlaps of 13.9 mm)."""
     name = "row-across-rooms-118.toml"
-    shutil.copy(FILES / name, tmp_path / name)
-    settle(name, tmp_path)
-    check = floatpage("check", name, cwd=tmp_path)
+    check = settled_and_checked(name, tmp_path)
     assert ('items "p1-text2", "p1-grouped0", "p1-photo3", "p1-text4" are too tall to stand '
             "above one another with the 3 mm gutter, each inside its region or the margins, so "
             "they must stand side by side, and no such row of them fits in the 283.4 mm they "
