@@ -242,13 +242,11 @@ def cmd_check(args: argparse.Namespace) -> int:
         issues += problems
         settle_helps = settle_helps or settle_may_help(lines)
     from floatpage.typeset import text_fit_warnings
-    from floatpage.typeset.render import picture_warnings
+    from floatpage.typeset.render import picture_warnings, resolution_notes
 
     for warning in text_fit_warnings(project) + picture_warnings(project):
         print(f"warning: {printable(warning)}")
         issues += 1
-    from floatpage.typeset.render import resolution_notes
-
     for note in resolution_notes(project):  # a note, not a problem: --strict still passes
         print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):

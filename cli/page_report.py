@@ -180,14 +180,18 @@ def _fate(limit: Crossing | Stack | NoRoom | PinnedStack, widest: str,
     return f"{widest} {limit.widest_gap_mm:.1f} mm"
 
 
+def _row_words(axis: int) -> tuple[str, str, str]:
+    """How a sentence tells items that must stand in a row along ``axis``: the size that
+    rules out a pair across it, where they must stand, and the word for across."""
+    size_word, _ = AXIS_WORDS[1 - axis]
+    return (size_word, "one above another" if axis == 1 else "side by side",
+            "beside" if axis == 1 else "above")
+
+
 def _stack_sentence(limit: Stack, name, gutter_mm: float) -> str:
-    who = ", ".join(name(row) for row in limit.rows[:SHOWN])
-    if len(limit.rows) > SHOWN:
-        who += f" and {len(limit.rows) - SHOWN} more"
-    size_word, _ = AXIS_WORDS[1 - limit.axis]
-    place = "one above another" if limit.axis == 1 else "side by side"
+    who = _some([name(row) for row in limit.rows[:SHOWN]], len(limit.rows))
+    size_word, place, beside = _row_words(limit.axis)
     along = "tall" if limit.axis == 1 else "wide"
-    beside = "beside" if limit.axis == 1 else "above"
     return (f"items {who} are each too {size_word} to stand {beside} another of them with the "
             f"{gutter_mm:g} mm gutter, so they must stand {place}, and that is "
             f"{limit.needs_mm:.1f} mm {along}, more than the {limit.room_mm:.1f} mm inside the "
@@ -210,9 +214,7 @@ def _no_room_sentence(limit: NoRoom, name, gutter_mm: float) -> str:
 def _pinned_stack_sentence(limit: PinnedStack, name, gutter_mm: float) -> str:
     who = _some([name(row) for row in limit.rows[:SHOWN]], len(limit.rows))
     pinned = _some([name(row) for row in limit.pinned[:SHOWN]], len(limit.pinned))
-    size_word, _ = AXIS_WORDS[1 - limit.axis]
-    place = "one above another" if limit.axis == 1 else "side by side"
-    beside = "beside" if limit.axis == 1 else "above"
+    size_word, place, beside = _row_words(limit.axis)
     passing = "beside" if limit.axis == 1 else "above or below"
     if not limit.pinned:  # items of several rooms (regions, or free), each in its own
         return (f"items {who} are too {size_word} to stand {beside} one another with the "

@@ -19,8 +19,8 @@ from pathlib import Path
 from typing import Any, Literal, Union
 
 from floatpage.model.key_specs import (
-    CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, TEXT_ALIGNMENTS, WEEKDAYS, at_most_chars, between, colour,
-    finite, item_id, name_or_empty, one_of, positive, spec,
+    CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, TEXT_ALIGNMENTS, WEEKDAYS, at_most_chars,
+    between, colour, finite, item_id, name_or_empty, one_of, positive, spec,
 )
 from floatpage.physics.params import DISTANCES, MODES, Params, out_of_range
 

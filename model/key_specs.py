@@ -17,7 +17,9 @@ from typing import Any, Callable
 HEX_COLOUR = re.compile(r"^#[0-9a-fA-F]{6}$")
 CALENDAR_LANGUAGES = ("en", "de", "fr", "es", "it", "pt", "nl")
 FONT_FAMILIES = ("serif", "sans", "display")
-TEXT_ALIGNMENTS = ("left", "centre", "right")  # where a text box sets its lines
+# where a text box sets its lines: the share of a line's spare width left of it
+ALIGNMENT_SHARES = {"left": 0.0, "centre": 0.5, "right": 1.0}
+TEXT_ALIGNMENTS = tuple(ALIGNMENT_SHARES)
 WEEKDAYS = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
 # What the typesetter reads: JPEG, PNG and PDF go to LaTeX as they are, the rest are converted.
 PICTURE_SUFFIXES = (".jpg", ".jpeg", ".png", ".pdf", ".webp", ".gif", ".bmp", ".tif", ".tiff")

@@ -26,7 +26,7 @@ from floatpage.model.page_sizes import CUSTOM, canonical_size_name
 Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 UTF8_BOM = b"\xef\xbb\xbf"
 WRITTEN_ONLY_WHEN_TRUE = {"bleed"}  # rare flags: a file names them only where they are set
-WRITTEN_ONLY_WHEN_SET = {"align": "left"}  # newer keys: a file names them where they differ
+WRITTEN_ONLY_WHEN_SET = {"align"}  # newer keys: a file names them only where not the default
 KEEP = object()  # a pair's value meaning "leave whatever the user wrote, if anything"
 ANCHOR_DEFAULTS = {"dx": 0.0, "dy": 0.0, "gamma": 1.0, "hard": False}
 ARRAYS_SYNCED_APART = {"items", "regions"}  # a page's arrays of tables, synced by sync_array
@@ -105,7 +105,7 @@ def item_pairs(item) -> Pairs:
             pairs.append((f.name, True if getattr(item, f.name) else None, None))
         elif f.name in WRITTEN_ONLY_WHEN_SET:
             value = getattr(item, f.name)
-            pairs.append((f.name, None if value == WRITTEN_ONLY_WHEN_SET[f.name] else value, None))
+            pairs.append((f.name, None if value == getattr(defaults, f.name) else value, None))
         elif f.name not in base_names:
             pairs.append((f.name, getattr(item, f.name), getattr(defaults, f.name)))
     pairs.append(("drop_if_empty", True if item.drop_if_empty else None, None))

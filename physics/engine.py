@@ -23,12 +23,14 @@ from floatpage.physics.fast_mode import run_fast
 from floatpage.physics.finalize import (
     MAX_ITERATIONS, ROUNDING_MM, STALL_ITERATIONS, project_within, remove_overlaps,
 )
-from floatpage.physics.geometry import GUTTER_FITS_COVER, grown_cover, lines_up, room_covers
+from floatpage.physics.geometry import (
+    GUTTER_FITS_COVER, grown_cover, lines_up, room_covers, rooms_of,
+)
 from floatpage.physics.guides import snap_range
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.page_limits import (
-    WIDEST_GAP_SLACK_MM, capping, page_limits, room_caps, rooms_of, unexplained_pairs,
+    WIDEST_GAP_SLACK_MM, capping, page_limits, room_caps, unexplained_pairs,
 )
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
@@ -442,7 +444,7 @@ class Engine:
         return self.params.mode == "fast" and 2 <= count <= RELOCATE_MAX_ITEMS
 
     def _relocate_rooms(self) -> bool:
-        """Relocation room by room (page_limits.rooms_of: each region, then the page's free
+        """Relocation room by room (geometry.rooms_of: each region, then the page's free
         items), each room's items lifted out of its jams while every other item stays where
         it is (held, for the while): whether the whole page keeps the gutter in the end.
         A room's own limits cap what it aims at (page_limits.room_caps), and its own cover

@@ -81,24 +81,36 @@ def grown_cover(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
     return float(covers.max()) if len(covers) else 0.0
 
 
+def rooms_of(bodies: Bodies) -> np.ndarray:
+    """The room of each row, (n,) int: 0 for the items free to go anywhere on the page, k > 0
+    for those confined to the k-th region (grown_cover's rooms).  Items of two
+    regions never meet, so what the items of one room rule out says nothing of another's."""
+    rooms = np.zeros(bodies.count, dtype=int)
+    confined = bodies.active & ~np.isnan(bodies.regions[:, 0])
+    if confined.any():
+        _, inverse = np.unique(bodies.regions[confined], axis=0, return_inverse=True)
+        rooms[confined] = inverse.ravel() + 1
+    return rooms
+
+
 def room_covers(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: float,
                 page_h_mm: float, gutter_mm: float) -> np.ndarray:
     """``grown_cover`` of each room, (rooms,): the page's first, then each region's, in the
-    order of page_limits.rooms_of (empty on a page with no active item)."""
+    order of ``rooms_of`` (empty on a page with no active item)."""
     active = bodies.active
     if not active.any():
         return np.zeros(0)
     near, far = (np.broadcast_to(np.asarray(side, float), bodies.sizes.shape)
                  for side in (near, far))
     grown = (bodies.sizes + gutter_mm).prod(axis=1)
-    confined = ~np.isnan(bodies.regions[:, 0])
-    free = active & ~confined
+    of_room = rooms_of(bodies)
+    free = active & (of_room == 0)
     # A page whose every item is confined has no room of free items: its page room (walls of
     # every item, the words region's top and the photos region's bottom) was 0 mm tall, and a
     # page of two regions "needed 9,416 % of it" (check gave that as the reason)
     rooms = [(np.flatnonzero(active), free)] if free.any() else [(np.zeros(0, int), active)]
-    for region in np.unique(bodies.regions[active & confined], axis=0):
-        rows = np.flatnonzero(active & (bodies.regions == region).all(axis=1))
+    for room in range(1, int(of_room.max()) + 1):
+        rows = np.flatnonzero(active & (of_room == room))
         rooms.append((rows, rows))
     extent = np.array([page_w_mm, page_h_mm])
     covers = []

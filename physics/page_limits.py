@@ -46,7 +46,7 @@ from floatpage.physics import pinned_rows
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import candidate_pairs
 from floatpage.physics.finalize import pair_clearances
-from floatpage.physics.geometry import group_extents
+from floatpage.physics.geometry import group_extents, rooms_of
 from floatpage.physics.quality import sweep_candidates
 from floatpage.physics.relocation import Unit, movable_units, room_for, unit_bounds
 
@@ -125,6 +125,7 @@ class PinnedStack:
 
 
 Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack]
+GAP_LIMITS = (Crossing, Stack, NoRoom, PinnedStack)  # the limits with a widest_gap_mm
 
 
 def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float,
@@ -162,26 +163,14 @@ def capping(limits: list[Limit]) -> list[Limit]:
     nothing of the rest of the page: the no-overlap pass leaves such a pair out, and every
     other pair can still keep the gutter."""
     return [limit for limit in limits
-            if isinstance(limit, (TooLarge, Crossing, Stack, NoRoom, PinnedStack))]
+            if isinstance(limit, (TooLarge, *GAP_LIMITS))]
 
 
 def widest_gap(limits: list[Limit]) -> float:
     """The widest gap the limits leave the page's closest pair: the page's gap can be no
     wider than any Crossing's, Stack's or NoRoom's widest; inf where none caps it."""
     return min((limit.widest_gap_mm for limit in limits
-                if isinstance(limit, (Crossing, Stack, NoRoom, PinnedStack))), default=np.inf)
-
-
-def rooms_of(bodies: Bodies) -> np.ndarray:
-    """The room of each row, (n,) int: 0 for the items free to go anywhere on the page, k > 0
-    for those confined to the k-th region (geometry.grown_cover's rooms).  Items of two
-    regions never meet, so what the items of one room rule out says nothing of another's."""
-    rooms = np.zeros(bodies.count, dtype=int)
-    confined = bodies.active & ~np.isnan(bodies.regions[:, 0])
-    if confined.any():
-        _, inverse = np.unique(bodies.regions[confined], axis=0, return_inverse=True)
-        rooms[confined] = inverse.ravel() + 1
-    return rooms
+                if isinstance(limit, GAP_LIMITS)), default=np.inf)
 
 
 def room_caps(bodies: Bodies, limits: list[Limit], rooms: np.ndarray | None = None
@@ -195,7 +184,7 @@ def room_caps(bodies: Bodies, limits: list[Limit], rooms: np.ndarray | None = No
     rooms = rooms_of(bodies) if rooms is None else rooms
     caps = np.full(int(rooms.max(initial=0)) + 1, np.inf)
     for limit in limits:
-        if isinstance(limit, (Crossing, Stack, NoRoom, PinnedStack)):
+        if isinstance(limit, GAP_LIMITS):
             touched = np.unique(rooms[list(limit.rows)])
             caps[touched] = np.minimum(caps[touched], limit.widest_gap_mm)
     return caps
@@ -408,7 +397,8 @@ def _spans(low_a: np.ndarray, high_a: np.ndarray, low_b: np.ndarray, high_b: np.
     span the two regions cover together.  (Taken as the smaller of the two rooms, a calendar
     in a words region and a photo in the photos region above it "could not be parted" where
     the split between the regions parts them: fresh_projects seed 9.)"""
-    return np.maximum(high_b[None, :, :] - low_a[:, None, :], high_a[:, None, :] - low_b[None, :, :])
+    return np.maximum(high_b[None, :, :] - low_a[:, None, :],
+                      high_a[:, None, :] - low_b[None, :, :])
 
 
 def _stacks(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray, near: np.ndarray,

@@ -11,8 +11,8 @@ import math
 from dataclasses import dataclass
 
 from floatpage.model.document import Page
-from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM
 from floatpage.model.page_sizes import page_dimensions
+from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM
 
 Rect = tuple[float, float, float, float]
 ONE_HEIGHT_WITHIN = 0.15  # a row's boxes share a height if they differ by at most 15 %

@@ -18,8 +18,9 @@ from floatpage.physics.guides import lines_met
 from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
+from floatpage.model.key_specs import ALIGNMENT_SHARES
 from floatpage.tui.calendar_cells import cells, month_lines, month_text
-from floatpage.tui.cell_text import graphemes, visual, width as cell_width, wrap_cells
+from floatpage.tui.cell_text import graphemes, visual, wrap_cells
 from floatpage.tui.cell_text import width as cell_width
 from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
 from floatpage.tui.mark_places import beside_text, inside, mark_cell, occupancy, touched_cells
@@ -289,7 +290,7 @@ class PagePainter:
         rows = row1 - first
         if len(lines) > rows:  # the last line shown ends in "…": the text goes on
             lines = lines[:rows - 1] + [cut_short(lines[rows - 1], width)]
-        share = {"left": 0.0, "centre": 0.5, "right": 1.0}.get(align, 0.0)
+        share = ALIGNMENT_SHARES[align]
         for row, line in zip(range(first, row1), lines):
             spare = max(width - sum(cell_width(g) for g in graphemes(line)), 0)
             canvas.write(col0 + int(spare * share), row, line, fg, bg, bold=bold, end_col=col1)

@@ -73,7 +73,7 @@ def layout_calendar(item: CalendarItem) -> CalendarLayout:
     title_fit = fit_text(title, Box((w - 2 * pad) * PT_PER_MM, (title_h - pad) * PT_PER_MM),
                          title_metrics)
     title_runs = place_lines(title_fit, title_metrics, left + pad, top, title_h - pad / 2,
-                             widths_mm=w - 2 * pad, centre=True)
+                             widths_mm=w - 2 * pad, align="centre")
 
     centres = [left + col_w * (i + 0.5) for i in range(7)]
     heads = list(weekday_names(item.first_weekday, item.language))

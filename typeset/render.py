@@ -18,7 +18,7 @@ from pylatex.utils import NoEscape
 
 from floatpage.model.document import Project
 from floatpage.model.save import atomic_write
-from floatpage.model.picture_files import decode_warning, is_merge_placeholder
+from floatpage.model.picture_files import decode_warning, is_merge_placeholder, read_header
 from floatpage.typeset.build_folder import build_folder
 from floatpage.typeset.compile import compile_pdf, engine_path
 from floatpage.typeset.output_paths import check_outputs, project_companions, project_inputs
@@ -109,21 +109,12 @@ BLOCKY_DPI = 100
 
 def print_dpi(path: Path, w_mm: float, h_mm: float) -> tuple[tuple[int, int], float] | None:
     """(pixel size, dots per inch) of a raster picture printed in a w x h mm box, or None for
-    what has no pixels to count (a PDF) or cannot be read (load and render say why). Sides
-    are matched long to long, so a photo turned by its EXIF tag counts the same."""
-    import warnings
-
-    from PIL import Image, UnidentifiedImageError
-
-    try:
-        with warnings.catch_warnings():  # a 90-megapixel photo is the loader's to judge
-            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
-            with Image.open(path) as image:
-                size = image.size
-    except (OSError, UnidentifiedImageError, ValueError, Image.DecompressionBombError):
+    what has no pixels to count (a PDF) or cannot be used (the loader's header check says
+    why). Sides are matched long to long, so a photo turned by its EXIF tag counts the same."""
+    header = read_header(path)
+    if header.problem or header.kind == "PDF" or min(w_mm, h_mm) <= 0:
         return None
-    if min(w_mm, h_mm) <= 0:
-        return None
+    size = header.size
     dpi = min(max(size) / (max(w_mm, h_mm) / 25.4), min(size) / (min(w_mm, h_mm) / 25.4))
     return size, dpi
 

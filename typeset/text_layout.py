@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from pylatex.utils import NoEscape
 
+from floatpage.model.key_specs import ALIGNMENT_SHARES
 from floatpage.typeset.bidi import base_direction, line_markup
 from floatpage.typeset.escape import clean_text, escape_latex
 from floatpage.typeset.fit import MIN_PT, Box, TextFit, fit_text
@@ -124,14 +125,11 @@ def printable_text(text: str, metrics: FontMetrics) -> tuple[str, list[str]]:
 
 
 def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: float,
-                h_mm: float, *, widths_mm: float | None = None, centre: bool = False,
+                h_mm: float, *, widths_mm: float | None = None,
                 align: str = "left") -> tuple[Run, ...]:
     """Runs for fitted lines: block centred vertically in the box, lines left-aligned, or
-    centred (``centre``, or ``align`` "centre") or right-aligned (``align`` "right") in a box
-    ``widths_mm`` wide."""
-    if centre:
-        align = "centre"
-    share = {"left": 0.0, "centre": 0.5, "right": 1.0}[align] if widths_mm is not None else 0.0
+    set as ``align`` says (model.key_specs.ALIGNMENT_SHARES) in a box ``widths_mm`` wide."""
+    share = ALIGNMENT_SHARES[align] if widths_mm is not None else 0.0
     size = fit.font_pt
     spare_mm = max(0.0, h_mm - fit.height_pt * MM_PER_PT) / 2
     first_baseline_mm = top_mm + spare_mm + size * fit.top_em * MM_PER_PT

@@ -1,5 +1,5 @@
-"""Limits room by room (page_limits.rooms_of, room_caps), items of two regions never crossing,
-and rows of items among pinned ones (page_limits.PinnedStack, physics.pinned_rows): each
+"""Limits room by room (geometry.rooms_of, page_limits.room_caps), items of two regions never
+crossing, and rows of items among pinned ones (page_limits.PinnedStack, physics.pinned_rows): each
 exact for what it names, each checked against a brute-force search on small pages."""
 
 from __future__ import annotations
