@@ -28,7 +28,7 @@ FORMAT_VERSION = 1
 
 Orientation = Literal["portrait", "landscape"]
 FontFamily = Literal["serif", "sans", "display"]
-TextAlignment = Literal["left", "centre", "right"]
+TextAlignment = Literal["start", "left", "centre", "right"]
 ITEM_KINDS = ("text", "picture", "block", "calendar")
 COLOUR_LABEL = "Colour (#rrggbb)"
 MONTH_CHOICES = tuple((calendar.month_name[number], number) for number in range(1, 13))
@@ -111,9 +111,10 @@ class TextItem(ItemBase):
     # Where each line sits across the box. A title centred on the page keeps its full box (its
     # edges on the page's lines) and still prints centred, where a box hugging its words
     # puts its edges wherever the words end, a few mm from other items' edges.
-    align: TextAlignment = field(default="left", metadata=spec(
+    align: TextAlignment = field(default="start", metadata=spec(
         "str", one_of(*TEXT_ALIGNMENTS), label="Alignment",
-        choices=(("Left", "left"), ("Centred", "centre"), ("Right", "right"))))
+        choices=(("Start (right for right-to-left text)", "start"), ("Left", "left"),
+                 ("Centred", "centre"), ("Right", "right"))))
 
     kind = "text"
 

@@ -17,9 +17,19 @@ from typing import Any, Callable
 HEX_COLOUR = re.compile(r"^#[0-9a-fA-F]{6}$")
 CALENDAR_LANGUAGES = ("en", "de", "fr", "es", "it", "pt", "nl")
 FONT_FAMILIES = ("serif", "sans", "display")
-# where a text box sets its lines: the share of a line's spare width left of it
+# where a text box sets its lines: the share of a line's spare width left of it; "start" (the
+# default) is where the text's direction starts a line, left for Latin, right for Hebrew or
+# Arabic, as a word processor sets a paragraph by default
 ALIGNMENT_SHARES = {"left": 0.0, "centre": 0.5, "right": 1.0}
-TEXT_ALIGNMENTS = tuple(ALIGNMENT_SHARES)
+TEXT_ALIGNMENTS = ("start", *ALIGNMENT_SHARES)
+
+
+def alignment_share(align: str, direction: str) -> float:
+    """The share of a line's spare width left of it, for a box aligned ``align`` whose text
+    runs in ``direction`` ("L" or "R", typeset.bidi.base_direction)."""
+    if align == "start":
+        return 1.0 if direction == "R" else 0.0
+    return ALIGNMENT_SHARES[align]
 WEEKDAYS = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday")
 # What the typesetter reads: JPEG, PNG and PDF go to LaTeX as they are, the rest are converted.
 PICTURE_SUFFIXES = (".jpg", ".jpeg", ".png", ".pdf", ".webp", ".gif", ".bmp", ".tif", ".tiff")

@@ -18,7 +18,7 @@ from floatpage.physics.guides import lines_met
 from floatpage.model.document import (
     BlockItem, CalendarItem, ItemAnchor, Page, PictureItem, PointAnchor, TextItem,
 )
-from floatpage.model.key_specs import ALIGNMENT_SHARES
+from floatpage.model.key_specs import alignment_share
 from floatpage.tui.calendar_cells import cells, month_lines, month_text
 from floatpage.tui.cell_text import graphemes, visual, wrap_cells
 from floatpage.tui.cell_text import width as cell_width
@@ -26,6 +26,7 @@ from floatpage.tui.cell_canvas import RGB, CellCanvas, Glyph
 from floatpage.tui.mark_places import beside_text, inside, mark_cell, occupancy, touched_cells
 from floatpage.tui.projection import Projection
 from floatpage.tui.thumbnails import thumbnail
+from floatpage.typeset.bidi import base_direction
 
 SURROUND: RGB = (38, 38, 46)
 PAPER: RGB = (250, 250, 246)
@@ -279,7 +280,7 @@ class PagePainter:
         return col0, row0 + (1 if below_label else 0), col1, row1
 
     def _body(self, canvas: CellCanvas, box, paragraphs: list[str], fg: RGB, bg: RGB,
-              *, bold: bool = False, below_label: bool = True, align: str = "left") -> None:
+              *, bold: bool = False, below_label: bool = True, align: str = "start") -> None:
         """As much of the text as fits the item's cells, word-wrapped, each line where the
         box's ``align`` sets it in the PDF."""
         col0, first, col1, row1 = self._text_area(box, below_label)
@@ -290,7 +291,7 @@ class PagePainter:
         rows = row1 - first
         if len(lines) > rows:  # the last line shown ends in "…": the text goes on
             lines = lines[:rows - 1] + [cut_short(lines[rows - 1], width)]
-        share = ALIGNMENT_SHARES[align]
+        share = alignment_share(align, base_direction("".join(paragraphs)))
         for row, line in zip(range(first, row1), lines):
             spare = max(width - sum(cell_width(g) for g in graphemes(line)), 0)
             canvas.write(col0 + int(spare * share), row, line, fg, bg, bold=bold, end_col=col1)

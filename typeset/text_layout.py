@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from pylatex.utils import NoEscape
 
-from floatpage.model.key_specs import ALIGNMENT_SHARES
+from floatpage.model.key_specs import alignment_share
 from floatpage.typeset.bidi import base_direction, line_markup
 from floatpage.typeset.escape import clean_text, escape_latex
 from floatpage.typeset.fit import MIN_PT, Box, TextFit, fit_text
@@ -24,13 +24,17 @@ PT_PER_MM = 72 / 25.4
 
 @dataclass(frozen=True)
 class Run:
-    """One line of text, its baseline's left end at (x_mm, y_mm)."""
+    """One line of text, its baseline's left end at (x_mm, y_mm), or its right end if
+    ``flush_right``.  A line set against the box's right edge is placed by that end: where
+    HarfBuzz shapes it a little wider than the fitter measured (Thaana, Arabic: up to 3 pt),
+    it then grows into the box rather than out of it."""
 
     x_mm: float
     y_mm: float
     text: str
     width_pt: float = 0.0
     direction: str = "L"  # the paragraph's: "R" when its first strong letter is right to left
+    flush_right: bool = False
 
     @property
     def tex(self) -> NoEscape:
@@ -126,22 +130,26 @@ def printable_text(text: str, metrics: FontMetrics) -> tuple[str, list[str]]:
 
 def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: float,
                 h_mm: float, *, widths_mm: float | None = None,
-                align: str = "left") -> tuple[Run, ...]:
-    """Runs for fitted lines: block centred vertically in the box, lines left-aligned, or
-    set as ``align`` says (model.key_specs.ALIGNMENT_SHARES) in a box ``widths_mm`` wide."""
-    share = ALIGNMENT_SHARES[align] if widths_mm is not None else 0.0
+                align: str = "start") -> tuple[Run, ...]:
+    """Runs for fitted lines: block centred vertically in the box, lines at the start of the
+    text's direction, or set as ``align`` says (model.key_specs.alignment_share) in a box
+    ``widths_mm`` wide."""
+    direction = base_direction("".join(fit.lines))
+    share = alignment_share(align, direction) if widths_mm is not None else 0.0
     size = fit.font_pt
     spare_mm = max(0.0, h_mm - fit.height_pt * MM_PER_PT) / 2
     first_baseline_mm = top_mm + spare_mm + size * fit.top_em * MM_PER_PT
     runs = []
-    direction = base_direction("".join(fit.lines))
     offsets = fit.line_offsets_pt or (0.0,) * len(fit.lines)
     for index, (line, width_pt, offset_pt) in enumerate(zip(fit.lines, fit.line_widths_pt,
                                                             offsets)):
         x_mm = left_mm + offset_pt * MM_PER_PT
+        y_mm = first_baseline_mm + index * fit.leading * size * MM_PER_PT
+        if share == 1.0 and width_pt * MM_PER_PT <= widths_mm:
+            runs.append(Run(left_mm + widths_mm, y_mm, line, width_pt, direction, True))
+            continue
         if share:
             x_mm += max(0.0, widths_mm - width_pt * MM_PER_PT) * share
-        y_mm = first_baseline_mm + index * fit.leading * size * MM_PER_PT
         runs.append(Run(x_mm, y_mm, line, width_pt, direction))
     return tuple(runs)
 
