@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -422,13 +422,16 @@ class Engine:
             total += self._run(min(chunk, limit - total))
         return total
 
-    def finalize(self, *, fall_back: bool = True, align: bool = True) -> bool:
+    def finalize(self, *, fall_back: bool = True, align: bool = True,
+                 margin_mm: float | None = None) -> bool:
         """The no-overlap pass, then the alignment snap unless not ``align``; returns whether
         every pair now keeps the gutter.  Without ``fall_back`` a page that misses the gutter
         is left as the first attempt leaves it, for a second start to try, instead of
-        searching for the widest gap it can keep."""
+        searching for the widest gap it can keep.  ``margin_mm`` replaces the page's margin
+        in the pass (where it has given way: _pack_past_the_margin)."""
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
-                               self.params.gutter_mm, margin_mm=self.margin_mm,
+                               self.params.gutter_mm,
+                               margin_mm=self.margin_mm if margin_mm is None else margin_mm,
                                fall_back=fall_back)
         if not fits and fall_back and self._may_relocate():
             fits = self._relocate_rooms()
@@ -662,24 +665,66 @@ class Engine:
         """The second start: the items packed (packing.packed_layout) and settled gently from
         there; if the physics jams again, the packing itself, which holds the gutter by
         construction (less evenly spread than the physics would leave it).  Should neither
-        keep it, back to the first run, searching for the widest gap it can keep."""
+        keep it, back to the first run, searching for the widest gap it can keep; and where
+        that gives the margin up, packed again past the margin (_pack_past_the_margin)."""
         bodies = self._bodies
         rows = np.flatnonzero(bodies.active)
-        near, far = bodies.insets(self.margin_mm, self.page_w_mm, self.page_h_mm)
+        first = bodies.centres.copy()
+        start = self._packed_start(rows, self.margin_mm)
+        if start is not None and self._spread_from(
+                start, max_steps, lambda: self.finalize(fall_back=False, align=align)):
+            return True
+        bodies.centres[:] = first
+        fits = self.finalize(align=align)
+        if fits or not self.quality().in_margin:
+            return fits
+        return self._pack_past_the_margin(rows, max_steps, align)
+
+    def _packed_start(self, rows: np.ndarray, margin_mm: float) -> np.ndarray | None:
+        """The page's centres with ``rows`` packed within ``margin_mm`` of its edges at the
+        gutter (and the rounding slack), or None where the packing finds no way."""
+        bodies = self._bodies
+        near, far = bodies.insets(margin_mm, self.page_w_mm, self.page_h_mm)
         low = near[rows].max(axis=0)
         high = np.array([self.page_w_mm, self.page_h_mm]) - far[rows].max(axis=0)
         packed = packed_layout(bodies.sizes[rows], low, high,
                                self.params.gutter_mm + 2 * ROUNDING_MM)
         if packed is None:
-            return self.finalize(align=align)
-        first = bodies.centres.copy()
-        start = first.copy()
+            return None
+        start = bodies.centres.copy()
         start[rows] = packed
-        if self._spread_from(start, max_steps,
-                             lambda: self.finalize(fall_back=False, align=align)):
-            return True
-        bodies.centres[:] = first
-        return self.finalize(align=align)
+        return start
+
+    def _pack_past_the_margin(self, rows: np.ndarray, max_steps: int, align: bool) -> bool:
+        """A page whose items cannot all keep the margin, where the search for the widest gap
+        gave the margin up and left a gap under the gutter: packed again with the margin
+        halved, then dropped (as the pass gives it way), at the gutter, and settled gently
+        there.  Items that must stand in the margin then stand there with the gutter between
+        them, not 0.1 mm apart (three bars too wide to stand beside a tall one, stacked 318 mm
+        high in the 287 mm inside A4's margins, and 206.9 mm side by side on its 210 mm
+        width: benchmarks/gutter_fits.py --seed 2611, page 33).  The physics runs with its
+        walls at the smaller margin; the snap keeps the page's own.  Returns whether the gutter
+        holds; if not, the page is left as the search left it."""
+        params, searched = self.params, self._bodies.centres.copy()
+        for share in (0.5, 0.0):
+            smaller = replace(params, margin_mm=params.margin_mm * share)
+            margin = page_margin(smaller.margin_mm, self.page_w_mm, self.page_h_mm)
+            start = self._packed_start(rows, margin)
+            if start is None:
+                continue
+
+            def keeps(margin: float = margin) -> bool:
+                self.params = params  # the snap keeps the page's margin and lines
+                return self.finalize(fall_back=False, align=align, margin_mm=margin)
+            self.params = smaller
+            try:
+                if self._spread_from(start, max_steps, keeps):
+                    return True
+            finally:
+                self.params = params
+        self._bodies.centres[:] = searched
+        self._bodies.velocities[:] = 0.0
+        return False
 
     def _spread_from(self, start: np.ndarray, max_steps: int, keeps: Callable[[], bool]
                      ) -> bool:
