@@ -44,6 +44,7 @@ BUDGET_CHUNK_STEPS = {"fast": 5, "paper": 50}  # steps between two looks at the 
 # from the first step (GUIDED_COOLING).  From 0.1 the packed items crept apart for 120 steps
 # on the 5-item page; from 0.2 they are still after 88, as evenly spread (evenness 0.68).
 SECOND_START_HEAT = 0.2
+WIDEST_GAP_STEP_MM = 0.05  # _widest_packed_gap's bisection stops this close
 RELOCATED_RUN_STEPS = 20_000  # the gentle run from items set down anew (_relocate_jammed)
 
 
@@ -423,14 +424,14 @@ class Engine:
         return total
 
     def finalize(self, *, fall_back: bool = True, align: bool = True,
-                 margin_mm: float | None = None) -> bool:
+                 margin_mm: float | None = None, gutter_mm: float | None = None) -> bool:
         """The no-overlap pass, then the alignment snap unless not ``align``; returns whether
         every pair now keeps the gutter.  Without ``fall_back`` a page that misses the gutter
         is left as the first attempt leaves it, for a second start to try, instead of
-        searching for the widest gap it can keep.  ``margin_mm`` replaces the page's margin
-        in the pass (where it has given way: _pack_past_the_margin)."""
+        searching for the widest gap it can keep.  ``margin_mm`` and ``gutter_mm`` replace
+        the page's in the pass (where they have given way: _pack_past_the_margin)."""
         fits = remove_overlaps(self._bodies, self.page_w_mm, self.page_h_mm,
-                               self.params.gutter_mm,
+                               self.params.gutter_mm if gutter_mm is None else gutter_mm,
                                margin_mm=self.margin_mm if margin_mm is None else margin_mm,
                                fall_back=fall_back)
         if not fits and fall_back and self._may_relocate():
@@ -680,15 +681,17 @@ class Engine:
             return fits
         return self._pack_past_the_margin(rows, max_steps, align)
 
-    def _packed_start(self, rows: np.ndarray, margin_mm: float) -> np.ndarray | None:
-        """The page's centres with ``rows`` packed within ``margin_mm`` of its edges at the
-        gutter (and the rounding slack), or None where the packing finds no way."""
+    def _packed_start(self, rows: np.ndarray, margin_mm: float,
+                      gap_mm: float | None = None) -> np.ndarray | None:
+        """The page's centres with ``rows`` packed within ``margin_mm`` of its edges at
+        ``gap_mm`` (the gutter by default), with the rounding slack, or None where the packing
+        finds no way."""
         bodies = self._bodies
         near, far = bodies.insets(margin_mm, self.page_w_mm, self.page_h_mm)
         low = near[rows].max(axis=0)
         high = np.array([self.page_w_mm, self.page_h_mm]) - far[rows].max(axis=0)
-        packed = packed_layout(bodies.sizes[rows], low, high,
-                               self.params.gutter_mm + 2 * ROUNDING_MM)
+        gap = self.params.gutter_mm if gap_mm is None else gap_mm
+        packed = packed_layout(bodies.sizes[rows], low, high, gap + 2 * ROUNDING_MM)
         if packed is None:
             return None
         start = bodies.centres.copy()
@@ -703,28 +706,63 @@ class Engine:
         them, not 0.1 mm apart (three bars too wide to stand beside a tall one, stacked 318 mm
         high in the 287 mm inside A4's margins, and 206.9 mm side by side on its 210 mm
         width: benchmarks/gutter_fits.py --seed 2611, page 33).  The physics runs with its
-        walls at the smaller margin; the snap keeps the page's own.  Returns whether the gutter
-        holds; if not, the page is left as the search left it."""
+        walls at the smaller margin; the snap keeps the page's own.  Where the gutter does
+        not fit even with the margin dropped, the widest gap a packing reaches there, if
+        wider than the search's (_widest_packed_gap).  Returns whether the gutter holds."""
         params, searched = self.params, self._bodies.centres.copy()
         for share in (0.5, 0.0):
             smaller = replace(params, margin_mm=params.margin_mm * share)
             margin = page_margin(smaller.margin_mm, self.page_w_mm, self.page_h_mm)
             start = self._packed_start(rows, margin)
-            if start is None:
-                continue
-
-            def keeps(margin: float = margin) -> bool:
-                self.params = params  # the snap keeps the page's margin and lines
-                return self.finalize(fall_back=False, align=align, margin_mm=margin)
-            self.params = smaller
-            try:
-                if self._spread_from(start, max_steps, keeps):
-                    return True
-            finally:
-                self.params = params
+            if start is not None and self._spread_with(start, smaller, max_steps, align,
+                                                       margin):
+                return True
         self._bodies.centres[:] = searched
         self._bodies.velocities[:] = 0.0
+        self._widest_packed_gap(rows, max_steps, align)
         return False
+
+    def _spread_with(self, start: np.ndarray, smaller: Params, max_steps: int, align: bool,
+                     margin_mm: float, gap_mm: float | None = None) -> bool:
+        """_spread_from with the walls at the margin of ``smaller``, kept by a no-overlap pass
+        at ``margin_mm`` and ``gap_mm`` (the gutter by default); the page's own parameters
+        again for the snap and afterwards."""
+        params = self.params
+
+        def keeps() -> bool:
+            self.params = params  # the snap keeps the page's margin and lines
+            return self.finalize(fall_back=False, align=align, margin_mm=margin_mm,
+                                 gutter_mm=gap_mm)
+        self.params = smaller
+        try:
+            return self._spread_from(start, max_steps, keeps)
+        finally:
+            self.params = params
+
+    def _widest_packed_gap(self, rows: np.ndarray, max_steps: int, align: bool) -> None:
+        """With the margin dropped and the gutter out of reach: the widest gap (to 0.05 mm)
+        at which a packing fits, by bisection, taken if it is wider than what the page has
+        now (three items too wide to stand side by side, 291.1 mm tall with no gap, on A4's
+        297 mm: 2.95 mm, where the search had left 0.1 mm; gutter_fits.py --seed 404, page
+        23)."""
+        now = max(self.quality().min_gap_mm, 0.0)
+        low, high = now, self.params.gutter_mm
+        found = None
+        while high - low > WIDEST_GAP_STEP_MM:
+            middle = (low + high) / 2
+            start = self._packed_start(rows, 0.0, middle)
+            if start is None:
+                high = middle
+            else:
+                low, found = middle, start
+        if found is None:
+            return
+        kept = self._bodies.centres.copy()
+        smaller = replace(self.params, margin_mm=0.0)
+        if not self._spread_with(found, smaller, max_steps, align, 0.0, low) or \
+                self.quality().min_gap_mm < now:
+            self._bodies.centres[:] = kept
+        self._bodies.velocities[:] = 0.0
 
     def _spread_from(self, start: np.ndarray, max_steps: int, keeps: Callable[[], bool]
                      ) -> bool:

@@ -24,6 +24,8 @@ from itertools import product
 
 import numpy as np
 
+from floatpage.physics.maxrects import MAX_ITEMS as MAXRECTS_ITEMS, RULES, maxrects_pack
+
 MAX_ITEMS = 500  # the skyline costs O(n^2) in Python: beyond this the physics is on its own
 
 
@@ -31,18 +33,34 @@ def packed_layout(sizes: np.ndarray, room_low: np.ndarray, room_high: np.ndarray
                   gutter_mm: float) -> np.ndarray | None:
     """Centres (n, 2) for items of ``sizes`` inside the rectangle ``room_low``-``room_high``
     (mm: left/top, right/bottom), every pair at least ``gutter_mm`` apart, spread over the
-    room; None if no packing tried fits (or there are too many items to try)."""
+    room; None if no packing tried fits (or there are too many items to try).  The skyline
+    first; where it finds nothing, maximal free rectangles (physics.maxrects)."""
     if len(sizes) > MAX_ITEMS:
         return None
+    packers = [lambda boxes, w, h, waste=waste: skyline_pack(boxes, w, h, waste)
+               for waste in (False, True)]
+    found = packed_by(packers, sizes, room_low, room_high, gutter_mm)
+    if found is None and len(sizes) <= MAXRECTS_ITEMS:
+        packers = [lambda boxes, w, h, rule=rule: maxrects_pack(boxes, w, h, rule)
+                   for rule in RULES]
+        found = packed_by(packers, sizes, room_low, room_high, gutter_mm)
+    return found
+
+
+def packed_by(packers: list, sizes: np.ndarray, room_low: np.ndarray, room_high: np.ndarray,
+              gutter_mm: float) -> np.ndarray | None:
+    """packed_layout with these packers (each: grown sizes in order, the room's width and
+    height, grown too -> top-left corners or None), each tried on the items ordered by height,
+    area, width and longest side, across the page and down it; the first that fits, spread."""
     room = np.asarray(room_high, float) - np.asarray(room_low, float)
     grown = sizes + gutter_mm
     for axes in ((0, 1), (1, 0)):  # rows across the page first, then columns down it
         flipped = grown[:, axes]
         width, height = room[list(axes)] + gutter_mm
         keys = (flipped[:, 1], flipped.prod(axis=1), flipped[:, 0], flipped.max(axis=1))
-        for key, least_waste in product(keys, (False, True)):
+        for key, pack in product(keys, packers):
             order = np.lexsort((np.arange(len(sizes)), -key))
-            corners = skyline_pack(flipped[order], width, height, least_waste)
+            corners = pack(flipped[order], width, height)
             if corners is None:
                 continue
             centres = np.empty_like(sizes, dtype=float)

@@ -101,3 +101,12 @@ def test_items_that_must_stand_in_the_margin_keep_the_gutter(tmp_path):
     assert gap and float(gap.group(1)) >= 3.0 and "< 3" not in check.stdout, check.stdout
     assert '2 item(s) inside the 5.0 mm print-safe margin: "bar-177", "tall"' in check.stdout
     assert "they can be parted only by giving up the margin" in check.stdout
+
+
+def test_where_not_even_the_margin_makes_room_for_the_gutter_the_widest_gap_holds(tmp_path):
+    """With the margin dropped, 2.95 mm is the widest gap three stacked bars can keep on the
+    page (291.1 mm of items in 297); settle had left 0.1 mm."""
+    check = settled_and_checked("limit-margin-widest-404.toml", tmp_path)
+    gap = re.search(r"gap (\d+\.\d+) mm", check.stdout)
+    assert gap and float(gap.group(1)) >= 2.9, check.stdout
+    assert "they can be parted only by giving up the margin" in check.stdout
