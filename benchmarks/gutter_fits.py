@@ -23,6 +23,7 @@ import time
 import numpy as np
 
 from floatpage.physics import Engine
+from floatpage.physics.page_limits import binding, page_limits, unexplained_pairs
 
 PAGES = [(210.0, 297.0), (297.0, 210.0), (148.0, 210.0), (127.0, 203.2), (215.9, 279.4)]
 BANDS = [(0.0, 0.6), (0.6, 0.7), (0.7, 0.75), (0.75, 0.8), (0.8, 0.85)]
@@ -53,6 +54,18 @@ def grown_cover(engine: Engine) -> float:
     return float((engine.bodies.sizes + GUTTER).prod(axis=1).sum() / room.prod())
 
 
+def limit_names(engine: Engine) -> str:
+    """What `check` gives as the reason a page misses: the kinds of the limits that bind it
+    (physics.page_limits), or "unexplained" where none does or a narrow pair is left that no
+    limit accounts for."""
+    bodies = engine.bodies
+    limits = binding(page_limits(bodies, engine.page_w_mm, engine.page_h_mm, engine.margin_mm,
+                                 GUTTER))
+    if not limits or unexplained_pairs(bodies, limits, GUTTER):
+        return "unexplained"
+    return "check names " + ", ".join(sorted({type(limit).__name__ for limit in limits}))
+
+
 def crossing(engine: Engine) -> bool:
     """Whether two items can be parted neither side by side nor one above the other within
     the margins: no layout keeps them apart."""
@@ -70,7 +83,7 @@ def main() -> None:
     args = parser.parse_args()
     rng = np.random.default_rng(args.seed)
     kept = {band: [0, 0, 0] for band in BANDS}  # keep the gutter and margin, pages, the gutter
-    crossed, seconds, missed = 0, [], []
+    crossed, seconds, missed, unexplained = 0, [], [], 0
     for index in range(args.pages):
         engine = random_page(rng)
         cover = grown_cover(engine)
@@ -91,11 +104,13 @@ def main() -> None:
         kept[band][1] += 1
         kept[band][2] += gutter
         if not ok:
+            reason = limit_names(engine)
+            unexplained += reason == "unexplained"
             missed.append(f"page {index}: {engine.page_w_mm:g}x{engine.page_h_mm:g} mm, "
                           f"{int(engine.bodies.active.sum())} items, grown cover {cover:.1%}: "
                           f"narrowest gap {quality.min_gap_mm:.2f} mm, "
                           f"{len(quality.overlapping_pairs)} overlapping, "
-                          f"{len(quality.in_margin)} in the margin, settle fits {report.fits}")
+                          f"{len(quality.in_margin)} in the margin, settle fits {report.fits}; {reason}")
     print("| grown cover | pages | keep the gutter and the margin | keep the gutter |")
     print("|---|---|---|---|")
     for (low, high), (good, total, gutter) in kept.items():
@@ -103,6 +118,8 @@ def main() -> None:
         print(f"| {low:.0%}-{high:.0%} | {total} | {good} ({share}) | {gutter} |")
     print(f"\n{crossed} pages with two items that cannot be parted left out; settle median "
           f"{np.median(seconds):.2f} s CPU, worst {max(seconds):.2f} s")
+    print(f"{len(missed)} pages miss the gutter or the margin, {unexplained} of them with no "
+          f"limit that check names")
     for line in missed:  # each page that misses: a reader can make it again (random_page); one
         print(line)  # with items in the margin and no narrow gap: check says if a limit forced it
 
