@@ -667,7 +667,9 @@ class Engine:
         there; if the physics jams again, the packing itself, which holds the gutter by
         construction (less evenly spread than the physics would leave it).  Should neither
         keep it, back to the first run, searching for the widest gap it can keep; and where
-        that gives the margin up, packed again past the margin (_pack_past_the_margin)."""
+        that gives the margin up, packed again past the margin (_pack_past_the_margin), and
+        where it keeps the margin, the widest gap a packing reaches if that is wider
+        (_widest_packed_gap)."""
         bodies = self._bodies
         rows = np.flatnonzero(bodies.active)
         first = bodies.centres.copy()
@@ -676,10 +678,12 @@ class Engine:
                 start, max_steps, lambda: self.finalize(fall_back=False, align=align)):
             return True
         bodies.centres[:] = first
-        fits = self.finalize(align=align)
-        if fits or not self.quality().in_margin:
-            return fits
-        return self._pack_past_the_margin(rows, max_steps, align)
+        if self.finalize(align=align):
+            return True
+        if self.quality().in_margin:
+            return self._pack_past_the_margin(rows, max_steps, align)
+        self._widest_packed_gap(rows, max_steps, align, self.params)
+        return False
 
     def _packed_start(self, rows: np.ndarray, margin_mm: float,
                       gap_mm: float | None = None) -> np.ndarray | None:
@@ -719,7 +723,7 @@ class Engine:
                 return True
         self._bodies.centres[:] = searched
         self._bodies.velocities[:] = 0.0
-        self._widest_packed_gap(rows, max_steps, align)
+        self._widest_packed_gap(rows, max_steps, align, replace(params, margin_mm=0.0))
         return False
 
     def _spread_with(self, start: np.ndarray, smaller: Params, max_steps: int, align: bool,
@@ -739,18 +743,21 @@ class Engine:
         finally:
             self.params = params
 
-    def _widest_packed_gap(self, rows: np.ndarray, max_steps: int, align: bool) -> None:
-        """With the margin dropped and the gutter out of reach: the widest gap (to 0.05 mm)
-        at which a packing fits, by bisection, taken if it is wider than what the page has
-        now (three items too wide to stand side by side, 291.1 mm tall with no gap, on A4's
-        297 mm: 2.95 mm, where the search had left 0.1 mm; gutter_fits.py --seed 404, page
-        23)."""
+    def _widest_packed_gap(self, rows: np.ndarray, max_steps: int, align: bool,
+                           params: Params) -> None:
+        """Where the gutter is out of reach within the margin of ``params``: the widest gap
+        (to 0.05 mm) at which a packing fits there, by bisection, taken if it is wider than
+        what the page has now.  The search for the widest gap works on the order the physics
+        left, and can leave a few hundredths of a millimetre where another order holds 2.5
+        mm (four items on A4, two tall and two wide: gutter_fits.py --seed 1011, page 157);
+        with the margin dropped, 2.95 mm where it had left 0.1 mm (seed 404, page 23)."""
         now = max(self.quality().min_gap_mm, 0.0)
+        margin = page_margin(params.margin_mm, self.page_w_mm, self.page_h_mm)
         low, high = now, self.params.gutter_mm
         found = None
         while high - low > WIDEST_GAP_STEP_MM:
             middle = (low + high) / 2
-            start = self._packed_start(rows, 0.0, middle)
+            start = self._packed_start(rows, margin, middle)
             if start is None:
                 high = middle
             else:
@@ -758,8 +765,7 @@ class Engine:
         if found is None:
             return
         kept = self._bodies.centres.copy()
-        smaller = replace(self.params, margin_mm=0.0)
-        if not self._spread_with(found, smaller, max_steps, align, 0.0, low) or \
+        if not self._spread_with(found, params, max_steps, align, margin, low) or \
                 self.quality().min_gap_mm < now:
             self._bodies.centres[:] = kept
         self._bodies.velocities[:] = 0.0

@@ -110,3 +110,4 @@ def test_where_not_even_the_margin_makes_room_for_the_gutter_the_widest_gap_hold
     gap = re.search(r"gap (\d+\.\d+) mm", check.stdout)
     assert gap and float(gap.group(1)) >= 2.9, check.stdout
     assert "they can be parted only by giving up the margin" in check.stdout
+
