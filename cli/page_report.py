@@ -11,7 +11,8 @@ from __future__ import annotations
 from floatpage.model.errors import printable
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
-    Crossing, Limit, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack, TooLarge, binding,
+    Crossing, Limit, NoArrangement, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack,
+    TooLarge, binding,
     page_limits, unexplained_pairs,
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER
@@ -114,7 +115,8 @@ def _namer(page):
 
 def _explain(limits: list[Limit], name, gutter_mm: float, margin_mm: float) -> list[str]:
     lines: list[str] = []
-    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack):
+    for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack,
+                 NoArrangement):
         mine = [limit for limit in limits if isinstance(limit, kind)]
         for limit in mine[:SHOWN]:
             lines.append("  " + _sentence(limit, name, gutter_mm, margin_mm))
@@ -162,6 +164,8 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
         return _no_room_sentence(limit, name, gutter_mm)
     if isinstance(limit, PinnedStack):
         return _pinned_stack_sentence(limit, name, gutter_mm)
+    if isinstance(limit, NoArrangement):
+        return _no_arrangement_sentence(limit, name, gutter_mm)
     a, b = (name(row) for row in limit.rows)
     (side, above), (room_w, room_h) = limit.needs_mm, limit.room_mm
     fate = _fate(limit, "the widest gap they can keep is")
@@ -171,7 +175,7 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
             "another page")
 
 
-def _fate(limit: Crossing | Stack | NoRoom | PinnedStack, widest: str,
+def _fate(limit: Crossing | Stack | NoRoom | PinnedStack | NoArrangement, widest: str,
           overlap: str = "they overlap wherever they go on this page") -> str:
     if not limit.fits_page:
         return overlap
@@ -230,3 +234,13 @@ def _pinned_stack_sentence(limit: PinnedStack, name, gutter_mm: float) -> str:
             f"{_fate(limit, 'the widest gap they can keep is at most')}; move one of the "
             "anchors or make one soft (hard = false), make one smaller, or move one to another "
             "page")
+
+
+def _no_arrangement_sentence(limit: NoArrangement, name, gutter_mm: float) -> str:
+    who = _some([name(row) for row in limit.rows[:SHOWN]], len(limit.rows))
+    width, height = limit.room_mm
+    return (f"items {who} cannot all stand {gutter_mm:g} mm apart in the {width:.1f} x "
+            f"{height:.1f} mm inside the margins, whichever way each stands beside or above "
+            f"another (every such arrangement was tried); "
+            f"{_fate(limit, 'the widest gap they can all keep is')}; make one smaller, or "
+            "move one to another page")

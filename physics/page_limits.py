@@ -24,7 +24,10 @@ that no settle will help, and what to change instead:
   exact for one rectangle among fixed ones);
 - ``PinnedStack``: free items that must stand in one row (no two fit one above the other
   inside their walls), which the items that cannot move, or the row's length across several
-  rooms, leave no place for (physics.pinned_rows, exact for the row).
+  rooms, leave no place for (physics.pinned_rows, exact for the row);
+- ``NoArrangement``: a page of a few free items (physics.arrangements: at most six) that no
+  arrangement keeps the gutter apart inside the margins, where no limit above says so (an
+  exact search of every way of placing each beside or above another).
 
 A limit caps the gap of its own room only (``rooms_of``: each region, and the free items):
 what the items of one region rule out says nothing of another's.
@@ -42,7 +45,7 @@ from typing import Callable, Union
 
 import numpy as np
 
-from floatpage.physics import pinned_rows
+from floatpage.physics import arrangements, pinned_rows
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import candidate_pairs
 from floatpage.physics.finalize import pair_clearances
@@ -124,8 +127,17 @@ class PinnedStack:
     fits_page: bool  # whether they can be parted at all if the margins give way
 
 
-Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack]
-GAP_LIMITS = (Crossing, Stack, NoRoom, PinnedStack)  # the limits with a widest_gap_mm
+@dataclass(frozen=True)
+class NoArrangement:
+    rows: tuple[int, ...]  # every item that takes part on the page
+    room_mm: tuple[float, float]  # inside the margins
+    widest_gap_mm: float  # the widest gap they can all keep inside the margins (< 0: overlap)
+    fits_page: bool  # whether they can be parted at all if the margins give way
+
+
+Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack,
+              NoArrangement]
+GAP_LIMITS = (Crossing, Stack, NoRoom, PinnedStack, NoArrangement)  # with a widest_gap_mm
 
 
 def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float,
@@ -146,7 +158,35 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
         page_walls = bodies.insets(0.0, page_w_mm, page_h_mm)
         found += _pinned_stacks(bodies, roots, offsets, pinned, (near, far), page_walls,
                                 page_w_mm, page_h_mm, gutter_mm)
+    found += _no_arrangement(bodies, roots, pinned, near, far, page_w_mm, page_h_mm, gutter_mm,
+                             widest_gap(found))
     return found
+
+
+def _no_arrangement(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray, near: np.ndarray,
+                    far: np.ndarray, page_w_mm: float, page_h_mm: float, gutter_mm: float,
+                    capped_mm: float) -> list[Limit]:
+    """A NoArrangement for a page of three to arrangements.MAX_ITEMS free items (two are a
+    Crossing), each alone in its group, between the same walls, that no arrangement keeps the
+    gutter apart, where the other limits leave a wider gap than the search finds
+    (``capped_mm``).  A search that runs out of its budget says nothing."""
+    rows = np.flatnonzero(bodies.active & ~bodies.decorative)
+    if not 3 <= len(rows) <= arrangements.MAX_ITEMS or pinned[rows].any() or \
+            (roots[rows] != rows).any() or not np.isnan(bodies.regions[rows, 0]).all() or \
+            np.ptp(near[rows], axis=0).max() > 0 or np.ptp(far[rows], axis=0).max() > 0:
+        return []
+    extent = np.array([page_w_mm, page_h_mm])
+    room = extent - near[rows[0]] - far[rows[0]]
+    sizes = bodies.sizes[rows]
+    widest = arrangements.widest_gap(sizes, room, gutter_mm)
+    if widest is None or widest >= min(gutter_mm, capped_mm) - WIDEST_GAP_SLACK_MM:
+        return []
+    try:
+        fits_page = arrangements.arranges(sizes, extent, 0.0)
+    except arrangements.OutOfBudget:
+        return []
+    return [NoArrangement(tuple(int(row) for row in rows), (float(room[0]), float(room[1])),
+                          float(widest), bool(fits_page))]
 
 
 def binding(limits: list[Limit]) -> list[Limit]:
@@ -210,6 +250,8 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
     for limit in limits:
         if isinstance(limit, Crossing):
             named.append(limit.rows[0] * count + limit.rows[1])
+        elif isinstance(limit, NoArrangement):
+            named += [a * count + b for a in limit.rows for b in limit.rows if a < b]
         elif isinstance(limit, Stack):  # a solid group stands in it by its root
             members = np.flatnonzero(np.isin(roots, limit.rows))
             named += [a * count + b for a in members for b in members

@@ -111,3 +111,13 @@ def test_where_not_even_the_margin_makes_room_for_the_gutter_the_widest_gap_hold
     assert gap and float(gap.group(1)) >= 2.9, check.stdout
     assert "they can be parted only by giving up the margin" in check.stdout
 
+
+
+def test_check_names_a_few_items_that_no_arrangement_keeps_the_gutter_apart(tmp_path):
+    """Each three of the four keep the gutter inside A4's margins, all four in no arrangement:
+    check sent the user back to settle, and now says why no settle helps."""
+    check = settled_and_checked("arrangement-1011.toml", tmp_path)
+    assert "floatpage settle" not in check.stdout, check.stdout
+    assert ('items "i0", "i1", "i2", "i3" cannot all stand 3 mm apart in the 200.0 x 287.0 mm '
+            "inside the margins") in check.stdout
+    assert "the widest gap they can all keep is 2.5 mm" in check.stdout
