@@ -158,7 +158,7 @@ class _Reader:
                 if not (isinstance(value, list) and all(isinstance(v, dict) for v in value)):
                     self.add(self.lines.key_line(table_line, key.name), where,
                              f'"{key.name}" must be an array of tables',
-                             f"write each entry as a [[{key.name}]] table")
+                             f"write each entry as a [[{array_header(key.name)}]] table")
                     continue
             elif not type_matches(key.kind, value):
                 self.add(self.lines.key_line(table_line, key.name), where,
@@ -470,6 +470,12 @@ class _Reader:
                                  "remove the anchor from one of these items")
                     reported |= set(cycle)
             finished.update(chain)
+
+
+def array_header(name: str) -> str:
+    """The header a user writes for an array of tables: `pages` is top-level; a page's
+    `items` and `regions` are written `[[pages.items]]` and `[[pages.regions]]`."""
+    return name if name == "pages" else f"pages.{name}"
 
 
 def short_repr(value: Any, limit: int = 60) -> str:
