@@ -39,16 +39,22 @@ def test_each_record_gets_its_own_pdf_and_a_failing_record_is_isolated(merge_fol
     good = rows(3)
     missing = ["2001", "Joe", "Doe", "Candle", "$5", "no-such-picture.png", "", "3 June"]
     too_long = ["2002", "Max", "Long", "word " * 3000, "$1", "pears.png", "", "3 June"]
-    data = write_csv(merge_folder / "customers.csv", good + [missing, too_long])
+    long_name = ["2003", "Ann " * 400, "Lee", "Tea", "$1", "pears.png", "", "3 June"]
+    data = write_csv(merge_folder / "customers.csv", good + [missing, too_long, long_name])
     done = merge(merge_folder, data)
     assert done.returncode == 3, done.stderr
-    assert "2 record(s) failed" in done.stderr
+    assert "3 record(s) failed" in done.stderr
     rows_found = report(merge_folder)
-    assert [row["status"] for row in rows_found] == ["made"] * 3 + ["failed"] * 2
-    assert [row["line"] for row in rows_found] == ["2", "3", "4", "5", "6"]
+    assert [row["status"] for row in rows_found] == ["made"] * 3 + ["failed"] * 3
+    assert [row["line"] for row in rows_found] == ["2", "3", "4", "5", "6", "7"]
     assert "no-such-picture.png" in rows_found[3]["reason"] and "not found" in rows_found[3]["reason"]
     assert "item \"product\"" in rows_found[4]["reason"]
     assert "shorten the text" in rows_found[4]["reason"]
+    # Each failure names the data column to fix, also where the item has another name.
+    assert rows_found[3]["reason"].endswith('[data column "photo"]')
+    assert rows_found[4]["reason"].endswith('[data column "product"]')
+    assert 'item "greeting"' in rows_found[5]["reason"]
+    assert rows_found[5]["reason"].endswith('[data column "first_name"]')
     made = sorted(p.name for p in (merge_folder / "out").glob("*.pdf"))
     assert made == ["1001-Silva.pdf", "1002-Müller.pdf", "1003-Okonkwo-Fitzgerald.pdf"]
     text = text_of(merge_folder / "out" / "1002-Müller.pdf")
