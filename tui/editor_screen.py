@@ -52,15 +52,22 @@ ANSWER_FIRST_S = 0.02  # longer than Textual's screen update period (1/60 s)
 QUALITY_EVERY_S = 0.25  # the quality measure is O(n^2): while settling, refresh it 4 times a second
 
 
-def describe_item(item) -> str:
-    """Kind, size and how the item is held in place, for the page bar."""
+def describe_item(item, page=None) -> str:
+    """Kind, size and how the item is held in place, for the page bar; a member of a group
+    whose anchor another member holds says so (`u` on it takes the group's anchor off)."""
     words = [item.kind, f"{item.w:.0f}×{item.h:.0f} mm"]
     if item.decorative:
         words.append("decorative")
-    if isinstance(item.anchor, PointAnchor):
-        words.append("hard anchor" if item.anchor.hard else f"anchored γ {item.anchor.gamma:g}")
-    elif isinstance(item.anchor, ItemAnchor):
-        words.append(f"follows {item.anchor.to}")
+    holder = item
+    if item.anchor is None and item.group and page is not None:
+        holder = page.group_lead(item.group) or item
+    anchor = holder.anchor
+    if isinstance(anchor, PointAnchor):
+        words.append("hard anchor" if anchor.hard else f"anchored γ {anchor.gamma:g}")
+        if holder is not item:
+            words[-1] += f" by {holder.id}"
+    elif isinstance(anchor, ItemAnchor) and holder is item:
+        words.append(f"follows {anchor.to}")
     return ", ".join(words)
 
 
@@ -364,7 +371,8 @@ class EditorScreen(Screen):
         parts.append((5, 3, ((f"{page.size} {page.orientation}", False),)))
         parts.append((4, 4, ((f"{len(page.items)} items", False),)))
         if selected:
-            parts.append((1, 5, ((selected.id, True), (f" ({describe_item(selected)})", False))))
+            parts.append((1, 5, ((selected.id, True),
+                                 (f" ({describe_item(selected, page)})", False))))
             # where it is: an arrow moves it 2 mm, often less than a cell of the preview, and
             # the key would have shown nothing at all (issue 11: key to screen)
             x_mm, y_mm = session.engine.positions().get(selected.id, (selected.x, selected.y))

@@ -575,7 +575,11 @@ class EditSession:
         self.engine.anchor_to(item.id, target_id, item.anchor.dx, item.anchor.dy)
 
     def unanchor(self) -> None:
+        """Take the selected item's anchor off; for a member of a group whose anchor another
+        member holds, the group's (as `a` on any member anchors the group)."""
         item = self._require_selected()
+        if item.anchor is None and item.group:
+            item = self.page.item(self.mover_of(item.id))
         if item.anchor is None:
             raise EditError(f'"{item.id}" is not anchored')
         self.checkpoint(f"unanchor {item.id}")

@@ -72,6 +72,25 @@ async def test_anchoring_a_member_anchors_the_group_by_its_lead(tmp_path):
         assert page.item("sub").anchor is None
 
 
+async def test_u_on_any_member_takes_the_groups_anchor_off(tmp_path):
+    """`a` on any member anchors the group (by its lead); `u` on a member other than the lead
+    said '"sub" is not anchored' and left the group anchored, and the top bar showed no anchor
+    on that member at all (user-walk-2)."""
+    path = grouped_page(tmp_path / "g.toml")
+    async with editor(path) as (app, pilot):
+        select(app, "sub")
+        await keys(pilot, "a")
+        screen = screen_of(app)
+        bar = "".join(text for text, _ in screen.page_bar_runs())
+        assert "sub (text, 60×10 mm, anchored γ 1 by title)" in bar
+        await keys(pilot, "u")
+        page = app.session.page
+        assert page.item("title").anchor is None and page.item("sub").anchor is None
+        assert "anchored" not in "".join(text for text, _ in screen.page_bar_runs())
+        await keys(pilot, "ctrl+z")
+        assert isinstance(app.session.page.item("title").anchor, PointAnchor)
+
+
 async def test_the_preview_frames_regions_and_the_selected_group(tmp_path):
     path = grouped_page(tmp_path / "g.toml")
     async with editor(path) as (app, pilot):
