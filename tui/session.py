@@ -431,15 +431,31 @@ class EditSession:
         self.engine.move(item_id, x_mm, y_mm)
 
     def _move_target(self, item_id: str, x_mm: float, y_mm: float) -> tuple[str, float, float]:
-        """The item a move of ``item_id`` to (x, y) moves, and where, kept inside the page."""
+        """The item a move of ``item_id`` to (x, y) moves, and where, kept inside the page and
+        the regions of the items it moves."""
         lead_id = self.mover_of(item_id)
         if lead_id != item_id:
             positions = self.engine.positions()
             (x, y), (lead_x, lead_y) = positions[item_id], positions[lead_id]
             item_id, x_mm, y_mm = lead_id, x_mm - x + lead_x, y_mm - y + lead_y
         item = self.page.item(item_id)
-        return (item_id, inside(x_mm, item.w, self.page.width_mm),
-                inside(y_mm, item.h, self.page.height_mm))
+        x_mm, y_mm = (inside(x_mm, item.w, self.page.width_mm),
+                      inside(y_mm, item.h, self.page.height_mm))
+        # A region's edges are walls for its items, as the page's are: a held item (or a
+        # group, by any member confined to a region) stays inside, where the engine used to
+        # carry it out, push the others aside, and float it back when let go.
+        members = self.page.group_members(item.group) if item.group else [item]
+        confined = [member for member in members if member.region]
+        if confined:
+            positions = self.engine.positions()
+            lead_x, lead_y = positions[item_id]
+            for member in confined:
+                region = self.page.region(member.region)
+                mx, my = positions[member.id]
+                to_x, to_y = x_mm + mx - lead_x, y_mm + my - lead_y
+                x_mm += region.left + inside(to_x - region.left, member.w, region.w) - to_x
+                y_mm += region.top + inside(to_y - region.top, member.h, region.h) - to_y
+        return item_id, x_mm, y_mm
 
     def nudge(self, dx_mm: float, dy_mm: float) -> None:
         """Move the selected item a step; refused, with no edit made, when the page's edge
@@ -449,7 +465,8 @@ class EditSession:
         x, y = self.engine.positions()[item.id]
         mover, to_x, to_y = self._move_target(item.id, x + dx_mm, y + dy_mm)
         if self.held_id != mover and (to_x, to_y) == self.engine.positions()[mover]:
-            raise EditError(f"{item.id} is at the page's edge: no room to move that way")
+            edge = f'its region "{item.region}"' if item.region else "the page"
+            raise EditError(f"{item.id} is at the edge of {edge}: no room to move that way")
         self.move_to(item.id, x + dx_mm, y + dy_mm)
 
     def end_move(self) -> None:

@@ -10,6 +10,10 @@ from floatpage.tui.page_painter import GROUP, PAPER, REGION, mix
 from editor_helpers import editor, item, pixel, position, screen_of, type_text
 
 
+def messages(app) -> list[str]:
+    return [notification.message for notification in app._notifications]
+
+
 def select(app, item_id: str) -> None:
     screen_of(app).selected_id = item_id  # as a click on the item does
 
@@ -89,6 +93,27 @@ async def test_u_on_any_member_takes_the_groups_anchor_off(tmp_path):
         assert "anchored" not in "".join(text for text, _ in screen.page_bar_runs())
         await keys(pilot, "ctrl+z")
         assert isinstance(app.session.page.item("title").anchor, PointAnchor)
+
+
+async def test_a_held_item_stays_inside_its_region(tmp_path):
+    """A region's edges are walls for its items, as the page's are; the editor keeps a held
+    item on the page, but Shift+down carried a box confined to the top region 70 mm out of
+    it, shoving the others, and floated it back when let go (user-walk-2, in tmux)."""
+    path = grouped_page(tmp_path / "g.toml")
+    async with editor(path) as (app, pilot):
+        select(app, "box")
+        lowest = 0.0
+        for _ in range(10):
+            await pilot.press("J")
+            lowest = max(lowest, position(app, "box")[1] + 15.0)
+        assert lowest <= 140.0 + 1e-6, "the box's bottom left its region (0-140 mm)"
+        assert lowest > 130.0, "it went down to the region's edge"
+        screen_of(app).release_held()
+        await pilot.pause()
+        select(app, "box")
+        await pilot.press("J")
+        assert messages(app)[-1] == ('box is at the edge of its region "top": '
+                                     "no room to move that way")
 
 
 async def test_the_preview_frames_regions_and_the_selected_group(tmp_path):
