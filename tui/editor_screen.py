@@ -493,6 +493,7 @@ class EditorScreen(Screen):
 
     def on_resize(self, event) -> None:
         self.redraw()  # the top bar and the footer fit themselves to the width
+        self.refresh_bindings()  # the footer reads them again only when told
 
     def on_key(self, event) -> None:
         """A key whose command needs a selected item, pressed with none, says what to do
