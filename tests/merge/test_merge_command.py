@@ -201,6 +201,22 @@ def test_user_text_is_set_as_text_never_run_as_latex(merge_folder):
     assert "/" not in pdf.name and pdf.name.endswith(".pdf")
 
 
+def test_the_samples_empty_price_or_product_leaves_no_dangling_words(merge_folder):
+    """A record with no price printed "only" and nothing after it, and one with no product an
+    empty box where the product goes: the sample template dropped only an empty note
+    (user-walk-2, a 50-row CSV with empty fields)."""
+    records = rows(2)
+    records[0][4] = ""   # price
+    records[1][3] = " "  # product
+    data = write_csv(merge_folder / "customers.csv", records)
+    done = merge(merge_folder, data)
+    assert done.returncode == 0, done.stderr
+    no_price = " ".join(text_of(merge_folder / "out" / "1001-Silva.pdf").split())
+    assert "Product number 0" in no_price and "only" not in no_price
+    no_product = " ".join(text_of(merge_folder / "out" / "1002-Müller.pdf").split())
+    assert "only €1.50" in no_product and "Product number" not in no_product
+
+
 def test_names_are_made_safe_and_unique(merge_folder):
     data = write_csv(merge_folder / "customers.csv", rows(2))
     done = merge(merge_folder, data, "out", "--name", "../{valid_until}/x")
