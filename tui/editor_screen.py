@@ -579,7 +579,9 @@ class EditorScreen(Screen):
         self.attempt(lambda: self.session.insert_item(self.session.make_item(kind, **values)))
 
     def insert_picture(self, path: Path) -> None:
-        self.insert("picture", {"path": self.session.relative_picture_path(path)})
+        session = self.session
+        self.attempt(lambda: session.insert_item(session.make_item(
+            "picture", path=session.relative_picture_path(path))))
 
     def choose_background(self, choice: str) -> None:
         session = self.session
@@ -597,8 +599,8 @@ class EditorScreen(Screen):
 
     def set_background_picture(self, path: Path) -> None:
         session = self.session
-        self.attempt(session.set_background,
-                     Background(picture=session.relative_picture_path(path)))
+        self.attempt(lambda: session.set_background(
+            Background(picture=session.relative_picture_path(path))))
 
     # -- editing -------------------------------------------------------------------------------
 

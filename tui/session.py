@@ -23,6 +23,7 @@ from floatpage.model.document import (
 from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
 from floatpage.model.page_sizes import page_dimensions
+from floatpage.model.picture_files import read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
@@ -380,8 +381,14 @@ class EditSession:
     def relative_picture_path(self, path: str | Path) -> str:
         """The path to write for a picture the user picked: relative when it is inside the
         project's folder; otherwise a copy in the folder's `pictures/` (a project reads only
-        its own folder, issue 12), unless the project allows outside files."""
+        its own folder, issue 12), unless the project allows outside files.  A file the
+        loader would refuse (a text named .jpg, a folder, a 200-megapixel PNG) is refused
+        here, with the loader's words: saved, it made a project no command would open."""
         path = Path(path).expanduser().resolve()
+        header = read_header(path)
+        if header.problem:
+            raise EditError(f'"{path.name}" {header.problem}' +
+                            (f" ({header.hint})" if header.hint else ""))
         base = self.project.base_dir.resolve()
         try:
             return str(path.relative_to(base))
