@@ -348,7 +348,8 @@ class _Reader:
         header = read_header(picture)
         if header.problem == "not found":
             self.add(line, where, f'picture file "{relative}" not found',
-                     f"paths are relative to {self.path.parent}; fix the path or copy the file there")
+                     f"paths are relative to {folder_words(self.path)}; fix the path or copy "
+                     "the file there")
         elif header.problem:
             self.add(line, where, f'picture file "{relative}" {header.problem}', header.hint)
         elif not self.allow_outside and is_outside(picture, self.path.parent):
@@ -470,6 +471,13 @@ class _Reader:
                                  "remove the anchor from one of these items")
                     reported |= set(cycle)
             finished.update(chain)
+
+
+def folder_words(project: Path) -> str:
+    """The project's folder as a message names it: "relative to ." read as a typo to a user
+    who ran the command beside the project."""
+    folder = project.parent
+    return "the project's folder" + ("" if str(folder) == "." else f", {folder}")
 
 
 def array_header(name: str) -> str:
