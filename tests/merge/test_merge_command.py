@@ -217,6 +217,18 @@ def test_the_samples_empty_price_or_product_leaves_no_dangling_words(merge_folde
     assert "only €1.50" in no_product and "Product number" not in no_product
 
 
+def test_an_empty_picture_column_is_named_as_empty_not_as_a_folder(merge_folder):
+    """`path = "pictures/{photo}"` with an empty photo is "pictures/", and the record failed
+    with 'picture "pictures/" is a folder' (user-walk-2, a CSV with empty fields)."""
+    records = rows(1)
+    records[0][5] = ""
+    done = merge(merge_folder, write_csv(merge_folder / "customers.csv", records))
+    assert done.returncode == 3, done.stderr
+    [row] = report(merge_folder)
+    assert "the picture's column is empty" in row["reason"], row["reason"]
+    assert "folder" not in row["reason"] and "drop_if_empty" in row["reason"]
+
+
 def test_names_are_made_safe_and_unique(merge_folder):
     data = write_csv(merge_folder / "customers.csv", rows(2))
     done = merge(merge_folder, data, "out", "--name", "../{valid_until}/x")
