@@ -669,11 +669,22 @@ class EditSession:
         margin_kept = self.margin_keepers()
         sx, sy = width / page.width_mm, height / page.height_mm
         margin = page_margin(self.project.physics.margin_mm, width, height)
+        # Regions keep their share of the page, as items keep their place: one left as it
+        # was reached past a smaller page, and the file saved was one no command would open.
+        for region in page.regions:
+            left, top = round(region.left * sx, 2), round(region.top * sy, 2)
+            region.w = min(round((region.left + region.w) * sx, 2), width) - left
+            region.h = min(round((region.top + region.h) * sy, 2), height) - top
+            region.left, region.top = left, top
         for item in page.items:
             item.x, item.y = item.x * sx, item.y * sy
             if item.decorative:  # a band across the page keeps spanning it: it stretches
                 item.w, item.h = item.w * sx, item.h * sy
             item.w, item.h = min(item.w, width), min(item.h, height)
+            if item.region:  # no larger than its region (the loader's rule), shape kept
+                room = page.region(item.region)
+                fit = min(1.0, room.w / item.w, room.h / item.h)
+                item.w, item.h = item.w * fit, item.h * fit
             if isinstance(item.anchor, PointAnchor):
                 item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
             if not (item.decorative or item.group or getattr(item, "bleed", False)):

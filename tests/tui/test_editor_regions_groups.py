@@ -4,6 +4,8 @@ anchors the group, and the preview draws regions and the selected item's group."
 
 from __future__ import annotations
 
+import pytest
+
 from floatpage.model import load_project, save_project
 from floatpage.model.document import BlockItem, Page, PointAnchor, Project, Region, TextItem
 from floatpage.tui.page_painter import GROUP, PAPER, REGION, mix
@@ -114,6 +116,30 @@ async def test_a_held_item_stays_inside_its_region(tmp_path):
         await pilot.press("J")
         assert messages(app)[-1] == ('box is at the edge of its region "top": '
                                      "no room to move that way")
+
+
+async def test_a_smaller_page_size_keeps_regions_on_the_page_and_the_file_opens(tmp_path):
+    """S, 4x6in on an A4 page with a region: the region kept its 210 x 140 mm and reached past
+    the 101.6 x 152.4 mm page, and the file saved was one no command would open ("region
+    reaches outside the page"); so could an item grown past its shrunk region (user-walk-2)."""
+    path = tmp_path / "g.toml"
+    save_project(Project(pages=[Page(id="p", regions=[Region("top", 0.0, 0.0, 210.0, 140.0)],
+                                     items=[
+        BlockItem(id="box", x=105.0, y=60.0, w=200.0, h=100.0, region="top"),
+        TextItem(id="title", x=105.0, y=220.0, w=60.0, h=15.0, text="Title"),
+    ])]), path)
+    async with editor(path) as (app, pilot):
+        await keys(pilot, "S")
+        assert app.screen.id == "page-size-dialog"
+        await keys(pilot, *["down"] * 5, "enter")  # from A4 to 4x6in
+        assert app.session.page.size == "4x6in"
+        await keys(pilot, "ctrl+s")
+    page = load_project(path).pages[0]  # opens: every region on the page, every item in it
+    left, top, right, bottom = page.region("top").box
+    assert (left, top) == (0.0, 0.0) and right <= 101.6 and bottom <= 152.4
+    assert bottom == pytest.approx(140.0 * 152.4 / 297.0, abs=0.01)  # its share of the page
+    box = page.item("box")
+    assert box.w <= right and box.h <= bottom
 
 
 async def test_the_preview_frames_regions_and_the_selected_group(tmp_path):
