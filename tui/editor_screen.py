@@ -131,7 +131,7 @@ class EditorScreen(Screen):
         self._steps_undrawn = 0  # physics steps since the last drawn frame
         self._wake_timer = None
         self.pacer = FramePacer(None)  # on_mount gives it the terminal's link, if there is one
-        self._quality = ("", "")
+        self._quality = ("", "", "")
         self.details = False  # `v`: the status line shows its numbers
         self.labels = False  # `n`: every item's id on the preview, not only the selected one's
         self._quality_at = float("-inf")
@@ -316,20 +316,20 @@ class EditorScreen(Screen):
             engine = self.session.engine
             moving = self.running and not engine.settled
             if measure or not moving or not self._quality[0]:
-                summary, words = self.quality_summary()
+                summary, words, alignment = self.quality_summary()
                 self.query_one(StatusLine).show(Status(
                     state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
                     held=self.meter.held, steps_per_s=self.meter.steps_per_s, quality=summary,
                     frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
-                    details=self.details))
+                    details=self.details, alignment=alignment))
             bar = self.query_one(PageBar)
             if bar.show(self.page_bar_runs(), refresh=False) \
                     and not preview.direct.paint_lines(bar):  # an unchanged bar costs no bytes
                 bar.refresh()
 
-    def quality_summary(self) -> tuple[str, str]:
-        """The layout's quality, as numbers and in words; exact when idle, refreshed a few
-        times a second while moving."""
+    def quality_summary(self) -> tuple[str, str, str]:
+        """The layout's quality, as numbers and in words, and its alignment figures; exact
+        when idle, refreshed a few times a second while moving."""
         now = time.perf_counter()
         engine = self.session.engine
         moving = self.running and not engine.settled
@@ -338,8 +338,8 @@ class EditorScreen(Screen):
         key = None if moving else engine.quality_key()
         if key is None or key != self._quality_key:  # at rest, measured once per layout:
             quality = engine.quality()  # a decoration nudged on a still page changes nothing
-            summary = f"{quality.summary()} · {engine.alignment().short()}"  # they count
-            self._quality = (summary, quality_in_words(quality))
+            self._quality = (quality.summary(), quality_in_words(quality),
+                             engine.alignment().short())
             self._quality_key = key
         self._quality_at = now
         return self._quality
