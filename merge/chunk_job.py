@@ -98,14 +98,14 @@ def run_chunk(task: ChunkTask) -> list[RecordResult]:
             project = lay_out_record(template, record.values, root)
             document = place_document(project)
         except RecordFailure as failure:
-            result.reason = str(failure)
+            result.reason = naming_columns(str(failure), template.uses)
             continue
         except FloatpageError as error:
             result.reason = str(error)
             continue
         too_long = [w for w in document.warnings if w.endswith(DOES_NOT_FIT_HINT)]
         if too_long:
-            result.reason = too_long[0]
+            result.reason = naming_columns(too_long[0], template.uses)
             continue
         result.warnings = list(document.warnings)
         result.pages = len(document.pages)
@@ -115,6 +115,18 @@ def run_chunk(task: ChunkTask) -> list[RecordResult]:
         made.append(result)
     typeset_chunk(documents, made)
     return results
+
+
+def naming_columns(reason: str, uses) -> str:
+    """A record's failure with the data columns that fed its item: the report names the
+    record's line, and the user fixes a value in the data, not the template's item id (a
+    subtitle too long for its box is column first_name's doing, not item "greeting"'s)."""
+    for use in uses:
+        if reason.startswith(use.where + ":"):
+            names = ", ".join(f'"{name}"' for name in use.names)
+            plural = "s" if len(use.names) > 1 else ""
+            return f"{reason} [data column{plural} {names}]"
+    return reason
 
 
 def typeset_chunk(documents: list, results: list[RecordResult]) -> None:

@@ -49,7 +49,7 @@ def fill_record(template: MergeTemplate, values: Mapping[str, str],
                                         f"long, more than the {MAX_TEXT_CHARS:,} a text may hold")
             else:
                 item.path = fill(item.path, values)
-                check_picture(root, item.path, template.allow_outside, use)
+                check_picture(root, item.path, template.allow_outside, use, values)
                 reshape_to_picture(item, root / item.path, page, use)
             kept.append(item)
         for item in kept:  # a follower of a dropped item stays where the template put it
@@ -59,15 +59,19 @@ def fill_record(template: MergeTemplate, values: Mapping[str, str],
         use = by_place.get((page.id, None))
         if use is not None:
             page.background.picture = fill(page.background.picture, values)
-            if not page.background.picture.strip():
-                page.background.picture = None
+            if not page.background.picture.strip() or any(not values[name].strip()
+                                                            for name in use.names):
+                page.background.picture = None  # an empty column: no background picture
             else:
-                check_picture(root, page.background.picture, template.allow_outside, use)
+                check_picture(root, page.background.picture, template.allow_outside, use,
+                              values)
     return project
 
 
-def check_picture(root: Path, relative: str, allow_outside: bool, use: FieldUse) -> None:
-    if not relative.strip():
+def check_picture(root: Path, relative: str, allow_outside: bool, use: FieldUse,
+                  values: Mapping[str, str]) -> None:
+    # "pictures/{photo}" with an empty photo is "pictures/", which read as "is a folder"
+    if not relative.strip() or any(not values[name].strip() for name in use.names):
         raise RecordFailure(f"{use.where}: the picture's column is empty (mark the item "
                             "`drop_if_empty = true` to leave it out instead)")
     path = root / relative

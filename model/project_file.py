@@ -158,7 +158,7 @@ class _Reader:
                 if not (isinstance(value, list) and all(isinstance(v, dict) for v in value)):
                     self.add(self.lines.key_line(table_line, key.name), where,
                              f'"{key.name}" must be an array of tables',
-                             f"write each entry as a [[{key.name}]] table")
+                             f"write each entry as a [[{array_header(key.name)}]] table")
                     continue
             elif not type_matches(key.kind, value):
                 self.add(self.lines.key_line(table_line, key.name), where,
@@ -348,7 +348,8 @@ class _Reader:
         header = read_header(picture)
         if header.problem == "not found":
             self.add(line, where, f'picture file "{relative}" not found',
-                     f"paths are relative to {self.path.parent}; fix the path or copy the file there")
+                     f"paths are relative to {folder_words(self.path)}; fix the path or copy "
+                     "the file there")
         elif header.problem:
             self.add(line, where, f'picture file "{relative}" {header.problem}', header.hint)
         elif not self.allow_outside and is_outside(picture, self.path.parent):
@@ -470,6 +471,19 @@ class _Reader:
                                  "remove the anchor from one of these items")
                     reported |= set(cycle)
             finished.update(chain)
+
+
+def folder_words(project: Path) -> str:
+    """The project's folder as a message names it: "relative to ." read as a typo to a user
+    who ran the command beside the project."""
+    folder = project.parent
+    return "the project's folder" + ("" if str(folder) == "." else f", {folder}")
+
+
+def array_header(name: str) -> str:
+    """The header a user writes for an array of tables: `pages` is top-level; a page's
+    `items` and `regions` are written `[[pages.items]]` and `[[pages.regions]]`."""
+    return name if name == "pages" else f"pages.{name}"
 
 
 def short_repr(value: Any, limit: int = 60) -> str:

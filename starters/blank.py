@@ -15,7 +15,8 @@ def build(options: Options, pictures: list[Picture]) -> Project:
     """One page with a title placeholder, and the given pictures (at most a dozen) below it."""
     page = new_page("page-1", PAGE_SIZE, options.orientation)
     page.items.append(TextItem(id="title", x=page.width_mm / 2, y=30.0, w=page.width_mm - 60.0, h=20.0,
-                               text="Your title here", font="display", color="#333333"))
+                               text="Your title here", font="display", color="#333333",
+                               align="centre"))
     shown = pictures[:12]
     region = Region(15.0, 50.0, page.width_mm - 15.0, page.height_mm - 15.0)
     for index, (picture, (x, y, w, h)) in enumerate(zip(shown, grid(region, [p.aspect for p in shown])), 1):

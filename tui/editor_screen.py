@@ -52,15 +52,22 @@ ANSWER_FIRST_S = 0.02  # longer than Textual's screen update period (1/60 s)
 QUALITY_EVERY_S = 0.25  # the quality measure is O(n^2): while settling, refresh it 4 times a second
 
 
-def describe_item(item) -> str:
-    """Kind, size and how the item is held in place, for the page bar."""
+def describe_item(item, page=None) -> str:
+    """Kind, size and how the item is held in place, for the page bar; a member of a group
+    whose anchor another member holds says so (`u` on it takes the group's anchor off)."""
     words = [item.kind, f"{item.w:.0f}×{item.h:.0f} mm"]
     if item.decorative:
         words.append("decorative")
-    if isinstance(item.anchor, PointAnchor):
-        words.append("hard anchor" if item.anchor.hard else f"anchored γ {item.anchor.gamma:g}")
-    elif isinstance(item.anchor, ItemAnchor):
-        words.append(f"follows {item.anchor.to}")
+    holder = item
+    if item.anchor is None and item.group and page is not None:
+        holder = page.group_lead(item.group) or item
+    anchor = holder.anchor
+    if isinstance(anchor, PointAnchor):
+        words.append("hard anchor" if anchor.hard else f"anchored γ {anchor.gamma:g}")
+        if holder is not item:
+            words[-1] += f" by {holder.id}"
+    elif isinstance(anchor, ItemAnchor) and holder is item:
+        words.append(f"follows {anchor.to}")
     return ", ".join(words)
 
 
@@ -124,7 +131,7 @@ class EditorScreen(Screen):
         self._steps_undrawn = 0  # physics steps since the last drawn frame
         self._wake_timer = None
         self.pacer = FramePacer(None)  # on_mount gives it the terminal's link, if there is one
-        self._quality = ("", "")
+        self._quality = ("", "", "")
         self.details = False  # `v`: the status line shows its numbers
         self.labels = False  # `n`: every item's id on the preview, not only the selected one's
         self._quality_at = float("-inf")
@@ -309,20 +316,20 @@ class EditorScreen(Screen):
             engine = self.session.engine
             moving = self.running and not engine.settled
             if measure or not moving or not self._quality[0]:
-                summary, words = self.quality_summary()
+                summary, words, alignment = self.quality_summary()
                 self.query_one(StatusLine).show(Status(
                     state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
                     held=self.meter.held, steps_per_s=self.meter.steps_per_s, quality=summary,
                     frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
-                    details=self.details))
+                    details=self.details, alignment=alignment))
             bar = self.query_one(PageBar)
             if bar.show(self.page_bar_runs(), refresh=False) \
                     and not preview.direct.paint_lines(bar):  # an unchanged bar costs no bytes
                 bar.refresh()
 
-    def quality_summary(self) -> tuple[str, str]:
-        """The layout's quality, as numbers and in words; exact when idle, refreshed a few
-        times a second while moving."""
+    def quality_summary(self) -> tuple[str, str, str]:
+        """The layout's quality, as numbers and in words, and its alignment figures; exact
+        when idle, refreshed a few times a second while moving."""
         now = time.perf_counter()
         engine = self.session.engine
         moving = self.running and not engine.settled
@@ -331,8 +338,8 @@ class EditorScreen(Screen):
         key = None if moving else engine.quality_key()
         if key is None or key != self._quality_key:  # at rest, measured once per layout:
             quality = engine.quality()  # a decoration nudged on a still page changes nothing
-            summary = f"{quality.summary()} · {engine.alignment().short()}"  # they count
-            self._quality = (summary, quality_in_words(quality))
+            self._quality = (quality.summary(), quality_in_words(quality),
+                             engine.alignment().short())
             self._quality_key = key
         self._quality_at = now
         return self._quality
@@ -364,7 +371,8 @@ class EditorScreen(Screen):
         parts.append((5, 3, ((f"{page.size} {page.orientation}", False),)))
         parts.append((4, 4, ((f"{len(page.items)} items", False),)))
         if selected:
-            parts.append((1, 5, ((selected.id, True), (f" ({describe_item(selected)})", False))))
+            parts.append((1, 5, ((selected.id, True),
+                                 (f" ({describe_item(selected, page)})", False))))
             # where it is: an arrow moves it 2 mm, often less than a cell of the preview, and
             # the key would have shown nothing at all (issue 11: key to screen)
             x_mm, y_mm = session.engine.positions().get(selected.id, (selected.x, selected.y))
@@ -485,6 +493,7 @@ class EditorScreen(Screen):
 
     def on_resize(self, event) -> None:
         self.redraw()  # the top bar and the footer fit themselves to the width
+        self.refresh_bindings()  # the footer reads them again only when told
 
     def on_key(self, event) -> None:
         """A key whose command needs a selected item, pressed with none, says what to do
@@ -570,7 +579,9 @@ class EditorScreen(Screen):
         self.attempt(lambda: self.session.insert_item(self.session.make_item(kind, **values)))
 
     def insert_picture(self, path: Path) -> None:
-        self.insert("picture", {"path": self.session.relative_picture_path(path)})
+        session = self.session
+        self.attempt(lambda: session.insert_item(session.make_item(
+            "picture", path=session.relative_picture_path(path))))
 
     def choose_background(self, choice: str) -> None:
         session = self.session
@@ -588,8 +599,8 @@ class EditorScreen(Screen):
 
     def set_background_picture(self, path: Path) -> None:
         session = self.session
-        self.attempt(session.set_background,
-                     Background(picture=session.relative_picture_path(path)))
+        self.attempt(lambda: session.set_background(
+            Background(picture=session.relative_picture_path(path))))
 
     # -- editing -------------------------------------------------------------------------------
 

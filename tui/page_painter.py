@@ -105,15 +105,17 @@ def wrapped(text: str, width: int) -> tuple[str, ...]:
     return tuple(wrap_cells(text, width))
 
 
-def picture_stand_in(path: str) -> str:
+def picture_stand_in(path: str, exists: bool = False) -> str:
     """What a picture the preview cannot show says instead: a merge template's picture,
-    named by its fields ("pictures/{photo}"), is filled in per record, and is not missing."""
+    named by its fields ("pictures/{photo}"), is filled in per record, and is not missing; a
+    file that is there but does not decode (a JPEG cut short, which render prints grey or
+    cut off, with a warning) is unreadable, not missing."""
     try:
         if fields_in(path):
             return f"one per record: {path}"
     except PlaceholderError:
         pass
-    return f"missing {path}"
+    return f"unreadable {path}" if exists else f"missing {path}"
 
 
 @lru_cache(maxsize=1024)
@@ -231,7 +233,9 @@ class PagePainter:
             image = thumbnail(view.base_dir / item.path, x1 - x0, y1 - y0)
             if image is None:
                 canvas.fill(*box, MISSING_PICTURE)
-                self._body(canvas, box, [picture_stand_in(item.path)], BLACK, MISSING_PICTURE)
+                there = (view.base_dir / item.path).is_file()
+                self._body(canvas, box, [picture_stand_in(item.path, there)], BLACK,
+                           MISSING_PICTURE)
             else:
                 canvas.blit(x0, y0, image)
             if view.labels:

@@ -23,6 +23,7 @@ from floatpage.model.document import (
 from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
 from floatpage.model.page_sizes import page_dimensions
+from floatpage.model.picture_files import read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
@@ -380,8 +381,14 @@ class EditSession:
     def relative_picture_path(self, path: str | Path) -> str:
         """The path to write for a picture the user picked: relative when it is inside the
         project's folder; otherwise a copy in the folder's `pictures/` (a project reads only
-        its own folder, issue 12), unless the project allows outside files."""
+        its own folder, issue 12), unless the project allows outside files.  A file the
+        loader would refuse (a text named .jpg, a folder, a 200-megapixel PNG) is refused
+        here, with the loader's words: saved, it made a project no command would open."""
         path = Path(path).expanduser().resolve()
+        header = read_header(path)
+        if header.problem:
+            raise EditError(f'"{path.name}" {header.problem}' +
+                            (f" ({header.hint})" if header.hint else ""))
         base = self.project.base_dir.resolve()
         try:
             return str(path.relative_to(base))
@@ -431,15 +438,31 @@ class EditSession:
         self.engine.move(item_id, x_mm, y_mm)
 
     def _move_target(self, item_id: str, x_mm: float, y_mm: float) -> tuple[str, float, float]:
-        """The item a move of ``item_id`` to (x, y) moves, and where, kept inside the page."""
+        """The item a move of ``item_id`` to (x, y) moves, and where, kept inside the page and
+        the regions of the items it moves."""
         lead_id = self.mover_of(item_id)
         if lead_id != item_id:
             positions = self.engine.positions()
             (x, y), (lead_x, lead_y) = positions[item_id], positions[lead_id]
             item_id, x_mm, y_mm = lead_id, x_mm - x + lead_x, y_mm - y + lead_y
         item = self.page.item(item_id)
-        return (item_id, inside(x_mm, item.w, self.page.width_mm),
-                inside(y_mm, item.h, self.page.height_mm))
+        x_mm, y_mm = (inside(x_mm, item.w, self.page.width_mm),
+                      inside(y_mm, item.h, self.page.height_mm))
+        # A region's edges are walls for its items, as the page's are: a held item (or a
+        # group, by any member confined to a region) stays inside, where the engine used to
+        # carry it out, push the others aside, and float it back when let go.
+        members = self.page.group_members(item.group) if item.group else [item]
+        confined = [member for member in members if member.region]
+        if confined:
+            positions = self.engine.positions()
+            lead_x, lead_y = positions[item_id]
+            for member in confined:
+                region = self.page.region(member.region)
+                mx, my = positions[member.id]
+                to_x, to_y = x_mm + mx - lead_x, y_mm + my - lead_y
+                x_mm += region.left + inside(to_x - region.left, member.w, region.w) - to_x
+                y_mm += region.top + inside(to_y - region.top, member.h, region.h) - to_y
+        return item_id, x_mm, y_mm
 
     def nudge(self, dx_mm: float, dy_mm: float) -> None:
         """Move the selected item a step; refused, with no edit made, when the page's edge
@@ -449,7 +472,8 @@ class EditSession:
         x, y = self.engine.positions()[item.id]
         mover, to_x, to_y = self._move_target(item.id, x + dx_mm, y + dy_mm)
         if self.held_id != mover and (to_x, to_y) == self.engine.positions()[mover]:
-            raise EditError(f"{item.id} is at the page's edge: no room to move that way")
+            edge = f'its region "{item.region}"' if item.region else "the page"
+            raise EditError(f"{item.id} is at the edge of {edge}: no room to move that way")
         self.move_to(item.id, x + dx_mm, y + dy_mm)
 
     def end_move(self) -> None:
@@ -575,7 +599,11 @@ class EditSession:
         self.engine.anchor_to(item.id, target_id, item.anchor.dx, item.anchor.dy)
 
     def unanchor(self) -> None:
+        """Take the selected item's anchor off; for a member of a group whose anchor another
+        member holds, the group's (as `a` on any member anchors the group)."""
         item = self._require_selected()
+        if item.anchor is None and item.group:
+            item = self.page.item(self.mover_of(item.id))
         if item.anchor is None:
             raise EditError(f'"{item.id}" is not anchored')
         self.checkpoint(f"unanchor {item.id}")
@@ -641,11 +669,22 @@ class EditSession:
         margin_kept = self.margin_keepers()
         sx, sy = width / page.width_mm, height / page.height_mm
         margin = page_margin(self.project.physics.margin_mm, width, height)
+        # Regions keep their share of the page, as items keep their place: one left as it
+        # was reached past a smaller page, and the file saved was one no command would open.
+        for region in page.regions:
+            left, top = round(region.left * sx, 2), round(region.top * sy, 2)
+            region.w = min(round((region.left + region.w) * sx, 2), width) - left
+            region.h = min(round((region.top + region.h) * sy, 2), height) - top
+            region.left, region.top = left, top
         for item in page.items:
             item.x, item.y = item.x * sx, item.y * sy
             if item.decorative:  # a band across the page keeps spanning it: it stretches
                 item.w, item.h = item.w * sx, item.h * sy
             item.w, item.h = min(item.w, width), min(item.h, height)
+            if item.region:  # no larger than its region (the loader's rule), shape kept
+                room = page.region(item.region)
+                fit = min(1.0, room.w / item.w, room.h / item.h)
+                item.w, item.h = item.w * fit, item.h * fit
             if isinstance(item.anchor, PointAnchor):
                 item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
             if not (item.decorative or item.group or getattr(item, "bleed", False)):

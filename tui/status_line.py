@@ -20,6 +20,7 @@ class Status:
     quality_words: str = ""  # the same, said in words
     details: bool = False  # `v` shows the numbers
     held: int = 0  # frames held back in the last second: the link could not take them
+    alignment: str = ""  # near misses, edge lines, share aligned (physics.alignment.short)
 
 
 STATE_WORDS = {"settling": "settling…", "settled": "still", "paused": "paused · Space resumes"}
@@ -31,12 +32,14 @@ def status_text(status: Status) -> str:
     words = STATE_WORDS.get(status.state, status.state)
     if not status.details:
         return f"{words}\n{status.quality_words or status.quality}"
+    alignment = f" · {status.alignment}" if status.alignment else ""
     if status.state in ("settled", "paused"):
-        rate = "idle: no frames drawn"
-    else:
-        rate = (f"{status.fps:4.1f} fps · {status.held} held · "
-                f"{status.steps_per_s:,.0f} steps/s · frame {status.frame_ms:4.1f} ms")
-    return f"{words} · energy {status.energy:.2e} · {rate}\n{status.quality}"
+        # At rest the first line has room: the alignment figures go there, first, where at
+        # 80 columns they fell off the end of the quality line (user-walk-2).
+        return f"{words}{alignment} · idle\n{status.quality}"  # no energy: nothing moves
+    rate = (f"{status.fps:4.1f} fps · {status.held} held · "
+            f"{status.steps_per_s:,.0f} steps/s · frame {status.frame_ms:4.1f} ms")
+    return f"{words} · energy {status.energy:.2e} · {rate}\n{status.quality}{alignment}"
 
 
 class StatusLine(Static):

@@ -39,16 +39,22 @@ def test_each_record_gets_its_own_pdf_and_a_failing_record_is_isolated(merge_fol
     good = rows(3)
     missing = ["2001", "Joe", "Doe", "Candle", "$5", "no-such-picture.png", "", "3 June"]
     too_long = ["2002", "Max", "Long", "word " * 3000, "$1", "pears.png", "", "3 June"]
-    data = write_csv(merge_folder / "customers.csv", good + [missing, too_long])
+    long_name = ["2003", "Ann " * 400, "Lee", "Tea", "$1", "pears.png", "", "3 June"]
+    data = write_csv(merge_folder / "customers.csv", good + [missing, too_long, long_name])
     done = merge(merge_folder, data)
     assert done.returncode == 3, done.stderr
-    assert "2 record(s) failed" in done.stderr
+    assert "3 record(s) failed" in done.stderr
     rows_found = report(merge_folder)
-    assert [row["status"] for row in rows_found] == ["made"] * 3 + ["failed"] * 2
-    assert [row["line"] for row in rows_found] == ["2", "3", "4", "5", "6"]
+    assert [row["status"] for row in rows_found] == ["made"] * 3 + ["failed"] * 3
+    assert [row["line"] for row in rows_found] == ["2", "3", "4", "5", "6", "7"]
     assert "no-such-picture.png" in rows_found[3]["reason"] and "not found" in rows_found[3]["reason"]
     assert "item \"product\"" in rows_found[4]["reason"]
     assert "shorten the text" in rows_found[4]["reason"]
+    # Each failure names the data column to fix, also where the item has another name.
+    assert rows_found[3]["reason"].endswith('[data column "photo"]')
+    assert rows_found[4]["reason"].endswith('[data column "product"]')
+    assert 'item "greeting"' in rows_found[5]["reason"]
+    assert rows_found[5]["reason"].endswith('[data column "first_name"]')
     made = sorted(p.name for p in (merge_folder / "out").glob("*.pdf"))
     assert made == ["1001-Silva.pdf", "1002-Müller.pdf", "1003-Okonkwo-Fitzgerald.pdf"]
     text = text_of(merge_folder / "out" / "1002-Müller.pdf")
@@ -193,6 +199,34 @@ def test_user_text_is_set_as_text_never_run_as_latex(merge_folder):
     for value in (hostile[1], hostile[3], hostile[4], hostile[6]):
         assert value in text
     assert "/" not in pdf.name and pdf.name.endswith(".pdf")
+
+
+def test_the_samples_empty_price_or_product_leaves_no_dangling_words(merge_folder):
+    """A record with no price printed "only" and nothing after it, and one with no product an
+    empty box where the product goes: the sample template dropped only an empty note
+    (user-walk-2, a 50-row CSV with empty fields)."""
+    records = rows(2)
+    records[0][4] = ""   # price
+    records[1][3] = " "  # product
+    data = write_csv(merge_folder / "customers.csv", records)
+    done = merge(merge_folder, data)
+    assert done.returncode == 0, done.stderr
+    no_price = " ".join(text_of(merge_folder / "out" / "1001-Silva.pdf").split())
+    assert "Product number 0" in no_price and "only" not in no_price
+    no_product = " ".join(text_of(merge_folder / "out" / "1002-Müller.pdf").split())
+    assert "only €1.50" in no_product and "Product number" not in no_product
+
+
+def test_an_empty_picture_column_is_named_as_empty_not_as_a_folder(merge_folder):
+    """`path = "pictures/{photo}"` with an empty photo is "pictures/", and the record failed
+    with 'picture "pictures/" is a folder' (user-walk-2, a CSV with empty fields)."""
+    records = rows(1)
+    records[0][5] = ""
+    done = merge(merge_folder, write_csv(merge_folder / "customers.csv", records))
+    assert done.returncode == 3, done.stderr
+    [row] = report(merge_folder)
+    assert "the picture's column is empty" in row["reason"], row["reason"]
+    assert "folder" not in row["reason"] and "drop_if_empty" in row["reason"]
 
 
 def test_names_are_made_safe_and_unique(merge_folder):

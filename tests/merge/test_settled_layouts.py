@@ -67,3 +67,18 @@ def test_only_so_many_layouts_are_kept(merge_folder):
         page.item("photo").w = width
         layouts.settle(page, template.project.physics)
     assert len(layouts.layouts) == 2
+
+
+def test_an_empty_column_leaves_out_a_background_picture_named_from_it(merge_folder):
+    """A background `pictures/{photo}` with an empty photo was "pictures/", a folder, and
+    failed the record; an empty column means no background picture, as an empty path did."""
+    path = merge_folder / "offer.toml"
+    path.write_text(path.read_text(encoding="utf-8").replace(
+        'background = {color = "#fff8ea"}',
+        'background = {picture = "pictures/{valid_until}"}'), encoding="utf-8")
+    template = MergeTemplate(path)
+    values = rows(2)
+    values[0][7], values[1][7] = "bread.png", ""
+    with_picture, without = (record(template, row) for row in values)
+    assert with_picture.pages[0].background.picture == "pictures/bread.png"
+    assert without.pages[0].background.picture is None

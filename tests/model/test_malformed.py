@@ -97,3 +97,18 @@ def test_a_custom_width_out_of_range_is_one_message_not_also_a_missing_key(tmp_p
     assert result.returncode == 1
     assert '"width_mm" must be between' in result.stderr
     assert "needs width_mm and height_mm" not in result.stderr
+
+
+def test_a_missing_picture_names_the_projects_folder_in_words(tmp_path):
+    """Run beside the project, the hint read "paths are relative to .; fix the path ..."
+    (user-walk-2): it names the project's folder, and the folder's path when there is one."""
+    path = tmp_path / "p.toml"
+    path.write_text('format = 1\n[[pages]]\nid = "p"\n[[pages.items]]\nid = "a"\n'
+                    'kind = "picture"\nx = 50\ny = 50\nw = 20\nh = 20\npath = "nope.jpg"\n')
+    for cwd, named, folder in ((tmp_path, "p.toml", "the project's folder;"),
+                               (tmp_path.parent, f"{tmp_path.name}/p.toml",
+                                f"the project's folder, {tmp_path.name};")):
+        result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "check", named],
+                                capture_output=True, text=True, timeout=120, cwd=cwd)
+        assert result.returncode == 1
+        assert f"paths are relative to {folder}" in result.stderr, result.stderr

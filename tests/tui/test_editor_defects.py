@@ -440,7 +440,8 @@ async def test_a_nudge_the_page_edge_stops_makes_no_edit_and_says_so(tmp_path):
             await pilot.press("tab")
         await pilot.press("right")
         assert not app.session.unsaved, "nothing moved"
-        assert messages(app)[-1] == "front-band is at the page's edge: no room to move that way"
+        assert messages(app)[-1] == ("front-band is at the edge of the page: "
+                                     "no room to move that way")
         await pilot.press("up")  # up it can go
         assert app.session.unsaved
 

@@ -189,6 +189,22 @@ async def test_the_footer_fits_its_width_keeps_the_essentials_and_what_matters_n
                 assert "delete" in item_footer and "insert" not in item_footer[:8]
 
 
+async def test_the_footer_fits_itself_again_when_the_terminal_is_resized(project_path):
+    """Opened at 80 columns and widened to 160 (a tmux pane resized), the footer kept the 80
+    column selection of keys until the next key; narrowed again, the keys it showed ran past
+    the width (user-walk-2)."""
+    async with editor(project_path, size=(80, 24)) as (app, pilot):
+        narrow = footer_actions(app)
+        await pilot.resize_terminal(160, 40)
+        await pilot.pause()
+        wide = footer_actions(app)
+        assert len(wide) > len(narrow) and set(narrow) <= set(wide)
+        await pilot.resize_terminal(80, 24)
+        await pilot.pause()
+        assert footer_actions(app) == narrow
+        assert screen_of(app).query_one(KeyBar).render().cell_len <= 80
+
+
 async def test_the_top_bar_keeps_the_unsaved_mark_and_the_anchor_state_at_80_columns(project_path):
     async with editor(project_path, size=(80, 24)) as (app, pilot):
         await pilot.press("tab", "tab", "tab", "tab", "tab")  # through the items to an anchored one

@@ -40,3 +40,19 @@ async def test_the_details_view_shows_the_alignment_measures(project_path):
         await pilot.pause()
         text = str(screen_of(app).query_one("StatusLine").render())
         assert "misses " in text and "lines " in text and "aligned " in text
+
+
+async def test_the_details_view_shows_the_alignment_measures_at_80_columns(project_path):
+    """At 80 columns the details line ran "... even 0.72 · balance 0.96 · misses 0.00" and
+    lost the edge lines and the share aligned off its end (user-walk-2, in tmux): at rest the
+    figures go first on the status's first line, which has room."""
+    from textual.geometry import Region
+
+    async with editor(project_path, size=(80, 24)) as (app, pilot):
+        await pilot.press("v")
+        await pilot.pause()
+        status = screen_of(app).query_one("StatusLine")
+        shown = " ".join(strip.text for strip in status.render_lines(
+            Region(0, 0, status.size.width, status.size.height)))
+        assert "misses " in shown and "lines " in shown and "aligned " in shown, shown
+        assert "overlaps" in shown and "gap " in shown, shown

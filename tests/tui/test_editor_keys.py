@@ -7,12 +7,14 @@ import sys
 import textwrap
 from pathlib import Path
 
+import pikepdf
 import pytest
 
 from editor_helpers import editor, item, position, preview_text, screen_of, type_text
 from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, PictureItem, PointAnchor, TextItem,
 )
+from floatpage.model import load_project
 from floatpage.tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -149,7 +151,9 @@ async def test_the_picture_dialog_takes_what_the_typesetter_reads(project_path):
     """One list of picture suffixes (the model's): a PDF is a picture, a text file is not."""
     folder = project_path.parent
     (folder / "notes.txt").write_text("not a picture")
-    (folder / "logo.pdf").write_bytes(b"%PDF-1.4\n%%EOF\n")
+    logo = pikepdf.new()
+    logo.add_blank_page(page_size=(200, 100))
+    logo.save(folder / "logo.pdf")
     async with editor(project_path) as (app, pilot):
         await pilot.press("p", "tab")
         await type_text(pilot, "notes.txt")
@@ -161,6 +165,28 @@ async def test_the_picture_dialog_takes_what_the_typesetter_reads(project_path):
         await pilot.press("enter")
         await pilot.pause()
         assert item(app, "picture-1").path == "logo.pdf"
+
+
+async def test_a_file_named_as_a_picture_that_is_none_is_refused(project_path):
+    """A text file named .jpg (or a PDF cut short) passed the dialog's suffix test; inserted
+    and saved, it made a project that check, render and the editor itself refuse to open
+    (user-walk-2). Typed, the dialog says why; picked in the tree, the editor does."""
+    folder = project_path.parent
+    (folder / "pictures" / "fake.jpg").write_text("not a picture")
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("p", "tab")
+        await type_text(pilot, "pictures/fake.jpg")
+        await pilot.press("enter")
+        error = str(app.screen.query_one("#picture-error").render())
+        assert app.screen.id == "picture-dialog" and "is not a picture" in error
+        await pilot.press("escape")
+        screen_of(app).insert_picture(folder / "pictures" / "fake.jpg")  # as the tree picks it
+        await pilot.pause()
+        assert "picture-1" not in app.session.page.item_ids()
+        assert any("fake.jpg" in note.message and "is not a picture" in note.message
+                   for note in app._notifications)
+        await pilot.press("ctrl+s")
+    load_project(project_path)  # still opens
 
 
 async def test_insert_a_picture_by_walking_the_tree(project_path):

@@ -174,6 +174,23 @@ async def test_a_merge_templates_picture_is_not_called_missing(tmp_path):
         assert "missing" not in text
 
 
+async def test_a_picture_that_is_there_but_cut_short_is_not_called_missing(tmp_path):
+    """A JPEG cut short (a copy that stopped) prints, with render's warning that its pixels
+    do not decode cleanly, but the preview said "missing pictures/sun.jpg" as if the file
+    were gone, sending the user to look for it (user-walk-2)."""
+    import shutil
+    from pathlib import Path
+
+    folder = tmp_path / "card"
+    shutil.copytree(Path(__file__).resolve().parents[2] / "sample_projects" / "greeting-card",
+                    folder)
+    whole = (folder / "pictures" / "sunflower.jpg").read_bytes()
+    (folder / "pictures" / "sunflower.jpg").write_bytes(whole[:3000])
+    async with editor(folder / "greeting-card.toml", size=(100, 32)) as (app, pilot):
+        text = " ".join(preview_text(app).split())
+        assert "unreadable" in text and "missing" not in text
+
+
 async def test_a_text_cut_short_ends_in_an_ellipsis(tmp_path):
     """At 80x24 the flyer's captions read "Sunfl" and "Coffe", as if that were all of them;
     a box that holds more text than its cells show ends its last line in "…"."""

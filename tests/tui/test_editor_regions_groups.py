@@ -4,10 +4,16 @@ anchors the group, and the preview draws regions and the selected item's group."
 
 from __future__ import annotations
 
+import pytest
+
 from floatpage.model import load_project, save_project
 from floatpage.model.document import BlockItem, Page, PointAnchor, Project, Region, TextItem
 from floatpage.tui.page_painter import GROUP, PAPER, REGION, mix
 from editor_helpers import editor, item, pixel, position, screen_of, type_text
+
+
+def messages(app) -> list[str]:
+    return [notification.message for notification in app._notifications]
 
 
 def select(app, item_id: str) -> None:
@@ -70,6 +76,70 @@ async def test_anchoring_a_member_anchors_the_group_by_its_lead(tmp_path):
         page = app.session.page
         assert isinstance(page.item("title").anchor, PointAnchor)
         assert page.item("sub").anchor is None
+
+
+async def test_u_on_any_member_takes_the_groups_anchor_off(tmp_path):
+    """`a` on any member anchors the group (by its lead); `u` on a member other than the lead
+    said '"sub" is not anchored' and left the group anchored, and the top bar showed no anchor
+    on that member at all (user-walk-2)."""
+    path = grouped_page(tmp_path / "g.toml")
+    async with editor(path) as (app, pilot):
+        select(app, "sub")
+        await keys(pilot, "a")
+        screen = screen_of(app)
+        bar = "".join(text for text, _ in screen.page_bar_runs())
+        assert "sub (text, 60×10 mm, anchored γ 1 by title)" in bar
+        await keys(pilot, "u")
+        page = app.session.page
+        assert page.item("title").anchor is None and page.item("sub").anchor is None
+        assert "anchored" not in "".join(text for text, _ in screen.page_bar_runs())
+        await keys(pilot, "ctrl+z")
+        assert isinstance(app.session.page.item("title").anchor, PointAnchor)
+
+
+async def test_a_held_item_stays_inside_its_region(tmp_path):
+    """A region's edges are walls for its items, as the page's are; the editor keeps a held
+    item on the page, but Shift+down carried a box confined to the top region 70 mm out of
+    it, shoving the others, and floated it back when let go (user-walk-2, in tmux)."""
+    path = grouped_page(tmp_path / "g.toml")
+    async with editor(path) as (app, pilot):
+        select(app, "box")
+        lowest = 0.0
+        for _ in range(10):
+            await pilot.press("J")
+            lowest = max(lowest, position(app, "box")[1] + 15.0)
+        assert lowest <= 140.0 + 1e-6, "the box's bottom left its region (0-140 mm)"
+        assert lowest > 130.0, "it went down to the region's edge"
+        screen_of(app).release_held()
+        await pilot.pause()
+        select(app, "box")
+        await pilot.press("J")
+        assert messages(app)[-1] == ('box is at the edge of its region "top": '
+                                     "no room to move that way")
+
+
+async def test_a_smaller_page_size_keeps_regions_on_the_page_and_the_file_opens(tmp_path):
+    """S, 4x6in on an A4 page with a region: the region kept its 210 x 140 mm and reached past
+    the 101.6 x 152.4 mm page, and the file saved was one no command would open ("region
+    reaches outside the page"); so could an item grown past its shrunk region (user-walk-2)."""
+    path = tmp_path / "g.toml"
+    save_project(Project(pages=[Page(id="p", regions=[Region("top", 0.0, 0.0, 210.0, 140.0)],
+                                     items=[
+        BlockItem(id="box", x=105.0, y=60.0, w=200.0, h=100.0, region="top"),
+        TextItem(id="title", x=105.0, y=220.0, w=60.0, h=15.0, text="Title"),
+    ])]), path)
+    async with editor(path) as (app, pilot):
+        await keys(pilot, "S")
+        assert app.screen.id == "page-size-dialog"
+        await keys(pilot, *["down"] * 5, "enter")  # from A4 to 4x6in
+        assert app.session.page.size == "4x6in"
+        await keys(pilot, "ctrl+s")
+    page = load_project(path).pages[0]  # opens: every region on the page, every item in it
+    left, top, right, bottom = page.region("top").box
+    assert (left, top) == (0.0, 0.0) and right <= 101.6 and bottom <= 152.4
+    assert bottom == pytest.approx(140.0 * 152.4 / 297.0, abs=0.01)  # its share of the page
+    box = page.item("box")
+    assert box.w <= right and box.h <= bottom
 
 
 async def test_the_preview_frames_regions_and_the_selected_group(tmp_path):

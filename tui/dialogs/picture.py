@@ -12,6 +12,7 @@ from textual.screen import ModalScreen
 from textual.widgets import DirectoryTree, Input, Label
 
 from floatpage.model.key_specs import PICTURE_SUFFIXES
+from floatpage.model.picture_files import read_header
 
 
 
@@ -61,6 +62,10 @@ class PictureDialog(ModalScreen[Path | None]):
         if path.suffix.lower() not in PICTURE_SUFFIXES:
             self.query_one("#picture-error", Label).update(
                 "not a picture (use " + ", ".join(PICTURE_SUFFIXES) + ")")
+            return
+        header = read_header(path)  # a text named .jpg: the loader would refuse the project
+        if header.problem:
+            self.query_one("#picture-error", Label).update(f"{path.name} {header.problem}")
             return
         self.dismiss(path)
 
