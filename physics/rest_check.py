@@ -31,6 +31,7 @@ from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
 from floatpage.physics.guides import ON_LINE_MM
+from floatpage.physics.line_hold import LineHold
 from floatpage.physics.stillness import PROBE_HEAT
 
 REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
@@ -82,6 +83,8 @@ class RestCheck:
             (np.concatenate([their_roots, their_roots, np.full(len(edges), -1)]),
              np.concatenate([their_roots, np.full(len(middles), -1)]))
             for edges, middles in self.page_lines]
+        self.lines = LineHold(bodies.centres, self.halves, self.active_rows, roots,
+                              group_members(roots, active), self.page_lines, self.line_roots)
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
@@ -176,10 +179,8 @@ class RestCheck:
         held_after = None
         if self.hold > 0:
             # the move changes no feature across its axis: only ``axis`` is found again
-            trial = centres.copy()
-            trial[members, axis] += shift
             held_after = held_before.copy()
-            held_after[:, axis] = self.on_lines(groups, trial, (axis,))[:, 0]
+            held_after[:, axis] = self.lines.held(groups, axis, members, shift)
         after = self.unheld(after_net, held_after)
         return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
 
@@ -207,7 +208,8 @@ class RestCheck:
         moves (``moved``), so a body whose moves fail one after the other works it out once."""
         found = self.before.get(key)
         if found is None:
-            held = self.on_lines(groups, self.bodies.centres, (0, 1)) if self.hold > 0 else None
+            held = (np.column_stack([self.lines.held(groups, axis) for axis in (0, 1)])
+                    if self.hold > 0 else None)
             net = self.group_net(rows, pairs, *self.bodies.centres.T.tolist(), groups, set())
             found = self.before[key] = (held, self.unheld(net, held))
         return found
@@ -215,6 +217,7 @@ class RestCheck:
     def moved(self, rows: np.ndarray) -> None:
         """``rows`` have moved: forget the forces worked out for the page as it was."""
         self.before.clear()
+        self.lines.moved(rows)
         pushes = self.pushes
         for row in rows.tolist():
             for pair in self.pairs_of[row].tolist():
