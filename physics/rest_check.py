@@ -30,7 +30,6 @@ from floatpage.physics.fast_forces import (
 from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
-from floatpage.physics.guides import ON_LINE_MM
 from floatpage.physics.line_hold import LineHold
 from floatpage.physics.stillness import PROBE_HEAT
 
@@ -76,7 +75,7 @@ class RestCheck:
         # the page's own guide lines per axis, (edges, centres): guides.page_lines
         self.page_lines = lines or [(np.zeros(0), np.zeros(0))] * 2
         self.active_rows = np.flatnonzero(active)
-        # per axis, whose each guide line is (on_lines): the active rows' low edges, their
+        # per axis, whose each guide line is (line_hold): the active rows' low edges, their
         # high edges and the page's edge lines (-1); their centres and the page's middle (-1)
         their_roots = roots[self.active_rows]
         self.line_roots = [
@@ -230,35 +229,6 @@ class RestCheck:
         if held is not None:
             size = np.where(held, np.maximum(size - self.hold, 0.0), size)
         return np.maximum(size[:, 0], size[:, 1])  # a reduction's set-up costs more
-
-    def on_lines(self, groups: np.ndarray, centres: np.ndarray,
-                 axes: tuple[int, ...]) -> np.ndarray:
-        """(len(groups), len(axes)): whether each group, with the items at ``centres``, has a
-        feature on a guide line on each of ``axes``, as the guides' hold finds it: an edge on
-        another group's edge or on a margin or region line, a centre on another group's centre
-        or on the page's middle (within ``ON_LINE_MM``)."""
-        sizes = [len(self.group_rows[g]) for g in groups]
-        rows = np.concatenate([self.group_rows[g] for g in groups])
-        owner = np.repeat(np.arange(len(groups)), sizes)
-        others = self.active_rows
-        mine_roots = self.roots[rows]
-        held = np.zeros((len(groups), len(axes)), dtype=bool)
-        for column, axis in enumerate(axes):
-            edge_roots, middle_roots = self.line_roots[axis]
-            other_edge = edge_roots[None, None, :] != mine_roots[:, None, None]
-            other_middle = middle_roots[None, :] != mine_roots[:, None]
-            page_edges, page_middles = self.page_lines[axis]
-            at, half = centres[:, axis], self.halves[:, axis]
-            theirs, spans = at[others], half[others]
-            edges = np.concatenate([theirs - spans, theirs + spans, page_edges])
-            middles = np.concatenate([theirs, page_middles])
-            mine = np.column_stack([at[rows] - half[rows], at[rows] + half[rows]])
-            on_edge = ((np.abs(mine[:, :, None] - edges[None, None, :]) <= ON_LINE_MM)
-                       & other_edge).any(axis=(1, 2))
-            on_middle = ((np.abs(at[rows][:, None] - middles[None, :]) <= ON_LINE_MM)
-                         & other_middle).any(axis=1)
-            held[:, column] = np.bincount(owner, on_edge | on_middle, len(groups)) > 0
-        return held
 
     def group_net(self, rows: list[int], pairs: list[int], xs: list[float], ys: list[float],
                   groups: np.ndarray, moving: set[int] | None = None) -> np.ndarray:
