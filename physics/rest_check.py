@@ -137,10 +137,19 @@ class RestCheck:
             if push is None:
                 continue
             push_x, push_y = push[0] * K_CONTACT, push[1] * K_CONTACT
-            for row, share, sums in ((j, share_j[pair], as_j), (i, share_i[pair], as_i)):
-                summed = sums.get(row)
-                if summed is None:
-                    summed = sums[row] = [0.0, 0.0]
+            # j's share, then i's, each added to a sum started at 0.0 (so a -0.0 share is 0.0)
+            share = share_j[pair]
+            summed = as_j.get(j)
+            if summed is None:
+                as_j[j] = [0.0 + push_x * share, 0.0 + push_y * share]
+            else:
+                summed[0] += push_x * share
+                summed[1] += push_y * share
+            share = share_i[pair]
+            summed = as_i.get(i)
+            if summed is None:
+                as_i[i] = [0.0 + push_x * share, 0.0 + push_y * share]
+            else:
                 summed[0] += push_x * share
                 summed[1] += push_y * share
         low_x, low_y, high_x, high_y, anchor_k, anchor_x, anchor_y = self.row_lists

@@ -60,6 +60,7 @@ MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64
 MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
 EVERY_MOVE = 1 << 30  # ... but once the sweeps end, every move (_Snapper.try_lesser)
 TOLERANCE_MM = 1e-9
+SORTED_IN_PYTHON = 24  # best_first: so many moves or fewer sort faster as tuples
 SORT_ALL_BELOW = 400  # options sorts fewer distances as they are, more once cut to the relevant
 NO_SHIFTS: tuple[float, ...] = ()
 STAY = np.zeros(1)  # the shift that leaves a body where it is, always a candidate
@@ -344,8 +345,8 @@ class _Snapper:
         if len(shifts) > MAX_CANDIDATES:  # perhaps a crowded page: the nearest lines only
             shifts = nearest_shifts(sorted_unique(shifts))
         scores = misses_after(ordered, shifts)
-        if scores.min() < now:  # most calls find no better move
-            better = (scores < now).nonzero()[0]
+        better = (scores < now).nonzero()[0]
+        if len(better):  # most calls find no better move
             found = Moves(roots, members,
                           *best_first(shifts[better], scores[better], now, self.tries),
                           missing, lined_up)
@@ -403,17 +404,20 @@ class _Snapper:
         halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
         clearance, far = self.clearance, self.clearance + self.farthest
         checks = []  # (its position, the member, their reach, gap across, the gap needed)
-        for other in self.neighbours(members, axis):
-            there, side, half, half_across = (along[other], beside[other], halves_along[other],
-                                              halves_across[other])
-            gaps = [(abs(side - beside[row]) - half_across - halves_across[row],
-                     abs(there - at) - (half + halves_along[row]))
-                    for row, at in zip(rows, current)]
-            if any(across < clearance and now < far for across, now in gaps):
-                for member, (row, (across, now)) in enumerate(zip(rows, gaps)):
+        if len(rows) == 1:  # most bodies: the loop below for one member, without its lists
+            row, at = rows[0], current[0]
+            mine_across, mine_half_across, mine_half = (beside[row], halves_across[row],
+                                                   halves_along[row])
+            for other in self.neighbours(members, axis):
+                there = along[other]
+                across = abs(beside[other] - mine_across) - halves_across[other] - mine_half_across
+                now = abs(there - at) - (halves_along[other] + mine_half)
+                if across < clearance and now < far:
                     needed = min(max(now, across), clearance) - TOLERANCE_MM
-                    if not across >= needed:  # else every shift passes: max(gap, across)
-                        checks.append((there, member, half + halves_along[row], across, needed))
+                    if not across >= needed:
+                        checks.append((there, 0, halves_along[other] + mine_half, across, needed))
+        else:
+            checks = self.checks(members, axis, rows, current, along, beside)
         if not checks:
             return inside
         fitting = []
@@ -425,6 +429,27 @@ class _Snapper:
             else:
                 fitting.append(shift)
         return fitting
+
+    def checks(self, members: np.ndarray, axis: int, rows: list[int], current: list[float],
+               along: list[float], beside: list[float]) -> list[tuple]:
+        """fits' tests of a body of several members: per neighbour and member that a move
+        could bring within the clearance, (its position, the member, their reach, the gap
+        across, the gap needed)."""
+        halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
+        clearance, far = self.clearance, self.clearance + self.farthest
+        checks = []
+        for other in self.neighbours(members, axis):
+            there, side, half, half_across = (along[other], beside[other], halves_along[other],
+                                              halves_across[other])
+            gaps = [(abs(side - beside[row]) - half_across - halves_across[row],
+                     abs(there - at) - (half + halves_along[row]))
+                    for row, at in zip(rows, current)]
+            if any(across < clearance and now < far for across, now in gaps):
+                for member, (row, (across, now)) in enumerate(zip(rows, gaps)):
+                    needed = min(max(now, across), clearance) - TOLERANCE_MM
+                    if not across >= needed:  # else every shift passes: max(gap, across)
+                        checks.append((there, member, half + halves_along[row], across, needed))
+        return checks
 
     def neighbours(self, members: np.ndarray, axis: int) -> list[int]:
         """The other active rows that the rigid body ``members`` might come within the
@@ -600,9 +625,20 @@ def best_first(shifts: np.ndarray, scores: np.ndarray, now: int,
                tries: int = MAX_TRIES) -> tuple[tuple[float, ...], float]:
     """The moves that lower the score, ``shifts`` (perhaps some twice) and their ``scores``,
     ordered best first: the fewest misses, then the shortest move, then the lower; each once,
-    at most ``tries``; and what the best gains over ``now``."""
+    at most ``tries``; and what the best gains over ``now``.  A few are sorted as Python
+    tuples (the same keys, so the same order), which costs less than a lexsort's set-up."""
+    if len(shifts) <= SORTED_IN_PYTHON:
+        values = shifts.tolist()
+        keyed = sorted(zip(scores.tolist(), map(abs, values), values))
+        chosen: list[float] = []
+        for _, _, shift in keyed:
+            if not chosen or shift != chosen[-1]:
+                chosen.append(shift)
+                if len(chosen) == tries:
+                    break
+        return tuple(chosen), (now - keyed[0][0]) / 2
     order = np.lexsort((shifts, np.abs(shifts), scores)).tolist()
-    chosen: list[float] = []
+    chosen = []
     for shift in shifts[order].tolist():
         if not chosen or shift != chosen[-1]:  # equal shifts have equal keys: side by side
             chosen.append(shift)
