@@ -382,9 +382,10 @@ class _Snapper:
 
         Only the items a move could bring within the clearance are tested: within it of a
         member across the axis, and within it and the longest move along it (on a 600-item
-        page the test against every item was two thirds of the snapping's time).  The test is
-        plain Python on floats: a body meets a handful of neighbours and tries at most
-        ``MAX_TRIES`` moves, and NumPy's set-up per call cost more than the arithmetic."""
+        page the test against every item was two thirds of the snapping's time).  For a body of
+        one item the test is plain Python on floats: it meets a handful of neighbours and tries
+        at most ``MAX_TRIES`` moves, and NumPy's set-up per call cost more than the arithmetic;
+        a body of several (a line) is tested in NumPy (body_fits)."""
         rows = members.tolist()
         centres = self.bodies.centres
         along = centres[:, axis].tolist()
@@ -400,56 +401,64 @@ class _Snapper:
                 low <= at + shift <= high for at, (low, high) in zip(current, limits))]
         if not inside:
             return inside
+        if len(rows) > 1:
+            return self.body_fits(members, axis, inside)
         beside = centres[:, 1 - axis].tolist()
         halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
         clearance, far = self.clearance, self.clearance + self.farthest
-        checks = []  # (its position, the member, their reach, gap across, the gap needed)
-        if len(rows) == 1:  # most bodies: the loop below for one member, without its lists
-            row, at = rows[0], current[0]
-            mine_across, mine_half_across, mine_half = (beside[row], halves_across[row],
-                                                   halves_along[row])
-            for other in self.neighbours(members, axis):
-                there = along[other]
-                across = abs(beside[other] - mine_across) - halves_across[other] - mine_half_across
-                now = abs(there - at) - (halves_along[other] + mine_half)
-                if across < clearance and now < far:
-                    needed = min(max(now, across), clearance) - TOLERANCE_MM
-                    if not across >= needed:
-                        checks.append((there, 0, halves_along[other] + mine_half, across, needed))
-        else:
-            checks = self.checks(members, axis, rows, current, along, beside)
+        row, at = rows[0], current[0]
+        mine_across, mine_half_across, mine_half = (beside[row], halves_across[row],
+                                               halves_along[row])
+        checks = []  # (its position, their reach, the gap across, the gap needed)
+        for other in self.neighbours(members, axis):
+            there = along[other]
+            across = abs(beside[other] - mine_across) - halves_across[other] - mine_half_across
+            now = abs(there - at) - (halves_along[other] + mine_half)
+            if across < clearance and now < far:
+                needed = min(max(now, across), clearance) - TOLERANCE_MM
+                if not across >= needed:  # else every shift passes: max(gap, across)
+                    checks.append((there, halves_along[other] + mine_half, across, needed))
         if not checks:
             return inside
         fitting = []
         for shift in inside:
-            moved = [at + shift for at in current]
-            for there, member, reach, across, needed in checks:  # a loop: no generator's cost
-                if not max(abs(there - moved[member]) - reach, across) >= needed:
+            moved = at + shift
+            for there, reach, across, needed in checks:  # a loop: no generator's cost
+                if not max(abs(there - moved) - reach, across) >= needed:
                     break
             else:
                 fitting.append(shift)
         return fitting
 
-    def checks(self, members: np.ndarray, axis: int, rows: list[int], current: list[float],
-               along: list[float], beside: list[float]) -> list[tuple]:
-        """fits' tests of a body of several members: per neighbour and member that a move
-        could bring within the clearance, (its position, the member, their reach, the gap
-        across, the gap needed)."""
-        halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
-        clearance, far = self.clearance, self.clearance + self.farthest
-        checks = []
-        for other in self.neighbours(members, axis):
-            there, side, half, half_across = (along[other], beside[other], halves_along[other],
-                                              halves_across[other])
-            gaps = [(abs(side - beside[row]) - half_across - halves_across[row],
-                     abs(there - at) - (half + halves_along[row]))
-                    for row, at in zip(rows, current)]
-            if any(across < clearance and now < far for across, now in gaps):
-                for member, (row, (across, now)) in enumerate(zip(rows, gaps)):
-                    needed = min(max(now, across), clearance) - TOLERANCE_MM
-                    if not across >= needed:  # else every shift passes: max(gap, across)
-                        checks.append((there, member, half + halves_along[row], across, needed))
-        return checks
+    def body_fits(self, members: np.ndarray, axis: int, inside: list[float]) -> list[float]:
+        """fits for a body of several members (a line: a dozen members, dozens of neighbours),
+        its tests as (neighbours, members) tables: the same subtractions and comparisons of
+        the same floats as fits' loop, in NumPy, since here the arithmetic outweighs the calls
+        (the loop was a tenth of the snap on a page of 120 items)."""
+        others = self.neighbours(members, axis)
+        if not others:
+            return inside
+        others = np.array(others)
+        centres, halves = self.bodies.centres, self.halves
+        there = centres[others, axis][:, None]
+        at = centres[members, axis]
+        across = (np.abs(centres[others, 1 - axis][:, None] - centres[members, 1 - axis])
+                  - halves[others, 1 - axis][:, None] - halves[members, 1 - axis])
+        reach = halves[others, axis][:, None] + halves[members, axis]
+        now = np.abs(there - at) - reach
+        clearance = self.clearance
+        close = (across < clearance) & (now < clearance + self.farthest)
+        needed = np.minimum(np.maximum(now, across), clearance) - TOLERANCE_MM
+        tested = ~(across >= needed)  # else every shift passes: max(gap, across)
+        tested &= (close @ trues(len(members)))[:, None]  # a neighbour close to any member
+        near, member = tested.nonzero()
+        if not len(near):
+            return inside
+        there, at = there[near, 0], at[member]
+        reach, across, needed = reach[near, member], across[near, member], needed[near, member]
+        moved = at + np.array(inside)[:, None]  # (shifts, tests)
+        passes = (np.maximum(np.abs(there - moved) - reach, across) >= needed).all(axis=1)
+        return [shift for shift, fits in zip(inside, passes.tolist()) if fits]
 
     def neighbours(self, members: np.ndarray, axis: int) -> list[int]:
         """The other active rows that the rigid body ``members`` might come within the
