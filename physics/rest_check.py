@@ -103,7 +103,7 @@ class RestCheck:
                           self.anchor_k.tolist(), self.anchors[:, 0].tolist(),
                           self.anchors[:, 1].tolist())
         self.reach_of: dict[bytes, tuple[np.ndarray, list[int], list[int]]] = {}
-        self.before: dict[bytes, tuple[np.ndarray | None, np.ndarray]] = {}
+        self.before: dict[int, tuple[np.ndarray | None, float]] = {}  # per group: as_it_is
         self.pushes: dict[int, tuple[float, float] | None] = {}  # per pair, on the page as it is
 
     def net(self, rows: list[int], pairs: list[int], xs: list[float], ys: list[float],
@@ -181,15 +181,20 @@ class RestCheck:
             along[row] += shift
         after_net = self.group_net(rows, pairs, *((along, across) if axis == 0
                                                   else (across, along)), groups, set(moving))
-        if np.maximum.reduce(np.abs(after_net), axis=None) <= self.limit + 1e-9:
+        size = np.abs(after_net)
+        over = (np.maximum(size[:, 0], size[:, 1]) > self.limit + 1e-9).nonzero()[0]
+        if not len(over):
             return True  # within the limit with no hold at all: which lines hold is moot
-        held_before, before = self.as_it_is(members.tobytes(), groups, rows, pairs)
+        # only a group over the limit may fail: the hold only lowers a push (unheld), and the
+        # bound is at least the limit; so only those are looked at as they are and held
+        failing = groups[over]
+        held_before, before = self.as_it_is(failing)
         held_after = None
         if self.hold > 0:
             # the move changes no feature across its axis: only ``axis`` is found again
             held_after = held_before.copy()
-            held_after[:, axis] = self.lines.held(groups, axis, members, shift)
-        after = self.unheld(after_net, held_after)
+            held_after[:, axis] = self.lines.held(failing, axis, members, shift)
+        after = self.unheld(after_net[over], held_after)
         return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
 
     def reached_by(self, members: np.ndarray) -> tuple[np.ndarray, list[int], list[int]]:
@@ -209,18 +214,28 @@ class RestCheck:
             found = self.reach_of[key] = (groups, rows.tolist(), pairs.tolist())
         return found
 
-    def as_it_is(self, key: bytes, groups: np.ndarray, rows: list[int],
-                 pairs: list[int]) -> tuple[np.ndarray | None, np.ndarray]:
-        """For the groups a body touches, with the page as it is: whether a line holds each on
-        each axis (None without a hold) and the push the hold leaves.  The same until an item
-        moves (``moved``), so a body whose moves fail one after the other works it out once."""
-        found = self.before.get(key)
-        if found is None:
-            held = (np.column_stack([self.lines.held(groups, axis) for axis in (0, 1)])
+    def as_it_is(self, groups: np.ndarray) -> tuple[np.ndarray | None, np.ndarray]:
+        """For ``groups``, with the page as it is: whether a line holds each on each axis (None
+        without a hold) and the push the hold leaves.  Kept per group until an item moves
+        (``moved``), so the groups of a body whose moves fail one after the other, and those
+        its neighbours' moves push too, are worked out once.  (Each group's is its own: its
+        rows' sums run over their own pairs in order, whichever other rows are summed.)"""
+        known = self.before
+        missing = [group for group in groups.tolist() if group not in known]
+        if missing:
+            found = np.array(missing)
+            held = (np.column_stack([self.lines.held(found, axis) for axis in (0, 1)])
                     if self.hold > 0 else None)
-            net = self.group_net(rows, pairs, *self.bodies.centres.T.tolist(), groups, set())
-            found = self.before[key] = (held, self.unheld(net, held))
-        return found
+            rows = np.concatenate([self.group_rows[group] for group in missing])
+            pairs = sorted_unique(np.concatenate([self.pairs_of[row] for row in rows]))
+            net = self.group_net(rows.tolist(), pairs.tolist(), *self.bodies.centres.T.tolist(),
+                                 found, set())
+            for group, held_now, push in zip(missing, held if held is not None else
+                                             [None] * len(missing), self.unheld(net, held)):
+                known[group] = (held_now, push)
+        entries = [known[group] for group in groups.tolist()]
+        held = np.array([held for held, _ in entries]) if self.hold > 0 else None
+        return held, np.array([push for _, push in entries])
 
     def moved(self, rows: np.ndarray) -> None:
         """``rows`` have moved: forget the forces worked out for the page as it was."""
