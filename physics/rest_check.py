@@ -102,6 +102,10 @@ class RestCheck:
                           self.rest_high[:, 0].tolist(), self.rest_high[:, 1].tolist(),
                           self.anchor_k.tolist(), self.anchors[:, 0].tolist(),
                           self.anchors[:, 1].tolist())
+        # what reached_by reads, as Python lists
+        self.pair_lists_of = [pairs.tolist() for pairs in self.pairs_of]
+        self.root_list, self.movable_list = roots.tolist(), self.movable.tolist()
+        self.group_row_lists = [rows.tolist() for rows in self.group_rows]
         self.reach_of: dict[bytes, tuple[np.ndarray, list[int], list[int]]] = {}
         self.before: dict[int, tuple[np.ndarray | None, float]] = {}  # per group: as_it_is
         self.pushes: dict[int, tuple[float, float] | None] = {}  # per pair, on the page as it is
@@ -200,18 +204,22 @@ class RestCheck:
     def reached_by(self, members: np.ndarray) -> tuple[np.ndarray, list[int], list[int]]:
         """The movable groups that the rigid body ``members`` touches (itself among them), their
         rows and every pair that touches those: fixed by the pairs found at the start, so
-        worked out once per body."""
+        worked out once per body, in Python sets (a body touches a handful of groups, and
+        half the bodies a snap checks are checked once)."""
         key = members.tobytes()
         found = self.reach_of.get(key)
         if found is None:
-            touching = np.concatenate([self.pairs_of[m] for m in members])
-            touched = np.concatenate([members, self.i[touching], self.j[touching]])
-            groups = sorted_unique(self.roots[touched])
-            groups = groups[self.movable[groups]]
-            rows = np.concatenate([self.group_rows[g] for g in groups]) if len(groups) else groups
-            pairs = (sorted_unique(np.concatenate([self.pairs_of[r] for r in rows]))
-                     if len(groups) else groups)
-            found = self.reach_of[key] = (groups, rows.tolist(), pairs.tolist())
+            ends_i, ends_j = self.pair_lists[:2]
+            pairs_of, roots, movable = self.pair_lists_of, self.root_list, self.movable_list
+            touched = set(members.tolist())
+            for member in members.tolist():
+                for pair in pairs_of[member]:
+                    touched.add(ends_i[pair])
+                    touched.add(ends_j[pair])
+            groups = sorted({roots[row] for row in touched if movable[roots[row]]})
+            rows = [row for group in groups for row in self.group_row_lists[group]]
+            pairs = sorted({pair for row in rows for pair in pairs_of[row]})
+            found = self.reach_of[key] = (np.array(groups, dtype=self.roots.dtype), rows, pairs)
         return found
 
     def as_it_is(self, groups: np.ndarray) -> tuple[np.ndarray | None, np.ndarray]:
@@ -226,10 +234,9 @@ class RestCheck:
             found = np.array(missing)
             held = (np.column_stack([self.lines.held(found, axis) for axis in (0, 1)])
                     if self.hold > 0 else None)
-            rows = np.concatenate([self.group_rows[group] for group in missing])
-            pairs = sorted_unique(np.concatenate([self.pairs_of[row] for row in rows]))
-            net = self.group_net(rows.tolist(), pairs.tolist(), *self.bodies.centres.T.tolist(),
-                                 found, set())
+            rows = [row for group in missing for row in self.group_row_lists[group]]
+            pairs = sorted({pair for row in rows for pair in self.pair_lists_of[row]})
+            net = self.group_net(rows, pairs, *self.bodies.centres.T.tolist(), found, set())
             for group, held_now, push in zip(missing, held if held is not None else
                                              [None] * len(missing), self.unheld(net, held)):
                 known[group] = (held_now, push)
