@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from floatpage.physics.guides import ON_LINE_MM
+from floatpage.physics.snap_scoring import trues
 
 
 class LineHold:
@@ -99,14 +100,3 @@ class LineHold:
             return row_held
         return np.bincount(owner, row_held, len(groups)) > 0
 
-
-_TRUES: dict[int, np.ndarray] = {}
-
-
-def trues(width: int) -> np.ndarray:
-    """A kept vector of ``width`` Trues: a boolean (k, width) table @ it is each row's any()
-    (as physics.snapping.trues, without the set-up of a NumPy reduction)."""
-    found = _TRUES.get(width)
-    if found is None:
-        found = _TRUES[width] = np.ones(width, dtype=bool)
-    return found
