@@ -102,6 +102,9 @@ class RestCheck:
                           self.rest_high[:, 0].tolist(), self.rest_high[:, 1].tolist(),
                           self.anchor_k.tolist(), self.anchors[:, 0].tolist(),
                           self.anchors[:, 1].tolist())
+        # the centres as Python lists, per axis, kept in step by moved: a check copies one
+        # (pointers) instead of making a float object of every centre
+        self.centre_lists = bodies.centres.T.tolist()
         # what reached_by reads, as Python lists
         self.pair_lists_of = [pairs.tolist() for pairs in self.pairs_of]
         self.root_list, self.movable_list = roots.tolist(), self.movable.tolist()
@@ -178,8 +181,7 @@ class RestCheck:
         groups, rows, pairs = self.reached_by(members)
         if len(groups) == 0:
             return True
-        centres = self.bodies.centres
-        along, across = centres[:, axis].tolist(), centres[:, 1 - axis].tolist()
+        along, across = self.centre_lists[axis].copy(), self.centre_lists[1 - axis]
         moving = members.tolist()
         for row in moving:
             along[row] += shift
@@ -236,7 +238,7 @@ class RestCheck:
                     if self.hold > 0 else None)
             rows = [row for group in missing for row in self.group_row_lists[group]]
             pairs = sorted({pair for row in rows for pair in self.pair_lists_of[row]})
-            net = self.group_net(rows, pairs, *self.bodies.centres.T.tolist(), found, set())
+            net = self.group_net(rows, pairs, *self.centre_lists, found, set())
             for group, held_now, push in zip(missing, held if held is not None else
                                              [None] * len(missing), self.unheld(net, held)):
                 known[group] = (held_now, push)
@@ -248,6 +250,9 @@ class RestCheck:
         """``rows`` have moved: forget the forces worked out for the page as it was."""
         self.before.clear()
         self.lines.moved(rows)
+        xs, ys = self.centre_lists
+        for row, (x, y) in zip(rows.tolist(), self.bodies.centres[rows].tolist()):
+            xs[row], ys[row] = x, y
         pushes = self.pushes
         for row in rows.tolist():
             for pair in self.pairs_of[row].tolist():

@@ -154,6 +154,8 @@ class _Snapper:
         self.relevant = relevant_distance(self.farthest)
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
         self.half_lists = [self.halves[:, axis].tolist() for axis in (0, 1)]
+        # the centres as Python lists per axis, kept in step by attempt (fits reads a handful)
+        self.centre_lists = bodies.centres.T.tolist()
         self.limit_lists = [(self.lowest[:, axis].tolist(), self.highest[:, axis].tolist())
                             for axis in (0, 1)]
         # per group and axis: too large to fit between its margins (it has no move to make)
@@ -355,7 +357,11 @@ class _Snapper:
                 for root in moves.roots:
                     self.moved_from[root] = self.mine(root, axis)
                 before = self.lines[axis][members]
-                self.bodies.centres[members, axis] += shift
+                centres = self.bodies.centres
+                centres[members, axis] += shift
+                along = self.centre_lists[axis]
+                for member, at in zip(members.tolist(), centres[members, axis].tolist()):
+                    along[member] = at
                 for tables in self.tables.values():
                     tables[axis][members] += shift
                 self.memo.moved(axis, before, self.lines[axis][members])
@@ -377,8 +383,7 @@ class _Snapper:
         at most ``MAX_TRIES`` moves, and NumPy's set-up per call cost more than the arithmetic;
         a body of several (a line) is tested in NumPy (body_fits)."""
         rows = members.tolist()
-        centres = self.bodies.centres
-        along = centres[:, axis].tolist()
+        along = self.centre_lists[axis]
         current = [along[row] for row in rows]
         lowest, highest = self.limit_lists[axis]
         limits = [(min(lowest[row], at) - TOLERANCE_MM, max(highest[row], at) + TOLERANCE_MM)
@@ -393,7 +398,7 @@ class _Snapper:
             return inside
         if len(rows) > 1:
             return self.body_fits(members, axis, inside)
-        beside = centres[:, 1 - axis].tolist()
+        beside = self.centre_lists[1 - axis]
         halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
         clearance, far = self.clearance, self.clearance + self.farthest
         row, at = rows[0], current[0]
