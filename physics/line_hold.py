@@ -44,10 +44,10 @@ class LineHold:
             self.middles.append(np.concatenate([theirs, page_middles]))
         self.owners: dict[bytes, tuple] = {}
 
-    def moved(self, rows: np.ndarray) -> None:
-        """``rows`` (active) have moved: their lines on both axes from their centres now."""
+    def moved(self, rows: np.ndarray, axes: tuple[int, ...] = (0, 1)) -> None:
+        """``rows`` (active) have moved along ``axes``: their lines there from their centres."""
         slots = self.slot[rows]
-        for axis in (0, 1):
+        for axis in axes:
             at, half = self.centres[rows, axis], self.halves[rows, axis]
             self.edges[axis][slots] = at - half
             self.edges[axis][slots + self.count] = at + half

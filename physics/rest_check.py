@@ -246,16 +246,18 @@ class RestCheck:
         held = np.array([held for held, _ in entries]) if self.hold > 0 else None
         return held, np.array([push for _, push in entries])
 
-    def moved(self, rows: np.ndarray) -> None:
-        """``rows`` have moved: forget the forces worked out for the page as it was."""
+    def moved(self, rows: np.ndarray, axes: tuple[int, ...] = (0, 1)) -> None:
+        """``rows`` have moved (along ``axes``): forget the forces worked out for the page as
+        it was."""
         self.before.clear()
-        self.lines.moved(rows)
-        xs, ys = self.centre_lists
-        for row, (x, y) in zip(rows.tolist(), self.bodies.centres[rows].tolist()):
-            xs[row], ys[row] = x, y
+        self.lines.moved(rows, axes)
+        for axis in axes:
+            column = self.centre_lists[axis]
+            for row, at in zip(rows.tolist(), self.bodies.centres[rows, axis].tolist()):
+                column[row] = at
         pushes = self.pushes
         for row in rows.tolist():
-            for pair in self.pairs_of[row].tolist():
+            for pair in self.pair_lists_of[row]:
                 pushes.pop(pair, None)
 
     def unheld(self, acc: np.ndarray, held: np.ndarray | None) -> np.ndarray:

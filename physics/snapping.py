@@ -366,7 +366,7 @@ class _Snapper:
                     tables[axis][members] += shift
                 self.memo.moved(axis, before, self.lines[axis][members])
                 if self.rest is not None:
-                    self.rest.moved(members)
+                    self.rest.moved(members, (axis,))
                 return True
         return False
 

@@ -66,8 +66,8 @@ class CheckedHold(LineHold):
         self.held_some += sum(plain)
         return found
 
-    def moved(self, rows):
-        super().moved(rows)
+    def moved(self, rows, axes=(0, 1)):
+        super().moved(rows, axes)
         every = np.flatnonzero(self.roots == np.arange(len(self.roots)))
         every = every[self.slot[every] >= 0]
         for axis in (0, 1):
