@@ -185,10 +185,16 @@ class RestCheck:
         moving = members.tolist()
         for row in moving:
             along[row] += shift
-        after_net = self.group_net(rows, pairs, *((along, across) if axis == 0
-                                                  else (across, along)), groups, set(moving))
-        size = np.abs(after_net)
-        over = (np.maximum(size[:, 0], size[:, 1]) > self.limit + 1e-9).nonzero()[0]
+        per_row = self.net(rows, pairs, *((along, across) if axis == 0 else (across, along)),
+                           set(moving))
+        if self.grouped:
+            after_net = self.group_sums(per_row, rows, groups)
+            size = np.abs(after_net)
+            over = (np.maximum(size[:, 0], size[:, 1]) > self.limit + 1e-9).nonzero()[0]
+        else:  # every group one row: the few sums tested as floats, no arrays unless needed
+            limit = self.limit + 1e-9
+            over = [k for k, (x, y) in enumerate(per_row) if max(abs(x), abs(y)) > limit]
+            after_net = np.array(per_row) if over else None
         if not len(over):
             return True  # within the limit with no hold at all: which lines hold is moot
         # only a group over the limit may fail: the hold only lowers a push (unheld), and the
