@@ -9,8 +9,9 @@ run (another branch) snaps each kept input again and compares, bit for bit.
 
 The inputs are the bodies snap_page is handed while these settle: the alignment benchmark's
 scenes (which are guide_cost's) the `floatpage settle` way (model.layout.settle_project) and the
-Engine.settle way, and benchmarks/physics.py's fresh scenes from seeds 3000-3015 and 5100-5115
-(Engine.settle).  A snap that changes no move changes no later input either, so one recording
+Engine.settle way, benchmarks/physics.py's fresh scenes from seeds 3000-3015 and 5100-5115
+(Engine.settle), and anchored_pages.py's pages with soft and hard anchors and followers (the
+snap's groups of several rows; `floatpage settle`'s way).  A snap that changes no move changes no later input either, so one recording
 serves every such change; a change meant to alter the moves shows here which pages it alters.
 
 Why a recording and not a hash (snap_speed.py prints one): a hash says *that* something moved,
@@ -39,15 +40,19 @@ from floatpage.model.layout import settle_project
 from floatpage.physics.snapping import snap_page
 
 from alignment import benchmark_scenes, random_scenes, scene_project
+from anchored_pages import random_project
 from seeded_scenes import fresh_scenes
 from snap_speed import loaded, roomy_scenes
 
 FRESH_SEEDS = (3000, 5100)
+ANCHORED = [(seed, "mixed") for seed in range(27000, 27012)] + [
+    (seed, "follow") for seed in range(27100, 27106)]  # followers: groups of several rows
 
 
 def capture() -> list[tuple[str, tuple]]:
     """(label, snap_page's arguments) for every snap the settles ask for; a label starts with
-    the set of pages ("guide_cost", "roomy" or "fresh"), then the settle and the scene."""
+    the set of pages ("guide_cost", "roomy", "fresh" or "anchored"), then the settle and the
+    scene."""
     captured: list[tuple[str, tuple]] = []
     label = [""]
 
@@ -68,6 +73,9 @@ def capture() -> list[tuple[str, tuple]]:
                 kind = "roomy" if scene.name in roomy else "fresh"
                 label[0] = f"{kind} Engine.settle {scene.name}"
                 loaded(scene).settle()
+        for seed, kind in ANCHORED:
+            label[0] = f"anchored settle {kind} seed {seed}"
+            settle_project(random_project(seed, kind))
     finally:
         engine_module.snap_page = snap_page
     return captured

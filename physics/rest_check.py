@@ -277,7 +277,13 @@ class RestCheck:
     def group_net(self, rows: list[int], pairs: list[int], xs: list[float], ys: list[float],
                   groups: np.ndarray, moving: set[int] | None = None) -> np.ndarray:
         """Each group's net acceleration, (len(groups), 2) (``moving``: as ``net``'s)."""
-        per_row = np.array(self.net(rows, pairs, xs, ys, moving))
+        return self.group_sums(self.net(rows, pairs, xs, ys, moving), rows, groups)
+
+    def group_sums(self, per_row: list[tuple[float, float]], rows: list[int],
+                   groups: np.ndarray) -> np.ndarray:
+        """Each group's net acceleration, (len(groups), 2), from its ``rows``' (``per_row``,
+        the rows of ``groups`` in their order)."""
+        per_row = np.array(per_row)
         if not self.grouped:  # every group one row: its own
             return per_row
         summed = np.zeros((self.bodies.count, 2))
