@@ -105,3 +105,27 @@ def test_scoring_the_relevant_distances_makes_the_moves_of_scoring_them_all(monk
     half = len(snapped) // 2
     assert all(moves > 20 for moves, _ in snapped)
     assert snapped[:half] == snapped[half:]
+
+
+def test_the_kept_lines_hold_on_pages_with_followers():
+    """Groups of several rows (captions and the like following an item) move as one and hold
+    as one: the same check on anchored pages whose items follow others."""
+    from anchored_pages import random_project
+    from floatpage.model.layout import engine_for_page
+
+    grouped = 0
+    for seed in (27100, 27101, 27103):
+        project = random_project(seed, "follow")
+        engine = engine_for_page(project.pages[0], project.physics)
+        engine.reheat()
+        engine.settle(finalize=False)
+        bodies, params = engine.bodies, engine.params
+        page = (engine.page_w_mm, engine.page_h_mm)
+        clearance, margin, rest = snap_limits(bodies, *page, params)
+        lines = rest.lines
+        lines.__class__, lines.compared, lines.held_some = CheckedHold, 0, 0
+        lines.page_lines = rest.page_lines
+        moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest)
+        assert moves > 5 and lines.compared > 50, (seed, moves, lines.compared)
+        grouped += lines.grouped
+    assert grouped == 3
