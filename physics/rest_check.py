@@ -249,7 +249,7 @@ class RestCheck:
                                              [None] * len(missing), self.unheld(net, held)):
                 known[group] = (held_now, push)
         entries = [known[group] for group in groups.tolist()]
-        held = np.array([held for held, _ in entries]) if self.hold > 0 else None
+        held = np.array([holds for holds, _ in entries]) if self.hold > 0 else None
         return held, np.array([push for _, push in entries])
 
     def moved(self, rows: np.ndarray, axes: tuple[int, ...] = (0, 1)) -> None:
