@@ -40,9 +40,11 @@ import numpy as np
 from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM, measure_alignment
 from floatpage.physics.guides import CENTRE, HIGH, LOW
+from floatpage.physics.snap_scoring import (
+    ALIGNED_MM as SNAP_ALIGNED_MM, candidate_shifts, misses_after,
+)
 from floatpage.physics.snapping import (
-    ALIGNED_MM as SNAP_ALIGNED_MM, NUDGE_MM, TOLERANCE_MM, _Snapper, THEIRS_COLUMNS, candidate_shifts,
-    misses_after, snap_limits, snap_to_guides,
+    NUDGE_MM, TOLERANCE_MM, _Snapper, THEIRS_COLUMNS, snap_limits, snap_to_guides,
 )
 from alignment import benchmark_scenes, random_scenes, scene_project
 from guide_cost import fresh_scenes

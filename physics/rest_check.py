@@ -30,7 +30,7 @@ from floatpage.physics.fast_forces import (
 from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
-from floatpage.physics.guides import ON_LINE_MM
+from floatpage.physics.line_hold import LineHold
 from floatpage.physics.stillness import PROBE_HEAT
 
 REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
@@ -75,13 +75,15 @@ class RestCheck:
         # the page's own guide lines per axis, (edges, centres): guides.page_lines
         self.page_lines = lines or [(np.zeros(0), np.zeros(0))] * 2
         self.active_rows = np.flatnonzero(active)
-        # per axis, whose each guide line is (on_lines): the active rows' low edges, their
+        # per axis, whose each guide line is (line_hold): the active rows' low edges, their
         # high edges and the page's edge lines (-1); their centres and the page's middle (-1)
         their_roots = roots[self.active_rows]
         self.line_roots = [
             (np.concatenate([their_roots, their_roots, np.full(len(edges), -1)]),
              np.concatenate([their_roots, np.full(len(middles), -1)]))
             for edges, middles in self.page_lines]
+        self.lines = LineHold(bodies.centres, self.halves, self.active_rows, roots,
+                              group_members(roots, active), self.page_lines, self.line_roots)
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
@@ -100,8 +102,15 @@ class RestCheck:
                           self.rest_high[:, 0].tolist(), self.rest_high[:, 1].tolist(),
                           self.anchor_k.tolist(), self.anchors[:, 0].tolist(),
                           self.anchors[:, 1].tolist())
+        # the centres as Python lists, per axis, kept in step by moved: a check copies one
+        # (pointers) instead of making a float object of every centre
+        self.centre_lists = bodies.centres.T.tolist()
+        # what reached_by reads, as Python lists
+        self.pair_lists_of = [pairs.tolist() for pairs in self.pairs_of]
+        self.root_list, self.movable_list = roots.tolist(), self.movable.tolist()
+        self.group_row_lists = [rows.tolist() for rows in self.group_rows]
         self.reach_of: dict[bytes, tuple[np.ndarray, list[int], list[int]]] = {}
-        self.before: dict[bytes, tuple[np.ndarray | None, np.ndarray]] = {}
+        self.before: dict[int, tuple[np.ndarray | None, float]] = {}  # per group: as_it_is
         self.pushes: dict[int, tuple[float, float] | None] = {}  # per pair, on the page as it is
 
     def net(self, rows: list[int], pairs: list[int], xs: list[float], ys: list[float],
@@ -135,10 +144,19 @@ class RestCheck:
             if push is None:
                 continue
             push_x, push_y = push[0] * K_CONTACT, push[1] * K_CONTACT
-            for row, share, sums in ((j, share_j[pair], as_j), (i, share_i[pair], as_i)):
-                summed = sums.get(row)
-                if summed is None:
-                    summed = sums[row] = [0.0, 0.0]
+            # j's share, then i's, each added to a sum started at 0.0 (so a -0.0 share is 0.0)
+            share = share_j[pair]
+            summed = as_j.get(j)
+            if summed is None:
+                as_j[j] = [0.0 + push_x * share, 0.0 + push_y * share]
+            else:
+                summed[0] += push_x * share
+                summed[1] += push_y * share
+            share = share_i[pair]
+            summed = as_i.get(i)
+            if summed is None:
+                as_i[i] = [0.0 + push_x * share, 0.0 + push_y * share]
+            else:
                 summed[0] += push_x * share
                 summed[1] += push_y * share
         low_x, low_y, high_x, high_y, anchor_k, anchor_x, anchor_y = self.row_lists
@@ -163,61 +181,89 @@ class RestCheck:
         groups, rows, pairs = self.reached_by(members)
         if len(groups) == 0:
             return True
-        centres = self.bodies.centres
-        along, across = centres[:, axis].tolist(), centres[:, 1 - axis].tolist()
+        along, across = self.centre_lists[axis].copy(), self.centre_lists[1 - axis]
         moving = members.tolist()
         for row in moving:
             along[row] += shift
-        after_net = self.group_net(rows, pairs, *((along, across) if axis == 0
-                                                  else (across, along)), groups, set(moving))
-        if np.maximum.reduce(np.abs(after_net), axis=None) <= self.limit + 1e-9:
+        per_row = self.net(rows, pairs, *((along, across) if axis == 0 else (across, along)),
+                           set(moving))
+        if self.grouped:
+            after_net = self.group_sums(per_row, rows, groups)
+            size = np.abs(after_net)
+            over = (np.maximum(size[:, 0], size[:, 1]) > self.limit + 1e-9).nonzero()[0]
+        else:  # every group one row: the few sums tested as floats, no arrays unless needed
+            limit = self.limit + 1e-9
+            over = [k for k, (x, y) in enumerate(per_row) if max(abs(x), abs(y)) > limit]
+            after_net = np.array(per_row) if over else None
+        if not len(over):
             return True  # within the limit with no hold at all: which lines hold is moot
-        held_before, before = self.as_it_is(members.tobytes(), groups, rows, pairs)
+        # only a group over the limit may fail: the hold only lowers a push (unheld), and the
+        # bound is at least the limit; so only those are looked at as they are and held
+        failing = groups[over]
+        held_before, before = self.as_it_is(failing)
         held_after = None
         if self.hold > 0:
             # the move changes no feature across its axis: only ``axis`` is found again
-            trial = centres.copy()
-            trial[members, axis] += shift
             held_after = held_before.copy()
-            held_after[:, axis] = self.on_lines(groups, trial, (axis,))[:, 0]
-        after = self.unheld(after_net, held_after)
+            held_after[:, axis] = self.lines.held(failing, axis, members, shift)
+        after = self.unheld(after_net[over], held_after)
         return bool((after <= np.maximum(before, self.limit) + 1e-9).all())
 
     def reached_by(self, members: np.ndarray) -> tuple[np.ndarray, list[int], list[int]]:
         """The movable groups that the rigid body ``members`` touches (itself among them), their
         rows and every pair that touches those: fixed by the pairs found at the start, so
-        worked out once per body."""
+        worked out once per body, in Python sets (a body touches a handful of groups, and
+        half the bodies a snap checks are checked once)."""
         key = members.tobytes()
         found = self.reach_of.get(key)
         if found is None:
-            touching = np.concatenate([self.pairs_of[m] for m in members])
-            touched = np.concatenate([members, self.i[touching], self.j[touching]])
-            groups = sorted_unique(self.roots[touched])
-            groups = groups[self.movable[groups]]
-            rows = np.concatenate([self.group_rows[g] for g in groups]) if len(groups) else groups
-            pairs = (sorted_unique(np.concatenate([self.pairs_of[r] for r in rows]))
-                     if len(groups) else groups)
-            found = self.reach_of[key] = (groups, rows.tolist(), pairs.tolist())
+            ends_i, ends_j = self.pair_lists[:2]
+            pairs_of, roots, movable = self.pair_lists_of, self.root_list, self.movable_list
+            touched = set(members.tolist())
+            for member in members.tolist():
+                for pair in pairs_of[member]:
+                    touched.add(ends_i[pair])
+                    touched.add(ends_j[pair])
+            groups = sorted({roots[row] for row in touched if movable[roots[row]]})
+            rows = [row for group in groups for row in self.group_row_lists[group]]
+            pairs = sorted({pair for row in rows for pair in pairs_of[row]})
+            found = self.reach_of[key] = (np.array(groups, dtype=self.roots.dtype), rows, pairs)
         return found
 
-    def as_it_is(self, key: bytes, groups: np.ndarray, rows: list[int],
-                 pairs: list[int]) -> tuple[np.ndarray | None, np.ndarray]:
-        """For the groups a body touches, with the page as it is: whether a line holds each on
-        each axis (None without a hold) and the push the hold leaves.  The same until an item
-        moves (``moved``), so a body whose moves fail one after the other works it out once."""
-        found = self.before.get(key)
-        if found is None:
-            held = self.on_lines(groups, self.bodies.centres, (0, 1)) if self.hold > 0 else None
-            net = self.group_net(rows, pairs, *self.bodies.centres.T.tolist(), groups, set())
-            found = self.before[key] = (held, self.unheld(net, held))
-        return found
+    def as_it_is(self, groups: np.ndarray) -> tuple[np.ndarray | None, np.ndarray]:
+        """For ``groups``, with the page as it is: whether a line holds each on each axis (None
+        without a hold) and the push the hold leaves.  Kept per group until an item moves
+        (``moved``), so the groups of a body whose moves fail one after the other, and those
+        its neighbours' moves push too, are worked out once.  (Each group's is its own: its
+        rows' sums run over their own pairs in order, whichever other rows are summed.)"""
+        known = self.before
+        missing = [group for group in groups.tolist() if group not in known]
+        if missing:
+            found = np.array(missing)
+            held = (np.column_stack([self.lines.held(found, axis) for axis in (0, 1)])
+                    if self.hold > 0 else None)
+            rows = [row for group in missing for row in self.group_row_lists[group]]
+            pairs = sorted({pair for row in rows for pair in self.pair_lists_of[row]})
+            net = self.group_net(rows, pairs, *self.centre_lists, found, set())
+            for group, held_now, push in zip(missing, held if held is not None else
+                                             [None] * len(missing), self.unheld(net, held)):
+                known[group] = (held_now, push)
+        entries = [known[group] for group in groups.tolist()]
+        held = np.array([holds for holds, _ in entries]) if self.hold > 0 else None
+        return held, np.array([push for _, push in entries])
 
-    def moved(self, rows: np.ndarray) -> None:
-        """``rows`` have moved: forget the forces worked out for the page as it was."""
+    def moved(self, rows: np.ndarray, axes: tuple[int, ...] = (0, 1)) -> None:
+        """``rows`` have moved (along ``axes``): forget the forces worked out for the page as
+        it was."""
         self.before.clear()
+        self.lines.moved(rows, axes)
+        for axis in axes:
+            column = self.centre_lists[axis]
+            for row, at in zip(rows.tolist(), self.bodies.centres[rows, axis].tolist()):
+                column[row] = at
         pushes = self.pushes
         for row in rows.tolist():
-            for pair in self.pairs_of[row].tolist():
+            for pair in self.pair_lists_of[row]:
                 pushes.pop(pair, None)
 
     def unheld(self, acc: np.ndarray, held: np.ndarray | None) -> np.ndarray:
@@ -228,39 +274,16 @@ class RestCheck:
             size = np.where(held, np.maximum(size - self.hold, 0.0), size)
         return np.maximum(size[:, 0], size[:, 1])  # a reduction's set-up costs more
 
-    def on_lines(self, groups: np.ndarray, centres: np.ndarray,
-                 axes: tuple[int, ...]) -> np.ndarray:
-        """(len(groups), len(axes)): whether each group, with the items at ``centres``, has a
-        feature on a guide line on each of ``axes``, as the guides' hold finds it: an edge on
-        another group's edge or on a margin or region line, a centre on another group's centre
-        or on the page's middle (within ``ON_LINE_MM``)."""
-        sizes = [len(self.group_rows[g]) for g in groups]
-        rows = np.concatenate([self.group_rows[g] for g in groups])
-        owner = np.repeat(np.arange(len(groups)), sizes)
-        others = self.active_rows
-        mine_roots = self.roots[rows]
-        held = np.zeros((len(groups), len(axes)), dtype=bool)
-        for column, axis in enumerate(axes):
-            edge_roots, middle_roots = self.line_roots[axis]
-            other_edge = edge_roots[None, None, :] != mine_roots[:, None, None]
-            other_middle = middle_roots[None, :] != mine_roots[:, None]
-            page_edges, page_middles = self.page_lines[axis]
-            at, half = centres[:, axis], self.halves[:, axis]
-            theirs, spans = at[others], half[others]
-            edges = np.concatenate([theirs - spans, theirs + spans, page_edges])
-            middles = np.concatenate([theirs, page_middles])
-            mine = np.column_stack([at[rows] - half[rows], at[rows] + half[rows]])
-            on_edge = ((np.abs(mine[:, :, None] - edges[None, None, :]) <= ON_LINE_MM)
-                       & other_edge).any(axis=(1, 2))
-            on_middle = ((np.abs(at[rows][:, None] - middles[None, :]) <= ON_LINE_MM)
-                         & other_middle).any(axis=1)
-            held[:, column] = np.bincount(owner, on_edge | on_middle, len(groups)) > 0
-        return held
-
     def group_net(self, rows: list[int], pairs: list[int], xs: list[float], ys: list[float],
                   groups: np.ndarray, moving: set[int] | None = None) -> np.ndarray:
         """Each group's net acceleration, (len(groups), 2) (``moving``: as ``net``'s)."""
-        per_row = np.array(self.net(rows, pairs, xs, ys, moving))
+        return self.group_sums(self.net(rows, pairs, xs, ys, moving), rows, groups)
+
+    def group_sums(self, per_row: list[tuple[float, float]], rows: list[int],
+                   groups: np.ndarray) -> np.ndarray:
+        """Each group's net acceleration, (len(groups), 2), from its ``rows``' (``per_row``,
+        the rows of ``groups`` in their order)."""
+        per_row = np.array(per_row)
         if not self.grouped:  # every group one row: its own
             return per_row
         summed = np.zeros((self.bodies.count, 2))
@@ -270,8 +293,10 @@ class RestCheck:
 
 def sorted_unique(values: np.ndarray) -> np.ndarray:
     """``np.unique`` for the small arrays of one move: a sort and a mask (np.unique's set-up
-    cost was a third of the snapping's time)."""
-    ordered = np.sort(values)
+    cost was a third of the snapping's time).  Sorts ``values`` in place: every caller hands
+    it an array of its own (a gather or a join), and a copy's set-up is a tenth of the call."""
+    values.sort()
+    ordered = values
     keep = np.empty(len(ordered), dtype=bool)
     keep[:1] = True
     np.not_equal(ordered[1:], ordered[:-1], out=keep[1:])

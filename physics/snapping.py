@@ -32,7 +32,6 @@ way first and the step does not run.
 
 from __future__ import annotations
 
-import math
 from typing import NamedTuple
 
 import numpy as np
@@ -42,6 +41,10 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members, sorted_unique
 from floatpage.physics.snap_memo import AxisMemo
+from floatpage.physics.snap_scoring import (
+    ALIGNED_MM, MAX_CANDIDATES, MAX_TRIES, NO_SHIFTS, best_first, candidate_shifts,
+    distance_bounds, misses_after, nearest_shifts, relevant_distance, trues,
+)
 from floatpage.physics.fast_forces import target_gap
 from floatpage.physics.finalize import ROUNDING_MM
 from floatpage.physics.geometry import item_bounds
@@ -49,24 +52,13 @@ from floatpage.physics.guides import (
     CENTRE, HIGH, LOW, features, hold_strength, page_lines, snap_range,
 )
 
-ALIGNED_MM = 0.05  # features this close are aligned (positions are saved to 0.01 mm)
-ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
-ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
 NUDGE_MM = 0.5  # moves this small need no rest check: pairs this close count as aligned anyway
 MAX_SWEEPS = 50
 ALIGN_REACH = 2.0  # a move onto a line goes up to 2 snap ranges (8 mm on A4): see _Snapper
 ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm on A4)
-MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
-MAX_TRIES = 8  # an item tries at most its 8 best moves on an axis (each a few checks)
 EVERY_MOVE = 1 << 30  # ... but once the sweeps end, every move (_Snapper.try_lesser)
 TOLERANCE_MM = 1e-9
-NO_SHIFTS: tuple[float, ...] = ()
-STAY = np.zeros(1)  # the shift that leaves a body where it is, always a candidate
-# misses_after's four ends around a shift (a column per shift), and what each bisection there
-# counts towards twice the score: d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR,
-# d <= shift + ALIGNED; twice 1 and 1 + ALIGN_GAIN, so that scores are integers
-WINDOW_ENDS = np.array([[NEAR_MM], [-ALIGNED_MM], [-NEAR_MM], [ALIGNED_MM]])
-SCORE_WEIGHTS = np.array([2, 3, -2, -3])
+SORT_ALL_BELOW = 400  # options sorts fewer distances as they are, more once cut to the relevant
 # a body's features paired with the lines of the same kind: their edges with each of its
 # edges, their centre with its centre
 THEIRS = np.array([LOW, HIGH, LOW, HIGH, CENTRE])
@@ -158,8 +150,12 @@ class _Snapper:
         self.farthest = ESCAPE_REACH * self.reach  # the longest move
         self.window = max(self.farthest, NEAR_MM) + NEAR_MM  # further apart cannot matter
         self.bounds = distance_bounds(ALIGN_REACH * self.reach, self.farthest)
+        # what options reads of the distances lies within this (relevant_distance)
+        self.relevant = relevant_distance(self.farthest)
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
         self.half_lists = [self.halves[:, axis].tolist() for axis in (0, 1)]
+        # the centres as Python lists per axis, kept in step by attempt (fits reads a handful)
+        self.centre_lists = bodies.centres.T.tolist()
         self.limit_lists = [(self.lowest[:, axis].tolist(), self.highest[:, axis].tolist())
                             for axis in (0, 1)]
         # per group and axis: too large to fit between its margins (it has no move to make)
@@ -334,13 +330,15 @@ class _Snapper:
             near[members] = False
             ordered = (table[near, THEIRS_COLUMNS][None]
                        - self.paired_mine[axis][members][:, None]).ravel()
+        if len(ordered) > SORT_ALL_BELOW:  # most of a line's distances are out of every range
+            ordered = ordered[np.abs(ordered) < self.relevant]
         ordered.sort()
         shifts, missing, lined_up, now = candidate_shifts(ordered, self.bounds)
         if len(shifts) > MAX_CANDIDATES:  # perhaps a crowded page: the nearest lines only
             shifts = nearest_shifts(sorted_unique(shifts))
         scores = misses_after(ordered, shifts)
-        if scores.min() < now:  # most calls find no better move
-            better = (scores < now).nonzero()[0]
+        better = (scores < now).nonzero()[0]
+        if len(better):  # most calls find no better move
             found = Moves(roots, members,
                           *best_first(shifts[better], scores[better], now, self.tries),
                           missing, lined_up)
@@ -359,12 +357,16 @@ class _Snapper:
                 for root in moves.roots:
                     self.moved_from[root] = self.mine(root, axis)
                 before = self.lines[axis][members]
-                self.bodies.centres[members, axis] += shift
+                centres = self.bodies.centres
+                centres[members, axis] += shift
+                along = self.centre_lists[axis]
+                for member, at in zip(members.tolist(), centres[members, axis].tolist()):
+                    along[member] = at
                 for tables in self.tables.values():
                     tables[axis][members] += shift
                 self.memo.moved(axis, before, self.lines[axis][members])
                 if self.rest is not None:
-                    self.rest.moved(members)
+                    self.rest.moved(members, (axis,))
                 return True
         return False
 
@@ -376,12 +378,12 @@ class _Snapper:
 
         Only the items a move could bring within the clearance are tested: within it of a
         member across the axis, and within it and the longest move along it (on a 600-item
-        page the test against every item was two thirds of the snapping's time).  The test is
-        plain Python on floats: a body meets a handful of neighbours and tries at most
-        ``MAX_TRIES`` moves, and NumPy's set-up per call cost more than the arithmetic."""
+        page the test against every item was two thirds of the snapping's time).  For a body of
+        one item the test is plain Python on floats: it meets a handful of neighbours and tries
+        at most ``MAX_TRIES`` moves, and NumPy's set-up per call cost more than the arithmetic;
+        a body of several (a line) is tested in NumPy (body_fits)."""
         rows = members.tolist()
-        centres = self.bodies.centres
-        along = centres[:, axis].tolist()
+        along = self.centre_lists[axis]
         current = [along[row] for row in rows]
         lowest, highest = self.limit_lists[axis]
         limits = [(min(lowest[row], at) - TOLERANCE_MM, max(highest[row], at) + TOLERANCE_MM)
@@ -394,32 +396,64 @@ class _Snapper:
                 low <= at + shift <= high for at, (low, high) in zip(current, limits))]
         if not inside:
             return inside
-        beside = centres[:, 1 - axis].tolist()
+        if len(rows) > 1:
+            return self.body_fits(members, axis, inside)
+        beside = self.centre_lists[1 - axis]
         halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
         clearance, far = self.clearance, self.clearance + self.farthest
-        checks = []  # (its position, the member, their reach, gap across, the gap needed)
+        row, at = rows[0], current[0]
+        mine_across, mine_half_across, mine_half = (beside[row], halves_across[row],
+                                               halves_along[row])
+        checks = []  # (its position, their reach, the gap across, the gap needed)
         for other in self.neighbours(members, axis):
-            there, side, half, half_across = (along[other], beside[other], halves_along[other],
-                                              halves_across[other])
-            gaps = [(abs(side - beside[row]) - half_across - halves_across[row],
-                     abs(there - at) - (half + halves_along[row]))
-                    for row, at in zip(rows, current)]
-            if any(across < clearance and now < far for across, now in gaps):
-                for member, (row, (across, now)) in enumerate(zip(rows, gaps)):
-                    needed = min(max(now, across), clearance) - TOLERANCE_MM
-                    if not across >= needed:  # else every shift passes: max(gap, across)
-                        checks.append((there, member, half + halves_along[row], across, needed))
+            there = along[other]
+            across = abs(beside[other] - mine_across) - halves_across[other] - mine_half_across
+            now = abs(there - at) - (halves_along[other] + mine_half)
+            if across < clearance and now < far:
+                needed = min(max(now, across), clearance) - TOLERANCE_MM
+                if not across >= needed:  # else every shift passes: max(gap, across)
+                    checks.append((there, halves_along[other] + mine_half, across, needed))
         if not checks:
             return inside
         fitting = []
         for shift in inside:
-            moved = [at + shift for at in current]
-            for there, member, reach, across, needed in checks:  # a loop: no generator's cost
-                if not max(abs(there - moved[member]) - reach, across) >= needed:
+            moved = at + shift
+            for there, reach, across, needed in checks:  # a loop: no generator's cost
+                if not max(abs(there - moved) - reach, across) >= needed:
                     break
             else:
                 fitting.append(shift)
         return fitting
+
+    def body_fits(self, members: np.ndarray, axis: int, inside: list[float]) -> list[float]:
+        """fits for a body of several members (a line: a dozen members, dozens of neighbours),
+        its tests as (neighbours, members) tables: the same subtractions and comparisons of
+        the same floats as fits' loop, in NumPy, since here the arithmetic outweighs the calls
+        (the loop was a tenth of the snap on a page of 120 items)."""
+        others = self.neighbours(members, axis)
+        if not others:
+            return inside
+        others = np.array(others)
+        centres, halves = self.bodies.centres, self.halves
+        there = centres[others, axis][:, None]
+        at = centres[members, axis]
+        across = (np.abs(centres[others, 1 - axis][:, None] - centres[members, 1 - axis])
+                  - halves[others, 1 - axis][:, None] - halves[members, 1 - axis])
+        reach = halves[others, axis][:, None] + halves[members, axis]
+        now = np.abs(there - at) - reach
+        clearance = self.clearance
+        close = (across < clearance) & (now < clearance + self.farthest)
+        needed = np.minimum(np.maximum(now, across), clearance) - TOLERANCE_MM
+        tested = ~(across >= needed)  # else every shift passes: max(gap, across)
+        tested &= (close @ trues(len(members)))[:, None]  # a neighbour close to any member
+        near, member = tested.nonzero()
+        if not len(near):
+            return inside
+        there, at = there[near, 0], at[member]
+        reach, across, needed = reach[near, member], across[near, member], needed[near, member]
+        moved = at + np.array(inside)[:, None]  # (shifts, tests)
+        passes = (np.maximum(np.abs(there - moved) - reach, across) >= needed).all(axis=1)
+        return [shift for shift, fits in zip(inside, passes.tolist()) if fits]
 
     def neighbours(self, members: np.ndarray, axis: int) -> list[int]:
         """The other active rows that the rigid body ``members`` might come within the
@@ -457,18 +491,6 @@ class Moves(NamedTuple):
     lined_up: bool  # whether they are on a line now (within ALIGNED_MM)
 
 
-_TRUES: dict[int, np.ndarray] = {}
-
-
-def trues(width: int) -> np.ndarray:
-    """A kept vector of ``width`` Trues: a boolean (k, width) table @ it is each row's any(),
-    in one call without the set-up of a NumPy reduction (about twice its cost here)."""
-    found = _TRUES.get(width)
-    if found is None:
-        found = _TRUES[width] = np.ones(width, dtype=bool)
-    return found
-
-
 def feature_table(centres: np.ndarray, halves: np.ndarray, active: np.ndarray, axis: int,
                   edges: np.ndarray, middles: np.ndarray) -> np.ndarray:
     """The snap's table of one axis (FEATURES, THEIRS_COLUMNS, MINE_COLUMNS, LOWS_COLUMN,
@@ -491,106 +513,3 @@ def feature_table(centres: np.ndarray, halves: np.ndarray, active: np.ndarray, a
     theirs[len(edges):, THEIRS == CENTRE] = middles[:, None]
     page[:, LOWS_COLUMN], page[:, HIGHS_COLUMN] = -np.inf, np.inf
     return np.concatenate([rows, page])
-
-
-def distance_bounds(reach: float, farthest: float) -> np.ndarray:
-    """The ends of the ranges of distances candidate_shifts reads, as needles for one
-    np.searchsorted from the left: four lower ends (|distance| <= ``reach``, |distance| <
-    ``farthest`` + ``ESCAPE_MM``, -``NEAR_MM`` < distance < -``ALIGNED_MM``, ``ALIGNED_MM`` <
-    distance < ``NEAR_MM``), then their four upper ends, each found from the right: "d <= x"
-    is "d < the next float after x"; then the ends of the distances whose escape moves,
-    d - ``ESCAPE_MM`` and d + ``ESCAPE_MM`` as floats, are at most ``farthest`` long: the
-    first distance at which each comes within it and the first at which it is past it."""
-    escape = farthest + ESCAPE_MM
-    escapes = [first_where(lambda d, way=way: way(d) >= -farthest, -farthest - way(0.0))
-               if end == 0 else
-               first_where(lambda d, way=way: way(d) > farthest, farthest - way(0.0))
-               for way in (lambda d: d - ESCAPE_MM, lambda d: d + ESCAPE_MM) for end in (0, 1)]
-    return np.concatenate([[-reach, escape, -ALIGNED_MM, NEAR_MM],
-                           np.nextafter([reach, -escape, -NEAR_MM, ALIGNED_MM], np.inf),
-                           escapes])
-
-
-def first_where(holds, guess: float) -> float:
-    """The least float d for which ``holds(d)``, a test that holds from some float on (a
-    comparison of a rounded sum that grows with d), searched a few floats either side of
-    ``guess``: the exact end of a range the rounding of the sum blurs."""
-    if not math.isfinite(guess):  # no page makes one, but never loop on an infinity
-        return guess
-    d = guess
-    while holds(d):
-        d = math.nextafter(d, -math.inf)
-    while not holds(d):
-        d = math.nextafter(d, math.inf)
-    return d
-
-
-def candidate_shifts(ordered: np.ndarray,
-                     bounds: np.ndarray) -> tuple[np.ndarray, bool, bool, int]:
-    """Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
-    within reach, or put it just out of a near miss with one (``ESCAPE_MM``) within
-    ``farthest``; with 0 (staying) first.  The way out of a near miss may be long: two items
-    of nearly the same width cannot line up both edges and centre, and one 1 mm from the
-    other stays in near misses until it has moved 4-5 mm.  Also whether a feature misses a
-    line now (a distance between ``ALIGNED_MM`` and ``NEAR_MM``), and whether one is on a
-    line (a distance within ``ALIGNED_MM``), and the score of staying (as misses_after
-    gives it).  Each range of distances (``bounds``, from
-    distance_bounds, with the reach and the farthest move there) is a slice of the sorted
-    ones, so the escape moves need no test of their length."""
-    found = ordered.searchsorted(bounds).tolist()
-    low, high = found[:4], found[4:8]
-    # |distance| < farthest + ESCAPE_MM, and of those, the ones whose escape stays in reach
-    down = ordered[max(high[1], found[8]):min(low[1], found[9])]
-    up = ordered[max(high[1], found[10]):min(low[1], found[11])]
-    # |distance| <= reach (reach < farthest), just out of reach of those within farthest, 0
-    shifts = np.concatenate((STAY, ordered[low[0]:high[0]], down - ESCAPE_MM, up + ESCAPE_MM))
-    missing = low[2] > high[2] or low[3] > high[3]
-    lined_up = high[3] > low[2]  # -ALIGNED_MM <= distance <= ALIGNED_MM
-    # staying's score (misses_after of 0): its four ends are among the ranges' ends
-    now = 2 * low[3] + 3 * low[2] - 2 * high[2] - 3 * high[3]
-    return shifts, bool(missing), bool(lined_up), now
-
-
-def misses_after(ordered: np.ndarray, shifts: np.ndarray) -> np.ndarray:
-    """For each shift, the near misses between a group's features and the lines of the same
-    kind at the sorted distances ``ordered`` from them (one entry per pair), less
-    ``ALIGN_GAIN`` per exact alignment, twice, in integers; (len(shifts),).  Counted by bisection: the (shifts,
-    distances) table of gaps it replaces was a fifth of the snapping's time."""
-    ends = WINDOW_ENDS + shifts  # (4, shifts)
-    # d <= x is d < the next float after x: one bisection from the left for all four ends,
-    # d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR, d <= shift + ALIGNED
-    np.nextafter(ends[2:], np.inf, out=ends[2:])
-    # twice (near misses and alignments, less the alignments, ALIGN_GAIN more off each)
-    return SCORE_WEIGHTS @ ordered.searchsorted(ends)
-
-
-def nearest_shifts(distinct: np.ndarray, count: int = MAX_CANDIDATES) -> np.ndarray:
-    """The ``count`` shifts of ``distinct`` (sorted, each once) nearest to 0, of two as near
-    the lower first, in ascending order.  The nearest values of a sorted array are a run of
-    it: the first run whose left end is no farther from 0 than the value just past its right
-    end, found by bisection (a stable sort by distance from 0 chose the same shifts; on a
-    column's line of 15 groups, 500 distinct candidates, it took 7 us, this 3)."""
-    value = distinct.item  # a few reads: no list of them all
-    low, high = 0, max(len(distinct) - count, 0)
-    while low < high:
-        middle = (low + high) // 2
-        if abs(value(middle)) > abs(value(middle + count)):
-            low = middle + 1
-        else:
-            high = middle
-    return distinct[low:low + count]
-
-
-def best_first(shifts: np.ndarray, scores: np.ndarray, now: int,
-               tries: int = MAX_TRIES) -> tuple[tuple[float, ...], float]:
-    """The moves that lower the score, ``shifts`` (perhaps some twice) and their ``scores``,
-    ordered best first: the fewest misses, then the shortest move, then the lower; each once,
-    at most ``tries``; and what the best gains over ``now``."""
-    order = np.lexsort((shifts, np.abs(shifts), scores)).tolist()
-    chosen: list[float] = []
-    for shift in shifts[order].tolist():
-        if not chosen or shift != chosen[-1]:  # equal shifts have equal keys: side by side
-            chosen.append(shift)
-            if len(chosen) == tries:
-                break
-    return tuple(chosen), (now - int(scores[order[0]])) / 2

@@ -11,10 +11,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from floatpage.physics.guides import CENTRE, HIGH, LOW, features
-from floatpage.physics.snapping import (
-    ALIGNED_MM, ESCAPE_MM, EVERY_MOVE, MAX_TRIES, MINE, NEAR_MM, THEIRS, THEIRS_COLUMNS,
-    best_first, candidate_shifts, distance_bounds, feature_table, misses_after, nearest_shifts,
+from floatpage.physics.alignment import NEAR_MM
+from floatpage.physics.snap_scoring import (
+    ALIGNED_MM, ESCAPE_MM, MAX_TRIES, best_first, candidate_shifts, distance_bounds,
+    misses_after, nearest_shifts,
 )
+from floatpage.physics.snapping import EVERY_MOVE, MINE, THEIRS, THEIRS_COLUMNS, feature_table
 
 REACH, FARTHEST = 4.0, 12.0
 
