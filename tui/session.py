@@ -288,9 +288,10 @@ class EditSession:
 
     # -- ids and placement -------------------------------------------------------------------
 
-    def new_id(self, stem: str) -> str:
+    def new_id(self, stem: str, first: int = 1) -> str:
+        """``stem-N`` with the least N from ``first`` that no item or page has."""
         taken = self.project.all_item_ids() | {page.id for page in self.project.pages}
-        for number in itertools.count(1):
+        for number in itertools.count(first):
             candidate = f"{stem}-{number}"
             if candidate not in taken:
                 return candidate
@@ -632,7 +633,10 @@ class EditSession:
     def add_page(self) -> str:
         self.checkpoint("add page")
         current = self.page
-        page = Page(id=self.new_id("page"), size=current.size, orientation=current.orientation,
+        # numbered from where it stands: a card's second page "page-2", not "page-1" beside
+        # a first page called "front"
+        page = Page(id=self.new_id("page", self.page_index + 2), size=current.size,
+                    orientation=current.orientation,
                     width_mm=current.width_mm, height_mm=current.height_mm)
         self.project.pages.insert(self.page_index + 1, page)
         self.page_index += 1

@@ -419,9 +419,9 @@ async def test_pages_add_switch_resize_reorient_and_remove(project_path):
         assert session.page.id == "back" and "With love" in preview_text(app)
         await pilot.press("left_square_bracket")
         assert session.page.id == "front"
-        await pilot.press("N")
-        assert [p.id for p in session.project.pages] == ["front", "page-1", "back"]
-        assert session.page.id == "page-1"
+        await pilot.press("N")  # numbered where it stands: the second page
+        assert [p.id for p in session.project.pages] == ["front", "page-2", "back"]
+        assert session.page.id == "page-2"
         await pilot.press("S")
         assert app.screen.id == "page-size-dialog"
         options = [str(o.prompt) for o in app.screen.query_one("OptionList").options]
