@@ -35,14 +35,13 @@ from collections import defaultdict
 
 import numpy as np
 
-import floatpage.physics.engine as engine_module
 from floatpage.model.layout import settle_project
 from floatpage.physics.snapping import snap_page
 
 from alignment import benchmark_scenes, random_scenes, scene_project
 from anchored_pages import random_project
 from seeded_scenes import fresh_scenes
-from snap_speed import loaded, roomy_scenes
+from snap_speed import loaded, roomy_scenes, snaps_captured
 
 FRESH_SEEDS = (3000, 5100)
 ANCHORED = [(seed, "mixed") for seed in range(27000, 27012)] + [
@@ -53,15 +52,7 @@ def capture() -> list[tuple[str, tuple]]:
     """(label, snap_page's arguments) for every snap the settles ask for; a label starts with
     the set of pages ("guide_cost", "roomy", "fresh" or "anchored"), then the settle and the
     scene."""
-    captured: list[tuple[str, tuple]] = []
-    label = [""]
-
-    def keep(bodies, page_w_mm, page_h_mm, params):
-        captured.append((label[0], (copy.deepcopy(bodies), page_w_mm, page_h_mm, params)))
-        return snap_page(bodies, page_w_mm, page_h_mm, params)
-
-    engine_module.snap_page = keep
-    try:
+    with snaps_captured() as (captured, label):
         for scene in benchmark_scenes(quick=True) + random_scenes():
             label[0] = f"guide_cost settle {scene.name}"
             settle_project(scene_project(scene))
@@ -76,8 +67,6 @@ def capture() -> list[tuple[str, tuple]]:
         for seed, kind in ANCHORED:
             label[0] = f"anchored settle {kind} seed {seed}"
             settle_project(random_project(seed, kind))
-    finally:
-        engine_module.snap_page = snap_page
     return captured
 
 

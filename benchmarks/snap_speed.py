@@ -28,6 +28,7 @@ import copy
 import hashlib
 import time
 from collections import defaultdict
+from contextlib import contextmanager
 
 import floatpage.physics.engine as engine_module
 from floatpage.model.layout import settle_project
@@ -55,9 +56,10 @@ def roomy_scenes() -> list[Scene]:
             if scene.name.startswith("seed ") and len(scene.centres) in ROOMY_ITEMS]
 
 
-def captured_snaps(only: str, engine_only: bool = False,
-                   roomy: bool = False) -> list[tuple[str, tuple]]:
-    """(label, snap_page's arguments) for every snap the settles ask for."""
+@contextmanager
+def snaps_captured():
+    """While open: every snap the settles ask for, kept as (label, snap_page's arguments) in
+    the list it gives, each labelled with what the caller put in the label cell it gives."""
     captured: list[tuple[str, tuple]] = []
     label = [""]
 
@@ -67,6 +69,15 @@ def captured_snaps(only: str, engine_only: bool = False,
 
     engine_module.snap_page = keep
     try:
+        yield captured, label
+    finally:
+        engine_module.snap_page = snap_page
+
+
+def captured_snaps(only: str, engine_only: bool = False,
+                   roomy: bool = False) -> list[tuple[str, tuple]]:
+    """(label, snap_page's arguments) for every snap the settles ask for."""
+    with snaps_captured() as (captured, label):
         engine_scenes = roomy_scenes() if roomy else []
         for scene in benchmark_scenes(quick=True) + random_scenes() + engine_scenes:
             if only not in scene.name:
@@ -76,8 +87,6 @@ def captured_snaps(only: str, engine_only: bool = False,
                 settle_project(scene_project(scene))
             label[0] = f"Engine.settle {scene.name}"
             loaded(scene).settle()
-    finally:
-        engine_module.snap_page = snap_page
     return captured
 
 
