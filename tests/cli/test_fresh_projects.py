@@ -109,3 +109,15 @@ def test_settle_gives_up_the_margin_before_it_overlaps_around_hard_anchors(tmp_p
     kept 12 mm overlaps, as no order relocation tried set every unit down; now none."""
     check = settled_and_checked("limit-margin-rows-9.toml", tmp_path)
     assert "page p1: 0 overlaps" in check.stdout, check.stdout
+
+
+def test_check_names_a_column_of_a_free_text_and_a_regions_photos(tmp_path):
+    """A free text narrow for the page but too wide to stand beside any photo of the photos
+    region, each nearly as wide as it: the three must stand one above another and do not fit.
+    check names them (it sent the page back to settle: the text is not wide in its own room,
+    the only items the mixed candidate took)."""
+    check = settled_and_checked("limit-column-across-rooms-7114.toml", tmp_path)
+    assert ('items "p1-text0", "p1-captioned2", "p1-block1" are too wide to stand beside one '
+            "another with the 3 mm gutter, each inside its region or the margins, so they must "
+            "stand one above another, and no such row of them fits in the 414.0 mm they span"
+            ) in check.stdout, check.stdout
