@@ -86,15 +86,29 @@ def arrangement(sizes: np.ndarray, room: np.ndarray, gap: float) -> np.ndarray |
         for item, was in reversed(raised):
             low[item] = was
 
+    def room_left(axis: int, first: int, second: int) -> float:
+        """How far ``second``'s far edge would stay inside the room with ``second`` after
+        ``first`` on ``axis`` (before the chains after ``second`` move)."""
+        low = lows[axis]
+        return limits[axis][second] - max(low[second], low[first] + widths[first][axis] + gap)
+
     def search(index: int) -> bool:
         if index == len(choices):
             return True  # the positions are the least ones: lows
-        for axis, first, second in choices[index]:
+        # the relation that leaves the most room first: where a layout exists, the search
+        # mostly walks straight to it (six items with room to spare ran out of budget in
+        # the order the pairs were listed)
+        options = sorted(choices[index], key=lambda option: room_left(*option), reverse=True)
+        for axis, first, second in options:
             spent[0] += 1
             if spent[0] > NODE_BUDGET:
                 raise OutOfBudget
             raised = place(axis, first, second)
             fits = all(lows[axis][item] <= limits[axis][item] for item, _ in raised)
+            # every pair still to place keeps a way that fits as the chains stand (a pair the
+            # placings shut out fails now, not after every way of the pairs between)
+            fits = fits and all(any(room_left(*option) >= -1e-9 for option in later)
+                                for later in choices[index + 1:])
             if fits and search(index + 1):
                 return True
             undo(axis, first, raised)

@@ -121,6 +121,7 @@ def test_check_names_a_few_items_that_no_arrangement_keeps_the_gutter_apart(tmp_
             "inside the margins") in check.stdout
     assert "the widest gap they can all keep is 2.5 mm" in check.stdout
 
+
 def test_settle_gives_up_the_margin_before_it_overlaps_around_hard_anchors(tmp_path):
     """Six units of a photos region around two hard-anchored texts: no layout inside the
     margins (check names the rows that rule it out), one with the margin given up.  Settle

@@ -9,7 +9,7 @@ from itertools import product
 import numpy as np
 from hypothesis import given, settings, strategies as st
 
-from floatpage.physics.arrangements import arrangement, arranges, widest_gap
+from floatpage.physics.arrangements import OutOfBudget, arrangement, arranges, widest_gap
 from floatpage.physics.finalize import pair_clearances
 
 ROOM = np.array([100.0, 140.0])
@@ -63,7 +63,10 @@ def test_the_search_agrees_with_every_relation_enumerated(sizes, gap):
                 max_size=6).map(np.array), st.floats(0.0, 8.0))
 @settings(max_examples=60, deadline=None)
 def test_a_layout_found_keeps_the_gap_inside_the_room(sizes, gap):
-    corners = arrangement(sizes, ROOM, gap)
+    try:
+        corners = arrangement(sizes, ROOM, gap)
+    except OutOfBudget:  # six items, two pairs alike, 1 mm short: says nothing, as it should
+        return
     if corners is None:
         return
     assert (corners >= -1e-9).all() and (corners + sizes <= ROOM + 1e-6).all()
