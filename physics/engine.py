@@ -21,7 +21,8 @@ from floatpage.physics.bodies import NO_TARGET, Bodies
 from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
 from floatpage.physics.finalize import (
-    MAX_ITERATIONS, ROUNDING_MM, STALL_ITERATIONS, project_within, remove_overlaps,
+    MARGIN_GIVES_WAY, MAX_ITERATIONS, ROUNDING_MM, STALL_ITERATIONS, project_within,
+    remove_overlaps,
 )
 from floatpage.physics.geometry import (
     GUTTER_FITS_COVER, grown_cover, lines_up, room_covers, rooms_of,
@@ -522,7 +523,8 @@ class Engine(SecondStart):
         postcard (page_limits.PinnedStack) overlapped by 16.8 mm, where dropping the margin
         left room for all (fresh_projects seed 17)."""
         margin = self.margin_mm
-        for margin in (margin, margin / 2, 0.0)[0 if inside_margins else 1:]:
+        shares = ((1.0,) if inside_margins else ()) + MARGIN_GIVES_WAY
+        for margin in (margin * share for share in shares):
             if not unexplained_pairs(self._bodies, [], 0.0) or self._relocate_jammed(0.0, margin):
                 return
             if self.margin_mm <= 0:

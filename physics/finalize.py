@@ -34,6 +34,9 @@ from floatpage.physics.geometry import (
 MAX_ITERATIONS = 1000
 SLACK_MM = 1e-3  # each move overshoots by this much, so the projection ends
 ROUNDING_MM = 0.01  # positions are saved to 0.01 mm: keep this much beyond the gutter
+# where the margin gives way on a page too full for it: halved, then dropped (the pass, the
+# relocation and the second start alike)
+MARGIN_GIVES_WAY = (0.5, 0.0)
 AIM_BEYOND_MM = 0.3  # pairs that break the gutter are pushed this far beyond it
 RELAXATION = 1.0
 # A run whose remaining violations have not shrunk by STALL_GAIN in STALL_ITERATIONS gives up:
@@ -306,7 +309,7 @@ def remove_overlaps(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_m
     if fits or not fall_back or margin_mm <= 0 or not has_overlap(bodies, page_w_mm, page_h_mm,
                                                                   gutter_mm):
         return fits
-    for margin in (margin_mm / 2, 0.0):
+    for margin in (margin_mm * share for share in MARGIN_GIVES_WAY):
         project_within(bodies, page_w_mm, page_h_mm, 0.0, max(max_iterations // 3, 1), margin,
                        stall=OVERFULL_STALL)
         if not has_overlap(bodies, page_w_mm, page_h_mm, gutter_mm):

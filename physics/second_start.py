@@ -12,7 +12,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from floatpage.physics.finalize import ROUNDING_MM
+from floatpage.physics.finalize import MARGIN_GIVES_WAY, ROUNDING_MM
 from floatpage.physics.geometry import GUTTER_FITS_COVER
 from floatpage.physics.packing import MAX_ITEMS, packed_layout
 from floatpage.physics.params import Params, page_margin
@@ -92,7 +92,7 @@ class SecondStart:
         not fit even with the margin dropped, the widest gap a packing reaches there, if
         wider than the search's (_widest_packed_gap).  Returns whether the gutter holds."""
         params, searched = self.params, self._bodies.centres.copy()
-        for share in (0.5, 0.0):
+        for share in MARGIN_GIVES_WAY:
             smaller = replace(params, margin_mm=params.margin_mm * share)
             margin = page_margin(smaller.margin_mm, self.page_w_mm, self.page_h_mm)
             start = self._packed_start(rows, margin)
