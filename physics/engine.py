@@ -522,9 +522,8 @@ class Engine(SecondStart):
         Three photos that must stand in one row beside a hard block and a hard photo on a
         postcard (page_limits.PinnedStack) overlapped by 16.8 mm, where dropping the margin
         left room for all (fresh_projects seed 17)."""
-        margin = self.margin_mm
         shares = ((1.0,) if inside_margins else ()) + MARGIN_GIVES_WAY
-        for margin in (margin * share for share in shares):
+        for margin in [self.margin_mm * share for share in shares]:
             if not unexplained_pairs(self._bodies, [], 0.0) or self._relocate_jammed(0.0, margin):
                 return
             if self.margin_mm <= 0:

@@ -511,13 +511,9 @@ def _tallest_stack(sizes: np.ndarray, roots: np.ndarray, rows: np.ndarray, acros
                    room: np.ndarray, gutter_mm: float) -> np.ndarray | None:
     """_stacks' search on one axis: the rows of the set, or None where none is too tall."""
     along = 1 - across
-    spare = room[across] - gutter_mm + TOLERANCE_MM  # two clash when their widths exceed it
     widths, heights = sizes[rows, across], sizes[rows, along]
-    wide = widths > spare / 2
-    choices = [wide] + [wide & (widths > spare - widths[k]) | (np.arange(len(rows)) == k)
-                        for k in np.flatnonzero(~wide & (widths > spare - widths.max()))]
     best, best_need = None, room[along] + TOLERANCE_MM
-    for chosen in choices:
+    for chosen in _clashing_sets(widths, room[across], gutter_mm):
         picked = _one_per_group(rows[chosen], heights[chosen], roots)
         if len(picked) < 3:
             continue
@@ -528,6 +524,19 @@ def _tallest_stack(sizes: np.ndarray, roots: np.ndarray, rows: np.ndarray, acros
         if need > best_need:
             best, best_need = picked, need
     return best
+
+
+def _clashing_sets(widths: np.ndarray, room_mm: float, gutter_mm: float) -> list[np.ndarray]:
+    """Masks of the largest sets of items of ``widths`` of which no two fit side by side in
+    ``room_mm`` with the gutter (two clash when their widths and the gutter exceed it): every
+    item wider than half of (room - gutter) clashes with every other such item, and a narrower
+    one with those wide enough to make up the rest, so the candidates are the wide ones, and
+    the wide ones with each narrow one that clashes with the widest (_stacks' and
+    _pinned_stacks' candidates alike)."""
+    spare = room_mm - gutter_mm + TOLERANCE_MM
+    wide = widths > spare / 2
+    return [wide] + [wide & (widths > spare - widths[k]) | (np.arange(len(widths)) == k)
+                     for k in np.flatnonzero(~wide & (widths > spare - widths.max()))]
 
 
 def _one_per_group(rows: np.ndarray, heights: np.ndarray, roots: np.ndarray) -> np.ndarray:
@@ -598,9 +607,8 @@ def _pinned_stacks(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray,
         if len(free_rows) >= 2:
             sizes, units = solid_units(bodies, roots, offsets, free_rows, across, gutter_mm)
             own = extent[across] - near[units, across] - far[units, across]
-            wide = _one_per_group(units[sizes[units, across] > (own - gutter_mm) / 2],
-                                  sizes[units[sizes[units, across] > (own - gutter_mm) / 2],
-                                        along], roots)
+            wide_in_own = units[sizes[units, across] > (own - gutter_mm) / 2]
+            wide = _one_per_group(wide_in_own, sizes[wide_in_own, along], roots)
             wide = wide[np.argsort(-sizes[wide, along], kind="stable")][:pinned_rows.MAX_MEMBERS]
             if len(np.unique(rooms[np.searchsorted(rows, wide)], axis=0)) >= 2:
                 candidates.append((sizes, np.sort(wide), True, False))
@@ -671,13 +679,9 @@ def _row_candidate(sizes: np.ndarray, roots: np.ndarray, rows: np.ndarray, acros
     """The largest set of ``rows`` (one per group) of which no two fit one above the other
     across the room with the gutter (the sets ``_tallest_stack`` tries), or None if none has
     two."""
-    spare = room[across] - gutter_mm + TOLERANCE_MM
     widths, heights = sizes[rows, across], sizes[rows, 1 - across]
-    wide = widths > spare / 2
-    choices = [wide] + [wide & (widths > spare - widths[k]) | (np.arange(len(rows)) == k)
-                        for k in np.flatnonzero(~wide & (widths > spare - widths.max()))]
     best = None
-    for chosen in choices:
+    for chosen in _clashing_sets(widths, room[across], gutter_mm):
         picked = _one_per_group(rows[chosen], heights[chosen], roots)
         if len(picked) >= 2 and (best is None or len(picked) > len(best)):
             best = picked

@@ -188,10 +188,10 @@ def placed_anew(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm: f
     roots = np.array([unit.root for unit in units])
     tries = [([int(k) for k in np.lexsort((roots, -_unit_sizes(bodies, units, order)))], goal)
              for order, goal in PLACEMENT_TRIES]
-    rng = np.random.default_rng(len(units))
-    tries += [([int(k) for k in rng.permutation(len(units))],
-               RANDOM_GOALS[index % len(RANDOM_GOALS)]) for index in range(RANDOM_TRIES)
-              if len(units) <= RANDOM_TRIES_UNITS]
+    if len(units) <= RANDOM_TRIES_UNITS:
+        rng = np.random.default_rng(len(units))
+        tries += [([int(k) for k in rng.permutation(len(units))],
+                   RANDOM_GOALS[index % len(RANDOM_GOALS)]) for index in range(RANDOM_TRIES)]
     for sequence, goal in tries:
         for _ in range(PROMOTIONS + 1):
             centres = _placed_anew(bodies, units, lowest, highest, gutter_mm, sequence, goal)
