@@ -35,3 +35,21 @@ def test_cooling_slows_with_the_square_root_of_the_item_count():
     assert cooling_rate(0.01, 100) == pytest.approx(0.01 * COOLING_ITEMS / 10)
     assert cooling_rate(0.01, 100_000) == pytest.approx(0.01 * low)
     assert cooling_rate(0.0, 50) == 0.0
+
+
+def test_a_crowd_too_dense_for_the_gutter_settles_without_overlap():
+    """1,000 items of 1-4 mm covering 55 % of a 74 x 105 mm card: the 3 mm gutter cannot fit
+    (each item would need four times its area), but no overlap can.  With gutter-wide halos the
+    physics pressed the crowd into itself and the no-overlap pass left 177 overlapping pairs;
+    with halos of the gap that fits (fast_forces.target_gap) none is left."""
+    from floatpage.physics.engine import Engine
+    from seeded_scenes import load
+
+    scene = mixed_scene(1000, 0.55, seed=4, page_w_mm=74.0, page_h_mm=105.0)
+    engine = Engine(scene.page_w_mm, scene.page_h_mm)
+    load(engine, scene)
+    engine.settle()
+    quality = engine.quality()
+    assert quality.overlap_count == 0 and not quality.off_page
+    assert quality.min_gap_mm > 0.0
+
