@@ -23,6 +23,7 @@ from floatpage.physics.fast_mode import run_fast
 from floatpage.physics.finalize import remove_overlaps
 from floatpage.physics.geometry import grown_cover, lines_up
 from floatpage.physics.guides import snap_range
+from floatpage.physics.local_room import clear_locally
 from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.params import Params, page_margin
 from floatpage.physics.quality import Quality, measure_quality
@@ -421,6 +422,10 @@ class Engine(SecondStart, RoomRelocation):
                                fall_back=fall_back)
         if not fits and fall_back and self._may_relocate():
             fits = self._relocate_rooms()
+        elif not fits and fall_back and self.params.mode == "fast":
+            # too many items to relocate: what the pass left overlapping, or in the margin it
+            # gave up, is set down in room nearby (physics.local_room)
+            clear_locally(self._bodies, self.page_w_mm, self.page_h_mm, self.margin_mm)
         if fits and align and self.lines_up:  # on a page too full for the gutter, or nearly,
             snap_page(self._bodies, self.page_w_mm, self.page_h_mm, self.params)  # it gives way
         self._bodies.velocities[:] = 0.0
