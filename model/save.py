@@ -27,6 +27,10 @@ Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 UTF8_BOM = b"\xef\xbb\xbf"
 WRITTEN_ONLY_WHEN_TRUE = {"bleed"}  # rare flags: a file names them only where they are set
 WRITTEN_ONLY_WHEN_SET = {"align"}  # newer keys: a file names them only where not the default
+# Names that are empty for "none": a new item in no region or group has no such key (every
+# item the editor added said `region = ""` and `group = ""`), while a user's own `region = ""`
+# means the same and is kept as written, so an unchanged file still saves byte-identical.
+WRITTEN_ONLY_WHEN_NAMED = {"region", "group"}
 KEEP = object()  # a pair's value meaning "leave whatever the user wrote, if anything"
 ANCHOR_DEFAULTS = {"dx": 0.0, "dy": 0.0, "gamma": 1.0, "hard": False}
 ARRAYS_SYNCED_APART = {"items", "regions"}  # a page's arrays of tables, synced by sync_array
@@ -103,6 +107,8 @@ def item_pairs(item) -> Pairs:
     for f in fields(item):
         if f.name in WRITTEN_ONLY_WHEN_TRUE:
             pairs.append((f.name, True if getattr(item, f.name) else None, None))
+        elif f.name in WRITTEN_ONLY_WHEN_NAMED:
+            pairs.append((f.name, getattr(item, f.name) or None, None))
         elif f.name in WRITTEN_ONLY_WHEN_SET:
             value = getattr(item, f.name)
             pairs.append((f.name, None if value == getattr(defaults, f.name) else value, None))
@@ -135,6 +141,7 @@ def equivalent(key: str, current: Any, value: Any) -> bool:
 def sync_table(table: Table, pairs: Pairs) -> None:
     """Make `table` hold `pairs`, changing only what differs, so comments and order survive."""
     wanted = {key for key, value, _ in pairs if value is not None}
+    wanted |= {key for key in WRITTEN_ONLY_WHEN_NAMED if key in table and table[key] == ""}
     for key in [k for k in table if k not in wanted and k not in ARRAYS_SYNCED_APART]:
         del table[key]
     for key, value, default in pairs:

@@ -175,6 +175,34 @@ def test_a_region_added_in_code_is_saved_as_a_table(tmp_path):
     assert b3.top >= 180.0 - 0.01
 
 
+def test_a_new_item_in_no_region_or_group_saves_no_such_key_and_an_empty_one_still_loads(
+        tmp_path):
+    """An item added in no region and no group used to be saved with `region = ""` and
+    `group = ""`: keys that say nothing.  A user's own empty ones still load, and an unchanged
+    file keeps them byte for byte; taking an item out of its region drops the key."""
+    path = write(tmp_path)
+    project = load_project(path)
+    page = project.pages[0]
+    page.items.append(BlockItem(id="new", x=30.0, y=190.0, w=10.0, h=10.0))
+    page.item("b1").region = ""
+    page.item("t1").group = ""
+    save_project(project)
+    text = path.read_text(encoding="utf-8")
+    added = text[text.index('id = "new"'):]
+    assert "region" not in added and "group" not in added
+    b1 = text[text.index('id = "b1"'):text.index('id = "b2"')]
+    assert "region" not in b1
+    t1 = text[text.index('id = "t1"'):text.index('id = "t2"')]
+    assert "group" not in t1
+    written = PROJECT.replace('w = 50\nh = 30\n', 'w = 50\nh = 30\nregion = ""\ngroup = ""\n', 1)
+    assert written != PROJECT
+    path.write_text(written, encoding="utf-8")
+    again = load_project(path)
+    assert (again.pages[0].item("b3").region, again.pages[0].item("b3").group) == ("", "")
+    save_project(again)
+    assert path.read_text(encoding="utf-8") == written
+
+
 @settings(max_examples=8, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(st.integers(0, 10_000), st.integers(3, 9))
