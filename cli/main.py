@@ -252,7 +252,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
-        print(f"{issues} layout problem(s); " + (
+        print(f"{printable(args.path)}: {issues} layout problem(s); " + (
             f"run `floatpage settle {printable(args.path)}` to fix overlaps" if settle_helps
             else "no settle fixes them: see the reasons above"))
         return EXIT_USER_ERROR

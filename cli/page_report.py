@@ -15,7 +15,7 @@ from floatpage.physics.page_limits import (
     TooLarge, binding,
     page_limits, unexplained_pairs,
 )
-from floatpage.physics.geometry import GUTTER_FITS_COVER
+from floatpage.physics.geometry import GUTTER_FITS_COVER, group_extents
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -33,8 +33,15 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     problems = (quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
                 + len(quality.outside_region))
     name = _namer(page)
+    chains = _chains_past_region(page, bodies)
+    in_chains = {row for rows, _, _, _ in chains for row in rows}
+    lines += ["  " + _chain_sentence(page, chain, name) for chain in chains]
+    # a chain still inside its region is a problem too: the next settle pulls it out
+    problems += sum(not set(rows) & set(quality.outside_region) for rows, _, _, _ in chains)
     for k in quality.outside_region:
         item = page.items[k]
+        if k in in_chains:
+            continue
         lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
                      f'"{printable(item.region)}": {SETTLE}, or make the region larger')
     limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
@@ -51,7 +58,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     lines += _explain(limits, name, gutter_mm, engine.margin_mm)
     named = {row for limit in limits if isinstance(limit, (PinnedOutside, TooLarge))
              for row in getattr(limit, "rows", (getattr(limit, "row", -1),))}
-    off = [k for k in quality.off_page if k not in named]
+    off = [k for k in quality.off_page if k not in named and k not in in_chains]
     if off:  # every item off the page is named, by a limit or here: never a bare count
         lines.append(f"  {len(off)} item(s) reach past the page's edge: "
                      f"{_some([name(k) for k in off[:SHOWN]], len(off))}; {SETTLE}, or move "
@@ -91,6 +98,48 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                 f"and settle again")
             problems += 1
     return lines, problems
+
+
+def _chains_past_region(page, bodies) -> list[tuple[tuple[int, ...], int, float, float]]:
+    """Items confined to a region whose followers make their rigid group larger than the
+    region, on an axis: (the root and its followers, the axis, the group's extent, the
+    region's), the root first.  The physics keeps a group inside its lead's walls, so such a
+    chain can never sit in the region, and no settle mends it (check used to send the user to
+    `settle`, which then wrote nothing).  Decorations take no part; the region's own edges count,
+    not the margin inside them (the margin gives way, check names that on its own line)."""
+    roots, offsets = bodies.group_roots()
+    low, high = group_extents(bodies, roots, offsets)
+    active = bodies.active
+    found = []
+    for root, item in enumerate(page.items):
+        if not (active[root] and roots[root] == root and item.region) \
+                or not any(region.id == item.region for region in page.regions):
+            continue
+        members = [int(row) for row in range(len(roots))
+                   if roots[row] == root and row != root and active[row]]
+        if not members:
+            continue
+        region = page.region(item.region)
+        for axis, room in ((0, region.w), (1, region.h)):
+            extent = float(high[root, axis] - low[root, axis])
+            if extent > room + 0.01:
+                found.append(((root, *members), axis, extent, float(room)))
+                break
+    return found
+
+
+def _chain_sentence(page, chain, name) -> str:
+    rows, axis, extent, room = chain
+    root = page.items[rows[0]]
+    followers = _some([name(row) for row in rows[1:1 + SHOWN]], len(rows) - 1)
+    size_word, across = AXIS_WORDS[axis]
+    side = "taller" if axis == 1 else "wider"
+    offset = "dy" if axis == 1 else "dx"
+    return (f"item {name(rows[0])} with the items following it ({followers}) is "
+            f"{extent:.1f} mm {size_word}, but its region \"{printable(root.region)}\" is "
+            f"{room:.1f} mm {size_word}, and an item keeps its followers inside its region: no "
+            f"settle can fit them; bring the followers closer (their anchor {offset}), make "
+            f"the region {side}, or take {name(rows[0])} out of the region")
 
 
 def settle_may_help(lines: list[str]) -> bool:

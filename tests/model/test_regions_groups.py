@@ -239,3 +239,62 @@ def test_a_settled_page_with_regions_and_groups_is_a_fixed_point(tmp_path, seed,
             assert box[1] - 0.01 <= item.top and item.top + item.h <= box[3] + 0.01
     moved = (page.item("b2").x - page.item("b1").x, page.item("b2").y - page.item("b1").y)
     assert abs(moved[0] - offset[0]) < 0.02 and abs(moved[1] - offset[1]) < 0.02
+
+
+CHAIN = """\
+format = 1
+
+[[pages]]
+id = "p1"
+size = "A4"
+
+[[pages.regions]]
+id = "top"
+left = 20
+top = 20
+w = 170
+h = 80
+
+[[pages.items]]
+id = "head"
+kind = "block"
+x = 60
+y = 60
+w = 30
+h = 20
+region = "top"
+
+[[pages.items]]
+id = "tail"
+kind = "block"
+x = 60
+y = 220
+w = 30
+h = 20
+anchor = {to = "head", dx = 0, dy = 160}
+"""
+
+
+def test_check_tells_how_to_mend_a_chain_longer_than_its_region_not_to_settle(tmp_path):
+    """A confined item keeps its followers inside its region, so "head" and the "tail" 160 mm
+    below it can never sit in the 80 mm region.  `check` said "run `floatpage settle`", and a
+    settle then pulled "head" off the page and the advice came again.  The advice now names the
+    items, the sizes and what to change, before and after a settle, and each way it offers
+    works."""
+    path = write(tmp_path, CHAIN)
+    for _ in range(2):  # as written, then as settle leaves it
+        result = floatpage("check", "--strict", str(path))
+        assert result.returncode == 1, result.stdout
+        assert ('item "head" with the items following it ("tail") is 180.0 mm tall, but its '
+                'region "top" is 80.0 mm tall') in result.stdout
+        assert "bring the followers closer (their anchor dy), make the region taller, or " \
+               'take "head" out of the region' in result.stdout
+        assert "floatpage settle" not in result.stdout, result.stdout
+        assert f"{path}: " in result.stdout.splitlines()[-1]
+        assert floatpage("settle", str(path)).returncode == 0
+    for mended in (CHAIN.replace("dy = 160", "dy = 50"), CHAIN.replace("h = 80", "h = 200"),
+                   CHAIN.replace('region = "top"\n', "")):
+        path = write(tmp_path, mended)
+        assert floatpage("settle", str(path)).returncode == 0
+        result = floatpage("check", "--strict", str(path))
+        assert result.returncode == 0, result.stdout
