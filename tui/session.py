@@ -118,6 +118,39 @@ def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float
         item.anchor.y = kept(item.anchor.y, item.h, height_mm)
 
 
+def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], sx: float,
+                         sy: float) -> None:
+    """Scale each follower's offset from its target with a new page size, as positions scale,
+    and put it there.  Left as it was, a follower 160 mm below its target on A4 stood past the
+    bottom of an A6 page, and the saved offsets no longer matched the saved positions.  Item
+    sizes do not scale, so on an axis where the two stand apart the space between their edges
+    scales (a caption 2.5 mm below its photo keeps clear of it); where they overlap on an axis
+    (a caption centred under its photo, a label on a picture), the centres' offset scales.
+    Positions are set target first, down each chain."""
+    by_id = {item.id: item for item in page.items}
+    done: set[str] = set()
+
+    def place(item) -> None:
+        anchor = item.anchor
+        if item.id in done or not isinstance(anchor, ItemAnchor) or anchor.to not in by_id:
+            return
+        done.add(item.id)
+        target = by_id[anchor.to]
+        place(target)
+        offsets = []
+        for offset, scale, axis in ((anchor.dx, sx, 0), (anchor.dy, sy, 1)):
+            old_half = (old_sizes[item.id][axis] + old_sizes[target.id][axis]) / 2
+            new_half = ((item.w, item.h)[axis] + (target.w, target.h)[axis]) / 2
+            gap = abs(offset) - old_half
+            scaled = new_half + gap * scale if gap >= 0 else abs(offset) * scale
+            offsets.append(round(scaled if offset >= 0 else -scaled, 2) + 0.0)
+        anchor.dx, anchor.dy = offsets
+        item.x, item.y = target.x + anchor.dx, target.y + anchor.dy
+
+    for item in page.items:
+        place(item)
+
+
 @dataclasses.dataclass(frozen=True)
 class RoomRequest:
     """Room wanted for ``ids`` (None: every item) on a page, as the document stood."""
@@ -680,6 +713,7 @@ class EditSession:
             region.w = min(round((region.left + region.w) * sx, 2), width) - left
             region.h = min(round((region.top + region.h) * sy, 2), height) - top
             region.left, region.top = left, top
+        old_sizes = {item.id: (item.w, item.h) for item in page.items}
         for item in page.items:
             item.x, item.y = item.x * sx, item.y * sy
             if item.decorative:  # a band across the page keeps spanning it: it stretches
@@ -693,6 +727,7 @@ class EditSession:
                 item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
             if not (item.decorative or item.group or getattr(item, "bleed", False)):
                 keep_inside_margin(item, width, height, margin)
+        scale_follow_offsets(page, old_sizes, sx, sy)
         page.size, page.orientation = size, orientation
         page.width_mm, page.height_mm = width, height
         self.held_id = None

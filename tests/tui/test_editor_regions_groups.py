@@ -7,7 +7,9 @@ from __future__ import annotations
 import pytest
 
 from floatpage.model import load_project, save_project
-from floatpage.model.document import BlockItem, Page, PointAnchor, Project, Region, TextItem
+from floatpage.model.document import (
+    BlockItem, ItemAnchor, Page, PointAnchor, Project, Region, TextItem,
+)
 from floatpage.tui.page_painter import GROUP, PAPER, REGION, mix
 from editor_helpers import editor, item, pixel, position, screen_of, type_text
 
@@ -140,6 +142,36 @@ async def test_a_smaller_page_size_keeps_regions_on_the_page_and_the_file_opens(
     assert bottom == pytest.approx(140.0 * 152.4 / 297.0, abs=0.01)  # its share of the page
     box = page.item("box")
     assert box.w <= right and box.h <= bottom
+
+
+async def test_a_smaller_page_size_scales_follow_offsets_and_keeps_followers_clear(tmp_path):
+    """S, 4x6in on an A4 page: positions scaled, follow offsets did not, so a note 160 mm
+    below its heading stood past the bottom of the 152.4 mm page, and the saved dy no longer
+    matched the saved positions.  The offset scales as positions do; the space between a
+    caption and its photo scales, and it stays clear of the photo (sizes do not scale)."""
+    path = tmp_path / "f.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        BlockItem(id="head", x=105.0, y=40.0, w=60.0, h=20.0),
+        BlockItem(id="note", x=105.0, y=200.0, w=60.0, h=20.0,
+                  anchor=ItemAnchor(to="head", dx=0.0, dy=160.0)),
+        BlockItem(id="photo", x=50.0, y=120.0, w=40.0, h=40.0),
+        TextItem(id="caption", x=50.0, y=148.0, w=40.0, h=10.0, text="Caption",
+                 anchor=ItemAnchor(to="photo", dx=0.0, dy=28.0)),
+    ])]), path)
+    async with editor(path) as (app, pilot):
+        await keys(pilot, "S", *["down"] * 5, "enter")  # from A4 to 4x6in
+        assert app.session.page.size == "4x6in"
+        await keys(pilot, "ctrl+s")
+    page = load_project(path).pages[0]
+    shrink = 152.4 / 297.0
+    head, note = page.item("head"), page.item("note")
+    assert note.anchor.dy == pytest.approx(20.0 + 140.0 * shrink, abs=0.01)
+    assert note.y - head.y == pytest.approx(note.anchor.dy, abs=0.02)
+    assert note.y + note.h / 2 <= 152.4
+    photo, caption = page.item("photo"), page.item("caption")
+    gap = caption.anchor.dy - (photo.h + caption.h) / 2
+    assert gap == pytest.approx(3.0 * shrink, abs=0.01)
+    assert caption.anchor.dx == 0.0
 
 
 async def test_the_preview_frames_regions_and_the_selected_group(tmp_path):
