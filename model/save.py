@@ -219,6 +219,8 @@ def edit_in_place(array: AoT, tables: list) -> bool:
         # A table's trailing blank line is what separates it from the next: give an added
         # table the same as the one it follows.
         spacing = trailing_space(array[-1]) if len(array) else ""
+        if len(array) and not spacing:  # the file's last table: a blank line before the new one
+            array[-1].add(tomlkit.ws("\n"))
         array.append(table)
         if spacing:
             table.add(tomlkit.ws(spacing))
