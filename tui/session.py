@@ -151,6 +151,21 @@ def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], 
         place(item)
 
 
+def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
+    """Shrink the page's items of ``ids`` (all that take part, if None) by ``scale`` to make
+    room; a follower shrunk with its target comes closer by as much, so that the two shrink
+    as one (sizes alone shrunk left a caption and its photo as far apart as ever, and after
+    a smaller page size such a pair still reached past the page however small they got)."""
+    shrunk = {item.id for item in page.items
+              if not item.decorative and (ids is None or item.id in ids)}
+    for item in page.items:
+        if item.id in shrunk:
+            item.w, item.h = item.w * scale, item.h * scale
+            anchor = item.anchor
+            if isinstance(anchor, ItemAnchor) and anchor.to in shrunk:
+                anchor.dx, anchor.dy = anchor.dx * scale, anchor.dy * scale
+
+
 @dataclasses.dataclass(frozen=True)
 class RoomRequest:
     """Room wanted for ``ids`` (None: every item) on a page, as the document stood."""
@@ -375,9 +390,7 @@ class EditSession:
             in_margin = {engine.ids[k] for k in quality.in_margin} & request.margin_kept
             if not (quality.overlapping_pairs or quality.off_page or in_margin):
                 break
-            for item in page.items:
-                if not item.decorative and (request.ids is None or item.id in request.ids):
-                    item.w, item.h = item.w * MAKE_ROOM_STEP, item.h * MAKE_ROOM_STEP
+            shrink_items(page, request.ids, MAKE_ROOM_STEP)
             scale *= MAKE_ROOM_STEP
         return scale
 
@@ -389,9 +402,7 @@ class EditSession:
                 or request.page_index != self.page_index or self.held_id is not None:
             return False
         self.sync_positions()
-        for item in self.page.items:
-            if not item.decorative and (request.ids is None or item.id in request.ids):
-                item.w, item.h = item.w * scale, item.h * scale
+        shrink_items(self.page, request.ids, scale)
         if self.saved_version == self.version:  # saved meanwhile: this is a change to save
             self.mark_unsaved()
         self.engine = self._build_engine(check=False)

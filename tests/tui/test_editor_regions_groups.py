@@ -174,6 +174,32 @@ async def test_a_smaller_page_size_scales_follow_offsets_and_keeps_followers_cle
     assert caption.anchor.dx == 0.0
 
 
+async def test_a_page_too_small_for_a_photo_and_its_caption_shrinks_them_as_one(tmp_path):
+    """S, a custom 100 x 100 mm page under an 84 x 105 mm photo whose caption follows 115 mm
+    below: the room search shrank sizes but not the offset between them, so however small they
+    got, the pair still reached past the page ("2 off the page", and the physics at rest).
+    The caption now comes closer as the two shrink, and everything ends on the page."""
+    path = tmp_path / "s.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="title", x=105.0, y=33.0, w=150.0, h=20.0, text="Title"),
+        BlockItem(id="photo", x=127.5, y=134.6, w=84.0, h=105.0),
+        TextItem(id="caption", x=77.2, y=249.7, w=94.5, h=31.5, text="Sale 50% off",
+                 anchor=ItemAnchor(to="photo", dx=-50.26, dy=115.04)),
+    ])]), path)
+    async with editor(path) as (app, pilot):
+        await keys(pilot, "S", *["down"] * 6, "enter")  # from A4 to Custom…
+        assert app.screen.id == "custom-size-dialog"
+        app.screen.query_one("#field-width_mm").value = "100"
+        app.screen.query_one("#field-height_mm").value = "100"
+        await keys(pilot, "ctrl+s")
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        engine = app.session.engine
+        engine.advance(20_000)
+        quality = engine.quality()
+        assert not quality.off_page and not quality.overlapping_pairs, quality.summary()
+
+
 async def test_the_preview_frames_regions_and_the_selected_group(tmp_path):
     path = grouped_page(tmp_path / "g.toml")
     async with editor(path) as (app, pilot):
