@@ -72,6 +72,7 @@ def cmd_edit(args: argparse.Namespace) -> int:
     # for the whole session, so a `settle` meanwhile refuses rather than being overwritten.
     with ProjectLock(args.path, wait_s=0.0, purpose="floatpage edit"):
         load_project(args.path, allow_outside_files=args.allow_outside_files)
+        refuse_without_terminal(args.path)
         from floatpage.tui.app import make_app
         from floatpage.tui.recovery import discard_recovery, pending_recovery
 
@@ -81,6 +82,19 @@ def cmd_edit(args: argparse.Namespace) -> int:
         if recovered:
             discard_recovery(args.path)  # saved, or left unsaved at the quit question
     return EXIT_OK
+
+
+def refuse_without_terminal(path: str) -> None:
+    """The editor draws on a terminal and reads keys from one: run from a script, a pipe or
+    cron, it wrote screen codes into the output and ended "floatpage: interrupted" (exit 130),
+    which read as though someone had pressed Ctrl+C."""
+    missing = [name for name, stream in (("input", sys.stdin), ("output", sys.stdout))
+               if stream is None or not stream.isatty()]
+    if missing:
+        raise FloatpageError(
+            f"{printable(str(path))}: floatpage edit needs a terminal, and its {' and '.join(missing)} "
+            f"{'is' if len(missing) == 1 else 'are'} not one; run it in a terminal (over SSH: "
+            "ssh -t), or use `floatpage settle`, `check` or `render` in scripts")
 
 
 def ask_about_recovery(project: Path, recovery: Path | None) -> bool:

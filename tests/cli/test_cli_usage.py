@@ -52,6 +52,19 @@ def test_edit_on_a_broken_file_fails_before_taking_the_screen(tmp_path):
     assert "Traceback" not in result.stderr
 
 
+def test_edit_without_a_terminal_says_so_and_writes_no_screen_codes(tmp_path):
+    """Run from a script (input and output not a terminal), the editor wrote screen codes into
+    the output and ended "floatpage: interrupted" with exit 130, as if Ctrl+C had been pressed."""
+    path = tmp_path / "card.toml"
+    assert run("new", "blank", str(path)).returncode == 0
+    result = run("edit", str(path))
+    assert result.returncode == 1
+    assert result.stdout == ""
+    assert result.stderr.startswith(f"floatpage: {path}: floatpage edit needs a terminal, and "
+                                    "its input and output are not one"), result.stderr
+    assert "`floatpage settle`, `check` or `render`" in result.stderr
+
+
 @pytest.mark.parametrize("kind, options, named", [
     ("card", ["--year", "2030"], "--year"),
     ("flyer", ["--first-weekday", "sunday"], "--first-weekday"),
