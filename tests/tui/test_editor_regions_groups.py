@@ -70,6 +70,25 @@ async def test_G_puts_the_selected_item_in_a_group_and_empty_takes_it_out(tmp_pa
         assert item(app, "box").group == ""
 
 
+async def test_a_form_label_longer_than_the_dialog_wraps_instead_of_being_cut(tmp_path):
+    """At 100 x 30 the group dialog's label read "Group name (this page has head); empty takes
+    text-1 ou": a label was one line, cut at the dialog's edge."""
+    path = tmp_path / "g.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="title", x=60.0, y=200.0, w=60.0, h=15.0, text="Title", group="head"),
+        BlockItem(id="text-1", x=150.0, y=60.0, w=40.0, h=30.0),
+    ])]), path)
+    async with editor(path, (100, 30)) as (app, pilot):
+        select(app, "text-1")
+        await keys(pilot, "G")
+        label = app.screen.query(".field-label").first()
+        words = str(label.render())
+        assert words.endswith("empty takes text-1 out")
+        lines = [strip.text.rstrip() for strip in label.render_lines(label.region.reset_offset)]
+        assert " ".join(line.strip() for line in lines if line.strip()) == words
+        assert label.region.right <= label.parent.region.right  # not cut by its container
+
+
 async def test_anchoring_a_member_anchors_the_group_by_its_lead(tmp_path):
     path = grouped_page(tmp_path / "g.toml")
     async with editor(path) as (app, pilot):
