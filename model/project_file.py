@@ -66,6 +66,7 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False) -> Proj
         raise ProjectFileError(reader.problems)
     project.source_text = text  # parsed by tomlkit only if the project is saved
     project.utf8_bom = reader.had_bom
+    project.crlf = "\r\n" in text[:text.find("\n") + 1]  # as its first line ends
     return project
 
 

@@ -9,6 +9,7 @@ version is kept beside it as `NAME.bak`.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import fields
 from pathlib import Path
 from typing import Any
@@ -25,6 +26,7 @@ from floatpage.model.page_sizes import CUSTOM, canonical_size_name
 
 Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 UTF8_BOM = b"\xef\xbb\xbf"
+LONE_LF = re.compile(r"(?<!\r)\n")
 WRITTEN_ONLY_WHEN_TRUE = {"bleed"}  # rare flags: a file names them only where they are set
 WRITTEN_ONLY_WHEN_SET = {"align"}  # newer keys: a file names them only where not the default
 # Names that are empty for "none": a new item in no region or group has no such key (every
@@ -346,7 +348,10 @@ def save_project(project: Project, path: str | Path | None = None) -> Path:
         raise FloatpageError(f"{target}: not saved: the file read nests tables or arrays too "
                              "deeply to edit in place (the file on disk is unchanged); "
                              "remove the deep nesting") from None
-    data = tomlkit.dumps(doc).encode("utf-8")
+    text = tomlkit.dumps(doc)
+    if project.crlf:  # tomlkit ends the lines it adds with \n: a Windows file got mixed ends
+        text = LONE_LF.sub("\r\n", text)
+    data = text.encode("utf-8")
     if project.utf8_bom:
         data = UTF8_BOM + data
     if not unchanged_on_disk(target, data):
