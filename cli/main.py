@@ -153,7 +153,11 @@ def cmd_settle(args: argparse.Namespace) -> int:
     from floatpage.model.project_lock import ProjectLock
 
     if args.dry_run:
-        return settle_and_report(load_project(args.path, allow_outside_files=args.allow_outside_files), args)
+        project = load_project(args.path, allow_outside_files=args.allow_outside_files)
+        read = Positions.of(project)
+        settle_and_report(project, args)
+        print(would_move(read, Positions.of(project), args.path))
+        return EXIT_OK
     with ProjectLock(args.path, purpose="floatpage settle"):
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         read = Positions.of(project)
@@ -168,6 +172,24 @@ def cmd_settle(args: argparse.Namespace) -> int:
     else:
         print(f"{printable(str(project.path))}: already settled, nothing to write")
     return EXIT_OK
+
+
+def would_move(read, settled, path: str) -> str:
+    """What `settle --dry-run` would have written: it only said how many steps it ran, so
+    a user could not tell a settled file from one a settle would rewrite."""
+    from floatpage.model.save import mm, same
+
+    moved = []  # as the save tells a moved number (model.position_patch.patched_text)
+    for page_before, page_after in zip(read.pages, settled.pages):
+        for (item_id, x0, y0), (_, x1, y1) in zip(page_before, page_after):
+            if not (same(x0, mm(x1)) and same(y0, mm(y1))):
+                moved.append((max(abs(mm(x1) - x0), abs(mm(y1) - y0)), item_id))
+    if not moved:
+        return f"{printable(path)}: already settled; settle would change nothing (--dry-run)"
+    farthest, item_id = max(moved)
+    return (f"{printable(path)}: settle would move {len(moved)} item(s), "
+            f'"{printable(item_id)}" the farthest, {farthest:.2f} mm; nothing written '
+            "(--dry-run)")
 
 
 def file_identity(path) -> tuple[int, int, int] | None:

@@ -76,6 +76,23 @@ def test_settle_dry_run_writes_nothing(crowded_project):
     assert crowded_project.read_text() == before
 
 
+def test_settle_dry_run_says_what_settle_would_do(crowded_project):
+    """`--dry-run` ("report only") said how many steps it ran and nothing else: the report did
+    not tell a file settle would rewrite from a settled one.  It now says which, and the
+    verdict matches what settle then does."""
+    result = run("settle", "--dry-run", str(crowded_project))
+    last = result.stdout.splitlines()[-1]
+    assert last.startswith(f"{crowded_project}: settle would move ") and \
+        last.endswith("; nothing written (--dry-run)"), result.stdout
+    moved = int(last.split("would move ")[1].split(" ")[0])
+    assert 1 <= moved <= 6
+    assert f"wrote positions to {crowded_project}" in run("settle", str(crowded_project)).stdout
+    again = run("settle", "--dry-run", str(crowded_project))
+    assert again.stdout.splitlines()[-1] == (
+        f"{crowded_project}: already settled; settle would change nothing (--dry-run)")
+    assert "already settled" in run("settle", str(crowded_project)).stdout
+
+
 def test_render_writes_pdf_and_tex(crowded_project, tmp_path):
     pdf, tex = tmp_path / "out.pdf", tmp_path / "out.tex"
     result = run("render", str(crowded_project), "-o", str(pdf), "--tex", str(tex))
