@@ -235,7 +235,8 @@ def cmd_render(args: argparse.Namespace) -> int:
                             progress=show,
                             print_bleed_mm=(3.0 if args.bleed is None else args.bleed)
                             if args.print else None)
-    for warning in report.warnings:
+    for warning in report.warnings + (unsettled_warnings(project, args.path)
+                                      if args.no_settle else []):
         print(f"warning: {printable(warning)}", file=sys.stderr)
     from floatpage.typeset.render import resolution_notes
 
@@ -243,6 +244,30 @@ def cmd_render(args: argparse.Namespace) -> int:
         print(f"note: {printable(note)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
+
+
+def unsettled_warnings(project, path: str) -> list[str]:
+    """What `render --no-settle` printed that a settle would have mended: overlapping items
+    and items past the page's edge went into the PDF without a word."""
+    from floatpage.model.layout import engine_for_page
+
+    warnings = []
+    for page in project.pages:
+        quality = engine_for_page(page, project.physics).quality()
+        if not (quality.overlap_count or quality.off_page):
+            continue
+        ids = page.items
+        found = [f"{quality.overlap_count} overlap(s)" if quality.overlap_count else "",
+                 f"{len(quality.off_page)} item(s) past its edge" if quality.off_page else ""]
+        named = [f'"{printable(ids[a].id)}" and "{printable(ids[b].id)}"'
+                 for a, b in quality.overlapping_pairs[:3]]
+        named += [f'"{printable(ids[k].id)}"' for k in quality.off_page[:3]]
+        more = ", …" if quality.overlap_count + len(quality.off_page) > len(named) else ""
+        warnings.append(f'page "{printable(page.id)}" was printed as saved (--no-settle) with '
+                        f"{' and '.join(part for part in found if part)} "
+                        f"({', '.join(named)}{more}); run `floatpage settle "
+                        f"{printable(path)}` first, or render without --no-settle")
+    return warnings
 
 
 # Output names that promise another format: `render -o card.png` wrote a PDF called card.png.

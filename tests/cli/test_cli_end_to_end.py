@@ -93,6 +93,24 @@ def test_settle_dry_run_says_what_settle_would_do(crowded_project):
     assert "already settled" in run("settle", str(crowded_project)).stdout
 
 
+def test_render_no_settle_warns_of_overlaps_it_prints_and_says_what_to_do(crowded_project,
+                                                                          tmp_path):
+    """`render --no-settle` on a file whose items overlap made the PDF without a word; it
+    still makes it (the user asked for the positions as saved) and names the page, the items
+    and the way out.  A settled file gets no such warning."""
+    pdf = tmp_path / "out.pdf"
+    result = run("render", "--no-settle", str(crowded_project), "-o", str(pdf))
+    assert result.returncode == 0, result.stderr
+    assert pdf.read_bytes().startswith(b"%PDF")
+    assert 'warning: page "front" was printed as saved (--no-settle) with ' in result.stderr
+    assert '"block-0" and "block-1"' in result.stderr
+    assert f"run `floatpage settle {crowded_project}` first, or render without --no-settle" \
+        in result.stderr
+    assert run("settle", str(crowded_project)).returncode == 0
+    again = run("render", "--no-settle", str(crowded_project), "-o", str(pdf))
+    assert again.returncode == 0 and "warning" not in again.stderr, again.stderr
+
+
 def test_render_writes_pdf_and_tex(crowded_project, tmp_path):
     pdf, tex = tmp_path / "out.pdf", tmp_path / "out.tex"
     result = run("render", str(crowded_project), "-o", str(pdf), "--tex", str(tex))
