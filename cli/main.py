@@ -247,8 +247,9 @@ def cmd_render(args: argparse.Namespace) -> int:
 
 
 def unsettled_warnings(project, path: str) -> list[str]:
-    """What `render --no-settle` printed that a settle would have mended: overlapping items
-    and items past the page's edge went into the PDF without a word."""
+    """What `render --no-settle` printed that a settle may have mended: overlapping items and
+    items past the page's edge went into the PDF without a word.  Check, not settle, is named:
+    on a page too full for its items no settle mends them, and check says so."""
     from floatpage.model.layout import engine_for_page
 
     warnings = []
@@ -265,8 +266,8 @@ def unsettled_warnings(project, path: str) -> list[str]:
         more = ", …" if quality.overlap_count + len(quality.off_page) > len(named) else ""
         warnings.append(f'page "{printable(page.id)}" was printed as saved (--no-settle) with '
                         f"{' and '.join(part for part in found if part)} "
-                        f"({', '.join(named)}{more}); run `floatpage settle "
-                        f"{printable(path)}` first, or render without --no-settle")
+                        f"({', '.join(named)}{more}); `floatpage check {printable(path)}` "
+                        "says why and what to do (most often: settle first)")
     return warnings
 
 

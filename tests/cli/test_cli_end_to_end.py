@@ -104,8 +104,7 @@ def test_render_no_settle_warns_of_overlaps_it_prints_and_says_what_to_do(crowde
     assert pdf.read_bytes().startswith(b"%PDF")
     assert 'warning: page "front" was printed as saved (--no-settle) with ' in result.stderr
     assert '"block-0" and "block-1"' in result.stderr
-    assert f"run `floatpage settle {crowded_project}` first, or render without --no-settle" \
-        in result.stderr
+    assert f"`floatpage check {crowded_project}` says why and what to do" in result.stderr
     assert run("settle", str(crowded_project)).returncode == 0
     again = run("render", "--no-settle", str(crowded_project), "-o", str(pdf))
     assert again.returncode == 0 and "warning" not in again.stderr, again.stderr
