@@ -105,6 +105,19 @@ def test_created_calendar_is_at_rest(tmp_path):
     assert again < 0.5
 
 
+def test_a_new_calendars_month_panels_sit_on_the_page_centre_as_wide_as_the_title(tmp_path):
+    """The portrait panel was 8 mm narrower than the title and the photo band, so the guides
+    lined up one of its edges with a photo's and left it 4 mm off the page centre (x = 101 or
+    109 on most months of a new calendar), under a centred title.  As wide as the title, it
+    lines up with the title and the photos on both sides, and stays centred."""
+    starters.create("calendar", tmp_path / "cal.toml", year=2027)
+    for page in load_project(tmp_path / "cal.toml").pages:
+        title = page.item(f"{page.id}-title")
+        panel = page.item(f"{page.id}-month")
+        assert panel.x == pytest.approx(page.width_mm / 2, abs=0.01), page.id
+        assert panel.w == pytest.approx(title.w, abs=0.01), page.id
+
+
 CREATE_CASES = {
     "blank": {},
     "calendar": {"year": 2028, "first_weekday": "sunday", "lang": "de", "orientation": "landscape"},
