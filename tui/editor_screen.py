@@ -620,7 +620,10 @@ class EditorScreen(Screen):
             self.attempt(self.session.update_item, item.id, {"decorative": not item.decorative})
 
     def action_delete(self) -> None:
-        self.attempt(self.session.delete_selected)
+        self.attempt(self.say_deleted)
+
+    def say_deleted(self) -> None:
+        self.notify(self.session.delete_selected(), timeout=4)
 
     # -- anchoring ------------------------------------------------------------------------------
 

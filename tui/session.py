@@ -444,6 +444,8 @@ class EditSession:
         return str(copy_into(path, base / "pictures").relative_to(base))
 
     def delete_selected(self) -> str:
+        """Delete the selected item; its followers stay where they are, free.  Returns what
+        the editor says of it (a caption freed from its deleted photo used to go unsaid)."""
         item = self._require_selected()
         self.checkpoint(f"delete {item.id}")
         followers = [i for i in self.page.items
@@ -457,7 +459,10 @@ class EditSession:
             self.engine.delete(item.id)  # the engine's edits reheat it themselves
         order = reading_order(self.page.items)
         self.selected_id = order[0] if order else None
-        return item.id
+        freed = ", ".join(f'"{follower.id}"' for follower in followers)
+        return (f'deleted "{item.id}"'
+                + (f"; {freed} no longer follow{'s' if len(followers) == 1 else ''} it"
+                   if followers else "") + " (Ctrl+Z brings it back)")
 
     def begin_move(self, item_id: str) -> None:
         """Hold an item (it pushes the others and is not pushed) for a move or a drag."""
