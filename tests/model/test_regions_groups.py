@@ -298,3 +298,23 @@ def test_check_tells_how_to_mend_a_chain_longer_than_its_region_not_to_settle(tm
         assert floatpage("settle", str(path)).returncode == 0
         result = floatpage("check", "--strict", str(path))
         assert result.returncode == 0, result.stdout
+
+
+def test_check_tells_a_group_too_tall_for_a_members_region_what_to_do_not_to_settle(tmp_path):
+    """A group ("head" and "tail", 160 mm apart) whose second member keeps to an 80 mm region:
+    check said of "tail" "run `floatpage settle`", and of the group "its room inside the margins
+    is 95 mm (the page: 297 mm): it cannot keep the print-safe margin ... bring its followers
+    closer (their dx and dy)": group members have no dx and dy, and the region, not the margin,
+    is what binds.  It now names the region and the group's own way out."""
+    text = (CHAIN.replace('region = "top"\n', 'group = "g"\n')
+            .replace('anchor = {to = "head", dx = 0, dy = 160}\n',
+                     'region = "top"\ngroup = "g"\n'))
+    path = write(tmp_path, text)
+    result = floatpage("check", "--strict", str(path))
+    assert result.returncode == 1
+    assert ('item "head" with the other members of its group "g" ("tail") is 180.0 mm tall, but '
+            'the region(s) "top" its items keep to, and the margins, leave it 95.0 mm') \
+        in result.stdout, result.stdout
+    assert "move the group's members closer together, make the region larger" in result.stdout
+    assert "settle" not in result.stdout.replace("no settle", ""), result.stdout
+    assert "dx and dy" not in result.stdout and "print-safe" not in result.stdout
