@@ -277,6 +277,9 @@ NOT_PDF = {".png": "pdftoppm -png", ".jpg": "pdftoppm -jpeg", ".jpeg": "pdftoppm
            ".svg": "pdftocairo -svg", ".tex": "--tex", ".eps": "pdftops -eps"}
 
 
+PROJECT_PATH_HELP = "the project's .toml file"
+
+
 def refuse_other_format(out: Path) -> None:
     suffix = out.suffix.lower()
     if suffix not in NOT_PDF:
@@ -410,12 +413,13 @@ def build_parser() -> argparse.ArgumentParser:
                      "each week (default: monday)")
     new.add_argument("--lang", default="en", choices=CALENDAR_LANGUAGES,
                      help="language of month and day names")
-    new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait")
+    new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait",
+                     help="page orientation (default: portrait)")
     jobs_option(new)
     new.set_defaults(run=cmd_new)
 
     edit = commands.add_parser("edit", help="open the editor", description="Open the terminal editor.")
-    edit.add_argument("path")
+    edit.add_argument("path", help=PROJECT_PATH_HELP)
     edit.add_argument("--seed", type=int, default=None,
                       help="seed the physics jitter for this session (default: the project's seed)")
     allow_outside_option(edit)
@@ -424,8 +428,8 @@ def build_parser() -> argparse.ArgumentParser:
     settle = commands.add_parser("settle", help="run the physics until the layout settles",
                                  description="Run the physics headless until every page settles, "
                                              "then write the positions back.")
-    settle.add_argument("path")
-    settle.add_argument("--dry-run", action="store_true", help="report only; do not write the file")
+    settle.add_argument("path", help=PROJECT_PATH_HELP)
+    settle.add_argument("--dry-run", action="store_true", help="report what settle would change; write nothing")
     settle.add_argument("-q", "--quiet", action="store_true", help="no progress output")
     jobs_option(settle)
     allow_outside_option(settle)
@@ -433,7 +437,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     render = commands.add_parser("render", help="typeset the project to PDF",
                                  description="Settle the layout and typeset it to PDF with LaTeX.")
-    render.add_argument("path")
+    render.add_argument("path", help=PROJECT_PATH_HELP)
     render.add_argument("-o", "--output", metavar="OUT.pdf", help="default: the project's name with .pdf")
     render.add_argument("--tex", metavar="OUT.tex", help="also keep the standalone .tex")
     render.add_argument("--fragment", metavar="OUT.tex", help="also write a TikZ-only fragment for \\input")
@@ -450,7 +454,7 @@ def build_parser() -> argparse.ArgumentParser:
     check = commands.add_parser("check", help="validate and report layout quality",
                                 description="Validate a project file and report overlaps, items off "
                                             "the page and text that would not fit.")
-    check.add_argument("path")
+    check.add_argument("path", help=PROJECT_PATH_HELP)
     check.add_argument("--strict", action="store_true", help="exit 1 when the layout has problems")
     allow_outside_option(check)
     check.set_defaults(run=cmd_check)

@@ -34,6 +34,21 @@ def test_every_command_has_help(command, capsys):
     assert f"usage: floatpage {command}" in capsys.readouterr().out
 
 
+def test_every_argument_of_every_command_says_what_it_is():
+    """`floatpage edit --help` listed `path` with no word, and `new --help` listed
+    `--orientation {portrait,landscape}` with none."""
+    import argparse
+
+    from floatpage.cli.main import build_parser
+
+    parser = build_parser()
+    commands = next(action for action in parser._actions
+                    if isinstance(action, argparse._SubParsersAction))
+    silent = [f"{name} {action.dest}" for name, command in commands.choices.items()
+              for action in command._actions if not action.help]
+    assert silent == []
+
+
 @pytest.mark.parametrize("argv", [[], ["frobnicate"], ["render"], ["new", "poster", "x.toml"],
                                   ["settle", "a.toml", "--bogus"]])
 def test_misuse_exits_2(argv, capsys):
