@@ -121,31 +121,43 @@ def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float
 def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], sx: float,
                          sy: float) -> None:
     """Scale each follower's offset from its target with a new page size, as positions scale,
-    and put it there.  Left as it was, a follower 160 mm below its target on A4 stood past the
-    bottom of an A6 page, and the saved offsets no longer matched the saved positions.  Item
-    sizes do not scale, so on an axis where the two stand apart the space between their edges
-    scales (a caption 2.5 mm below its photo keeps clear of it); where they overlap on an axis
-    (a caption centred under its photo, a label on a picture), the centres' offset scales.
-    Positions are set target first, down each chain."""
+    and put it there; the members of a group keep to their lead the same way.  Left as it was,
+    a follower 160 mm below its target on A4 stood past the bottom of an A6 page, and the
+    saved offsets no longer matched the saved positions; a group's members, their centres
+    scaled but not their sizes, came to overlap one another for good.  Item sizes do not
+    scale, so on an axis where two stand apart the space between their edges scales (a caption
+    2.5 mm below its photo keeps clear of it); where they overlap on an axis (a caption centred
+    under its photo, a label on a picture), the centres' offset scales.  Positions are set
+    target first, down each chain.  Called with positions already scaled by (sx, sy)."""
     by_id = {item.id: item for item in page.items}
+    leads = {item.group: page.group_lead(item.group) for item in page.items if item.group}
     done: set[str] = set()
 
+    def scaled(offset: float, scale: float, axis: int, item, target) -> float:
+        old_half = (old_sizes[item.id][axis] + old_sizes[target.id][axis]) / 2
+        new_half = ((item.w, item.h)[axis] + (target.w, target.h)[axis]) / 2
+        gap = abs(offset) - old_half
+        size = new_half + gap * scale if gap >= 0 else abs(offset) * scale
+        return round(size if offset >= 0 else -size, 2) + 0.0
+
     def place(item) -> None:
-        anchor = item.anchor
-        if item.id in done or not isinstance(anchor, ItemAnchor) or anchor.to not in by_id:
+        if item.id in done:
             return
         done.add(item.id)
-        target = by_id[anchor.to]
-        place(target)
-        offsets = []
-        for offset, scale, axis in ((anchor.dx, sx, 0), (anchor.dy, sy, 1)):
-            old_half = (old_sizes[item.id][axis] + old_sizes[target.id][axis]) / 2
-            new_half = ((item.w, item.h)[axis] + (target.w, target.h)[axis]) / 2
-            gap = abs(offset) - old_half
-            scaled = new_half + gap * scale if gap >= 0 else abs(offset) * scale
-            offsets.append(round(scaled if offset >= 0 else -scaled, 2) + 0.0)
-        anchor.dx, anchor.dy = offsets
-        item.x, item.y = target.x + anchor.dx, target.y + anchor.dy
+        anchor = item.anchor
+        if isinstance(anchor, ItemAnchor) and anchor.to in by_id:
+            target = by_id[anchor.to]
+            place(target)
+            anchor.dx = scaled(anchor.dx, sx, 0, item, target)
+            anchor.dy = scaled(anchor.dy, sy, 1, item, target)
+            item.x, item.y = target.x + anchor.dx, target.y + anchor.dy
+        elif item.group and leads.get(item.group) is not None \
+                and leads[item.group] is not item and not isinstance(anchor, ItemAnchor):
+            lead = leads[item.group]
+            dx, dy = (item.x - lead.x) / sx, (item.y - lead.y) / sy  # as it was
+            place(lead)
+            item.x = lead.x + scaled(dx, sx, 0, item, lead)
+            item.y = lead.y + scaled(dy, sy, 1, item, lead)
 
     for item in page.items:
         place(item)
@@ -153,17 +165,22 @@ def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], 
 
 def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
     """Shrink the page's items of ``ids`` (all that take part, if None) by ``scale`` to make
-    room; a follower shrunk with its target comes closer by as much, so that the two shrink
-    as one (sizes alone shrunk left a caption and its photo as far apart as ever, and after
+    room; a follower shrunk with its target, or a member with its group's lead, comes closer
+    by as much, so that they shrink as one (sizes alone shrunk left a caption and its photo as far apart as ever, and after
     a smaller page size such a pair still reached past the page however small they got)."""
     shrunk = {item.id for item in page.items
               if not item.decorative and (ids is None or item.id in ids)}
+    leads = {item.group: page.group_lead(item.group) for item in page.items if item.group}
     for item in page.items:
         if item.id in shrunk:
             item.w, item.h = item.w * scale, item.h * scale
             anchor = item.anchor
+            lead = leads.get(item.group)
             if isinstance(anchor, ItemAnchor) and anchor.to in shrunk:
                 anchor.dx, anchor.dy = anchor.dx * scale, anchor.dy * scale
+            elif lead is not None and lead is not item and lead.id in shrunk:
+                item.x = lead.x + (item.x - lead.x) * scale  # a group shrinks as one, too
+                item.y = lead.y + (item.y - lead.y) * scale
 
 
 @dataclasses.dataclass(frozen=True)

@@ -193,6 +193,29 @@ async def test_a_smaller_page_size_scales_follow_offsets_and_keeps_followers_cle
     assert caption.anchor.dx == 0.0
 
 
+async def test_a_smaller_page_size_keeps_a_groups_members_apart(tmp_path):
+    """S, 4x6in on an A4 page with a title and subtitle grouped 4 mm apart: their centres
+    scaled with the page but not their sizes, and the room search shrank their sizes but not
+    the distance between them, so the subtitle ended 2.2 mm inside the title for good (a group
+    moves as one body, so nothing ever parts them)."""
+    path = tmp_path / "g.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="title", x=105.0, y=100.0, w=100.0, h=12.0, text="Title", group="head"),
+        TextItem(id="sub", x=105.0, y=115.0, w=100.0, h=10.0, text="Sub", group="head"),
+        BlockItem(id="box", x=105.0, y=200.0, w=40.0, h=30.0),
+    ])]), path)
+    async with editor(path) as (app, pilot):
+        await keys(pilot, "S", *["down"] * 5, "enter")  # from A4 to 4x6in
+        assert app.session.page.size == "4x6in"
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        await keys(pilot, "ctrl+s")
+    page = load_project(path).pages[0]
+    title, sub = page.item("title"), page.item("sub")
+    gap = (sub.y - sub.h / 2) - (title.y + title.h / 2)
+    assert gap == pytest.approx(4.0 * 152.4 / 297.0 * (title.h / 12.0), abs=0.02)
+
+
 async def test_a_page_too_small_for_a_photo_and_its_caption_shrinks_them_as_one(tmp_path):
     """S, a custom 100 x 100 mm page under an 84 x 105 mm photo whose caption follows 115 mm
     below: the room search shrank sizes but not the offset between them, so however small they
