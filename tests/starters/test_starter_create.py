@@ -51,6 +51,21 @@ def test_an_album_without_photos_starts_with_the_bundled_ones_and_says_how_to_us
     assert pictures and set(pictures) <= set(starters.album.BUNDLED)
 
 
+def test_a_folder_where_the_pictures_cannot_go_is_a_message_not_a_crash(tmp_path):
+    """`floatpage new card /proc/x.toml`, or a folder holding a file named `pictures`, ended in
+    "internal error: FileNotFoundError" (exit 70, a crash log) while copying the pictures."""
+    (tmp_path / "pictures").write_text("my notes")
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "card",
+                             str(tmp_path / "card.toml")], capture_output=True, text=True,
+                            timeout=120, stdin=subprocess.DEVNULL)
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith(f"floatpage: {tmp_path / 'card.toml'}: cannot create the "
+                                    f"project there ({tmp_path / 'pictures'}: "), result.stderr
+    assert "choose a folder you can write to" in result.stderr
+    assert (tmp_path / "pictures").read_text() == "my notes"
+    assert not (tmp_path / "card.toml").exists()
+
+
 def test_an_existing_file_is_never_overwritten(tmp_path):
     target = tmp_path / "mine.toml"
     target.write_text("precious")
