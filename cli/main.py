@@ -72,6 +72,7 @@ def cmd_edit(args: argparse.Namespace) -> int:
     # for the whole session, so a `settle` meanwhile refuses rather than being overwritten.
     with ProjectLock(args.path, wait_s=0.0, purpose="floatpage edit"):
         load_project(args.path, allow_outside_files=args.allow_outside_files)
+        refuse_without_terminal(args.path)
         from floatpage.tui.app import make_app
         from floatpage.tui.recovery import discard_recovery, pending_recovery
 
@@ -81,6 +82,19 @@ def cmd_edit(args: argparse.Namespace) -> int:
         if recovered:
             discard_recovery(args.path)  # saved, or left unsaved at the quit question
     return EXIT_OK
+
+
+def refuse_without_terminal(path: str) -> None:
+    """The editor draws on a terminal and reads keys from one: run from a script, a pipe or
+    cron, it wrote screen codes into the output and ended "floatpage: interrupted" (exit 130),
+    which read as though someone had pressed Ctrl+C."""
+    missing = [name for name, stream in (("input", sys.stdin), ("output", sys.stdout))
+               if stream is None or not stream.isatty()]
+    if missing:
+        raise FloatpageError(
+            f"{printable(str(path))}: floatpage edit needs a terminal, and its {' and '.join(missing)} "
+            f"{'is' if len(missing) == 1 else 'are'} not one; run it in a terminal (over SSH: "
+            "ssh -t), or use `floatpage settle`, `check` or `render` in scripts")
 
 
 def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
@@ -139,7 +153,11 @@ def cmd_settle(args: argparse.Namespace) -> int:
     from floatpage.model.project_lock import ProjectLock
 
     if args.dry_run:
-        return settle_and_report(load_project(args.path, allow_outside_files=args.allow_outside_files), args)
+        project = load_project(args.path, allow_outside_files=args.allow_outside_files)
+        read = Positions.of(project)
+        settle_and_report(project, args)
+        print(would_move(read, Positions.of(project), args.path))
+        return EXIT_OK
     with ProjectLock(args.path, purpose="floatpage settle"):
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         read = Positions.of(project)
@@ -154,6 +172,24 @@ def cmd_settle(args: argparse.Namespace) -> int:
     else:
         print(f"{printable(str(project.path))}: already settled, nothing to write")
     return EXIT_OK
+
+
+def would_move(read, settled, path: str) -> str:
+    """What `settle --dry-run` would have written: it only said how many steps it ran, so
+    a user could not tell a settled file from one a settle would rewrite."""
+    from floatpage.model.save import mm, same
+
+    moved = []  # as the save tells a moved number (model.position_patch.patched_text)
+    for page_before, page_after in zip(read.pages, settled.pages):
+        for (item_id, x0, y0), (_, x1, y1) in zip(page_before, page_after):
+            if not (same(x0, mm(x1)) and same(y0, mm(y1))):
+                moved.append((max(abs(mm(x1) - x0), abs(mm(y1) - y0)), item_id))
+    if not moved:
+        return f"{printable(path)}: already settled; settle would change nothing (--dry-run)"
+    farthest, item_id = max(moved)
+    return (f"{printable(path)}: settle would move {len(moved)} item(s), "
+            f'"{printable(item_id)}" the farthest, {farthest:.2f} mm; nothing written '
+            "(--dry-run)")
 
 
 def file_identity(path) -> tuple[int, int, int] | None:
@@ -199,7 +235,8 @@ def cmd_render(args: argparse.Namespace) -> int:
                             progress=show,
                             print_bleed_mm=(3.0 if args.bleed is None else args.bleed)
                             if args.print else None)
-    for warning in report.warnings:
+    for warning in report.warnings + (unsettled_warnings(project, args.path)
+                                      if args.no_settle else []):
         print(f"warning: {printable(warning)}", file=sys.stderr)
     from floatpage.typeset.render import resolution_notes
 
@@ -209,10 +246,38 @@ def cmd_render(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def unsettled_warnings(project, path: str) -> list[str]:
+    """What `render --no-settle` printed that a settle may have mended: overlapping items and
+    items past the page's edge went into the PDF without a word.  Check, not settle, is named:
+    on a page too full for its items no settle mends them, and check says so."""
+    from floatpage.model.layout import engine_for_page
+
+    warnings = []
+    for page in project.pages:
+        quality = engine_for_page(page, project.physics).quality()
+        if not (quality.overlap_count or quality.off_page):
+            continue
+        ids = page.items
+        found = [f"{quality.overlap_count} overlap(s)" if quality.overlap_count else "",
+                 f"{len(quality.off_page)} item(s) past its edge" if quality.off_page else ""]
+        named = [f'"{printable(ids[a].id)}" and "{printable(ids[b].id)}"'
+                 for a, b in quality.overlapping_pairs[:3]]
+        named += [f'"{printable(ids[k].id)}"' for k in quality.off_page[:3]]
+        more = ", …" if quality.overlap_count + len(quality.off_page) > len(named) else ""
+        warnings.append(f'page "{printable(page.id)}" was printed as saved (--no-settle) with '
+                        f"{' and '.join(part for part in found if part)} "
+                        f"({', '.join(named)}{more}); `floatpage check {printable(path)}` "
+                        "says why and what to do (most often: settle first)")
+    return warnings
+
+
 # Output names that promise another format: `render -o card.png` wrote a PDF called card.png.
 # (A .toml is left to render's own check, which says when it is the project itself.)
 NOT_PDF = {".png": "pdftoppm -png", ".jpg": "pdftoppm -jpeg", ".jpeg": "pdftoppm -jpeg",
            ".svg": "pdftocairo -svg", ".tex": "--tex", ".eps": "pdftops -eps"}
+
+
+PROJECT_PATH_HELP = "the project's .toml file"
 
 
 def refuse_other_format(out: Path) -> None:
@@ -252,7 +317,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
-        print(f"{issues} layout problem(s); " + (
+        print(f"{printable(args.path)}: {issues} layout problem(s); " + (
             f"run `floatpage settle {printable(args.path)}` to fix overlaps" if settle_helps
             else "no settle fixes them: see the reasons above"))
         return EXIT_USER_ERROR
@@ -348,12 +413,13 @@ def build_parser() -> argparse.ArgumentParser:
                      "each week (default: monday)")
     new.add_argument("--lang", default="en", choices=CALENDAR_LANGUAGES,
                      help="language of month and day names")
-    new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait")
+    new.add_argument("--orientation", choices=("portrait", "landscape"), default="portrait",
+                     help="page orientation (default: portrait)")
     jobs_option(new)
     new.set_defaults(run=cmd_new)
 
     edit = commands.add_parser("edit", help="open the editor", description="Open the terminal editor.")
-    edit.add_argument("path")
+    edit.add_argument("path", help=PROJECT_PATH_HELP)
     edit.add_argument("--seed", type=int, default=None,
                       help="seed the physics jitter for this session (default: the project's seed)")
     allow_outside_option(edit)
@@ -362,8 +428,8 @@ def build_parser() -> argparse.ArgumentParser:
     settle = commands.add_parser("settle", help="run the physics until the layout settles",
                                  description="Run the physics headless until every page settles, "
                                              "then write the positions back.")
-    settle.add_argument("path")
-    settle.add_argument("--dry-run", action="store_true", help="report only; do not write the file")
+    settle.add_argument("path", help=PROJECT_PATH_HELP)
+    settle.add_argument("--dry-run", action="store_true", help="report what settle would change; write nothing")
     settle.add_argument("-q", "--quiet", action="store_true", help="no progress output")
     jobs_option(settle)
     allow_outside_option(settle)
@@ -371,7 +437,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     render = commands.add_parser("render", help="typeset the project to PDF",
                                  description="Settle the layout and typeset it to PDF with LaTeX.")
-    render.add_argument("path")
+    render.add_argument("path", help=PROJECT_PATH_HELP)
     render.add_argument("-o", "--output", metavar="OUT.pdf", help="default: the project's name with .pdf")
     render.add_argument("--tex", metavar="OUT.tex", help="also keep the standalone .tex")
     render.add_argument("--fragment", metavar="OUT.tex", help="also write a TikZ-only fragment for \\input")
@@ -388,7 +454,7 @@ def build_parser() -> argparse.ArgumentParser:
     check = commands.add_parser("check", help="validate and report layout quality",
                                 description="Validate a project file and report overlaps, items off "
                                             "the page and text that would not fit.")
-    check.add_argument("path")
+    check.add_argument("path", help=PROJECT_PATH_HELP)
     check.add_argument("--strict", action="store_true", help="exit 1 when the layout has problems")
     allow_outside_option(check)
     check.set_defaults(run=cmd_check)

@@ -15,7 +15,7 @@ from floatpage.physics.page_limits import (
     TooLarge, binding,
     page_limits, unexplained_pairs,
 )
-from floatpage.physics.geometry import GUTTER_FITS_COVER
+from floatpage.physics.geometry import GUTTER_FITS_COVER, group_extents
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -33,12 +33,20 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     problems = (quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
                 + len(quality.outside_region))
     name = _namer(page)
-    for k in quality.outside_region:
-        item = page.items[k]
-        lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
-                     f'"{printable(item.region)}": {SETTLE}, or make the region larger')
+    chains = _chains_past_region(page, bodies)
+    in_chains = {row for rows, _, _, _ in chains for row in rows}
+    lines += ["  " + _chain_sentence(page, chain, name) for chain in chains]
+    # a chain still inside its region is a problem too: the next settle pulls it out
+    problems += sum(not set(rows) & set(quality.outside_region) for rows, _, _, _ in chains)
     limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
               if not quality.ok else [])
+    too_large = {row for limit in limits if isinstance(limit, TooLarge) for row in limit.rows}
+    for k in quality.outside_region:
+        item = page.items[k]
+        if k in in_chains or k in too_large:  # named below, with what to do: settle cannot
+            continue
+        lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
+                     f'"{printable(item.region)}": {SETTLE}, or make the region larger')
     if quality.in_margin:
         shown = _some([name(k) for k in quality.in_margin[:SHOWN]], len(quality.in_margin))
         lines.append(f"  {len(quality.in_margin)} item(s) inside the {quality.margin_mm:.1f} mm "
@@ -48,10 +56,10 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                         else f"{SETTLE}, ")
                      + "make items smaller, mark items that may touch the edge `bleed = true`, "
                      "or lower margin_mm in [physics]")
-    lines += _explain(limits, name, gutter_mm, engine.margin_mm)
+    lines += _explain(limits, name, gutter_mm, engine.margin_mm, page)
     named = {row for limit in limits if isinstance(limit, (PinnedOutside, TooLarge))
              for row in getattr(limit, "rows", (getattr(limit, "row", -1),))}
-    off = [k for k in quality.off_page if k not in named]
+    off = [k for k in quality.off_page if k not in named and k not in in_chains]
     if off:  # every item off the page is named, by a limit or here: never a bare count
         lines.append(f"  {len(off)} item(s) reach past the page's edge: "
                      f"{_some([name(k) for k in off[:SHOWN]], len(off))}; {SETTLE}, or move "
@@ -93,6 +101,50 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     return lines, problems
 
 
+def _chains_past_region(page, bodies) -> list[tuple[tuple[int, ...], int, float, float]]:
+    """Items confined to a region whose followers make their rigid group larger than the
+    region, on an axis: (the root and its followers, the axis, the group's extent, the
+    region's), the root first.  The physics keeps a group inside its lead's walls, so such a
+    chain can never sit in the region, and no settle mends it (check used to send the user to
+    `settle`, which then wrote nothing).  Decorations take no part; the region's own edges count,
+    not the margin inside them (the margin gives way, check names that on its own line)."""
+    roots, offsets = bodies.group_roots()
+    low, high = group_extents(bodies, roots, offsets)
+    active = bodies.active
+    found = []
+    for root, item in enumerate(page.items):
+        if not (active[root] and roots[root] == root and item.region) \
+                or not any(region.id == item.region for region in page.regions):
+            continue
+        members = [int(row) for row in range(len(roots))
+                   if roots[row] == root and row != root and active[row]]
+        if not members:
+            continue
+        region = page.region(item.region)
+        for axis, room in ((0, region.w), (1, region.h)):
+            extent = float(high[root, axis] - low[root, axis])
+            if extent > room + 0.01:
+                found.append(((root, *members), axis, extent, float(room)))
+                break
+    return found
+
+
+def _chain_sentence(page, chain, name) -> str:
+    rows, axis, extent, room = chain
+    root = page.items[rows[0]]
+    followers = _some([name(row) for row in rows[1:1 + SHOWN]], len(rows) - 1)
+    size_word, across = AXIS_WORDS[axis]
+    side = "taller" if axis == 1 else "wider"
+    companions, closer = _companions(page, rows)
+    if "dx and dy" in closer:
+        closer = f"bring the followers closer (their anchor {'dy' if axis == 1 else 'dx'})"
+    return (f"item {name(rows[0])} with {companions} ({followers}) is "
+            f"{extent:.1f} mm {size_word}, but its region \"{printable(root.region)}\" is "
+            f"{room:.1f} mm {size_word}, and an item keeps those moving with it inside its "
+            f"region: no settle can fit them; {closer}, make the region {side}, or take "
+            f"{name(rows[0])} out of the region")
+
+
 def settle_may_help(lines: list[str]) -> bool:
     """Whether any of page_report's ``lines`` sends the user to `settle`: `check`'s closing
     line repeats that advice only then (it said "run `floatpage settle` to fix overlaps"
@@ -113,19 +165,20 @@ def _namer(page):
     return name
 
 
-def _explain(limits: list[Limit], name, gutter_mm: float, margin_mm: float) -> list[str]:
+def _explain(limits: list[Limit], name, gutter_mm: float, margin_mm: float, page=None
+             ) -> list[str]:
     lines: list[str] = []
     for kind in (PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack,
                  NoArrangement):
         mine = [limit for limit in limits if isinstance(limit, kind)]
         for limit in mine[:SHOWN]:
-            lines.append("  " + _sentence(limit, name, gutter_mm, margin_mm))
+            lines.append("  " + _sentence(limit, name, gutter_mm, margin_mm, page))
         if len(mine) > SHOWN:
             lines.append(f"  … and {len(mine) - SHOWN} more like it")
     return lines
 
 
-def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
+def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float, page=None) -> str:
     if isinstance(limit, PinnedClash):
         a, b = (name(row) for row in limit.rows)
         where = (f"overlap by {-limit.gap_mm:.1f} mm" if limit.gap_mm < 0
@@ -144,20 +197,7 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
                 f"decoration) {where}: move its anchor inwards, or mark it `bleed = true` if it "
                 "may reach the edge")
     if isinstance(limit, TooLarge):
-        size_word, _ = AXIS_WORDS[limit.axis]
-        who = f"item {name(limit.rows[0])}"
-        if len(limit.rows) > 1:
-            others = ", ".join(name(row) for row in limit.rows[1:1 + SHOWN])
-            more = f" and {len(limit.rows) - 1 - SHOWN} more" if len(limit.rows) > 1 + SHOWN else ""
-            who += f" with the items anchored to it ({others}{more}) is"
-        else:
-            who += " is"
-        fate = ("it cannot stay on the page" if limit.extent_mm > limit.page_mm + 0.01
-                else "it cannot keep the print-safe margin")
-        return (f"{who} {limit.extent_mm:.1f} mm {size_word}, but its room inside the margins "
-                f"is {limit.room_mm:.1f} mm (the page: {limit.page_mm:g} mm): {fate}; make it "
-                "smaller" + (", or bring its followers closer (their dx and dy)"
-                             if len(limit.rows) > 1 else ""))
+        return _too_large_sentence(limit, name, page)
     if isinstance(limit, Stack):
         return _stack_sentence(limit, name, gutter_mm)
     if isinstance(limit, NoRoom):
@@ -173,6 +213,45 @@ def _sentence(limit: Limit, name, gutter_mm: float, margin_mm: float) -> str:
             f"they need {side:.1f} mm of the {room_w:.1f} mm inside the margins, one above the "
             f"other {above:.1f} mm of {room_h:.1f} mm; {fate}; make one smaller, or move it to "
             "another page")
+
+
+def _companions(page, rows) -> tuple[str, str]:
+    """How a sentence names the items that move rigidly with ``rows[0]``, and how to bring
+    them closer: the members of a group have no dx and dy to change (check told a group's
+    members to "bring its followers closer (their dx and dy)")."""
+    lead = page.items[rows[0]] if page is not None else None
+    if lead is not None and lead.group \
+            and all(page.items[row].group == lead.group for row in rows[1:]):
+        return (f'the other members of its group "{printable(lead.group)}"',
+                "move the group's members closer together")
+    return "the items following it", "bring the followers closer (their anchor dx and dy)"
+
+
+def _too_large_sentence(limit: TooLarge, name, page) -> str:
+    size_word, _ = AXIS_WORDS[limit.axis]
+    who = f"item {name(limit.rows[0])}"
+    companions, closer = _companions(page, limit.rows)
+    if len(limit.rows) > 1:
+        others = ", ".join(name(row) for row in limit.rows[1:1 + SHOWN])
+        more = f" and {len(limit.rows) - 1 - SHOWN} more" if len(limit.rows) > 1 + SHOWN else ""
+        who += f" with {companions} ({others}{more}) is"
+    else:
+        who += " is"
+    regions = sorted({page.items[row].region for row in limit.rows
+                      if page.items[row].region}) if page is not None else []
+    if regions and limit.extent_mm <= limit.page_mm + 0.01:
+        # the members' regions are the walls that bind: "the print-safe margin" and "(the
+        # page: 297 mm)" sent the user to the wrong knob
+        named = ", ".join(f'"{printable(region)}"' for region in regions)
+        return (f"{who} {limit.extent_mm:.1f} mm {size_word}, but the region(s) {named} its "
+                f"items keep to, and the margins, leave it {limit.room_mm:.1f} mm: no settle "
+                f"can fit it; make it smaller, {closer}, make the region larger, or take the "
+                "items out of it")
+    fate = ("it cannot stay on the page" if limit.extent_mm > limit.page_mm + 0.01
+            else "it cannot keep the print-safe margin")
+    return (f"{who} {limit.extent_mm:.1f} mm {size_word}, but its room inside the margins "
+            f"is {limit.room_mm:.1f} mm (the page: {limit.page_mm:g} mm): {fate}; make it "
+            "smaller" + (f", or {closer}" if len(limit.rows) > 1 else ""))
 
 
 def _fate(limit: Crossing | Stack | NoRoom | PinnedStack | NoArrangement, widest: str,

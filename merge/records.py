@@ -52,12 +52,16 @@ class DataFile:
                                  "file with a header line, or a .jsonl file (one JSON object "
                                  "per line)")
         self.kind = "jsonl" if suffix in JSON_LINES else "csv"
+        self.delimiter = ","
         self.columns = self.read_columns()
 
     def read_columns(self) -> list[str]:
         if self.kind == "csv":
             with self.open() as handle, self.readable():
-                header = next(csv.reader(handle), None)
+                first = handle.readline()
+            self.delimiter = separator_of(first)
+            with self.open() as handle, self.readable():
+                header = next(csv.reader(handle, delimiter=self.delimiter), None)
             if not header:
                 raise FloatpageError(f"{self.path}: the file is empty; its first line must name "
                                      "the columns")
@@ -101,7 +105,7 @@ class DataFile:
 
     def csv_records(self) -> Iterator[Record]:
         with self.open() as handle:
-            reader = csv.reader(handle, strict=True)
+            reader = csv.reader(handle, delimiter=self.delimiter, strict=True)
             header = [name.strip() for name in next(reader, [])]
             number = 0
             for row, line, problem in self.rows(reader):
@@ -111,7 +115,8 @@ class DataFile:
                 record = Record(number, line, problem=problem)
                 if len(row) > len(header):
                     record.problem = (f"the row has {len(row)} fields but the header names "
-                                      f"{len(header)} columns (a comma in a value needs quotes)")
+                                      f"{len(header)} columns (a {SEPARATOR_WORDS[self.delimiter]} "
+                                      "in a value needs quotes)")
                 record.values = {name: (row[index] if index < len(row) else "")
                                  for index, name in enumerate(header)}
                 yield too_long_values_dropped(record)
@@ -163,6 +168,20 @@ class DataFile:
                     record.values[str(key)] = "" if value is None else (
                         ("true" if value else "false") if isinstance(value, bool) else str(value))
                 yield too_long_values_dropped(record)
+
+
+SEPARATORS = (",", ";", "\t")
+SEPARATOR_WORDS = {",": "comma", ";": "semicolon", "\t": "tab"}
+
+
+def separator_of(header_line: str) -> str:
+    """The field separator a CSV header line uses: the one of SEPARATORS that splits it into
+    the most columns, a comma on a tie.  Spreadsheets set to German, French or Dutch write
+    `;` (a comma is their decimal point), and such a file's one column
+    'id;first_name;surname;…' matched none of the template's placeholders."""
+    def columns(separator: str) -> int:
+        return len(next(csv.reader([header_line], delimiter=separator), []))
+    return max(SEPARATORS, key=lambda separator: (columns(separator), separator == ","))
 
 
 def too_long_values_dropped(record: Record) -> Record:

@@ -300,6 +300,7 @@ class Project:
     # `[files] allow_outside` or --allow-outside-files: pictures may lie outside the folder.
     allow_outside_files: bool = False
     utf8_bom: bool = field(default=False, compare=False)  # kept on save, as the user wrote it
+    crlf: bool = field(default=False, compare=False)  # Windows line ends: kept on every line saved
     # The text the project was read from.  Saving edits its tomlkit document in place, so the
     # user's comments and key order survive; the document is parsed when first asked for
     # (``source_document``): tomlkit took 10 s over a 2,000-item file, and check and render

@@ -66,6 +66,7 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False) -> Proj
         raise ProjectFileError(reader.problems)
     project.source_text = text  # parsed by tomlkit only if the project is saved
     project.utf8_bom = reader.had_bom
+    project.crlf = "\r\n" in text[:text.find("\n") + 1]  # as its first line ends
     return project
 
 
@@ -147,7 +148,10 @@ class _Reader:
                 self.add(self.lines.key_line(table_line, name), where, f'unknown key "{name}"', hint)
         for key in keys:
             if key.name not in table:
-                if key.required:
+                if key.required and key.kind == "array":  # `pages = ...` is no way to write one
+                    self.add(table_line, where, f'missing key "{key.name}"',
+                             f"add a [[{array_header(key.name)}]] table")
+                elif key.required:
                     self.add(table_line, where, f'missing key "{key.name}"',
                              f"add `{key.name} = ...`")
                 continue

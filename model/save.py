@@ -9,6 +9,7 @@ version is kept beside it as `NAME.bak`.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import fields
 from pathlib import Path
 from typing import Any
@@ -25,8 +26,13 @@ from floatpage.model.page_sizes import CUSTOM, canonical_size_name
 
 Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 UTF8_BOM = b"\xef\xbb\xbf"
+LONE_LF = re.compile(r"(?<!\r)\n")
 WRITTEN_ONLY_WHEN_TRUE = {"bleed"}  # rare flags: a file names them only where they are set
 WRITTEN_ONLY_WHEN_SET = {"align"}  # newer keys: a file names them only where not the default
+# Names that are empty for "none": a new item in no region or group has no such key (every
+# item the editor added said `region = ""` and `group = ""`), while a user's own `region = ""`
+# means the same and is kept as written, so an unchanged file still saves byte-identical.
+WRITTEN_ONLY_WHEN_NAMED = {"region", "group"}
 KEEP = object()  # a pair's value meaning "leave whatever the user wrote, if anything"
 ANCHOR_DEFAULTS = {"dx": 0.0, "dy": 0.0, "gamma": 1.0, "hard": False}
 ARRAYS_SYNCED_APART = {"items", "regions"}  # a page's arrays of tables, synced by sync_array
@@ -103,6 +109,8 @@ def item_pairs(item) -> Pairs:
     for f in fields(item):
         if f.name in WRITTEN_ONLY_WHEN_TRUE:
             pairs.append((f.name, True if getattr(item, f.name) else None, None))
+        elif f.name in WRITTEN_ONLY_WHEN_NAMED:
+            pairs.append((f.name, getattr(item, f.name) or None, None))
         elif f.name in WRITTEN_ONLY_WHEN_SET:
             value = getattr(item, f.name)
             pairs.append((f.name, None if value == getattr(defaults, f.name) else value, None))
@@ -135,6 +143,7 @@ def equivalent(key: str, current: Any, value: Any) -> bool:
 def sync_table(table: Table, pairs: Pairs) -> None:
     """Make `table` hold `pairs`, changing only what differs, so comments and order survive."""
     wanted = {key for key, value, _ in pairs if value is not None}
+    wanted |= {key for key in WRITTEN_ONLY_WHEN_NAMED if key in table and table[key] == ""}
     for key in [k for k in table if k not in wanted and k not in ARRAYS_SYNCED_APART]:
         del table[key]
     for key, value, default in pairs:
@@ -212,6 +221,8 @@ def edit_in_place(array: AoT, tables: list) -> bool:
         # A table's trailing blank line is what separates it from the next: give an added
         # table the same as the one it follows.
         spacing = trailing_space(array[-1]) if len(array) else ""
+        if len(array) and not spacing:  # the file's last table: a blank line before the new one
+            array[-1].add(tomlkit.ws("\n"))
         array.append(table)
         if spacing:
             table.add(tomlkit.ws(spacing))
@@ -337,7 +348,10 @@ def save_project(project: Project, path: str | Path | None = None) -> Path:
         raise FloatpageError(f"{target}: not saved: the file read nests tables or arrays too "
                              "deeply to edit in place (the file on disk is unchanged); "
                              "remove the deep nesting") from None
-    data = tomlkit.dumps(doc).encode("utf-8")
+    text = tomlkit.dumps(doc)
+    if project.crlf:  # tomlkit ends the lines it adds with \n: a Windows file got mixed ends
+        text = LONE_LF.sub("\r\n", text)
+    data = text.encode("utf-8")
     if project.utf8_bom:
         data = UTF8_BOM + data
     if not unchanged_on_disk(target, data):

@@ -65,8 +65,13 @@ def create(kind: str, path: Path, *, year: int | None = None, photos: Path | Non
     options = check_options(year=year, first_weekday=first_weekday, lang=lang, orientation=orientation)
     path = check_target(Path(path))
     sources = find_photos(Path(photos)) if photos is not None else bundled(module.BUNDLED)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    pictures = copy_beside(sources, path.parent)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        pictures = copy_beside(sources, path.parent)
+    except OSError as error:  # a folder no one may write in (/proc, read-only) was a crash
+        where = error.filename or path.parent
+        raise FloatpageError(f"{path}: cannot create the project there ({where}: "
+                             f"{error.strerror}); choose a folder you can write to") from None
     project = module.build(options, pictures)
     project.path = path
     if settle:

@@ -66,7 +66,7 @@ def layout_regions(width: float, height: float, orientation: str) -> tuple:
     title = (width / 2, m + title_h / 2, width - 2 * m, title_h)
     below_title = m + title_h + 6.0
     if orientation == "portrait":
-        panel_w, panel_h = width - 2 * m - 8, 88.0
+        panel_w, panel_h = width - 2 * m, 88.0
         panel = (width / 2, height - m - panel_h / 2, panel_w, panel_h)
         photos = Region(m, below_title, width - m, height - m - panel_h - 6.0)
     else:

@@ -126,6 +126,7 @@ class EditorScreen(Screen):
         self.meter = FrameMeter()
         self.set_reactive(EditorScreen.running, autostart)
         self.export_state: str | None = None
+        self.export_path: Path | None = None  # where Ctrl+E writes, once the usual PDF was refused
         self.release_timer: Timer | None = None  # lets go of a nudged item after the last key
         self.frames_ticked = 0  # frames the physics loop has drawn, for tests and benchmarks
         self._steps_undrawn = 0  # physics steps since the last drawn frame
@@ -619,7 +620,10 @@ class EditorScreen(Screen):
             self.attempt(self.session.update_item, item.id, {"decorative": not item.decorative})
 
     def action_delete(self) -> None:
-        self.attempt(self.session.delete_selected)
+        self.attempt(self.say_deleted)
+
+    def say_deleted(self) -> None:
+        self.notify(self.session.delete_selected(), timeout=4)
 
     # -- anchoring ------------------------------------------------------------------------------
 
@@ -766,13 +770,44 @@ class EditorScreen(Screen):
         if session.project.path is None:
             self.notify("save the project first; the PDF goes beside it", severity="warning")
             return
+        from floatpage.typeset.render import check_pdf_output
+
+        out = self.export_path or session.project.path.with_suffix(".pdf")
+        try:
+            check_pdf_output(session.project, out)
+        except FloatpageError as error:
+            # "name a new file" could not be followed in the editor, which had no name to ask
+            # for: it asks for one now, and keeps it for the session's later exports
+            folder = session.project.path.parent
+            self.ask(FormDialog("Export the PDF to another file",
+                                item_forms.export_fields(str(error),
+                                                         item_forms.free_pdf_name(
+                                                             session.project.path)),
+                                item_forms.export_parser(folder, self.refuse_output),
+                                dialog_id="export-dialog"),
+                     self.export_to)
+            return
+        self.export_to(out)
+
+    def refuse_output(self, path: Path) -> None:
+        """The export dialog's check: what render would refuse, as the dialog's error line."""
+        from floatpage.typeset.render import check_pdf_output
+
+        try:
+            check_pdf_output(self.session.project, path)
+        except FloatpageError as error:
+            raise ValueError(str(error)) from None
+
+    def export_to(self, out: Path) -> None:
+        session = self.session
         try:
             project = session.finalize_for_export()
         except FloatpageError as error:
             self.notify(str(error), title="Export failed", severity="error", timeout=10)
             return
         self.after_edit()
-        out = session.project.path.with_suffix(".pdf")
+        if out != session.project.path.with_suffix(".pdf"):
+            self.export_path = out
         self.export_state = "exporting…"
         self.redraw()
         self.export_worker(project, out)

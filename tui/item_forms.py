@@ -10,7 +10,10 @@ values or raise ValueError with a sentence for the user (the form shows it and s
 from __future__ import annotations
 
 import dataclasses
-from typing import Any
+import itertools
+import os
+from pathlib import Path
+from typing import Any, Callable
 
 from floatpage.model.document import (
     ITEM_CLASSES, Background, BlockItem, CalendarItem, ItemBase, Page, PointAnchor, TextItem,
@@ -204,3 +207,35 @@ def group_fields(item, groups: tuple[str, ...]) -> list[Field]:
 
 def parse_group(values: dict[str, Any]) -> str:
     return parse_form((TextItem,), values)["group"]
+
+
+def export_fields(refused: str, suggested: str) -> list[Field]:
+    """The one field of the export dialog: why the usual PDF cannot be written, and a name."""
+    return [Field("name", f"{refused}\nExport to (a .pdf in the project's folder, or a path):",
+                  "line", suggested)]
+
+
+def free_pdf_name(project_file: Path) -> str:
+    """A PDF name beside ``project_file`` that names nothing yet: NAME-export.pdf, then -2…"""
+    stem = project_file.stem
+    for count in itertools.count(1):
+        name = f"{stem}-export{'' if count == 1 else f'-{count}'}.pdf"
+        if not os.path.lexists(project_file.with_name(name)):
+            return name
+    raise AssertionError("unreachable")
+
+
+def export_parser(folder: Path, check: Callable[[Path], None]) -> Callable[[dict], Path]:
+    """Turn the typed name into the path to export to, relative to the project's ``folder``;
+    ``check`` refuses a path render would refuse (ValueError: the dialog stays open)."""
+    def parse(values: dict) -> Path:
+        name = str(values["name"]).strip()
+        if not name:
+            raise ValueError("type a file name, e.g. card-print.pdf")
+        path = Path(name).expanduser()
+        if path.suffix.lower() != ".pdf":
+            path = path.with_name(path.name + ".pdf")
+        path = path if path.is_absolute() else folder / path
+        check(path)
+        return path
+    return parse

@@ -118,6 +118,71 @@ def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float
         item.anchor.y = kept(item.anchor.y, item.h, height_mm)
 
 
+def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], sx: float,
+                         sy: float) -> None:
+    """Scale each follower's offset from its target with a new page size, as positions scale,
+    and put it there; the members of a group keep to their lead the same way.  Left as it was,
+    a follower 160 mm below its target on A4 stood past the bottom of an A6 page, and the
+    saved offsets no longer matched the saved positions; a group's members, their centres
+    scaled but not their sizes, came to overlap one another for good.  Item sizes do not
+    scale, so on an axis where two stand apart the space between their edges scales (a caption
+    2.5 mm below its photo keeps clear of it); where they overlap on an axis (a caption centred
+    under its photo, a label on a picture), the centres' offset scales.  Positions are set
+    target first, down each chain.  Called with positions already scaled by (sx, sy)."""
+    by_id = {item.id: item for item in page.items}
+    leads = {item.group: page.group_lead(item.group) for item in page.items if item.group}
+    done: set[str] = set()
+
+    def scaled(offset: float, scale: float, axis: int, item, target) -> float:
+        old_half = (old_sizes[item.id][axis] + old_sizes[target.id][axis]) / 2
+        new_half = ((item.w, item.h)[axis] + (target.w, target.h)[axis]) / 2
+        gap = abs(offset) - old_half
+        size = new_half + gap * scale if gap >= 0 else abs(offset) * scale
+        return round(size if offset >= 0 else -size, 2) + 0.0
+
+    def place(item) -> None:
+        if item.id in done:
+            return
+        done.add(item.id)
+        anchor = item.anchor
+        if isinstance(anchor, ItemAnchor) and anchor.to in by_id:
+            target = by_id[anchor.to]
+            place(target)
+            anchor.dx = scaled(anchor.dx, sx, 0, item, target)
+            anchor.dy = scaled(anchor.dy, sy, 1, item, target)
+            item.x, item.y = target.x + anchor.dx, target.y + anchor.dy
+        elif item.group and leads.get(item.group) is not None \
+                and leads[item.group] is not item and not isinstance(anchor, ItemAnchor):
+            lead = leads[item.group]
+            dx, dy = (item.x - lead.x) / sx, (item.y - lead.y) / sy  # as it was
+            place(lead)
+            item.x = lead.x + scaled(dx, sx, 0, item, lead)
+            item.y = lead.y + scaled(dy, sy, 1, item, lead)
+
+    for item in page.items:
+        place(item)
+
+
+def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
+    """Shrink the page's items of ``ids`` (all that take part, if None) by ``scale`` to make
+    room; a follower shrunk with its target, or a member with its group's lead, comes closer
+    by as much, so that they shrink as one (sizes alone shrunk left a caption and its photo as far apart as ever, and after
+    a smaller page size such a pair still reached past the page however small they got)."""
+    shrunk = {item.id for item in page.items
+              if not item.decorative and (ids is None or item.id in ids)}
+    leads = {item.group: page.group_lead(item.group) for item in page.items if item.group}
+    for item in page.items:
+        if item.id in shrunk:
+            item.w, item.h = item.w * scale, item.h * scale
+            anchor = item.anchor
+            lead = leads.get(item.group)
+            if isinstance(anchor, ItemAnchor) and anchor.to in shrunk:
+                anchor.dx, anchor.dy = anchor.dx * scale, anchor.dy * scale
+            elif lead is not None and lead is not item and lead.id in shrunk:
+                item.x = lead.x + (item.x - lead.x) * scale  # a group shrinks as one, too
+                item.y = lead.y + (item.y - lead.y) * scale
+
+
 @dataclasses.dataclass(frozen=True)
 class RoomRequest:
     """Room wanted for ``ids`` (None: every item) on a page, as the document stood."""
@@ -342,9 +407,7 @@ class EditSession:
             in_margin = {engine.ids[k] for k in quality.in_margin} & request.margin_kept
             if not (quality.overlapping_pairs or quality.off_page or in_margin):
                 break
-            for item in page.items:
-                if not item.decorative and (request.ids is None or item.id in request.ids):
-                    item.w, item.h = item.w * MAKE_ROOM_STEP, item.h * MAKE_ROOM_STEP
+            shrink_items(page, request.ids, MAKE_ROOM_STEP)
             scale *= MAKE_ROOM_STEP
         return scale
 
@@ -356,9 +419,7 @@ class EditSession:
                 or request.page_index != self.page_index or self.held_id is not None:
             return False
         self.sync_positions()
-        for item in self.page.items:
-            if not item.decorative and (request.ids is None or item.id in request.ids):
-                item.w, item.h = item.w * scale, item.h * scale
+        shrink_items(self.page, request.ids, scale)
         if self.saved_version == self.version:  # saved meanwhile: this is a change to save
             self.mark_unsaved()
         self.engine = self._build_engine(check=False)
@@ -400,6 +461,8 @@ class EditSession:
         return str(copy_into(path, base / "pictures").relative_to(base))
 
     def delete_selected(self) -> str:
+        """Delete the selected item; its followers stay where they are, free.  Returns what
+        the editor says of it (a caption freed from its deleted photo used to go unsaid)."""
         item = self._require_selected()
         self.checkpoint(f"delete {item.id}")
         followers = [i for i in self.page.items
@@ -413,7 +476,10 @@ class EditSession:
             self.engine.delete(item.id)  # the engine's edits reheat it themselves
         order = reading_order(self.page.items)
         self.selected_id = order[0] if order else None
-        return item.id
+        freed = ", ".join(f'"{follower.id}"' for follower in followers)
+        return (f'deleted "{item.id}"'
+                + (f"; {freed} no longer follow{'s' if len(followers) == 1 else ''} it"
+                   if followers else "") + " (Ctrl+Z brings it back)")
 
     def begin_move(self, item_id: str) -> None:
         """Hold an item (it pushes the others and is not pushed) for a move or a drag."""
@@ -680,6 +746,7 @@ class EditSession:
             region.w = min(round((region.left + region.w) * sx, 2), width) - left
             region.h = min(round((region.top + region.h) * sy, 2), height) - top
             region.left, region.top = left, top
+        old_sizes = {item.id: (item.w, item.h) for item in page.items}
         for item in page.items:
             item.x, item.y = item.x * sx, item.y * sy
             if item.decorative:  # a band across the page keeps spanning it: it stretches
@@ -693,6 +760,7 @@ class EditSession:
                 item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
             if not (item.decorative or item.group or getattr(item, "bleed", False)):
                 keep_inside_margin(item, width, height, margin)
+        scale_follow_offsets(page, old_sizes, sx, sy)
         page.size, page.orientation = size, orientation
         page.width_mm, page.height_mm = width, height
         self.held_id = None

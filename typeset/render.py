@@ -147,6 +147,14 @@ def log_path_for(out_pdf: Path) -> Path:
     return out_pdf.with_name(out_pdf.name + ".log")
 
 
+def check_pdf_output(project: Project, out_pdf: Path) -> None:
+    """Refuse ``out_pdf`` (RenderError) where render_pdf would, before anything is done: the
+    editor asks for another name then, instead of saying "name a new file" after the work."""
+    out_pdf = Path(out_pdf)
+    check_outputs([out_pdf, log_path_for(out_pdf)], project_inputs(project),
+                  project_companions(project))
+
+
 def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
                fragment_out: Path | None = None, timeout_s: float = 120.0,
                progress: Callable[[str], None] | None = None,

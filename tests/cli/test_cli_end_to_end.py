@@ -76,6 +76,40 @@ def test_settle_dry_run_writes_nothing(crowded_project):
     assert crowded_project.read_text() == before
 
 
+def test_settle_dry_run_says_what_settle_would_do(crowded_project):
+    """`--dry-run` ("report only") said how many steps it ran and nothing else: the report did
+    not tell a file settle would rewrite from a settled one.  It now says which, and the
+    verdict matches what settle then does."""
+    result = run("settle", "--dry-run", str(crowded_project))
+    last = result.stdout.splitlines()[-1]
+    assert last.startswith(f"{crowded_project}: settle would move ") and \
+        last.endswith("; nothing written (--dry-run)"), result.stdout
+    moved = int(last.split("would move ")[1].split(" ")[0])
+    assert 1 <= moved <= 6
+    assert f"wrote positions to {crowded_project}" in run("settle", str(crowded_project)).stdout
+    again = run("settle", "--dry-run", str(crowded_project))
+    assert again.stdout.splitlines()[-1] == (
+        f"{crowded_project}: already settled; settle would change nothing (--dry-run)")
+    assert "already settled" in run("settle", str(crowded_project)).stdout
+
+
+def test_render_no_settle_warns_of_overlaps_it_prints_and_says_what_to_do(crowded_project,
+                                                                          tmp_path):
+    """`render --no-settle` on a file whose items overlap made the PDF without a word; it
+    still makes it (the user asked for the positions as saved) and names the page, the items
+    and the way out.  A settled file gets no such warning."""
+    pdf = tmp_path / "out.pdf"
+    result = run("render", "--no-settle", str(crowded_project), "-o", str(pdf))
+    assert result.returncode == 0, result.stderr
+    assert pdf.read_bytes().startswith(b"%PDF")
+    assert 'warning: page "front" was printed as saved (--no-settle) with ' in result.stderr
+    assert '"block-0" and "block-1"' in result.stderr
+    assert f"`floatpage check {crowded_project}` says why and what to do" in result.stderr
+    assert run("settle", str(crowded_project)).returncode == 0
+    again = run("render", "--no-settle", str(crowded_project), "-o", str(pdf))
+    assert again.returncode == 0 and "warning" not in again.stderr, again.stderr
+
+
 def test_render_writes_pdf_and_tex(crowded_project, tmp_path):
     pdf, tex = tmp_path / "out.pdf", tmp_path / "out.tex"
     result = run("render", str(crowded_project), "-o", str(pdf), "--tex", str(tex))

@@ -428,7 +428,9 @@ def test_a_pdf_picture_is_opened_by_check_not_only_sniffed(tmp_path):
     checked = run("check", str(good))
     assert checked.returncode == 0 and "warning" not in checked.stdout, checked.stdout
     rendered = run("render", "--no-settle", str(good), "-o", str(tmp_path / "good-out.pdf"))
-    assert rendered.returncode == 0 and "warning" not in rendered.stderr, rendered.stderr
+    # (the card's photo overlaps its block: --no-settle warns of that, and only of that)
+    assert rendered.returncode == 0 and "warning: item" not in rendered.stderr \
+        and "decode" not in rendered.stderr, rendered.stderr
 
 
 def test_pictures_outside_the_project_need_permission(tmp_path):

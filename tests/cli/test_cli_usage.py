@@ -34,6 +34,21 @@ def test_every_command_has_help(command, capsys):
     assert f"usage: floatpage {command}" in capsys.readouterr().out
 
 
+def test_every_argument_of_every_command_says_what_it_is():
+    """`floatpage edit --help` listed `path` with no word, and `new --help` listed
+    `--orientation {portrait,landscape}` with none."""
+    import argparse
+
+    from floatpage.cli.main import build_parser
+
+    parser = build_parser()
+    commands = next(action for action in parser._actions
+                    if isinstance(action, argparse._SubParsersAction))
+    silent = [f"{name} {action.dest}" for name, command in commands.choices.items()
+              for action in command._actions if not action.help]
+    assert silent == []
+
+
 @pytest.mark.parametrize("argv", [[], ["frobnicate"], ["render"], ["new", "poster", "x.toml"],
                                   ["settle", "a.toml", "--bogus"]])
 def test_misuse_exits_2(argv, capsys):
@@ -50,6 +65,19 @@ def test_edit_on_a_broken_file_fails_before_taking_the_screen(tmp_path):
     assert result.returncode == 1
     assert '"pages" must be an array of tables' in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_edit_without_a_terminal_says_so_and_writes_no_screen_codes(tmp_path):
+    """Run from a script (input and output not a terminal), the editor wrote screen codes into
+    the output and ended "floatpage: interrupted" with exit 130, as if Ctrl+C had been pressed."""
+    path = tmp_path / "card.toml"
+    assert run("new", "blank", str(path)).returncode == 0
+    result = run("edit", str(path))
+    assert result.returncode == 1
+    assert result.stdout == ""
+    assert result.stderr.startswith(f"floatpage: {path}: floatpage edit needs a terminal, and "
+                                    "its input and output are not one"), result.stderr
+    assert "`floatpage settle`, `check` or `render`" in result.stderr
 
 
 @pytest.mark.parametrize("kind, options, named", [

@@ -27,6 +27,21 @@ def test_a_row_with_too_many_fields_fails_alone(tmp_path):
     assert "3 fields" in first.problem and not second.problem
 
 
+@pytest.mark.parametrize("separator, word", [(";", "semicolon"), ("\t", "tab")])
+def test_a_spreadsheets_semicolons_or_tabs_separate_columns(tmp_path, separator, word):
+    """A spreadsheet set to German or French saves CSV with `;` (its decimal point is the
+    comma): the file was one column named 'id;name;price', and the merge stopped, saying the
+    data had none of the template's columns."""
+    text = f'id{separator}name{separator}price\n1{separator}"Ann; Bo"{separator}2,40\n' \
+           f"2{separator}Cy{separator}3,10{separator}extra\n"
+    found = data(tmp_path, text)
+    assert found.columns == ["id", "name", "price"]
+    first, second = found.records()
+    assert first.values == {"id": "1", "name": "Ann; Bo", "price": "2,40"} and not first.problem
+    assert f"(a {word} in a value needs quotes)" in second.problem
+    assert data(tmp_path, "id,name\n1,a;b\n").columns == ["id", "name"]  # commas still rule
+
+
 def test_short_rows_are_padded_with_empty_values(tmp_path):
     (record,) = data(tmp_path, "a,b\n1\n").records()
     assert record.values == {"a": "1", "b": ""} and not record.problem

@@ -175,6 +175,34 @@ def test_a_region_added_in_code_is_saved_as_a_table(tmp_path):
     assert b3.top >= 180.0 - 0.01
 
 
+def test_a_new_item_in_no_region_or_group_saves_no_such_key_and_an_empty_one_still_loads(
+        tmp_path):
+    """An item added in no region and no group used to be saved with `region = ""` and
+    `group = ""`: keys that say nothing.  A user's own empty ones still load, and an unchanged
+    file keeps them byte for byte; taking an item out of its region drops the key."""
+    path = write(tmp_path)
+    project = load_project(path)
+    page = project.pages[0]
+    page.items.append(BlockItem(id="new", x=30.0, y=190.0, w=10.0, h=10.0))
+    page.item("b1").region = ""
+    page.item("t1").group = ""
+    save_project(project)
+    text = path.read_text(encoding="utf-8")
+    added = text[text.index('id = "new"'):]
+    assert "region" not in added and "group" not in added
+    b1 = text[text.index('id = "b1"'):text.index('id = "b2"')]
+    assert "region" not in b1
+    t1 = text[text.index('id = "t1"'):text.index('id = "t2"')]
+    assert "group" not in t1
+    written = PROJECT.replace('w = 50\nh = 30\n', 'w = 50\nh = 30\nregion = ""\ngroup = ""\n', 1)
+    assert written != PROJECT
+    path.write_text(written, encoding="utf-8")
+    again = load_project(path)
+    assert (again.pages[0].item("b3").region, again.pages[0].item("b3").group) == ("", "")
+    save_project(again)
+    assert path.read_text(encoding="utf-8") == written
+
+
 @settings(max_examples=8, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(st.integers(0, 10_000), st.integers(3, 9))
@@ -211,3 +239,82 @@ def test_a_settled_page_with_regions_and_groups_is_a_fixed_point(tmp_path, seed,
             assert box[1] - 0.01 <= item.top and item.top + item.h <= box[3] + 0.01
     moved = (page.item("b2").x - page.item("b1").x, page.item("b2").y - page.item("b1").y)
     assert abs(moved[0] - offset[0]) < 0.02 and abs(moved[1] - offset[1]) < 0.02
+
+
+CHAIN = """\
+format = 1
+
+[[pages]]
+id = "p1"
+size = "A4"
+
+[[pages.regions]]
+id = "top"
+left = 20
+top = 20
+w = 170
+h = 80
+
+[[pages.items]]
+id = "head"
+kind = "block"
+x = 60
+y = 60
+w = 30
+h = 20
+region = "top"
+
+[[pages.items]]
+id = "tail"
+kind = "block"
+x = 60
+y = 220
+w = 30
+h = 20
+anchor = {to = "head", dx = 0, dy = 160}
+"""
+
+
+def test_check_tells_how_to_mend_a_chain_longer_than_its_region_not_to_settle(tmp_path):
+    """A confined item keeps its followers inside its region, so "head" and the "tail" 160 mm
+    below it can never sit in the 80 mm region.  `check` said "run `floatpage settle`", and a
+    settle then pulled "head" off the page and the advice came again.  The advice now names the
+    items, the sizes and what to change, before and after a settle, and each way it offers
+    works."""
+    path = write(tmp_path, CHAIN)
+    for _ in range(2):  # as written, then as settle leaves it
+        result = floatpage("check", "--strict", str(path))
+        assert result.returncode == 1, result.stdout
+        assert ('item "head" with the items following it ("tail") is 180.0 mm tall, but its '
+                'region "top" is 80.0 mm tall') in result.stdout
+        assert "bring the followers closer (their anchor dy), make the region taller, or " \
+               'take "head" out of the region' in result.stdout
+        assert "floatpage settle" not in result.stdout, result.stdout
+        assert f"{path}: " in result.stdout.splitlines()[-1]
+        assert floatpage("settle", str(path)).returncode == 0
+    for mended in (CHAIN.replace("dy = 160", "dy = 50"), CHAIN.replace("h = 80", "h = 200"),
+                   CHAIN.replace('region = "top"\n', "")):
+        path = write(tmp_path, mended)
+        assert floatpage("settle", str(path)).returncode == 0
+        result = floatpage("check", "--strict", str(path))
+        assert result.returncode == 0, result.stdout
+
+
+def test_check_tells_a_group_too_tall_for_a_members_region_what_to_do_not_to_settle(tmp_path):
+    """A group ("head" and "tail", 160 mm apart) whose second member keeps to an 80 mm region:
+    check said of "tail" "run `floatpage settle`", and of the group "its room inside the margins
+    is 95 mm (the page: 297 mm): it cannot keep the print-safe margin ... bring its followers
+    closer (their dx and dy)": group members have no dx and dy, and the region, not the margin,
+    is what binds.  It now names the region and the group's own way out."""
+    text = (CHAIN.replace('region = "top"\n', 'group = "g"\n')
+            .replace('anchor = {to = "head", dx = 0, dy = 160}\n',
+                     'region = "top"\ngroup = "g"\n'))
+    path = write(tmp_path, text)
+    result = floatpage("check", "--strict", str(path))
+    assert result.returncode == 1
+    assert ('item "head" with the other members of its group "g" ("tail") is 180.0 mm tall, but '
+            'the region(s) "top" its items keep to, and the margins, leave it 95.0 mm') \
+        in result.stdout, result.stdout
+    assert "move the group's members closer together, make the region larger" in result.stdout
+    assert "settle" not in result.stdout.replace("no settle", ""), result.stdout
+    assert "dx and dy" not in result.stdout and "print-safe" not in result.stdout

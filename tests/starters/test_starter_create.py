@@ -51,6 +51,21 @@ def test_an_album_without_photos_starts_with_the_bundled_ones_and_says_how_to_us
     assert pictures and set(pictures) <= set(starters.album.BUNDLED)
 
 
+def test_a_folder_where_the_pictures_cannot_go_is_a_message_not_a_crash(tmp_path):
+    """`floatpage new card /proc/x.toml`, or a folder holding a file named `pictures`, ended in
+    "internal error: FileNotFoundError" (exit 70, a crash log) while copying the pictures."""
+    (tmp_path / "pictures").write_text("my notes")
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "card",
+                             str(tmp_path / "card.toml")], capture_output=True, text=True,
+                            timeout=120, stdin=subprocess.DEVNULL)
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith(f"floatpage: {tmp_path / 'card.toml'}: cannot create the "
+                                    f"project there ({tmp_path / 'pictures'}: "), result.stderr
+    assert "choose a folder you can write to" in result.stderr
+    assert (tmp_path / "pictures").read_text() == "my notes"
+    assert not (tmp_path / "card.toml").exists()
+
+
 def test_an_existing_file_is_never_overwritten(tmp_path):
     target = tmp_path / "mine.toml"
     target.write_text("precious")
@@ -103,6 +118,19 @@ def test_created_calendar_is_at_rest(tmp_path):
     again = max(abs(i.x - positions[i.id][0]) + abs(i.y - positions[i.id][1])
                 for page in project.pages for i in page.items)
     assert again < 0.5
+
+
+def test_a_new_calendars_month_panels_sit_on_the_page_centre_as_wide_as_the_title(tmp_path):
+    """The portrait panel was 8 mm narrower than the title and the photo band, so the guides
+    lined up one of its edges with a photo's and left it 4 mm off the page centre (x = 101 or
+    109 on most months of a new calendar), under a centred title.  As wide as the title, it
+    lines up with the title and the photos on both sides, and stays centred."""
+    starters.create("calendar", tmp_path / "cal.toml", year=2027)
+    for page in load_project(tmp_path / "cal.toml").pages:
+        title = page.item(f"{page.id}-title")
+        panel = page.item(f"{page.id}-month")
+        assert panel.x == pytest.approx(page.width_mm / 2, abs=0.01), page.id
+        assert panel.w == pytest.approx(title.w, abs=0.01), page.id
 
 
 CREATE_CASES = {

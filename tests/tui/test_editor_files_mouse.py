@@ -76,6 +76,44 @@ async def test_export_finalises_the_layout_and_writes_the_pdf(project_path):
         assert app.session.engine.quality().overlapping_pairs == ()
 
 
+async def test_export_refused_by_a_symlinked_pdf_asks_for_another_name(project_path):
+    """Ctrl+E with NAME.pdf a symbolic link said "name a new file or a regular file", which
+    the editor had no way to do.  It now asks for a name (a free one offered), refuses there
+    what render refuses, exports to the name given and keeps it for the next Ctrl+E; the
+    link and the file it points to are untouched."""
+    elsewhere = project_path.with_name("elsewhere.pdf")
+    elsewhere.write_bytes(b"not yours")
+    project_path.with_suffix(".pdf").symlink_to(elsewhere)
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("ctrl+e")
+        await pilot.pause()
+        assert app.screen.id == "export-dialog"
+        shown = " ".join(str(label.render()) for label in app.screen.query("Label"))
+        assert "symbolic link" in shown
+        field = app.screen.query_one("#field-name")
+        assert field.value == "card-export.pdf"
+        field.value = "card.pdf"  # the link again: refused in the dialog, which stays open
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.screen.id == "export-dialog"
+        assert "symbolic link" in str(app.screen.query_one("#form-error").render())
+        field.value = "card-export"  # .pdf is added
+        await pilot.press("enter")
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        assert app.screen is screen_of(app)
+        pdf = project_path.with_name("card-export.pdf")
+        assert pdf.read_bytes().startswith(b"%PDF"), notifications(app)
+        pdf.unlink()
+        await pilot.press("ctrl+e")  # the name is kept: no dialog again
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        assert app.screen is screen_of(app)
+        assert pdf.read_bytes().startswith(b"%PDF")
+    assert project_path.with_suffix(".pdf").is_symlink()
+    assert elsewhere.read_bytes() == b"not yours"
+
+
 async def test_quit_without_changes_exits_at_once(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("q")

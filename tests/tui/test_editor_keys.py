@@ -283,6 +283,9 @@ async def test_delete_the_selected_item(project_path):
         assert "photo" not in app.session.engine.ids
         assert item(app, "caption").anchor is None  # the follower is let go
         assert "photo" not in preview_text(app)
+        # and says so: the caption's link went without a word
+        said = [notification.message for notification in app._notifications]
+        assert 'deleted "photo"; "caption" no longer follows it (Ctrl+Z brings it back)' in said
 
 
 async def test_anchor_here_to_another_item_and_unanchor(project_path):

@@ -7,7 +7,9 @@ from __future__ import annotations
 import pytest
 
 from floatpage.model import load_project, save_project
-from floatpage.model.document import BlockItem, Page, PointAnchor, Project, Region, TextItem
+from floatpage.model.document import (
+    BlockItem, ItemAnchor, Page, PointAnchor, Project, Region, TextItem,
+)
 from floatpage.tui.page_painter import GROUP, PAPER, REGION, mix
 from editor_helpers import editor, item, pixel, position, screen_of, type_text
 
@@ -66,6 +68,25 @@ async def test_G_puts_the_selected_item_in_a_group_and_empty_takes_it_out(tmp_pa
         await keys(pilot, "G")
         await keys(pilot, "backspace", "backspace", "backspace", "backspace", "enter")
         assert item(app, "box").group == ""
+
+
+async def test_a_form_label_longer_than_the_dialog_wraps_instead_of_being_cut(tmp_path):
+    """At 100 x 30 the group dialog's label read "Group name (this page has head); empty takes
+    text-1 ou": a label was one line, cut at the dialog's edge."""
+    path = tmp_path / "g.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="title", x=60.0, y=200.0, w=60.0, h=15.0, text="Title", group="head"),
+        BlockItem(id="text-1", x=150.0, y=60.0, w=40.0, h=30.0),
+    ])]), path)
+    async with editor(path, (100, 30)) as (app, pilot):
+        select(app, "text-1")
+        await keys(pilot, "G")
+        label = app.screen.query(".field-label").first()
+        words = str(label.render())
+        assert words.endswith("empty takes text-1 out")
+        lines = [strip.text.rstrip() for strip in label.render_lines(label.region.reset_offset)]
+        assert " ".join(line.strip() for line in lines if line.strip()) == words
+        assert label.region.right <= label.parent.region.right  # not cut by its container
 
 
 async def test_anchoring_a_member_anchors_the_group_by_its_lead(tmp_path):
@@ -140,6 +161,85 @@ async def test_a_smaller_page_size_keeps_regions_on_the_page_and_the_file_opens(
     assert bottom == pytest.approx(140.0 * 152.4 / 297.0, abs=0.01)  # its share of the page
     box = page.item("box")
     assert box.w <= right and box.h <= bottom
+
+
+async def test_a_smaller_page_size_scales_follow_offsets_and_keeps_followers_clear(tmp_path):
+    """S, 4x6in on an A4 page: positions scaled, follow offsets did not, so a note 160 mm
+    below its heading stood past the bottom of the 152.4 mm page, and the saved dy no longer
+    matched the saved positions.  The offset scales as positions do; the space between a
+    caption and its photo scales, and it stays clear of the photo (sizes do not scale)."""
+    path = tmp_path / "f.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        BlockItem(id="head", x=105.0, y=40.0, w=60.0, h=20.0),
+        BlockItem(id="note", x=105.0, y=200.0, w=60.0, h=20.0,
+                  anchor=ItemAnchor(to="head", dx=0.0, dy=160.0)),
+        BlockItem(id="photo", x=50.0, y=120.0, w=40.0, h=40.0),
+        TextItem(id="caption", x=50.0, y=148.0, w=40.0, h=10.0, text="Caption",
+                 anchor=ItemAnchor(to="photo", dx=0.0, dy=28.0)),
+    ])]), path)
+    async with editor(path) as (app, pilot):
+        await keys(pilot, "S", *["down"] * 5, "enter")  # from A4 to 4x6in
+        assert app.session.page.size == "4x6in"
+        await keys(pilot, "ctrl+s")
+    page = load_project(path).pages[0]
+    shrink = 152.4 / 297.0
+    head, note = page.item("head"), page.item("note")
+    assert note.anchor.dy == pytest.approx(20.0 + 140.0 * shrink, abs=0.01)
+    assert note.y - head.y == pytest.approx(note.anchor.dy, abs=0.02)
+    assert note.y + note.h / 2 <= 152.4
+    photo, caption = page.item("photo"), page.item("caption")
+    gap = caption.anchor.dy - (photo.h + caption.h) / 2
+    assert gap == pytest.approx(3.0 * shrink, abs=0.01)
+    assert caption.anchor.dx == 0.0
+
+
+async def test_a_smaller_page_size_keeps_a_groups_members_apart(tmp_path):
+    """S, 4x6in on an A4 page with a title and subtitle grouped 4 mm apart: their centres
+    scaled with the page but not their sizes, and the room search shrank their sizes but not
+    the distance between them, so the subtitle ended 2.2 mm inside the title for good (a group
+    moves as one body, so nothing ever parts them)."""
+    path = tmp_path / "g.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="title", x=105.0, y=100.0, w=100.0, h=12.0, text="Title", group="head"),
+        TextItem(id="sub", x=105.0, y=115.0, w=100.0, h=10.0, text="Sub", group="head"),
+        BlockItem(id="box", x=105.0, y=200.0, w=40.0, h=30.0),
+    ])]), path)
+    async with editor(path) as (app, pilot):
+        await keys(pilot, "S", *["down"] * 5, "enter")  # from A4 to 4x6in
+        assert app.session.page.size == "4x6in"
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        await keys(pilot, "ctrl+s")
+    page = load_project(path).pages[0]
+    title, sub = page.item("title"), page.item("sub")
+    gap = (sub.y - sub.h / 2) - (title.y + title.h / 2)
+    assert gap == pytest.approx(4.0 * 152.4 / 297.0 * (title.h / 12.0), abs=0.02)
+
+
+async def test_a_page_too_small_for_a_photo_and_its_caption_shrinks_them_as_one(tmp_path):
+    """S, a custom 100 x 100 mm page under an 84 x 105 mm photo whose caption follows 115 mm
+    below: the room search shrank sizes but not the offset between them, so however small they
+    got, the pair still reached past the page ("2 off the page", and the physics at rest).
+    The caption now comes closer as the two shrink, and everything ends on the page."""
+    path = tmp_path / "s.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="title", x=105.0, y=33.0, w=150.0, h=20.0, text="Title"),
+        BlockItem(id="photo", x=127.5, y=134.6, w=84.0, h=105.0),
+        TextItem(id="caption", x=77.2, y=249.7, w=94.5, h=31.5, text="Sale 50% off",
+                 anchor=ItemAnchor(to="photo", dx=-50.26, dy=115.04)),
+    ])]), path)
+    async with editor(path) as (app, pilot):
+        await keys(pilot, "S", *["down"] * 6, "enter")  # from A4 to Custom…
+        assert app.screen.id == "custom-size-dialog"
+        app.screen.query_one("#field-width_mm").value = "100"
+        app.screen.query_one("#field-height_mm").value = "100"
+        await keys(pilot, "ctrl+s")
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        engine = app.session.engine
+        engine.advance(20_000)
+        quality = engine.quality()
+        assert not quality.off_page and not quality.overlapping_pairs, quality.summary()
 
 
 async def test_the_preview_frames_regions_and_the_selected_group(tmp_path):

@@ -52,7 +52,7 @@ class FormDialog(ModalScreen[Answer | None], Generic[Answer]):
 
     def compose(self) -> ComposeResult:
         with Vertical(classes="dialog form"):
-            yield Label(self.title_text, classes="dialog-title")
+            yield Label(self.title_text, classes="dialog-title", markup=False)
             with VerticalScroll(classes="form-fields"):
                 for field in self.fields:
                     yield from self._field(field)
@@ -69,7 +69,7 @@ class FormDialog(ModalScreen[Answer | None], Generic[Answer]):
         if field.kind == "bool":
             yield Checkbox(field.label, value=bool(field.value), id=widget_id)
             return
-        yield Label(field.label, classes="field-label")
+        yield Label(field.label, classes="field-label", markup=False)  # may hold a path
         if field.kind == "line":
             yield Input(str(field.value), id=widget_id, compact=True)
         elif field.kind == "text":
