@@ -7,11 +7,14 @@ picture whatever the user drags. Captions start as the file name made readable.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 from floatpage.model.document import Background, ItemAnchor, PictureItem, PointAnchor, Project, TextItem
 from floatpage.model.page_sizes import page_dimensions
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
-from floatpage.starters.placement import Region, grid, new_page, near_widths_as_one
+from floatpage.starters.even_rows import even_rows
+from floatpage.starters.placement import Region, new_page, near_widths_as_one, one_height_per_row
 from floatpage.starters.words import phrase, readable
 
 PAGE_SIZE = "A4"
@@ -22,6 +25,7 @@ CAPTION_H_MM = 8.0
 CAPTION_GAP_MM = 4.5  # between a photo's lower edge and its caption: past the 4 mm an eye
 # reads as a near miss (physics.alignment), as far as a line of caption text is tall
 TITLE_H_MM = 20.0
+TITLE_GAP_MM = 8.0  # at least this under the title, more where the page has height to share
 PAPER, INK, ACCENT = "#f7f2ea", "#4a3f35", "#7a5230"
 BUNDLED = ["alpine-dawn.jpg", "sunflower.jpg", "seaside.jpg", "autumn-forest.jpg", "tulips.jpg",
            "lake-sunset.jpg", "winter-pines.jpg", "daisy-meadow.jpg"]
@@ -38,37 +42,70 @@ def caption_for(photo: PictureItem, picture: Picture) -> TextItem:
 
 
 def photo_region(width: float, height: float, with_title: bool) -> Region:
-    top = MARGIN_MM + (TITLE_H_MM + 8.0 if with_title else 0.0)
+    top = MARGIN_MM + (TITLE_H_MM if with_title else 0.0)
     return Region(MARGIN_MM, top, width - MARGIN_MM, height - MARGIN_MM)
 
 
-def photo_rects(region: Region, pictures: list[Picture]) -> list:
-    """Each row's photos at one height (placement.one_height_per_row), each column's of near
-    widths at one width (placement.near_widths_as_one)."""
-    aspects = [p.aspect for p in pictures]
-    return near_widths_as_one(grid(region, aspects, fill=0.96, gap=8.0,
-                                   below=CAPTION_GAP_MM + CAPTION_H_MM, rows_of_one_height=True),
-                              aspects)
+def photo_rects(region: Region, pictures: list[Picture], with_title: bool) -> list:
+    """Each row as tall as its photos need, the height left shared out evenly (even_rows);
+    each row's photos of near shapes at one height (placement.one_height_per_row), each
+    column's of near widths at one width (placement.near_widths_as_one)."""
+    return even_rows(region, [p.aspect for p in pictures], fill=0.96, gap=8.0,
+                     below=CAPTION_GAP_MM + CAPTION_H_MM,
+                     above=TITLE_GAP_MM if with_title else 0.0, cut=_one_height_then_width)
+
+
+def _one_height_then_width(rects: list, aspects: list[float]) -> list:
+    return near_widths_as_one(one_height_per_row(rects, aspects), aspects)
 
 
 def paginate(pictures: list[Picture], width: float, height: float) -> list[list[Picture]]:
-    """Split the photos into pages, in order: each page takes as many as it can show large.
+    """Split the photos into pages, in order: as few pages as show every photo large, the
+    photos shared out over them as evenly as that allows.
 
-    A page takes the most photos (up to MAX_PER_PAGE) whose grid keeps every photo's long side
-    at least MIN_LONG_SIDE_MM, so wide photos share a page six at a time while tall ones, which
-    would shrink more, go four or fewer.
+    A page may take up to MAX_PER_PAGE photos whose grid keeps every photo's long side at least
+    MIN_LONG_SIDE_MM, so wide photos share a page six at a time while tall ones, which would
+    shrink more, go four or fewer.  Filling each page in turn counted the pages, but left the
+    last with what remained: 16 photos went 4, 5, 6 and one alone on a page of its own.
     """
-    pages: list[list[Picture]] = []
-    rest = list(pictures)
-    while rest:
-        region = photo_region(width, height, with_title=not pages)
-        for count in range(min(MAX_PER_PAGE, len(rest)), 0, -1):
-            rects = photo_rects(region, rest[:count])
-            if count == 1 or min(max(w, h) for _, _, w, h in rects) >= MIN_LONG_SIDE_MM:
-                break
-        pages.append(rest[:count])
-        rest = rest[count:]
-    return pages
+    @lru_cache(maxsize=None)
+    def fits(start: int, count: int) -> bool:
+        if count == 1:
+            return True
+        region = photo_region(width, height, with_title=start == 0)
+        rects = photo_rects(region, pictures[start:start + count], with_title=start == 0)
+        return min(max(w, h) for _, _, w, h in rects) >= MIN_LONG_SIDE_MM
+
+    starts, start = [], 0
+    while start < len(pictures):  # the fewest pages: each takes the most it can
+        starts.append(start)
+        start += next(count for count in range(min(MAX_PER_PAGE, len(pictures) - start), 0, -1)
+                      if fits(start, count))
+    for spread in range(MAX_PER_PAGE):  # the most even counts on that many pages
+        for least in range(MAX_PER_PAGE - spread, 0, -1):
+            counts = _split(len(pictures), len(starts), least, least + spread, fits)
+            if counts:
+                bounds = [sum(counts[:k]) for k in range(len(counts) + 1)]
+                return [pictures[a:b] for a, b in zip(bounds, bounds[1:])]
+    return [pictures[a:b] for a, b in zip(starts, starts[1:] + [len(pictures)])]
+
+
+def _split(total: int, pages: int, least: int, most: int, fits) -> list[int] | None:
+    """Counts of photos for ``pages`` pages in order, each from ``least`` to ``most`` and
+    ``fits(start, count)``, summing to ``total``, the fuller pages first; None if none."""
+    @lru_cache(maxsize=None)
+    def rest(start: int, left: int) -> tuple[int, ...] | None:
+        if left == 0:
+            return () if start == total else None
+        for count in range(min(most, total - start), least - 1, -1):
+            if fits(start, count):
+                tail = rest(start + count, left - 1)
+                if tail is not None:
+                    return (count,) + tail
+        return None
+
+    found = rest(0, pages)
+    return list(found) if found is not None else None
 
 
 def album_page(number: int, pictures: list[Picture], options: Options, with_title: bool):
@@ -80,7 +117,7 @@ def album_page(number: int, pictures: list[Picture], options: Options, with_titl
                                    text=phrase("album_title", options.lang), font="display",
                                    color=ACCENT, bold=True, align="centre",
                                    anchor=PointAnchor(x=W / 2, y=y, gamma=1.0)))
-    rects = photo_rects(photo_region(W, H, with_title), pictures)
+    rects = photo_rects(photo_region(W, H, with_title), pictures, with_title)
     for index, (picture, (x, y, w, h)) in enumerate(zip(pictures, rects), start=1):
         photo = PictureItem(id=f"p{number}-photo-{index}", x=x, y=y, w=w, h=h, path=picture.path)
         page.items += [photo, caption_for(photo, picture)]

@@ -1,0 +1,101 @@
+"""How designed a starter's photo pages look, from any folder of photos (issue 16, "pages that
+look designed"): how much of the page the photos take, how evenly the white space is shared
+out, and the alignment figures `floatpage check` prints.
+
+A designer gives each row of photos the height its photos need and shares out what is left
+evenly between the rows and above and below them.  Per settled page this prints:
+
+- the photos' share of the page's area;
+- the empty horizontal bands, top to bottom (between the page's margin line and the first
+  block, between blocks, after the last): a block is a photo with its caption, or a title;
+- the spread of those bands (largest minus smallest) and the largest: a page with an empty
+  lower third has one band far larger than the rest;
+- near misses and distinct edge lines per item (physics.alignment), and whether the page keeps
+  zero overlap, the gutter and the margin.
+
+    .venv/bin/python benchmarks/starter_balance.py DIR [DIR ...] [--kind album]
+        [--orientation portrait|landscape|both]
+
+Each DIR is a folder of photos (as for ``floatpage new album x.toml --photos DIR``), or the
+word ``bundled`` for the starter's own pictures.  The project is made by ``starters.create``
+(settled, one process), as ``floatpage new`` makes it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import tempfile
+from pathlib import Path
+
+from floatpage import starters
+from floatpage.model.document import PictureItem
+from floatpage.model.layout import engine_for_page
+from floatpage.physics.alignment import measure_alignment
+
+
+def blocks(page) -> list[tuple[float, float]]:
+    """The (top, bottom) of each block on ``page``: an item together with the items anchored
+    to it (a photo and its caption), in mm, sorted by top."""
+    spans: dict[str, list[float]] = {}
+    for item in page.items:
+        if getattr(item, "decorative", False):
+            continue
+        to = getattr(getattr(item, "anchor", None), "to", None)
+        key = to if to else item.id
+        top, bottom = item.y - item.h / 2, item.y + item.h / 2
+        span = spans.setdefault(key, [top, bottom])
+        span[0], span[1] = min(span[0], top), max(span[1], bottom)
+    return sorted((top, bottom) for top, bottom in spans.values())
+
+
+def bands(page, margin_mm: float) -> list[float]:
+    """The heights of the empty horizontal bands from the margin line to the margin line
+    (the starter's own margin where it has one, else the print-safe margin)."""
+    found, reached = [], margin_mm
+    for top, bottom in blocks(page):
+        if top > reached:
+            found.append(top - reached)
+        reached = max(reached, bottom)
+    found.append(max(0.0, page.height_mm - margin_mm - reached))
+    return found
+
+
+def page_line(page, physics, margin_mm: float | None) -> str:
+    engine = engine_for_page(page, physics)
+    bodies = engine.bodies
+    figures = measure_alignment(bodies.centres, bodies.sizes, bodies.decorative)
+    photos = [i for i in page.items if isinstance(i, PictureItem)]
+    share = sum(p.w * p.h for p in photos) / (page.width_mm * page.height_mm)
+    empty = bands(page, engine.margin_mm if margin_mm is None else margin_mm)
+    return (f"{page.id} {page.orientation[:4]} {len(photos)} photos | area {share:.0%} | bands "
+            f"{' '.join(f'{b:.0f}' for b in empty)} mm | spread {max(empty) - min(empty):.0f}, "
+            f"largest {max(empty):.0f} | near {figures.near_misses_per_item:.2f}, lines "
+            f"{figures.edge_lines_per_item:.2f} | {'ok' if engine.quality().ok else 'NOT OK'}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("folders", nargs="+", help="photo folders, or 'bundled'")
+    parser.add_argument("--kind", default="album")
+    parser.add_argument("--orientation", default="both", choices=("portrait", "landscape", "both"))
+    parser.add_argument("--keep", default="", help="save the projects in this folder")
+    parser.add_argument("--unsettled", action="store_true", help="as the starter builds them")
+    args = parser.parse_args()
+    orientations = ("portrait", "landscape") if args.orientation == "both" else (args.orientation,)
+    with tempfile.TemporaryDirectory() as scratch:
+        out = Path(args.keep or scratch)
+        for folder in args.folders:
+            for orientation in orientations:
+                name = f"{Path(folder).name}-{orientation}"
+                path = out / name / f"{args.kind}.toml"
+                photos = None if folder == "bundled" else Path(folder)
+                project = starters.create(args.kind, path, photos=photos, year=2027,
+                                          orientation=orientation, settle=not args.unsettled)
+                margin = getattr(starters.starter(args.kind), "MARGIN_MM", None)
+                print(f"## {folder} ({orientation})", flush=True)
+                for page in project.pages:
+                    print("  " + page_line(page, project.physics, margin), flush=True)
+
+
+if __name__ == "__main__":
+    main()
