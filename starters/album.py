@@ -59,53 +59,77 @@ def _one_height_then_width(rects: list, aspects: list[float]) -> list:
     return near_widths_as_one(one_height_per_row(rects, aspects), aspects)
 
 
+FULL_WITHIN = 0.05  # pages whose photos cover up to this share of the page less count as full
+
+
 def paginate(pictures: list[Picture], width: float, height: float) -> list[list[Picture]]:
-    """Split the photos into pages, in order: as few pages as show every photo large, the
-    photos shared out over them as evenly as that allows.
+    """Split the photos into pages, in order: as few pages as show every photo large; of
+    those splits, one whose emptiest page is as full as can be (within FULL_WITHIN), then the
+    most even counts, then the largest photos together.
 
     A page may take up to MAX_PER_PAGE photos whose grid keeps every photo's long side at least
     MIN_LONG_SIDE_MM, so wide photos share a page six at a time while tall ones, which would
     shrink more, go four or fewer.  Filling each page in turn counted the pages, but left the
-    last with what remained: 16 photos went 4, 5, 6 and one alone on a page of its own.
+    last with what remained: 16 photos of mixed shapes went 4, 5 and 6 to a page and the last
+    alone, where 4 to a page keeps every page as full; and an even split alone would spread 8
+    wide photos 4 and 4 over pages three quarters empty, where 6 and 2 fill both.
     """
     @lru_cache(maxsize=None)
-    def fits(start: int, count: int) -> bool:
-        if count == 1:
-            return True
+    def cover(start: int, count: int) -> float | None:
+        """The share of the page the photos cover, None if they cannot share one page."""
         region = photo_region(width, height, with_title=start == 0)
         rects = photo_rects(region, pictures[start:start + count], with_title=start == 0)
-        return min(max(w, h) for _, _, w, h in rects) >= MIN_LONG_SIDE_MM
+        if count > 1 and min(max(w, h) for _, _, w, h in rects) < MIN_LONG_SIDE_MM:
+            return None
+        return sum(w * h for _, _, w, h in rects) / (width * height)
 
-    starts, start = [], 0
-    while start < len(pictures):  # the fewest pages: each takes the most it can
-        starts.append(start)
-        start += next(count for count in range(min(MAX_PER_PAGE, len(pictures) - start), 0, -1)
-                      if fits(start, count))
-    for spread in range(MAX_PER_PAGE):  # the most even counts on that many pages
-        for least in range(MAX_PER_PAGE - spread, 0, -1):
-            counts = _split(len(pictures), len(starts), least, least + spread, fits)
-            if counts:
-                bounds = [sum(counts[:k]) for k in range(len(counts) + 1)]
-                return [pictures[a:b] for a, b in zip(bounds, bounds[1:])]
-    return [pictures[a:b] for a, b in zip(starts, starts[1:] + [len(pictures)])]
+    total, pages, start = len(pictures), 0, 0
+    while start < total:  # the fewest pages: each takes the most it can
+        start += next(count for count in range(min(MAX_PER_PAGE, total - start), 0, -1)
+                      if cover(start, count))
+        pages += 1
+    levels = sorted({found for start in range(total)
+                     for count in range(1, min(MAX_PER_PAGE, total - start) + 1)
+                     if (found := cover(start, count))})
+    low, high = 0, len(levels) - 1  # the fullest emptiest page some split has
+    while low < high:
+        middle = (low + high + 1) // 2
+        if _split(total, pages, 1, MAX_PER_PAGE, cover, levels[middle]):
+            low = middle
+        else:
+            high = middle - 1
+    least_cover = levels[low] - FULL_WITHIN
+    for spread in range(MAX_PER_PAGE):  # the most even counts, then the largest photos
+        found = [split for least in range(1, MAX_PER_PAGE - spread + 1)
+                 if (split := _split(total, pages, least, least + spread, cover, least_cover))]
+        if found:
+            counts = max(found)[1]
+            bounds = [sum(counts[:k]) for k in range(len(counts) + 1)]
+            return [pictures[a:b] for a, b in zip(bounds, bounds[1:])]
+    raise AssertionError("unreachable: the fullest emptiest page's split has some spread")
 
 
-def _split(total: int, pages: int, least: int, most: int, fits) -> list[int] | None:
-    """Counts of photos for ``pages`` pages in order, each from ``least`` to ``most`` and
-    ``fits(start, count)``, summing to ``total``, the fuller pages first; None if none."""
+def _split(total: int, pages: int, least: int, most: int, cover,
+           least_cover: float) -> tuple[float, tuple[int, ...]] | None:
+    """(the photos' cover summed over the pages, the counts) of the split of ``total``
+    photos over ``pages`` pages, in order, each page from ``least`` to ``most`` photos that can
+    share it (``cover(start, count)``) and cover at least ``least_cover`` of it, whose photos
+    cover the most; None if there is none."""
     @lru_cache(maxsize=None)
-    def rest(start: int, left: int) -> tuple[int, ...] | None:
+    def rest(start: int, left: int) -> tuple[float, tuple[int, ...]] | None:
         if left == 0:
-            return () if start == total else None
+            return (0.0, ()) if start == total else None
+        best = None
         for count in range(min(most, total - start), least - 1, -1):
-            if fits(start, count):
-                tail = rest(start + count, left - 1)
-                if tail is not None:
-                    return (count,) + tail
-        return None
+            on_page = cover(start, count)
+            if on_page is None or on_page < least_cover:
+                continue
+            tail = rest(start + count, left - 1)
+            if tail is not None and (best is None or on_page + tail[0] > best[0] + 1e-12):
+                best = (on_page + tail[0], (count,) + tail[1])
+        return best
 
-    found = rest(0, pages)
-    return list(found) if found is not None else None
+    return rest(0, pages)
 
 
 def album_page(number: int, pictures: list[Picture], options: Options, with_title: bool):
