@@ -11,6 +11,7 @@ from functools import lru_cache
 
 from floatpage.model.document import Background, ItemAnchor, PictureItem, PointAnchor, Project, TextItem
 from floatpage.model.page_sizes import page_dimensions
+from floatpage.physics.guides import SNAP_MM
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
 from floatpage.starters.even_rows import even_rows
@@ -46,13 +47,15 @@ def photo_region(width: float, height: float, with_title: bool) -> Region:
     return Region(MARGIN_MM, top, width - MARGIN_MM, height - MARGIN_MM)
 
 
-def photo_rects(region: Region, pictures: list[Picture], with_title: bool) -> list:
+def photo_rects(region: Region, pictures: list[Picture], with_title: bool,
+                page_h_mm: float) -> list:
     """Each row as tall as its photos need, the height left shared out evenly (even_rows);
     each row's photos of near shapes at one height (placement.one_height_per_row), each
     column's of near widths at one width (placement.near_widths_as_one)."""
     return even_rows(region, [p.aspect for p in pictures], fill=0.96, gap=8.0,
                      below=CAPTION_GAP_MM + CAPTION_H_MM,
-                     above=TITLE_GAP_MM if with_title else 0.0, cut=_one_height_then_width)
+                     above=TITLE_GAP_MM if with_title else 0.0, cut=_one_height_then_width,
+                     middle=(page_h_mm / 2, 2 * SNAP_MM))
 
 
 def _one_height_then_width(rects: list, aspects: list[float]) -> list:
@@ -78,7 +81,7 @@ def paginate(pictures: list[Picture], width: float, height: float) -> list[list[
     def cover(start: int, count: int) -> float | None:
         """The share of the page the photos cover, None if they cannot share one page."""
         region = photo_region(width, height, with_title=start == 0)
-        rects = photo_rects(region, pictures[start:start + count], with_title=start == 0)
+        rects = photo_rects(region, pictures[start:start + count], start == 0, height)
         if count > 1 and min(max(w, h) for _, _, w, h in rects) < MIN_LONG_SIDE_MM:
             return None
         return sum(w * h for _, _, w, h in rects) / (width * height)
@@ -141,7 +144,7 @@ def album_page(number: int, pictures: list[Picture], options: Options, with_titl
                                    text=phrase("album_title", options.lang), font="display",
                                    color=ACCENT, bold=True, align="centre",
                                    anchor=PointAnchor(x=W / 2, y=y, gamma=1.0)))
-    rects = photo_rects(photo_region(W, H, with_title), pictures, with_title)
+    rects = photo_rects(photo_region(W, H, with_title), pictures, with_title, H)
     for index, (picture, (x, y, w, h)) in enumerate(zip(pictures, rects), start=1):
         photo = PictureItem(id=f"p{number}-photo-{index}", x=x, y=y, w=w, h=h, path=picture.path)
         page.items += [photo, caption_for(photo, picture)]

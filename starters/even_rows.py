@@ -52,7 +52,8 @@ def even_spaces(free: float, least: list[float]) -> list[float]:
 
 
 def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: float = 8.0,
-              below: float = 0.0, above: float = 0.0, cut: Cut | None = None) -> list[Rect]:
+              below: float = 0.0, above: float = 0.0, cut: Cut | None = None,
+              middle: tuple[float, float] | None = None) -> list[Rect]:
     """Place boxes of ``aspects`` (in order, row by row) in columns of one width over
     ``region``, each row as tall as it needs, the column count that keeps the most area.
 
@@ -61,7 +62,12 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
     (for captions), the gaps and the ``above`` kept over the first row (under a title), so
     the physics keeps room to move.  ``cut`` (e.g. rows of one
     height) runs on the sized boxes before the rows are placed, so they are placed at the
-    heights they end with.  A short last row is centred.  Returns (x, y, w, h) centres.
+    heights they end with.  A short last row is centred.  ``middle`` = (the page's middle
+    line, a reach): a row whose middle the even spaces put within that reach of the page's
+    middle is put on it, and the spaces above and below it are shared out each on its own
+    (the physics' snap pulls a row that near onto the page's middle line, a guide, and the
+    rows it leaves behind stood 7 and 19 mm apart instead of 11 and 11).  Returns (x, y, w, h)
+    centres.
     """
     n = len(aspects)
     if n == 0:
@@ -76,7 +82,8 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
         rects = _sized(region, aspects, cols, cell_w, gap, fill, room)
         if cut is not None:
             rects = cut(rects, aspects)
-        rects = _placed(region, rects, rows, [above] + [gap] * (rows - 1) + [0.0], below)
+        rects = _placed(region, rects, rows, [above] + [gap] * (rows - 1) + [0.0], below,
+                        middle)
         area = sum(w * h for _, _, w, h in rects)
         if best is None or area > best[0] + 1e-9:
             best = (area, rects)
@@ -104,14 +111,32 @@ def _sized(region: Region, aspects: list[float], cols: int, cell_w: float, gap: 
     return rects
 
 
-def _placed(region: Region, rects: list[Rect], rows: int, least: list[float],
-            below: float) -> list[Rect]:
+def _placed(region: Region, rects: list[Rect], rows: int, least: list[float], below: float,
+            middle: tuple[float, float] | None = None) -> list[Rect]:
     """``rects`` with ``y`` a row number, moved to their rows: each row as tall as its tallest
-    box, the boxes centred on the row's middle, the height left shared out (even_spaces)."""
+    box, the boxes centred on the row's middle, the height left shared out (even_spaces); a
+    row near the page's ``middle`` put on it (see even_rows)."""
     tallest = [max(h for _, y, _, h in rects if y == row) for row in range(rows)]
     spaces = even_spaces(region.height - sum(tallest) - rows * below, least)
-    middles, reached = [], region.top
+    middles = _middles(region.top, tallest, spaces, below)
+    if middle is not None:
+        line, reach = middle
+        near = [row for row in range(rows) if 0 < abs(middles[row] - line) < reach]
+        if near:
+            row = near[0]
+            over = line - tallest[row] / 2 - region.top - sum(tallest[:row]) - row * below
+            under = region.height - (over + sum(tallest) + rows * below)
+            if over >= sum(least[:row + 1]) - 1e-9 and under >= sum(least[row + 1:]) - 1e-9:
+                spaces = (even_spaces(over, least[:row + 1])
+                          + even_spaces(under, least[row + 1:]))
+                middles = _middles(region.top, tallest, spaces, below)
+    return [(x, middles[int(y)], w, h) for x, y, w, h in rects]
+
+
+def _middles(top: float, tallest: list[float], spaces: list[float], below: float) -> list[float]:
+    """The rows' middles from the region's top, each row after its space."""
+    middles, reached = [], top
     for height, space in zip(tallest, spaces):
         middles.append(reached + space + height / 2)
         reached += space + height + below
-    return [(x, middles[int(y)], w, h) for x, y, w, h in rects]
+    return middles
