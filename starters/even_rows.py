@@ -63,10 +63,11 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
     the physics keeps room to move.  ``cut`` (e.g. rows of one
     height) runs on the sized boxes before the rows are placed, so they are placed at the
     heights they end with.  A short last row is centred.  ``middle`` = (the page's middle
-    line, a reach): a row whose middle the even spaces put within that reach of the page's
-    middle is put on it, and the spaces above and below it are shared out each on its own
-    (the physics' snap pulls a row that near onto the page's middle line, a guide, and the
-    rows it leaves behind stood 7 and 19 mm apart instead of 11 and 11).  Returns (x, y, w, h)
+    line, a reach): of two rows or more, a row whose middle the even spaces put within that
+    reach of the page's middle is put on it, and the spaces above and below it are shared out
+    each on its own (the physics' snap pulls a row that near onto the page's middle line, a
+    guide, and the rows it leaves behind stood 7 and 19 mm apart instead of 11 and 11).  A
+    page of one row keeps its even spaces: measured, the physics leaves those alone.  Returns (x, y, w, h)
     centres.
     """
     n = len(aspects)
@@ -119,7 +120,7 @@ def _placed(region: Region, rects: list[Rect], rows: int, least: list[float], be
     tallest = [max(h for _, y, _, h in rects if y == row) for row in range(rows)]
     spaces = even_spaces(region.height - sum(tallest) - rows * below, least)
     middles = _middles(region.top, tallest, spaces, below)
-    if middle is not None:
+    if middle is not None and rows > 1:
         line, reach = middle
         near = [row for row in range(rows) if 0 < abs(middles[row] - line) < reach]
         if near:
