@@ -6,10 +6,12 @@ A designer gives each row of photos the height its photos need and shares out wh
 evenly between the rows and above and below them.  Per settled page this prints:
 
 - the photos' share of the page's area;
-- the empty horizontal bands, top to bottom (between the page's margin line and the first
-  block, between blocks, after the last): a block is a photo with its caption, or a title;
-- the spread of those bands (largest minus smallest) and the largest: a page with an empty
-  lower third has one band far larger than the rest;
+- the empty horizontal bands a reader sees, top to bottom (from the page's top edge to the
+  first block, between blocks, from the last to the bottom edge): a block is a photo with its
+  caption, or a title;
+- the spread of those bands (largest minus smallest; the band above a title, the page's
+  margin, left out) and the largest: a page with an empty lower third has one band far
+  larger than the rest;
 - near misses and distinct edge lines per item (physics.alignment), and whether the page keeps
   zero overlap, the gutter and the margin.
 
@@ -48,9 +50,9 @@ def blocks(page) -> list[tuple[float, float]]:
     return sorted((top, bottom) for top, bottom in spans.values())
 
 
-def bands(page, margin_mm: float) -> list[float]:
-    """The heights of the empty horizontal bands from the margin line to the margin line
-    (the starter's own margin where it has one, else the print-safe margin)."""
+def bands(page, margin_mm: float = 0.0) -> list[float]:
+    """The heights of the empty horizontal bands from ``margin_mm`` inside the top edge to as
+    far inside the bottom edge (0: the page's edges)."""
     found, reached = [], margin_mm
     for top, bottom in blocks(page):
         if top > reached:
@@ -60,16 +62,18 @@ def bands(page, margin_mm: float) -> list[float]:
     return found
 
 
-def page_line(page, physics, margin_mm: float | None) -> str:
+def page_line(page, physics) -> str:
     engine = engine_for_page(page, physics)
     bodies = engine.bodies
     figures = measure_alignment(bodies.centres, bodies.sizes, bodies.decorative)
     photos = [i for i in page.items if isinstance(i, PictureItem)]
     share = sum(p.w * p.h for p in photos) / (page.width_mm * page.height_mm)
-    empty = bands(page, engine.margin_mm if margin_mm is None else margin_mm)
+    empty = bands(page)
+    titled = any("title" in item.id for item in page.items)
+    shared = empty[1:] if titled and len(empty) > 1 else empty
     return (f"{page.id} {page.orientation[:4]} {len(photos)} photos | area {share:.0%} | bands "
-            f"{' '.join(f'{b:.0f}' for b in empty)} mm | spread {max(empty) - min(empty):.0f}, "
-            f"largest {max(empty):.0f} | near {figures.near_misses_per_item:.2f}, lines "
+            f"{' '.join(f'{b:.0f}' for b in empty)} mm | spread {max(shared) - min(shared):.0f}, "
+            f"largest {max(shared):.0f} | near {figures.near_misses_per_item:.2f}, lines "
             f"{figures.edge_lines_per_item:.2f} | {'ok' if engine.quality().ok else 'NOT OK'}")
 
 
@@ -91,10 +95,9 @@ def main() -> None:
                 photos = None if folder == "bundled" else Path(folder)
                 project = starters.create(args.kind, path, photos=photos, year=2027,
                                           orientation=orientation, settle=not args.unsettled)
-                margin = getattr(starters.starter(args.kind), "MARGIN_MM", None)
                 print(f"## {folder} ({orientation})", flush=True)
                 for page in project.pages:
-                    print("  " + page_line(page, project.physics, margin), flush=True)
+                    print("  " + page_line(page, project.physics), flush=True)
 
 
 if __name__ == "__main__":

@@ -43,8 +43,11 @@ def caption_for(photo: PictureItem, picture: Picture) -> TextItem:
 
 
 def photo_region(width: float, height: float, with_title: bool) -> Region:
-    top = MARGIN_MM + (TITLE_H_MM if with_title else 0.0)
-    return Region(MARGIN_MM, top, width - MARGIN_MM, height - MARGIN_MM)
+    """From under the title (or the page's top) to the page's bottom, inside the side margins:
+    the spaces above and below the rows are shared out with those between them, so the white
+    a reader sees under the last row is as wide as between the rows (at least MARGIN_MM)."""
+    return Region(MARGIN_MM, MARGIN_MM + TITLE_H_MM if with_title else 0.0, width - MARGIN_MM,
+                  height)
 
 
 def photo_rects(region: Region, pictures: list[Picture], with_title: bool,
@@ -54,7 +57,8 @@ def photo_rects(region: Region, pictures: list[Picture], with_title: bool,
     column's of near widths at one width (placement.near_widths_as_one)."""
     return even_rows(region, [p.aspect for p in pictures], fill=0.96, gap=8.0,
                      below=CAPTION_GAP_MM + CAPTION_H_MM,
-                     above=TITLE_GAP_MM if with_title else 0.0, cut=_one_height_then_width,
+                     above=TITLE_GAP_MM if with_title else MARGIN_MM, under=MARGIN_MM,
+                     cut=_one_height_then_width,
                      middle=(page_h_mm / 2, 2 * SNAP_MM))
 
 

@@ -52,14 +52,16 @@ def even_spaces(free: float, least: list[float]) -> list[float]:
 
 
 def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: float = 8.0,
-              below: float = 0.0, above: float = 0.0, cut: Cut | None = None,
+              below: float = 0.0, above: float = 0.0, under: float = 0.0, cut: Cut | None = None,
               middle: tuple[float, float] | None = None) -> list[Rect]:
     """Place boxes of ``aspects`` (in order, row by row) in columns of one width over
     ``region``, each row as tall as it needs, the column count that keeps the most area.
 
     A box is at most ``fill`` of its column's width; the rows' heights together at most
     ``fill`` of what the region holds after the ``below`` each row reserves under its boxes
-    (for captions), the gaps and the ``above`` kept over the first row (under a title), so
+    (for captions), the gaps, and the least spaces kept over the first row (``above``: under
+    a title, or the page's margin when the region reaches the page's edge) and under the last
+    (``under``), so
     the physics keeps room to move.  ``cut`` (e.g. rows of one
     height) runs on the sized boxes before the rows are placed, so they are placed at the
     heights they end with.  A short last row is centred.  ``middle`` = (the page's middle
@@ -77,13 +79,13 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
     for cols in range(1, n + 1):
         rows = math.ceil(n / cols)
         cell_w = (region.width - gap * (cols - 1)) / cols
-        room = (region.height - rows * below - (rows - 1) * gap - above) * fill
+        room = (region.height - rows * below - (rows - 1) * gap - above - under) * fill
         if cell_w <= 0 or room <= 0:
             continue
         rects = _sized(region, aspects, cols, cell_w, gap, fill, room)
         if cut is not None:
             rects = cut(rects, aspects)
-        rects = _placed(region, rects, rows, [above] + [gap] * (rows - 1) + [0.0], below,
+        rects = _placed(region, rects, rows, [above] + [gap] * (rows - 1) + [under], below,
                         middle)
         area = sum(w * h for _, _, w, h in rects)
         if best is None or area > best[0] + 1e-9:

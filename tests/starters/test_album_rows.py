@@ -25,21 +25,22 @@ def photos_of(page) -> list[PictureItem]:
 
 
 def empty_bands(page) -> list[float]:
-    """The empty heights top to bottom between the album's margin lines: under the title, or
-    from the top margin line, between blocks (a photo with its caption), and to the bottom
-    margin line."""
+    """The empty heights a reader sees, top to bottom: from under the title (or the page's top
+    edge) to the first block (a photo with its caption), between blocks, and to the page's
+    bottom edge."""
     spans = {}
     for item in page.items:
         key = item.anchor.to if getattr(item.anchor, "to", None) else item.id
         top, bottom = item.y - item.h / 2, item.y + item.h / 2
         low, high = spans.get(key, (top, bottom))
         spans[key] = (min(low, top), max(high, bottom))
-    bands, reached = [], album.MARGIN_MM
+    bands, reached = [], 0.0
     for top, bottom in sorted(spans.values()):
         if top > reached + 1e-6:
             bands.append(top - reached)
         reached = max(reached, bottom)
-    return bands + [page.height_mm - album.MARGIN_MM - reached]
+    bands.append(page.height_mm - reached)
+    return bands[1:] if any(item.id == "album-title" for item in page.items) else bands
 
 
 def tall_over_wide() -> list[Picture]:
