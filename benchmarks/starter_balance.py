@@ -62,19 +62,41 @@ def bands(page, margin_mm: float = 0.0) -> list[float]:
     return found
 
 
-def page_line(page, physics) -> str:
+def page_figures(page, physics) -> dict:
     engine = engine_for_page(page, physics)
     bodies = engine.bodies
     figures = measure_alignment(bodies.centres, bodies.sizes, bodies.decorative)
     photos = [i for i in page.items if isinstance(i, PictureItem)]
-    share = sum(p.w * p.h for p in photos) / (page.width_mm * page.height_mm)
     empty = bands(page)
     titled = any("title" in item.id for item in page.items)
     shared = empty[1:] if titled and len(empty) > 1 else empty
-    return (f"{page.id} {page.orientation[:4]} {len(photos)} photos | area {share:.0%} | bands "
-            f"{' '.join(f'{b:.0f}' for b in empty)} mm | spread {max(shared) - min(shared):.0f}, "
-            f"largest {max(shared):.0f} | near {figures.near_misses_per_item:.2f}, lines "
-            f"{figures.edge_lines_per_item:.2f} | {'ok' if engine.quality().ok else 'NOT OK'}")
+    return {"photos": len(photos), "photo_area": sum(p.w * p.h for p in photos),
+            "page_area": page.width_mm * page.height_mm, "bands": empty,
+            "spread": max(shared) - min(shared), "largest": max(shared),
+            "near": figures.near_misses_per_item, "lines": figures.edge_lines_per_item,
+            "ok": engine.quality().ok}
+
+
+def page_line(page, figures: dict) -> str:
+    return (f"{page.id} {page.orientation[:4]} {figures['photos']} photos | area "
+            f"{figures['photo_area'] / figures['page_area']:.0%} | bands "
+            f"{' '.join(f'{b:.0f}' for b in figures['bands'])} mm | spread "
+            f"{figures['spread']:.0f}, largest {figures['largest']:.0f} | near "
+            f"{figures['near']:.2f}, lines {figures['lines']:.2f} | "
+            f"{'ok' if figures['ok'] else 'NOT OK'}")
+
+
+def summary(rows: list[dict]) -> str:
+    """Over every page: the photos' share of the pages' area, the bands' spread (mean and
+    worst), near misses and edge lines per item (mean and worst), pages missing a guarantee."""
+    count = len(rows)
+    return (f"{count} pages | photos cover {sum(r['photo_area'] for r in rows) / sum(r['page_area'] for r in rows):.1%} "
+            f"| spread mean {sum(r['spread'] for r in rows) / count:.1f} mm, worst "
+            f"{max(r['spread'] for r in rows):.0f} mm | largest band mean "
+            f"{sum(r['largest'] for r in rows) / count:.1f} mm | near misses mean "
+            f"{sum(r['near'] for r in rows) / count:.2f}, worst {max(r['near'] for r in rows):.2f} "
+            f"| edge lines mean {sum(r['lines'] for r in rows) / count:.2f}, worst "
+            f"{max(r['lines'] for r in rows):.2f} | not ok {sum(not r['ok'] for r in rows)}")
 
 
 def main() -> None:
@@ -86,6 +108,7 @@ def main() -> None:
     parser.add_argument("--unsettled", action="store_true", help="as the starter builds them")
     args = parser.parse_args()
     orientations = ("portrait", "landscape") if args.orientation == "both" else (args.orientation,)
+    rows = []
     with tempfile.TemporaryDirectory() as scratch:
         out = Path(args.keep or scratch)
         for folder in args.folders:
@@ -97,7 +120,9 @@ def main() -> None:
                                           orientation=orientation, settle=not args.unsettled)
                 print(f"## {folder} ({orientation})", flush=True)
                 for page in project.pages:
-                    print("  " + page_line(page, project.physics), flush=True)
+                    rows.append(page_figures(page, project.physics))
+                    print("  " + page_line(page, rows[-1]), flush=True)
+    print(summary(rows))
 
 
 if __name__ == "__main__":
