@@ -1,0 +1,46 @@
+"""A starter's photo centred over a wider or narrower block (the calendar's month panel, the
+card's greeting) is as wide as it, or clear of its edges: edges 0.5-4 mm apart are a near miss
+(physics.alignment) the snap cannot close on both sides, and it slid the photo off centre."""
+
+from __future__ import annotations
+
+import pytest
+
+from floatpage import starters
+from floatpage.model import load_project
+from floatpage.model.document import CalendarItem, PictureItem
+from floatpage.physics.alignment import NEAR_MM
+from floatpage.starters.options import Options
+from floatpage.starters.pictures import Picture, bundled
+
+
+def test_a_calendar_of_camera_photos_keeps_each_photo_as_wide_as_the_panel():
+    project = starters.build("calendar", Options(year=2027), [Picture("pictures/a.jpg", 4, 3)])
+    for page in project.pages:
+        [photo] = [item for item in page.items if isinstance(item, PictureItem)]
+        [panel] = [item for item in page.items if isinstance(item, CalendarItem)]
+        assert photo.w == pytest.approx(panel.w)
+        assert photo.x == pytest.approx(panel.x)
+
+
+def test_a_settled_calendar_of_camera_photos_prints_them_centred(tmp_path):
+    """`floatpage new calendar --photos` with 4:3 photos: each month's photo stays on the
+    page's centre line (it slid 10.7 mm left, 178.6 mm wide over the 178 mm panel)."""
+    photos = tmp_path / "photos"
+    photos.mkdir()
+    [source] = bundled(["autumn-forest.jpg"])  # 640 x 480
+    (photos / source.name).write_bytes(source.read_bytes())
+    starters.create("calendar", tmp_path / "cal.toml", photos=photos, year=2027, jobs=2)
+    for page in load_project(tmp_path / "cal.toml").pages:
+        [photo] = [item for item in page.items if isinstance(item, PictureItem)]
+        assert photo.x == pytest.approx(page.width_mm / 2, abs=0.01), page.id
+
+
+@pytest.mark.parametrize("shape", [(4, 3), (3, 2), (16, 9), (1, 1), (3, 4)])
+def test_no_month_photo_stands_a_near_miss_inside_or_outside_the_panel(shape):
+    project = starters.build("calendar", Options(year=2027), [Picture("pictures/a.jpg", *shape)])
+    page = project.pages[0]
+    [photo] = [item for item in page.items if isinstance(item, PictureItem)]
+    [panel] = [item for item in page.items if isinstance(item, CalendarItem)]
+    apart = abs(photo.w - panel.w) / 2
+    assert apart < 0.01 or apart >= NEAR_MM, (photo.w, panel.w)
