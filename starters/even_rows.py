@@ -9,7 +9,7 @@ is as tall as its tallest box at the column's width; where the rows together nee
 the region holds, the tallest are cut to one common height (water filling), so a row of wide
 photos keeps its size and gives what it does not need to the tall row.  What is left is shared
 out evenly: between the rows, and above and below them (no less than the gap between rows,
-or the room a title keeps).
+the room a title keeps, or the page's margin).
 """
 
 from __future__ import annotations
@@ -61,16 +61,16 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
     ``fill`` of what the region holds after the ``below`` each row reserves under its boxes
     (for captions), the gaps, and the least spaces kept over the first row (``above``: under
     a title, or the page's margin when the region reaches the page's edge) and under the last
-    (``under``), so
-    the physics keeps room to move.  ``cut`` (e.g. rows of one
-    height) runs on the sized boxes before the rows are placed, so they are placed at the
-    heights they end with.  A short last row is centred.  ``middle`` = (the page's middle
-    line, a reach): of two rows or more, a row whose middle the even spaces put within that
-    reach of the page's middle is put on it, and the spaces above and below it are shared out
-    each on its own (the physics' snap pulls a row that near onto the page's middle line, a
-    guide, and the rows it leaves behind stood 7 and 19 mm apart instead of 11 and 11).  A
-    page of one row keeps its even spaces: measured, the physics leaves those alone.  Returns (x, y, w, h)
-    centres.
+    (``under``), so the physics keeps room to move.  ``cut`` (e.g. rows of one height) runs
+    on the sized boxes before the rows are placed, so they are placed at the heights they end
+    with.  A short last row is centred.
+
+    ``middle`` = (the page's middle line, a reach): of two rows or more, a row whose middle
+    the even spaces put within that reach of the page's middle is put on it, and the spaces
+    above and below it are shared out each on its own (the physics' snap pulls a row that
+    near onto the page's middle line, a guide, and the rows it left behind stood 7 and 19 mm
+    apart instead of 11 and 11).  A page of one row keeps its even spaces: measured, the
+    physics leaves those alone.  Returns (x, y, w, h) centres.
     """
     n = len(aspects)
     if n == 0:
