@@ -169,21 +169,36 @@ def group_bounds(bodies: Bodies, rows: np.ndarray, roots: np.ndarray, root_offse
     lowest = -low[rows] + near[rows]
     highest = extent - high[rows] - far[rows]
     edges = bodies.insets(0.0, page_w_mm, page_h_mm)  # the walls without the margin
-    squeezed(lowest, highest, -low[rows] + edges[0][rows], extent - high[rows] - edges[1][rows])
+    margins = page_margins(bodies, near)[rows]
+    squeezed(lowest, highest, -low[rows] + edges[0][rows], extent - high[rows] - edges[1][rows],
+             [(-low[rows] + margins, extent - high[rows] - margins), (-low[rows], extent - high[rows])])
     confine_followers(bodies, roots, root_offsets, (low, high), rows, lowest, highest, near,
                       far, extent, edges)
     return lowest, highest
 
 
+def page_margins(bodies: Bodies, near: np.ndarray) -> np.ndarray:
+    """Each row's print-safe margin as the walls ``near`` (Bodies.insets) were drawn at, (n, 1):
+    what an unconfined item keeps (none for bleed items), regions aside."""
+    unconfined = np.isnan(bodies.regions[:, 0]) & ~bodies.bleed
+    margin = float(near[unconfined].min()) if unconfined.any() else 0.0
+    return bodies.margins(margin)[:, None]
+
+
 def squeezed(lowest: np.ndarray, highest: np.ndarray, lowest_edge: np.ndarray,
-             highest_edge: np.ndarray) -> None:
+             highest_edge: np.ndarray,
+             page: list[tuple[np.ndarray, np.ndarray]] = ()) -> None:
     """Where ``lowest`` passes ``highest`` (a group too large for its walls), one value
     between them, in place: the middle, moved inside the bounds the walls leave without the
-    print-safe margin (``*_edge``) where the group fits inside those.  The margin gives way,
-    never a region's edge or the page's: a photo whose caption follows it, 51.5 mm tall in a
-    region 52.8 mm tall whose top is the page's, was centred between the top margin and the
-    region's bottom and stood 0.7 mm out of its region (fresh_projects seed 76), which no
-    limit names."""
+    print-safe margin (``*_edge``) where the group fits inside those.  The margin gives way
+    first, then a region's edge, never the page's: a photo whose caption follows it, 51.5 mm
+    tall in a region 52.8 mm tall whose top is the page's, was centred between the top margin
+    and the region's bottom and stood 0.7 mm out of its region (fresh_projects seed 76), which
+    no limit names.  Where the group does not fit its region even so, it is kept on the page
+    (``page``: the lowest and highest value that keep it there), if it fits the page: a block
+    in an 80 mm region with a follower 160 mm below it was centred on the region, 20 mm past
+    the page's top edge (tests/model/test_regions_groups.py).  ``page`` lists such bounds
+    to try in turn: inside the page's margins, then inside its edges."""
     short = lowest > highest
     if not short.any():
         return
@@ -191,6 +206,11 @@ def squeezed(lowest: np.ndarray, highest: np.ndarray, lowest_edge: np.ndarray,
     fits = lowest_edge <= highest_edge
     middle = np.where(fits, np.clip(middle, lowest_edge, np.maximum(highest_edge, lowest_edge)),
                       middle)
+    for page_low, page_high in page:
+        on_page = ~fits & (page_low <= page_high)
+        middle = np.where(on_page, np.clip(middle, page_low, np.maximum(page_high, page_low)),
+                          middle)
+        fits = fits | on_page
     lowest[:] = np.where(short, middle, lowest)
     highest[:] = np.where(short, middle, highest)
 
@@ -214,6 +234,7 @@ def confine_followers(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarra
     followers = np.flatnonzero(bodies.followers & ~np.isnan(bodies.regions[:, 0]))
     if not len(followers):
         return
+    margins = page_margins(bodies, near)
     position = {int(row): k for k, row in enumerate(rows)}
     halves = bodies.sizes / 2
     low, high = extents
@@ -229,7 +250,11 @@ def confine_followers(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarra
                                   extent - halves[member] - offset - edges[1][member])
         lowest[k] = np.maximum(lowest[k], halves[member] - offset + near[member])
         highest[k] = np.minimum(highest[k], extent - halves[member] - offset - far[member])
-        squeezed(lowest[k], highest[k], lowest_edge, highest_edge)
+        page_low = np.maximum(-low[root], halves[member] - offset)
+        page_high = np.minimum(extent - high[root], extent - halves[member] - offset)
+        squeezed(lowest[k], highest[k], lowest_edge, highest_edge,
+                 [(page_low + margins[member], page_high - margins[member]),
+                  (page_low, page_high)])
 
 
 def clamp_to_page(centres: np.ndarray, velocities: np.ndarray, rows: np.ndarray,

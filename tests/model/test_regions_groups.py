@@ -300,6 +300,19 @@ def test_check_tells_how_to_mend_a_chain_longer_than_its_region_not_to_settle(tm
         assert result.returncode == 0, result.stdout
 
 
+def test_a_chain_longer_than_its_region_is_kept_on_the_page(tmp_path):
+    """The region gives way before the page: "head" and its "tail" 160 mm below cannot both
+    keep to the 80 mm region, and were centred on it, "head" 20 mm past the page's top edge
+    (y = -20).  Now they stand on the page, "head" as near its region as the page lets it."""
+    path = write(tmp_path, CHAIN)
+    assert floatpage("settle", str(path)).returncode == 0
+    result = floatpage("check", str(path))
+    assert "0 off page" in result.stdout, result.stdout
+    page = load_project(path).pages[0]
+    for item in page.items:
+        assert item.y - item.h / 2 >= -0.01 and item.y + item.h / 2 <= page.height_mm + 0.01
+
+
 def test_check_tells_a_group_too_tall_for_a_members_region_what_to_do_not_to_settle(tmp_path):
     """A group ("head" and "tail", 160 mm apart) whose second member keeps to an 80 mm region:
     check said of "tail" "run `floatpage settle`", and of the group "its room inside the margins
