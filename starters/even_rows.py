@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 from typing import Callable
 
-from floatpage.starters.placement import Rect, Region, fit
+from floatpage.starters.placement import Rect, Region, fit, largest_grid
 
 Cut = Callable[[list[Rect], list[float]], list[Rect]]  # e.g. placement.one_height_per_row
 
@@ -75,24 +75,19 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
     n = len(aspects)
     if n == 0:
         return []
-    best: tuple[float, list[Rect]] | None = None
-    for cols in range(1, n + 1):
+
+    def with_columns(cols: int) -> list[Rect] | None:
         rows = math.ceil(n / cols)
         cell_w = (region.width - gap * (cols - 1)) / cols
         room = (region.height - rows * below - (rows - 1) * gap - above - under) * fill
         if cell_w <= 0 or room <= 0:
-            continue
+            return None
         rects = _sized(region, aspects, cols, cell_w, gap, fill, room)
         if cut is not None:
             rects = cut(rects, aspects)
-        rects = _placed(region, rects, rows, [above] + [gap] * (rows - 1) + [under], below,
-                        middle)
-        area = sum(w * h for _, _, w, h in rects)
-        if best is None or area > best[0] + 1e-9:
-            best = (area, rects)
-    if best is None:
-        raise ValueError(f"region {region} is too small for {n} boxes")
-    return best[1]
+        return _placed(region, rects, rows, [above] + [gap] * (rows - 1) + [under], below,
+                       middle)
+    return largest_grid(region, n, with_columns)
 
 
 def _sized(region: Region, aspects: list[float], cols: int, cell_w: float, gap: float,

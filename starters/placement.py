@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Callable
 
 from floatpage.model.document import Page
 from floatpage.model.page_sizes import page_dimensions
@@ -74,13 +75,13 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
     n = len(aspects)
     if n == 0:
         return []
-    best: tuple[float, list[Rect]] | None = None
-    for cols in range(1, n + 1):
+
+    def with_columns(cols: int) -> list[Rect] | None:
         rows = math.ceil(n / cols)
         cell_w = (region.width - gap * (cols - 1)) / cols
         cell_h = (region.height - gap * (rows - 1)) / rows
         if cell_w <= 0 or cell_h - below <= 0:
-            continue
+            return None
         rects = []
         for index, aspect in enumerate(aspects):
             row, col = divmod(index, cols)
@@ -92,17 +93,29 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
                 x += (-1) ** (index + 1) * stagger * (cell_w - w) / 2
             y = region.top + row * (cell_h + gap) + (cell_h - below) / 2
             rects.append((x, y, w, h))
-        if rows_of_one_height:
-            rects = one_height_per_row(rects, aspects)
+        return one_height_per_row(rects, aspects) if rows_of_one_height else rects
+    best = largest_grid(region, n, with_columns)
+    if not on_a_shelf:
+        return best
+    return on_shelves(near_widths_as_one(near_heights_as_one(best, aspects), aspects,
+                                         keep_row_heights=False))
+
+
+def largest_grid(region: Region, count: int,
+                 with_columns: Callable[[int], list[Rect] | None]) -> list[Rect]:
+    """Of the grids ``with_columns`` makes for every column count (None where the boxes do
+    not fit), the one whose boxes cover the most area (the fewest columns among equals)."""
+    best: tuple[float, list[Rect]] | None = None
+    for cols in range(1, count + 1):
+        rects = with_columns(cols)
+        if rects is None:
+            continue
         area = sum(w * h for _, _, w, h in rects)
         if best is None or area > best[0] + 1e-9:
             best = (area, rects)
     if best is None:
-        raise ValueError(f"region {region} is too small for {n} boxes")
-    if not on_a_shelf:
-        return best[1]
-    return on_shelves(near_widths_as_one(near_heights_as_one(best[1], aspects), aspects,
-                                         keep_row_heights=False))
+        raise ValueError(f"region {region} is too small for {count} boxes")
+    return best[1]
 
 
 def on_shelves(rects: list[Rect]) -> list[Rect]:
