@@ -94,6 +94,16 @@ def test_adding_and_removing_items_keeps_the_rest(tmp_path):
     assert "# My card. I keep notes here." in path.read_text()
 
 
+
+def add_two_blocks(path, title: str | None = None) -> None:
+    """What the editor does adding two items, one save each (and a new title with the first)."""
+    for k, x in ((1, 30), (2, 60)):
+        project = load_project(path)
+        if title is not None:
+            project.title = title
+        project.pages[0].items.append(BlockItem(id=f"b{k}", x=x, y=150, w=10, h=10))
+        save_project(project)
+
 def test_items_added_after_the_files_last_table_are_set_apart_by_a_blank_line(tmp_path):
     """A file that ends with its only item (as every `floatpage new blank` file does) got each
     item added in the editor jammed against the one before: `color = "#ff8800"` then
@@ -101,12 +111,7 @@ def test_items_added_after_the_files_last_table_are_set_apart_by_a_blank_line(tm
     parts the tables the file already had, and the file still ends with one newline."""
     path = tmp_path / "card.toml"
     path.write_text(HAND_WRITTEN)
-    project = load_project(path)
-    project.pages[0].items.append(BlockItem(id="b1", x=30, y=150, w=10, h=10))
-    save_project(project)
-    project = load_project(path)
-    project.pages[0].items.append(BlockItem(id="b2", x=60, y=150, w=10, h=10))
-    save_project(project)
+    add_two_blocks(path)
     text = path.read_text()
     assert text.startswith(HAND_WRITTEN + "\n[[pages.items]]\nid = \"b1\"")
     assert text.count("\n\n[[pages.items]]\n") == 2 and "\n[[pages.items]]\nid = \"b2\"" in text
@@ -118,13 +123,7 @@ def test_a_windows_file_keeps_crlf_on_every_line_a_save_adds(tmp_path):
     changed, ended with a bare LF: a file of mixed line ends, every added line a diff."""
     path = tmp_path / "card.toml"
     path.write_bytes(HAND_WRITTEN.replace("\n", "\r\n").encode())
-    project = load_project(path)
-    project.title = "Birthday, again"
-    project.pages[0].items.append(BlockItem(id="b1", x=30, y=150, w=10, h=10))
-    save_project(project)
-    project = load_project(path)
-    project.pages[0].items.append(BlockItem(id="b2", x=60, y=150, w=10, h=10))
-    save_project(project)
+    add_two_blocks(path, title="Birthday, again")
     data = path.read_bytes()
     assert b'id = "b2"' in data and data.count(b"\n") == data.count(b"\r\n")
     assert load_project(path).title == "Birthday, again"
