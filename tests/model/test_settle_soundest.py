@@ -34,3 +34,15 @@ def test_a_settle_that_parted_the_page_does_not_save_overlaps(tmp_path):
     quality = engine_for_page(project.pages[0], project.physics).quality()
     assert quality.overlap_count == 0, quality.min_gap_mm
     assert quality.min_gap_mm > 0.0
+
+
+def test_a_rest_less_sound_than_a_layout_probed_before_it_is_not_saved(tmp_path):
+    """Seed 74 p3: the probes from the full run's layout (every item out of the margin) came
+    to rest with two items in the margin, and that was saved; now the full run's layout is,
+    and a second settle changes no byte."""
+    first, second = settled_twice(tmp_path, "rest-less-sound-74.toml")
+    assert second == first, "the second settle moved items"
+    project = load_project(tmp_path / "rest-less-sound-74.toml")
+    quality = engine_for_page(project.pages[0], project.physics).quality()
+    assert quality.overlap_count == 0 and not quality.off_page
+    assert not quality.in_margin, quality.in_margin
