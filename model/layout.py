@@ -232,7 +232,8 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
     first = None if plainly_scattered(page, settings) else probe_rest(page, settings, max_steps)
     if first is not None and first.at_rest:
         return replace(first.report, fixed_point=True)
-    if first is not None and proves_stuck(first, settings, max_steps):
+    seen: list[Probe] = []  # the probes that proves_stuck ran
+    if first is not None and proves_stuck(first, settings, max_steps, seen):
         return replace(first.report, fixed_point=True)
     if first is not None and first.near_rest:
         page.items, report = first.trial.items, first.report
@@ -243,7 +244,8 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
         report = engine.settle(max_steps)
         write_back(page, engine)
         if first is not None:
-            page.items, report = soundest_start(page, report, first, start, settings)
+            page.items, report = soundest_start(page, report, [first, *seen], start,
+                                                settings)
     best: tuple[list, tuple, SettleReport] | None = None  # items, score, report
     rounds_without_gain = 0
     for _ in range(max_rounds):
@@ -270,19 +272,22 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
     return replace(report, fixed_point=False)
 
 
-def soundest_start(settled: Page, report: SettleReport, first: "Probe", start: Page,
+def soundest_start(settled: Page, report: SettleReport, probes: list["Probe"], start: Page,
                    settings: PhysicsSettings) -> tuple[list, SettleReport]:
     """The items (and report) the probe sequence starts from after a full run: the full run's
-    layout (``settled``), unless the first probe's result or the page as it was is sounder
-    (``soundness``: fewer overlaps, items off the page or in the margin, then a wider gap).
+    layout (``settled``), unless a layout the probes before it left (``probes``: the first
+    probe's, then those of ``proves_stuck``) or the page as it was (``start``) is sounder
+    (``soundness``: fewer overlaps, items off the page, shallower overlaps, fewer items in
+    the margin, then a wider gap).
 
     The sequence keeps the soundest, stillest layout it probes, but a layout it never probes
-    it cannot keep.  On fresh project seed 227, p1 (hard-anchored group, a soft-anchored
+    it cannot keep.  On fresh project seed 227, p1 (a hard-anchored group, a soft-anchored
     text and block, two regions), the first probe's gentle run parted the page (13 overlaps
     to none, a 0.3 mm gap); the full run from the same page, at full heat, left 6 overlaps
     (9.7 mm), and every probe from there kept them, so that was saved.  Ties go to the full
-    run, as before."""
-    candidates = [(settled, report), (first.trial, first.report), (start, first.report)]
+    run, as before, then to the earliest."""
+    candidates = [(settled, report), *((probe.trial, probe.report) for probe in probes),
+                  (start, probes[0].report)]
     scores = [soundness(page, settings) for page, _ in candidates]
     page, report = candidates[min(range(len(candidates)), key=scores.__getitem__)]
     return page.items, report
@@ -334,9 +339,11 @@ def parts_some(engine: Engine) -> bool:
     return engine.quality().overlap_count < before
 
 
-def proves_stuck(first: "Probe", settings: PhysicsSettings, max_steps: int) -> bool:
+def proves_stuck(first: "Probe", settings: PhysicsSettings, max_steps: int,
+                 seen: list["Probe"] | None = None) -> bool:
     """Whether the page that ``first`` probed is *stuck* (see ``settle_page``): the
-    ``STUCK_ROUNDS`` probes that follow neither reach rest nor improve on it.
+    ``STUCK_ROUNDS`` probes that follow never improve on it.  The probes it runs are added to
+    ``seen``.
 
     A probe's score leads with how sound the layout it starts from is, so a probe from a layout
     already sounder than ``first``'s (fewer overlaps, say: a scattered page that ``first``
@@ -348,6 +355,8 @@ def proves_stuck(first: "Probe", settings: PhysicsSettings, max_steps: int) -> b
         if soundness(trial, settings) < first.score[:SOUNDNESS_TERMS]:
             return False
         probe = probe_rest(trial, settings, max_steps)
+        if seen is not None:
+            seen.append(probe)
         if probe.score < first.score:  # at rest or not: a less sound rest is no gain
             return False
         trial = probe.trial
