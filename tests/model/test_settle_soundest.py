@@ -46,3 +46,15 @@ def test_a_rest_less_sound_than_a_layout_probed_before_it_is_not_saved(tmp_path)
     quality = engine_for_page(project.pages[0], project.physics).quality()
     assert quality.overlap_count == 0 and not quality.off_page
     assert not quality.in_margin, quality.in_margin
+
+
+def test_a_layout_the_stuck_test_saw_is_not_lost_to_the_full_run(tmp_path):
+    """Seed 148 p3: the probes of proves_stuck left a layout whose overlaps go 15.2 mm deep,
+    with one item in the margin; the full run's go 17.5 mm deep, with three, and that was
+    saved.  Now the sequence starts from the first, and a second settle changes no byte."""
+    first, second = settled_twice(tmp_path, "stuck-probes-148.toml")
+    assert second == first, "the second settle moved items"
+    project = load_project(tmp_path / "stuck-probes-148.toml")
+    quality = engine_for_page(project.pages[0], project.physics).quality()
+    assert quality.overlap_count <= 3 and not quality.off_page
+    assert quality.min_gap_mm >= -15.2 and len(quality.in_margin) <= 1, quality
