@@ -224,9 +224,9 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
     each adopting its own result, until one finds the layout at rest (and at least as sound
     as every layout probed before it), or the best layout of the sequence proves stuck.  Both
     tests are repeated by a later settle on the same numbers and find the same, so it changes
-    no byte.  The sequence starts from the soundest of the full run's layout, the first
-    probe's and the page as it was (``soundest_start``), so no layout a settle saw is sounder
-    than what it saves, but for the last probe's result.
+    no byte.  The sequence starts from the soundest of the full run's layout, those the
+    probes before it left and the page as it was (``soundest_start``), so no layout a settle
+    saw is sounder than what it saves, but for the last probe's result.
     """
     refuse_piled_up(page)
     first = None if plainly_scattered(page, settings) else probe_rest(page, settings, max_steps)
