@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from floatpage.physics.geometry import squared_norms, sum_xy
+from floatpage.physics.geometry import RELOCATABLE_ITEMS, squared_norms, sum_xy
 
 FILL = 0.9  # halo-grown item area / page area that target_gap aims at
 RADIAL_SHARE = 0.5  # share of a push directed along the line between the centres
@@ -36,27 +36,32 @@ RADIAL_SHARE = 0.5  # share of a push directed along the line between the centre
 def target_gap(sizes: np.ndarray, page_w_mm: float, page_h_mm: float, gutter_mm: float,
                fill: float = FILL) -> float:
     """Gap g (mm) with sum of (w + g)(h + g) = fill * page area: at least the gutter where the
-    items keep it at that fill, else the gap they can all keep (0 where they alone cover it).
+    items keep it at that fill, or where they are few enough for relocation; else the gap a
+    crowd can keep (0 where the items alone cover it).
 
     Solves n g^2 + g sum(w + h) + sum(w h) - fill W H = 0 for its positive root.
 
-    Below the gutter only where the gutter cannot fit by area: there the no-overlap pass keeps
-    the widest gap it can anyway (finalize), and halos of the full gutter only pressed the crowd
-    into itself.  10,000 items of 1-3 mm covering half of A4 need 3.7 times the page once each
-    grows by 3 mm; with gutter-wide halos the physics rested with every item pushed into its
-    neighbours, and the pass could not part them (3,297 overlapping pairs after 43 s); halos
-    of the 0.6 mm that fits spread them without overlap in 8 s (docs/benchmarks.md, thirteenth
-    session).
+    Below the gutter only for a crowd where the gutter cannot fit by area: there the no-overlap
+    pass keeps the widest gap it can anyway (finalize), and halos of the full gutter only
+    pressed the crowd into itself.  10,000 items of 1-3 mm covering half of A4 need 3.7 times
+    the page once each grows by 3 mm; with gutter-wide halos the physics rested with every item
+    pushed into its neighbours, and the pass could not part them (3,297 overlapping pairs
+    after 43 s); halos of the 0.6 mm that fits spread them without overlap in 8 s.  A page of
+    at most ``RELOCATABLE_ITEMS`` keeps the gutter-wide halos: relocation parts what the pass
+    leaves there, and works better from the wider spread (fresh_projects seed 7047 p1, 19
+    items that must overlap: 5 overlapping pairs with them, 8 without; docs/benchmarks.md,
+    thirteenth session).
     """
     count = len(sizes)
     if count == 0:
         return gutter_mm
     linear = float((sizes[:, 0] + sizes[:, 1]).sum())
     constant = float((sizes[:, 0] * sizes[:, 1]).sum()) - fill * page_w_mm * page_h_mm
+    floor = gutter_mm if count <= RELOCATABLE_ITEMS else 0.0
     if constant >= 0:
-        return 0.0
+        return floor
     root = (-linear + np.sqrt(linear * linear - 4.0 * count * constant)) / (2.0 * count)
-    return float(root)
+    return max(float(root), floor)
 
 
 GRID_FROM_ITEMS = 5_000  # from this many rows on, candidates come from a grid (see grid_pairs)

@@ -12,6 +12,10 @@ from floatpage.physics.bodies import Bodies
 # walls is roomy: its run stops once still, overlap or not (fast_mode.run_fast), and it is
 # worth aligning (Engine.finalize).  Fuller pages keep cooling and give alignment up.
 ROOMY_COVER = 0.75
+# Relocation (physics.relocation) lifts items out of jams on pages of at most this many items;
+# beyond, its searches compare too many pairs, and the physics must leave less to part
+# (fast_forces.target_gap).
+RELOCATABLE_ITEMS = 150
 # Issue 10's promise: the gutter is kept wherever the items, each grown by it, cover at most
 # this share of the room inside the walls; below it a page the physics jammed gets a second
 # start (Engine, packing.packed_layout).

@@ -38,11 +38,11 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.finalize import ROUNDING_MM, pair_clearances
-from floatpage.physics.geometry import group_bounds
+from floatpage.physics.geometry import RELOCATABLE_ITEMS, group_bounds
 
 # A search is one (2n x n) by (n x 2n) product, about 1 ms at 150 items; setting every item
 # down anew is n searches, 0.2 s of CPU at 150 items.
-MAX_ITEMS = 150
+MAX_ITEMS = RELOCATABLE_ITEMS
 MAX_MOVES = 6  # units lifted out before the pass gives up and keeps the widest gap
 MOVES_PER_ITEM = 2  # the pushes after a move may jam the same unit again, once
 TOLERANCE_MM = 1e-9

@@ -113,30 +113,10 @@ class RoomRelocation:
         left room for all (fresh_projects seed 17)."""
         shares = ((1.0,) if inside_margins else ()) + MARGIN_GIVES_WAY
         for margin in [self.margin_mm * share for share in shares]:
-            if not unexplained_pairs(self._bodies, [], 0.0) and self._keeps_walls(margin) \
-                    or self._relocate_jammed(0.0, margin):
+            if not unexplained_pairs(self._bodies, [], 0.0) or self._relocate_jammed(0.0, margin):
                 return
             if self.margin_mm <= 0:
                 return
-
-    def _keeps_walls(self, margin_mm: float) -> bool:
-        """Whether every item that moves stands inside its walls at ``margin_mm`` (its region's,
-        none for a bleed item), to the tolerance of a save's rounding.  A pass that parts a
-        crowd by giving up the margin has not parted it as it should where relocation can
-        inside the margins: 45 small items on a 10 cm card, spread by halos of the gap that
-        fits (fast_forces.target_gap), came out of the pass without overlap but with four in
-        the margin, and relocation, asked only about overlap, left them there
-        (tests/physics/jams/crowd-11000.toml)."""
-        bodies = self._bodies
-        roots, _ = bodies.group_roots()
-        fixed = bodies.hard | bodies.held | bodies.decorative
-        moving = bodies.active & ~fixed & ~fixed[roots]
-        near, far = bodies.insets(margin_mm, self.page_w_mm, self.page_h_mm)
-        extent = np.array([self.page_w_mm, self.page_h_mm])
-        low = bodies.centres - bodies.sizes / 2
-        high = bodies.centres + bodies.sizes / 2
-        inside = ((low >= near - ROUNDING_MM) & (high <= extent - far + ROUNDING_MM)).all(axis=1)
-        return bool(inside[moving].all())
 
     def _relocate_to_cap(self, cap_mm: float) -> bool:
         """A page whose own items rule the gutter out (physics.page_limits.capping: a pair

@@ -22,15 +22,17 @@ def test_target_gap_is_the_gutter_or_more_where_the_gutter_fits_at_the_fill():
     assert target_gap(np.full((100, 2), side), 210, 297, gutter_mm=3.0) == pytest.approx(3.0)
 
 
-def test_target_gap_below_the_gutter_is_the_gap_that_fits_where_the_gutter_does_not():
-    """A crowd whose gutter-wide halos cannot fit is given halos of the gap that does, so the
-    physics spreads it instead of pressing it into itself; one that fills the page alone, none."""
+def test_target_gap_below_the_gutter_is_the_gap_that_fits_for_a_crowd_where_the_gutter_does_not():
+    """A crowd (more items than relocation takes) whose gutter-wide halos cannot fit is given
+    halos of the gap that does, so the physics spreads it instead of pressing it into itself;
+    one that fills the page alone, none.  A page of fewer items keeps the gutter's halos."""
     crowd = np.full((2000, 2), 2.5)  # 12,500 mm^2 on 62,370: 5.5 mm each with the gutter
     gap = target_gap(crowd, 210, 297, gutter_mm=3.0)
     assert 0.0 < gap < 3.0
     assert ((crowd + gap).prod(axis=1)).sum() == pytest.approx(0.9 * 210 * 297)
-    over_full = np.full((30, 2), 50.0)  # 75,000 mm^2 on a 62,370 mm^2 page
-    assert target_gap(over_full, 210, 297, gutter_mm=3.0) == 0.0
+    assert target_gap(np.full((200, 2), 18.0), 210, 297, gutter_mm=3.0) == 0.0  # 64,800 mm^2
+    assert target_gap(np.full((100, 2), 23.0), 210, 297, gutter_mm=3.0) == 3.0  # few: as before
+    assert target_gap(np.full((30, 2), 50.0), 210, 297, gutter_mm=3.0) == 3.0  # over-full, few
 
 
 def test_no_push_between_items_further_apart_than_the_gap():
