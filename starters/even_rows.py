@@ -72,13 +72,7 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
     apart instead of 11 and 11).  A page of one row keeps its even spaces: measured, the
     physics leaves those alone.  Returns (x, y, w, h) centres.
     """
-    n = len(aspects)
-    if n == 0:
-        return []
-
-    def with_columns(cols: int) -> list[Rect] | None:
-        rows = math.ceil(n / cols)
-        cell_w = (region.width - gap * (cols - 1)) / cols
+    def with_columns(cols: int, rows: int, cell_w: float) -> list[Rect] | None:
         room = (region.height - rows * below - (rows - 1) * gap - above - under) * fill
         if cell_w <= 0 or room <= 0:
             return None
@@ -87,7 +81,7 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
             rects = cut(rects, aspects)
         return _placed(region, rects, rows, [above] + [gap] * (rows - 1) + [under], below,
                        middle)
-    return largest_grid(region, n, with_columns)
+    return largest_grid(region, len(aspects), gap, with_columns)
 
 
 def _sized(region: Region, aspects: list[float], cols: int, cell_w: float, gap: float,

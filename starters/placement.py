@@ -73,12 +73,8 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
     row that far out.
     """
     n = len(aspects)
-    if n == 0:
-        return []
 
-    def with_columns(cols: int) -> list[Rect] | None:
-        rows = math.ceil(n / cols)
-        cell_w = (region.width - gap * (cols - 1)) / cols
+    def with_columns(cols: int, rows: int, cell_w: float) -> list[Rect] | None:
         cell_h = (region.height - gap * (rows - 1)) / rows
         if cell_w <= 0 or cell_h - below <= 0:
             return None
@@ -94,20 +90,25 @@ def grid(region: Region, aspects: list[float], *, fill: float = 0.85, gap: float
             y = region.top + row * (cell_h + gap) + (cell_h - below) / 2
             rects.append((x, y, w, h))
         return one_height_per_row(rects, aspects) if rows_of_one_height else rects
-    best = largest_grid(region, n, with_columns)
-    if not on_a_shelf:
+    best = largest_grid(region, n, gap, with_columns)
+    if not on_a_shelf or not best:
         return best
     return on_shelves(near_widths_as_one(near_heights_as_one(best, aspects), aspects,
                                          keep_row_heights=False))
 
 
-def largest_grid(region: Region, count: int,
-                 with_columns: Callable[[int], list[Rect] | None]) -> list[Rect]:
-    """Of the grids ``with_columns`` makes for every column count (None where the boxes do
-    not fit), the one whose boxes cover the most area (the fewest columns among equals)."""
+def largest_grid(region: Region, count: int, gap: float,
+                 with_columns: Callable[[int, int, float], list[Rect] | None]) -> list[Rect]:
+    """Of the grids of ``count`` boxes ``with_columns`` makes for every column count (given
+    the columns, the rows and the columns' width with ``gap`` between them; None where the
+    boxes do not fit), the one whose boxes cover the most area (the fewest columns among
+    equals)."""
+    if count == 0:
+        return []
     best: tuple[float, list[Rect]] | None = None
     for cols in range(1, count + 1):
-        rects = with_columns(cols)
+        rows = math.ceil(count / cols)
+        rects = with_columns(cols, rows, (region.width - gap * (cols - 1)) / cols)
         if rects is None:
             continue
         area = sum(w * h for _, _, w, h in rects)
