@@ -465,6 +465,7 @@ class EditSession:
         the editor says of it (a caption freed from its deleted photo used to go unsaid)."""
         item = self._require_selected()
         self.checkpoint(f"delete {item.id}")
+        before = reading_order(self.page.items)
         followers = [i for i in self.page.items
                      if isinstance(i.anchor, ItemAnchor) and i.anchor.to == item.id]
         for follower in followers:
@@ -474,8 +475,11 @@ class EditSession:
             self.rebuild_engine()
         else:
             self.engine.delete(item.id)  # the engine's edits reheat it themselves
-        order = reading_order(self.page.items)
-        self.selected_id = order[0] if order else None
+        # the item after it in reading order (or before it, if it was the last): the selection
+        # stays where the user was working; it jumped to the page's first item
+        place = before.index(item.id)
+        rest = before[:place] + before[place + 1:]
+        self.selected_id = rest[min(place, len(rest) - 1)] if rest else None
         freed = ", ".join(f'"{follower.id}"' for follower in followers)
         return (f'deleted "{item.id}"'
                 + (f"; {freed} no longer follow{'s' if len(followers) == 1 else ''} it"

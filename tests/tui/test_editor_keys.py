@@ -15,6 +15,7 @@ from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, PictureItem, PointAnchor, TextItem,
 )
 from floatpage.model import load_project
+from floatpage.tui.reading_order import reading_order
 from floatpage.tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -278,8 +279,13 @@ async def test_toggle_decorative(project_path):
 async def test_delete_the_selected_item(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("tab", "tab")  # photo, which the caption follows
+        order = reading_order(app.session.page.items)
+        after = order[order.index("photo") + 1]
+        assert after != order[0]
         await pilot.press("delete")
         assert "photo" not in app.session.page.item_ids()
+        # the selection moves on to the next item in reading order, not the page's first
+        assert app.session.selected_id == after
         assert "photo" not in app.session.engine.ids
         assert item(app, "caption").anchor is None  # the follower is let go
         assert "photo" not in preview_text(app)
