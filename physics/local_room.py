@@ -20,16 +20,17 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import candidate_pairs
 from floatpage.physics.finalize import ROUNDING_MM, pair_clearances
+from floatpage.physics.geometry import RELOCATABLE_ITEMS
 from floatpage.physics.relocation import Unit, movable_units, room_for, unit_bounds
 
 # How far around a unit to look, in turn, in units of its larger side: a small item finds
 # room among a few neighbours; a window grows until it holds room or too many items
 WINDOWS = (0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
 MAX_UNITS = 5_000  # units set down at most: a knot is a few dozen; this bounds a hostile file
-# A window holding more items than this is not searched (nor any larger one): room_for's cost
-# grows with the cube of the items it compares (relocation.MAX_ITEMS is 150 for the same
-# reason), and 10,000 items on 70 % of A4 put thousands in a 48 mm window.
-MAX_NEARBY = 150
+# A window holding more items than relocation takes is not searched (nor any larger one):
+# room_for's cost grows with the cube of the items it compares, and 10,000 items on 70 % of A4
+# put thousands in a 48 mm window.
+MAX_NEARBY = RELOCATABLE_ITEMS
 
 
 def clear_locally(bodies: Bodies, page_w_mm: float, page_h_mm: float,
@@ -51,9 +52,8 @@ def clear_locally(bodies: Bodies, page_w_mm: float, page_h_mm: float,
         unit = units[k]
         if not _still_offends(bodies, unit, lowest[k], highest[k], clearance):
             continue  # an earlier move freed it
-        halves = bodies.sizes[unit.members] / 2
-        side = float(((unit.offsets + halves).max(axis=0)
-                      - (unit.offsets - halves).min(axis=0)).max())
+        low, high = _extent(bodies, unit)
+        side = float((high - low).max())
         for window in WINDOWS:
             spot = _room_near(bodies, unit, lowest[k], highest[k], clearance, window * side)
             if spot is _CROWDED:
@@ -78,15 +78,25 @@ def _offenders(bodies: Bodies, units: list[Unit], lowest: np.ndarray, highest: n
     touched[roots[i[close]]] = True
     touched[roots[j[close]]] = True
     unit_roots = np.array([unit.root for unit in units])
-    centres = bodies.centres[unit_roots]
-    outside = ((centres < lowest - ROUNDING_MM) | (centres > highest + ROUNDING_MM)).any(axis=1)
+    outside = _past(bodies.centres[unit_roots], lowest, highest).any(axis=-1)
     return np.flatnonzero(touched[unit_roots] | outside)
+
+
+def _past(centres: np.ndarray, lowest: np.ndarray, highest: np.ndarray) -> np.ndarray:
+    """Where root centres stand past their bounds, beyond a save's rounding, per axis."""
+    return (centres < lowest - ROUNDING_MM) | (centres > highest + ROUNDING_MM)
+
+
+def _extent(bodies: Bodies, unit: Unit) -> tuple[np.ndarray, np.ndarray]:
+    """The unit's members' lowest and highest edges from its root's centre, (2,) each."""
+    halves = bodies.sizes[unit.members] / 2
+    return (unit.offsets - halves).min(axis=0), (unit.offsets + halves).max(axis=0)
 
 
 def _still_offends(bodies: Bodies, unit: Unit, lowest: np.ndarray, highest: np.ndarray,
                    clearance: float) -> bool:
     centre = bodies.centres[unit.root]
-    if ((centre < lowest - ROUNDING_MM) | (centre > highest + ROUNDING_MM)).any():
+    if _past(centre, lowest, highest).any():
         return True
     nearby = _within(bodies, unit, centre, centre, clearance)
     if not len(nearby):
@@ -126,9 +136,9 @@ def _within(bodies: Bodies, unit: Unit, low: np.ndarray, high: np.ndarray,
             clearance: float) -> np.ndarray:
     """Active rows, not the unit's, whose rectangles come within ``clearance`` of the room
     the unit's members take with its root anywhere from ``low`` to ``high``."""
-    halves = bodies.sizes[unit.members] / 2
-    reach_low = low + (unit.offsets - halves).min(axis=0) - clearance
-    reach_high = high + (unit.offsets + halves).max(axis=0) + clearance
+    extent_low, extent_high = _extent(bodies, unit)
+    reach_low = low + extent_low - clearance
+    reach_high = high + extent_high + clearance
     their_low = bodies.centres - bodies.sizes / 2
     their_high = bodies.centres + bodies.sizes / 2
     near = bodies.active & ((their_high > reach_low) & (their_low < reach_high)).all(axis=1)

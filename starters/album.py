@@ -11,12 +11,13 @@ from functools import lru_cache
 
 from floatpage.model.document import Background, ItemAnchor, PictureItem, PointAnchor, Project, TextItem
 from floatpage.model.page_sizes import page_dimensions
-from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM
 from floatpage.physics.guides import SNAP_MM
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
 from floatpage.starters.even_rows import even_rows
-from floatpage.starters.placement import Region, new_page, near_widths_as_one, one_height_per_row
+from floatpage.starters.placement import (
+    Region, edges_near_miss, near_widths_as_one, new_page, one_height_per_row,
+)
 from floatpage.starters.words import phrase, readable
 
 PAGE_SIZE = "A4"
@@ -147,7 +148,7 @@ def title_width(width: float, rects: list) -> float:
     wide photos 149.6 mm wide under a 147 mm title left 1.60 near misses per item."""
     found = width * TITLE_SHARE
     for x, _, w, _ in rects:
-        if abs(x - width / 2) < 1e-6 and ALIGNED_MM < abs(w - found) / 2 < NEAR_MM:
+        if abs(x - width / 2) < 1e-6 and edges_near_miss(w, found):
             return w
     return found
 

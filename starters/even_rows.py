@@ -76,7 +76,7 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
         room = (region.height - rows * below - (rows - 1) * gap - above - under) * fill
         if cell_w <= 0 or room <= 0:
             return None
-        rects = _sized(region, aspects, cols, cell_w, gap, fill, room)
+        rects = _sized(region, aspects, cols, rows, cell_w, gap, fill, room)
         if cut is not None:
             rects = cut(rects, aspects)
         return _placed(region, rects, rows, [above] + [gap] * (rows - 1) + [under], below,
@@ -84,11 +84,10 @@ def even_rows(region: Region, aspects: list[float], *, fill: float = 0.96, gap: 
     return largest_grid(region, len(aspects), gap, with_columns)
 
 
-def _sized(region: Region, aspects: list[float], cols: int, cell_w: float, gap: float,
-           fill: float, room: float) -> list[Rect]:
+def _sized(region: Region, aspects: list[float], cols: int, rows: int, cell_w: float,
+           gap: float, fill: float, room: float) -> list[Rect]:
     """Each box at its column's centre and its size, ``y`` the row's number for now."""
     n = len(aspects)
-    rows = math.ceil(n / cols)
     widest = cell_w * fill
     needs = [max(widest / aspect for aspect in aspects[row * cols:(row + 1) * cols])
              for row in range(rows)]

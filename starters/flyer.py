@@ -10,10 +10,9 @@ from __future__ import annotations
 from floatpage.model.document import (
     Background, BlockItem, ItemAnchor, PictureItem, PointAnchor, Project, TextItem,
 )
-from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM
 from floatpage.starters.options import Options
 from floatpage.starters.pictures import Picture
-from floatpage.starters.placement import Region, grid, new_page
+from floatpage.starters.placement import Region, edges_near_miss, grid, new_page
 from floatpage.starters.words import phrase, price, product_name
 
 PAGE_SIZE = "A4"
@@ -40,7 +39,7 @@ def price_tag(photo: PictureItem, name: str, cents: int, lang: str) -> TextItem:
     # would leave a near miss (physics.alignment) from the tag's: a 28.5 mm bottle under a
     # 36 mm tag, 3.8 mm on each side, which no move of the snap closes.
     w = max(photo.w, TAG_MIN_W_MM)
-    if ALIGNED_MM < (w - photo.w) / 2 < NEAR_MM:
+    if edges_near_miss(w, photo.w):
         w = photo.w
     return TextItem(id=f"{photo.id}-price", x=photo.x, y=photo.y + dy, w=w, h=TAG_H_MM,
                     text=f"{name}\n{price(cents, lang)}", font="sans", bold=True, color=RED,

@@ -41,6 +41,13 @@ class Region:
         return (self.left + self.right) / 2, (self.top + self.bottom) / 2
 
 
+def edges_near_miss(width_a: float, width_b: float) -> bool:
+    """Whether two boxes of these widths, one centred over the other, have edges a near miss
+    apart (physics.alignment: more than ALIGNED_MM, less than NEAR_MM): a look no snap can
+    mend, since no move closes both edges at once."""
+    return ALIGNED_MM < abs(width_a - width_b) / 2 < NEAR_MM
+
+
 def new_page(page_id: str, size: str, orientation: str, **kwargs) -> Page:
     """A page with its millimetre size filled in from the named size and orientation."""
     width, height = page_dimensions(size, orientation)
