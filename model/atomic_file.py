@@ -39,7 +39,28 @@ def real_target(path: Path) -> Path:
     if target.exists() and not target.is_file():
         raise FloatpageError(f"{path}: not saved, because it is not a regular file "
                              "(a folder, device or pipe); choose a file name")
+    refuse_read_only(path, target)
     return target
+
+
+def refuse_read_only(path: Path, target: Path) -> None:
+    """Refuse to replace a file its permissions keep from being written.  The rename that makes
+    a save atomic needs only the folder's permission, so a read-only (0444) project used to be
+    replaced all the same, its protection gone."""
+    if read_only(target):
+        shown = path if Path(os.path.abspath(path)) == target else f"{path} (a link to {target})"
+        raise FloatpageError(f"{shown}: not saved, because the file is read-only; the file is "
+                             "unchanged (make it writable with `chmod u+w`, or write elsewhere)")
+
+
+def read_only(path: Path) -> bool:
+    """Whether an existing file may not be written: root passes every access test, so a file
+    with no write bit at all counts as read-only for root too."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return False  # a new file: the folder decides
+    return mode & 0o222 == 0 or not os.access(path, os.W_OK)
 
 
 def temporary_name(target: Path, extra: str = "") -> Path:

@@ -27,6 +27,7 @@ from textual.screen import ModalScreen, Screen
 from textual.timer import Timer
 from rich.cells import cell_len
 
+from floatpage.model.atomic_file import read_only
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
 from floatpage.model.layout import copy_of
@@ -152,6 +153,11 @@ class EditorScreen(Screen):
         self.query_one(PagePreview).focus()
         self.redraw()
         self.wake()
+        path = self.session.project.path
+        if path is not None and read_only(path):  # said at once, not after an hour's edits
+            self.notify(f"{printable(path.name)} is read-only: edits can be made and exported, "
+                        "but Ctrl+S is refused until it is writable (chmod u+w)",
+                        title="Read-only", severity="warning", timeout=10)
 
     @property
     def preview(self) -> PagePreview:

@@ -12,6 +12,7 @@ import stat
 from pathlib import Path
 from typing import Iterable
 
+from floatpage.model.atomic_file import read_only
 from floatpage.model.document import Project
 from floatpage.model.project_lock import lock_path_for
 from floatpage.typeset.errors import RenderError
@@ -97,4 +98,9 @@ def check_outputs(outputs: Iterable[Path | None], inputs: Iterable[Path],
         for earlier in chosen:
             if os.path.realpath(output) == os.path.realpath(earlier):
                 raise RenderError(f"{output}: named for two outputs; give each its own name")
+        # after the input tests, so `-o card.toml` on a read-only project is not told to
+        # make the project writable
+        if mode is not None and read_only(output):
+            raise RenderError(f"{output}: will not write there, because the file is read-only; "
+                              "make it writable (`chmod u+w`) or name another file")
         chosen.append(output)

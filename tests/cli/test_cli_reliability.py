@@ -204,6 +204,40 @@ def test_settle_keeps_a_hard_link_whole(tmp_path):
     assert other.read_text() == path.read_text()
 
 
+def test_settle_refuses_a_read_only_project_and_leaves_it_as_it_was(tmp_path):
+    """The atomic rename needs only the folder's permission: a 0444 project was replaced
+    (and a .bak written) as if writable, its protection gone."""
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))  # overlap: settle moves
+    path.chmod(0o444)
+    before, inode = path.read_bytes(), path.stat().st_ino
+    link = tmp_path / "link.toml"
+    link.symlink_to(path)
+    for named in (path, link):
+        result = run("settle", str(named))
+        assert result.returncode == 1, result.stderr
+        assert f"{named}" in result.stderr and "read-only" in result.stderr, result.stderr
+        assert "chmod u+w" in result.stderr and "Traceback" not in result.stderr
+    assert path.read_bytes() == before and path.stat().st_ino == inode
+    assert stat.S_IMODE(path.stat().st_mode) == 0o444
+    assert not (tmp_path / "card.toml.bak").exists()
+
+
+def test_render_refuses_a_read_only_output_before_the_engine_runs(tmp_path):
+    path = card(tmp_path)
+    old = tmp_path / "old.pdf"
+    old.write_bytes(b"%PDF-old")
+    old.chmod(0o444)
+    result = run("render", str(path), "-o", str(old))
+    assert result.returncode == 1, result.stderr
+    assert f"{old}: will not write there, because the file is read-only" in result.stderr
+    assert old.read_bytes() == b"%PDF-old" and stat.S_IMODE(old.stat().st_mode) == 0o444
+    # the project as output is named as the project, not as a file to make writable
+    path.chmod(0o444)
+    result = run("render", str(path), "-o", str(path))
+    assert result.returncode == 1 and "an input of this render" in result.stderr
+
+
 # 5. one writer at a time ------------------------------------------------------------------------
 
 def test_settle_refuses_while_the_project_is_being_edited(tmp_path):

@@ -530,3 +530,24 @@ async def test_a_file_saved_once_the_page_is_still_is_a_fixed_point_of_settle(
                             capture_output=True, text=True, cwd=ROOT, timeout=120)
     assert result.returncode == 0, result.stderr
     assert path.read_bytes() == saved, "floatpage settle changed the file the editor saved"
+
+
+async def test_a_read_only_project_says_so_when_opened_and_a_save_leaves_it_untouched(
+        project_path):
+    """Ctrl+S replaced a 0444 project (the atomic rename needs only the folder's permission)
+    and the editor never said the file was read-only."""
+    project_path.chmod(0o444)
+    before, inode = project_path.read_bytes(), project_path.stat().st_ino
+    async with editor(project_path) as (app, pilot):
+        assert any("read-only" in message and "chmod u+w" in message
+                   for message in messages(app)), messages(app)
+        await pilot.press("tab", "right", "right")
+        await pilot.pause(0.6)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        refused = [n for n in app._notifications if n.title == "Not saved"]
+        assert refused and "read-only" in refused[-1].message
+        assert str(project_path.name) in refused[-1].message
+        assert app.session.unsaved
+    assert project_path.read_bytes() == before and project_path.stat().st_ino == inode
+    assert not project_path.with_name(project_path.name + ".bak").exists()
