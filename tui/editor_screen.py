@@ -640,11 +640,14 @@ class EditorScreen(Screen):
         item = self.session.selected_item
         if item is None:
             return
-        others = [(other.id, other.id) for other in self.session.page.items if other.id != item.id]
-        if not others:
-            self.notify("there is no other item on this page to anchor to", severity="warning")
+        accepted, left_out = self.session.anchor_targets()
+        if not accepted:  # say why, rather than offer items that `anchor_to` refuses
+            self.notify(f"{item.id} can follow no item on this page: {left_out}" if left_out
+                        else "there is no other item on this page to anchor to",
+                        severity="warning")
             return
-        self.ask(ChoiceDialog(f"Anchor {item.id} to…", others, dialog_id="anchor-dialog"),
+        self.ask(ChoiceDialog(f"Anchor {item.id} to…", [(other, other) for other in accepted],
+                              message=left_out, dialog_id="anchor-dialog"),
                  partial(self.attempt, self.session.anchor_to))
 
     def action_unanchor(self) -> None:

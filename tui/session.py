@@ -647,22 +647,54 @@ class EditSession:
         self.engine.unanchor(item.id)
         self.engine.anchor_point(item.id, item.x, item.y, gamma=gamma)
 
-    def anchor_to(self, target_id: str) -> None:
-        item = self._require_selected()
-        if target_id == item.id:
-            raise EditError("an item cannot be anchored to itself")
-        target = self.page.item(target_id)
+    def anchor_refusal(self, item, target) -> str | None:
+        """Why ``item`` cannot follow ``target``, in words, or None when it can: the anchor
+        dialog offers only the items this accepts (it offered the item's own followers, and
+        choosing one was refused only afterwards)."""
+        if target.id == item.id:
+            return "an item cannot be anchored to itself"
         if item.group and target.group != item.group:
-            raise EditError(f'"{item.id}" is in group "{item.group}", which moves as one: '
-                            f'anchor the group with a, or take "{item.id}" out of it (G)')
+            return (f'"{item.id}" is in group "{item.group}", which moves as one: '
+                    f'anchor the group with a, or take "{item.id}" out of it (G)')
         chain, current = {item.id}, target
         while isinstance(current.anchor, ItemAnchor):
             if current.anchor.to in chain or current.id in chain:
-                raise EditError(f'"{target_id}" already follows "{item.id}"; that would be a cycle')
+                return f'"{target.id}" already follows "{item.id}"; that would be a cycle'
             chain.add(current.id)
             current = self.page.item(current.anchor.to)
         if current.id == item.id:
-            raise EditError(f'"{target_id}" already follows "{item.id}"; that would be a cycle')
+            return f'"{target.id}" already follows "{item.id}"; that would be a cycle'
+        return None
+
+    def anchor_targets(self) -> tuple[list[str], str]:
+        """The items on this page the selected item may follow, and a note in words on those
+        left out (its followers, which would make a cycle; items outside its group)."""
+        item = self._require_selected()
+        accepted, followers, outside = [], [], []
+        for other in self.page.items:
+            if other.id == item.id:
+                continue
+            reason = self.anchor_refusal(item, other)
+            if reason is None:
+                accepted.append(other.id)
+            else:
+                (outside if item.group and other.group != item.group else followers).append(
+                    other.id)
+        notes = []
+        if followers:
+            notes.append(f"not offered: {', '.join(followers)}, which already follow"
+                         f"{'s' if len(followers) == 1 else ''} {item.id} (a cycle)")
+        if outside:
+            notes.append(f'only group "{item.group}" is offered: the group moves as one '
+                         "(a anchors it, G takes an item out)")
+        return accepted, "; ".join(notes)
+
+    def anchor_to(self, target_id: str) -> None:
+        item = self._require_selected()
+        target = self.page.item(target_id)
+        reason = self.anchor_refusal(item, target)
+        if reason:
+            raise EditError(reason)
         self.checkpoint(f"anchor {item.id} to {target_id}")
         self.sync_positions()
         item.anchor = ItemAnchor(to=target_id, dx=item.x - target.x, dy=item.y - target.y)

@@ -16,6 +16,7 @@ from floatpage.model.document import (
 )
 from floatpage.model import load_project
 from floatpage.tui.reading_order import reading_order
+from floatpage.tui.session import EditError
 from floatpage.tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -311,15 +312,29 @@ async def test_anchor_here_to_another_item_and_unanchor(project_path):
         assert item(app, "title").anchor is None
 
 
-async def test_an_anchor_cycle_is_refused_with_a_message(project_path):
+async def test_the_anchor_dialog_offers_no_follower_and_says_why(project_path):
+    """It offered the caption, which follows the photo: choosing it was refused only then."""
     async with editor(project_path) as (app, pilot):
         screen_of(app).selected_id = "photo"
         await pilot.press("A")
+        assert app.screen.id == "anchor-dialog"
         options = [option.prompt for option in app.screen.query_one("OptionList").options]
-        await pilot.press(*["down"] * options.index("caption"), "enter")
-        await pilot.pause()
-        assert item(app, "photo").anchor is None
-        assert any("cycle" in n.message for n in app._notifications)
+        assert "caption" not in options and "photo" not in options and "title" in options
+        shown = " ".join(str(label.render()) for label in app.screen.query("Label"))
+        assert "not offered: caption, which already follows photo (a cycle)" in shown
+        await pilot.press("escape")
+        # a follower of a follower is a cycle too
+        app.session.selected_id = "title"
+        app.session.anchor_to("caption")  # title follows caption, which follows photo
+        screen_of(app).selected_id = "photo"
+        await pilot.press("A")
+        options = [option.prompt for option in app.screen.query_one("OptionList").options]
+        assert "caption" not in options and "title" not in options and "block" in options
+        shown = " ".join(str(label.render()) for label in app.screen.query("Label"))
+        assert "not offered: title, caption, which already follow photo (a cycle)" in shown
+        await pilot.press("escape")
+        with pytest.raises(EditError, match="cycle"):
+            app.session.anchor_to("title")
 
 
 async def test_pause_resume_and_reheat(project_path):
