@@ -135,6 +135,7 @@ class EditorScreen(Screen):
         self.pacer = FramePacer(None)  # on_mount gives it the terminal's link, if there is one
         self._quality = ("", "", "")
         self.details = False  # `v`: the status line shows its numbers
+        self.note = ""  # what the last release did, on the status line until the next key
         self.labels = False  # `n`: every item's id on the preview, not only the selected one's
         self._quality_at = float("-inf")
         self._quality_key: bytes | None = None  # what the figures were measured on, at rest
@@ -328,7 +329,7 @@ class EditorScreen(Screen):
                     state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
                     held=self.meter.held, steps_per_s=self.meter.steps_per_s, quality=summary,
                     frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
-                    details=self.details, alignment=alignment))
+                    details=self.details, alignment=alignment, note=self.note))
             bar = self.query_one(PageBar)
             if bar.show(self.page_bar_runs(), refresh=False) \
                     and not preview.direct.paint_lines(bar):  # an unchanged bar costs no bytes
@@ -412,6 +413,7 @@ class EditorScreen(Screen):
         the selection, the page is redrawn and the physics woken (or, when a held key outruns
         the link or the byte budget, only woken: the next frame shows it)."""
         self.item_selected = self.session.selected_id is not None
+        self.note, self.session.release_note = self.session.release_note or "", None
         request, self.session.room_wanted = self.session.room_wanted, None
         if request is not None:  # an insert or a page change: room is found off this thread
             self.room_searches += 1

@@ -55,7 +55,7 @@ def _move(keys: str, dx: int, dy: int, step: float, name: str) -> Command:
     # screen takes arrows itself; dialogs are screens of their own, whose keys these never
     # see; with nothing selected the binding is disabled and the key goes the usual way.
     return Command(keys, f"nudge({dx * step},{dy * step})", f"Move {name}",
-                   f"Move the selected item {name} by {step:g} mm; the others make way",
+                   f"Move the selected item {name} by {step:g} mm and anchor it there",
                    "Move and resize", footer="item", rank=16 if large else 2, needs_item=True,
                    priority=True, key_display=display)
 

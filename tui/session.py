@@ -212,6 +212,7 @@ class EditSession:
         self.saved_version = 0
         self._versions = itertools.count(1)
         self.held_id: str | None = None
+        self.release_note: str | None = None  # what a release did, for the status line
         self.room_wanted: RoomRequest | None = None  # see want_room
         self.engine: Engine = self._build_engine()
 
@@ -548,14 +549,24 @@ class EditSession:
         self.move_to(item.id, x + dx_mm, y + dy_mm)
 
     def end_move(self) -> None:
-        """Let go of the held item; an anchored item is re-anchored where it was put."""
+        """Let go of the held item; an anchored item is re-anchored where it was put, and a
+        free one is anchored there, as `a` would (a spring, γ 1): let go, the others pushed it
+        back, often farther than it was moved (20 mm of a 20 mm move among twelve blocks), and
+        a user could not make an item stay without knowing `a`.  `u` lets it float again;
+        Ctrl+Z undoes the move and its anchor as one edit (both follow the move's checkpoint).
+        A decorative item is not pushed, so it needs no anchor."""
         item_id, self.held_id = self.held_id, None
         if item_id is None or item_id not in self.engine.ids:
             return
         self.engine.release(item_id)
         self.sync_positions()
         item = self.page.item(item_id)
-        if isinstance(item.anchor, PointAnchor):
+        if item.anchor is None and not item.decorative:
+            item.anchor = PointAnchor(x=item.x, y=item.y, gamma=1.0)
+            self.engine.anchor_point(item.id, item.x, item.y, gamma=1.0)
+            moved = f'group "{item.group}"' if item.group else item.id
+            self.release_note = f"{moved} anchored where you put it (+) · u lets it float again"
+        elif isinstance(item.anchor, PointAnchor):
             item.anchor.x, item.anchor.y = item.x, item.y
             self.engine.anchor_point(item.id, item.x, item.y, gamma=item.anchor.gamma,
                                      hard=item.anchor.hard)

@@ -21,6 +21,7 @@ class Status:
     details: bool = False  # `v` shows the numbers
     held: int = 0  # frames held back in the last second: the link could not take them
     alignment: str = ""  # near misses, edge lines, share aligned (physics.alignment.short)
+    note: str = ""  # what the last release did ("photo anchored where you put it"), until a key
 
 
 STATE_WORDS = {"settling": "settling…", "settled": "still", "paused": "paused · Space resumes"}
@@ -30,6 +31,8 @@ def status_text(status: Status) -> str:
     """Words by default ("settling…", "still", "2 overlaps"); the numbers in the details view
     (`v`): an energy of 1.45e-24 told a user nothing (issue 11)."""
     words = STATE_WORDS.get(status.state, status.state)
+    if status.note:  # on the first line, not a notice over the page: a notice there made a
+        words += f" · {status.note}"  # key's answer come in two writes for seconds after
     if not status.details:
         return f"{words}\n{status.quality_words or status.quality}"
     alignment = f" · {status.alignment}" if status.alignment else ""

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+import math
 import textwrap
 from pathlib import Path
 
@@ -14,7 +15,7 @@ from editor_helpers import editor, item, position, preview_text, screen_of, type
 from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, PictureItem, PointAnchor, TextItem,
 )
-from floatpage.model import load_project
+from floatpage.model import Page, Project, load_project, save_project
 from floatpage.tui.reading_order import reading_order
 from floatpage.tui.session import EditError
 from floatpage.tui.keymap import LARGE_STEP_MM, SMALL_STEP_MM
@@ -78,6 +79,43 @@ async def test_arrows_move_the_selected_item_which_is_held_then_released(project
         screen_of(app).release_held()
         assert not engine.bodies.held[engine.ids.index("block")]
         assert item(app, "block").x == pytest.approx(x - SMALL_STEP_MM)
+
+
+async def test_a_free_item_moved_stays_where_it_was_put_and_says_so(tmp_path):
+    """A free block moved 20 mm among eleven others floated back once let go, and farther
+    (20 mm from where it was put), without a word: a move of a free item anchors it there,
+    the status line says so and how to undo it, and it is saved so."""
+    blocks = [BlockItem(id=f"b{i}", x=30 + 45 * (i % 4), y=40 + 50 * (i // 4), w=35, h=35,
+                        color="#336699") for i in range(12)]
+    path = tmp_path / "blocks.toml"
+    save_project(Project(title="Blocks", pages=[Page(id="p", size="A4", width_mm=210,
+                                                     height_mm=297, items=blocks)]), path)
+    async with editor(path) as (app, pilot):
+        screen = screen_of(app)
+        app.session.engine.settle()
+        screen.selected_id = "b5"
+        await pilot.press("shift+right", "shift+right")
+        put = position(app, "b5")
+        screen.release_held()
+        await pilot.pause()
+        assert item(app, "b5").anchor == PointAnchor(x=put[0], y=put[1], gamma=1.0)
+        status = str(screen.query_one("#status").render())
+        assert "b5 anchored where you put it (+) · u lets it float again" in status
+        app.session.engine.reheat()
+        app.session.engine.settle()
+        assert math.dist(position(app, "b5"), put) < 10  # it floated 20 mm back unanchored
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        saved = load_project(path).pages[0].item("b5")
+        assert isinstance(saved.anchor, PointAnchor)
+        await pilot.press("tab")  # the next key takes the note off the status line
+        await pilot.pause()
+        assert "anchored where you put it" not in str(screen.query_one("#status").render())
+        screen.selected_id = "b5"
+        await pilot.press("ctrl+z")  # the move and its anchor are one edit
+        await pilot.pause()
+        assert item(app, "b5").anchor is None
+        assert position(app, "b5") != pytest.approx(put)
 
 
 async def test_a_held_item_pushes_the_others_and_is_not_pushed(project_path):
