@@ -408,12 +408,16 @@ class EditorScreen(Screen):
         self.app.clear_notifications()
         super().notify(message, markup=markup, **kwargs)
 
-    def after_edit(self) -> None:
+    def after_edit(self, *, keep_note: bool = False) -> None:
         """Show what an edit, a selection or a release did: the footer's item commands follow
         the selection, the page is redrawn and the physics woken (or, when a held key outruns
-        the link or the byte budget, only woken: the next frame shows it)."""
+        the link or the byte budget, only woken: the next frame shows it).  The status line's
+        note (`session.status_note`) stays until the next edit, or as long as ``keep_note``
+        (the room found for the page size that set it)."""
         self.item_selected = self.session.selected_id is not None
-        self.note, self.session.release_note = self.session.release_note or "", None
+        note, self.session.status_note = self.session.status_note, None
+        if note is not None or not keep_note:
+            self.note = note or ""
         request, self.session.room_wanted = self.session.room_wanted, None
         if request is not None:  # an insert or a page change: room is found off this thread
             self.room_searches += 1
@@ -455,7 +459,7 @@ class EditorScreen(Screen):
         if self.session.make_room(request, scale):
             self.notify(f"made {1 - scale:.0%} smaller so that everything fits the page "
                         "without overlap (Ctrl+Z undoes it)", timeout=4)
-            self.after_edit()
+            self.after_edit(keep_note=True)
         else:
             self.redraw()
 

@@ -212,7 +212,7 @@ class EditSession:
         self.saved_version = 0
         self._versions = itertools.count(1)
         self.held_id: str | None = None
-        self.release_note: str | None = None  # what a release did, for the status line
+        self.status_note: str | None = None  # what a release or a page size did, in words
         self.room_wanted: RoomRequest | None = None  # see want_room
         self.engine: Engine = self._build_engine()
 
@@ -565,7 +565,7 @@ class EditSession:
             item.anchor = PointAnchor(x=item.x, y=item.y, gamma=1.0)
             self.engine.anchor_point(item.id, item.x, item.y, gamma=1.0)
             moved = f'group "{item.group}"' if item.group else item.id
-            self.release_note = f"{moved} anchored where you put it (+) · u lets it float again"
+            self.status_note = f"{moved} anchored where you put it (+) · u lets it float again"
         elif isinstance(item.anchor, PointAnchor):
             item.anchor.x, item.anchor.y = item.x, item.y
             self.engine.anchor_point(item.id, item.x, item.y, gamma=item.anchor.gamma,
@@ -794,10 +794,17 @@ class EditSession:
             region.h = min(round((region.top + region.h) * sy, 2), height) - top
             region.left, region.top = left, top
         old_sizes = {item.id: (item.w, item.h) for item in page.items}
+        too_large = [item.id for item in page.items
+                     if not item.decorative and (item.w > width or item.h > height)]
         for item in page.items:
             item.x, item.y = item.x * sx, item.y * sy
             if item.decorative:  # a band across the page keeps spanning it: it stretches
                 item.w, item.h = item.w * sx, item.h * sy
+            if isinstance(item, PictureItem) and item.lock_aspect:
+                # shape kept, as `+` and `-` keep it: clamped side by side, the album's 3:2
+                # photos came out 1.08:1 on a 60 mm wide page, and printed stretched
+                fit = min(1.0, width / item.w, height / item.h)
+                item.w, item.h = item.w * fit, item.h * fit
             item.w, item.h = min(item.w, width), min(item.h, height)
             if item.region:  # no larger than its region (the loader's rule), shape kept
                 room = page.region(item.region)
@@ -811,6 +818,11 @@ class EditSession:
         page.size, page.orientation = size, orientation
         page.width_mm, page.height_mm = width, height
         self.held_id = None
+        if too_large:  # said, as the room search's smaller shrink is: "10 % smaller" was all
+            # a user read when a 150 mm title became 9 mm wide on a 10 mm page
+            self.status_note = (f"{too_large[0]} was larger than the new page: made smaller"
+                                if len(too_large) == 1 else f"{len(too_large)} items larger "
+                                "than the new page were made smaller")
         self.want_room(margin_kept=margin_kept)
         self.engine = self._build_engine(check=False)
         self.engine.reheat()

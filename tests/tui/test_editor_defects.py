@@ -551,3 +551,32 @@ async def test_a_read_only_project_says_so_when_opened_and_a_save_leaves_it_unto
         assert app.session.unsaved
     assert project_path.read_bytes() == before and project_path.stat().st_ino == inode
     assert not project_path.with_name(project_path.name + ".bak").exists()
+
+
+async def test_a_page_narrower_than_a_photo_keeps_the_photos_shape_and_says_so(tmp_path):
+    """A custom page 60 mm wide clamped each side on its own: the album's 3:2 photos came out
+    1.08:1 (60 x 55.7 mm) and printed stretched, and the notice said only "made 10% smaller"."""
+    import shutil
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    path = folder / "photo-album.toml"
+    shapes = {item.id: item.w / item.h for item in load_project(path).pages[0].items
+              if item.kind == "picture"}
+    async with editor(path) as (app, pilot):
+        await pilot.press("S")
+        options = [str(o.prompt) for o in app.screen.query_one("OptionList").options]
+        await pilot.press(*["down"] * (len(options) - 1 - options.index(
+            next(o for o in options if o.startswith("A4")))), "enter")  # "Custom…", the last
+        app.screen.query_one("#field-width_mm").value = "60"
+        app.screen.query_one("#field-height_mm").value = "200"
+        await pilot.press("ctrl+s")
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        page = app.session.page
+        assert page.width_mm == 60
+        for item_id, shape in shapes.items():
+            photo = page.item(item_id)
+            assert photo.w <= 60 and photo.w / photo.h == pytest.approx(shape, rel=1e-3), item_id
+        # and it is said: the room search's "made N% smaller" was all a user read
+        status = str(screen_of(app).query_one("#status").render())
+        assert "11 items larger than the new page were made smaller" in status, status
