@@ -490,7 +490,9 @@ class EditSession:
         """Hold an item (it pushes the others and is not pushed) for a move or a drag."""
         if self.held_id == item_id:
             return
-        self.checkpoint(f"move {item_id}")  # lets go of any other held item first
+        group = self.page.item(item_id).group  # the user moved a member, maybe not the lead
+        self.checkpoint(f'move group "{group}"' if group else f"move {item_id}")  # lets go of
+        # any other held item first
         self.held_id = item_id
         self.engine.hold(item_id)
 

@@ -52,6 +52,15 @@ async def test_an_arrow_on_any_member_moves_the_whole_group(tmp_path):
         offset = (after["sub"][0] - after["title"][0], after["sub"][1] - after["title"][1])
         assert offset == (before["sub"][0] - before["title"][0],
                           before["sub"][1] - before["title"][1])
+        # the group is anchored where it was put, and an undo names the group, not "title"
+        # (its lead, which the user never selected)
+        assert isinstance(item(app, "title").anchor, PointAnchor)
+        assert 'group "head" anchored where you put it' in str(
+            screen_of(app).query_one("#status").render())
+        await keys(pilot, "ctrl+z")
+        assert 'undid move group "head"' in messages(app)
+        assert position(app, "sub") == pytest.approx(before["sub"])
+        assert item(app, "title").anchor is None
 
 
 async def test_G_puts_the_selected_item_in_a_group_and_empty_takes_it_out(tmp_path):
