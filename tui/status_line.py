@@ -31,18 +31,20 @@ def status_text(status: Status) -> str:
     """Words by default ("settling…", "still", "2 overlaps"); the numbers in the details view
     (`v`): an energy of 1.45e-24 told a user nothing (issue 11)."""
     words = STATE_WORDS.get(status.state, status.state)
-    if status.note:  # on the first line, not a notice over the page: a notice there made a
-        words += f" · {status.note}"  # key's answer come in two writes for seconds after
+    # The note goes on the first line, not in a notice over the page (a notice there made a
+    # key's answer come in two writes for seconds after); in the details view after the
+    # figures the user asked for, which it pushed off an 80-column line.
+    note = f" · {status.note}" if status.note else ""
     if not status.details:
-        return f"{words}\n{status.quality_words or status.quality}"
+        return f"{words}{note}\n{status.quality_words or status.quality}"
     alignment = f" · {status.alignment}" if status.alignment else ""
     if status.state in ("settled", "paused"):
         # At rest the first line has room: the alignment figures go there, first, where at
         # 80 columns they fell off the end of the quality line (user-walk-2).
-        return f"{words}{alignment} · idle\n{status.quality}"  # no energy: nothing moves
+        return f"{words}{alignment}{note} · idle\n{status.quality}"  # no energy: nothing moves
     rate = (f"{status.fps:4.1f} fps · {status.held} held · "
             f"{status.steps_per_s:,.0f} steps/s · frame {status.frame_ms:4.1f} ms")
-    return f"{words} · energy {status.energy:.2e} · {rate}\n{status.quality}{alignment}"
+    return f"{words}{note} · energy {status.energy:.2e} · {rate}\n{status.quality}{alignment}"
 
 
 class StatusLine(Static):

@@ -56,3 +56,19 @@ async def test_the_details_view_shows_the_alignment_measures_at_80_columns(proje
             Region(0, 0, status.size.width, status.size.height)))
         assert "misses " in shown and "lines " in shown and "aligned " in shown, shown
         assert "overlaps" in shown and "gap " in shown, shown
+
+
+async def test_a_release_note_leaves_the_details_figures_on_an_80_column_line(project_path):
+    """The note a move leaves on the status line ("block anchored where you put it …") came
+    before the alignment figures and pushed them off an 80-column line (in tmux)."""
+    from textual.geometry import Region
+
+    async with editor(project_path, size=(80, 24)) as (app, pilot):
+        await pilot.press("v", "tab", "tab", "tab", "left")
+        screen_of(app).release_held()
+        await pilot.pause()
+        status = screen_of(app).query_one("StatusLine")
+        shown = " ".join(strip.text for strip in status.render_lines(
+            Region(0, 0, status.size.width, status.size.height)))
+        assert "aligned 20% · block anch" in shown or "· block anch" in shown, shown
+        assert "misses " in shown and "lines " in shown and "aligned " in shown, shown
