@@ -294,18 +294,19 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
-    from floatpage.cli.page_report import page_report, settle_may_help
+    from floatpage.cli.page_report import page_report, settle_may_help, what_settle_fixes
     from floatpage.model.layout import engine_for_page
 
     print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
-    settle_helps = False
+    settle_lines: list[str] = []  # the lines that send the user to `settle`
     for page in project.pages:
         lines, problems = page_report(page, engine_for_page(page, project.physics),
                                       project.physics.gutter_mm)
         print("\n".join(lines))
         issues += problems
-        settle_helps = settle_helps or settle_may_help(lines)
+        if settle_may_help(lines):
+            settle_lines += lines
     from floatpage.typeset import text_fit_warnings
     from floatpage.typeset.render import picture_warnings, resolution_notes
 
@@ -318,7 +319,8 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
         print(f"{printable(args.path)}: {issues} layout problem(s); " + (
-            f"run `floatpage settle {printable(args.path)}` to fix overlaps" if settle_helps
+            f"run `floatpage settle {printable(args.path)}` to fix "
+            f"{what_settle_fixes(settle_lines)}" if settle_lines
             else "no settle fixes them: see the reasons above"))
         return EXIT_USER_ERROR
     return EXIT_OK

@@ -152,6 +152,21 @@ def settle_may_help(lines: list[str]) -> bool:
     return any(SETTLE in line for line in lines)
 
 
+SETTLE_FIXES = (("  overlapping:", "the overlaps"), ("reach past the page's edge",
+                                                    "the items off the page"),
+                ("print-safe margin", "the items in the margin"),
+                ("not wholly inside its region", "the items outside their region"),
+                ("gutter fits", "the gap under the gutter"))
+
+
+def what_settle_fixes(lines: list[str]) -> str:
+    """What the lines that send the user to `settle` ask it to fix, in words, for `check`'s
+    closing line: it said "to fix overlaps" under a page of 0 overlaps whose gap was short."""
+    found = [words for needle, words in SETTLE_FIXES
+             if any(SETTLE in line and needle in line for line in lines)]
+    return " and ".join(dict.fromkeys(found)) or "what the lines above name"
+
+
 def _some(shown: list[str], total: int) -> str:
     """The first of ``total`` things, and how many more there are."""
     return ", ".join(shown) + (f" and {total - len(shown)} more" if total > len(shown) else "")

@@ -40,6 +40,20 @@ def test_check_reports_overlaps_and_strict_fails(crowded_project):
     assert "floatpage settle" in strict.stdout
 
 
+def test_strict_closing_line_names_what_settle_fixes_not_overlaps_there_are_none_of(tmp_path):
+    """Two blocks 1 mm apart, no overlap: the closing line said "run `floatpage settle` to fix
+    overlaps" under a report of 0 overlaps; the gutter was the problem."""
+    path = tmp_path / "close.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        BlockItem(id="left", x=80.0, y=100.0, w=40.0, h=40.0),
+        BlockItem(id="right", x=121.0, y=100.0, w=40.0, h=40.0)])]), path)
+    strict = run("check", "--strict", str(path))
+    assert strict.returncode == 1 and "0 overlaps" in strict.stdout, strict.stdout
+    closing = strict.stdout.strip().splitlines()[-1]
+    assert f"run `floatpage settle {path}`" in closing and "overlap" not in closing, closing
+    assert "the gap under the gutter" in closing, closing
+
+
 def test_settle_removes_overlaps_and_writes_back(crowded_project):
     before = crowded_project.read_text()
     result = run("settle", str(crowded_project))
