@@ -44,8 +44,15 @@ class DataFile:
 
     def __init__(self, path: Path):
         self.path = Path(path)
-        if not self.path.is_file():
+        if not self.path.exists():
             raise FloatpageError(f"{self.path}: no such data file (give a .csv or .jsonl file)")
+        if self.path.is_dir():  # it was "no such data file", of a folder that is there
+            raise FloatpageError(f"{self.path}: is a folder, not a data file (name the .csv or "
+                                 ".jsonl file inside it)")
+        if not self.path.is_file():  # e.g. `<(grep … customers.csv)`: read more than once
+            raise FloatpageError(f"{self.path}: is a pipe or device, not a file; merge reads "
+                                 "its data file more than once, so save the records to a .csv "
+                                 "or .jsonl file first")
         suffix = self.path.suffix.lower()
         if suffix in NOT_RECORDS:
             raise FloatpageError(f"{self.path}: {NOT_RECORDS[suffix]}; give the records as a .csv "

@@ -110,3 +110,20 @@ def test_json_lines_with_a_non_object_line_fail_that_record_only(tmp_path):
     found = list(source.records())
     assert [bool(record.problem) for record in found] == [False, True, True, True, False]
     assert [record.line for record in found] == [1, 2, 3, 4, 5]
+
+
+def test_a_folder_or_a_pipe_given_as_data_is_named_as_such(tmp_path):
+    """Both were "no such data file", though the folder was there and the pipe (a shell's
+    `<(grep … customers.csv)`) too."""
+    import os
+
+    folder = tmp_path / "records"
+    folder.mkdir()
+    with pytest.raises(FloatpageError, match="is a folder, not a data file"):
+        DataFile(folder)
+    pipe = tmp_path / "records.csv"
+    os.mkfifo(pipe)
+    with pytest.raises(FloatpageError, match="is a pipe or device, not a file; merge reads"):
+        DataFile(pipe)
+    with pytest.raises(FloatpageError, match="no such data file"):
+        DataFile(tmp_path / "missing.csv")
