@@ -64,7 +64,10 @@ class FloatpageApp(App):
                 yield command
         editor = self.editor
         for command in COMMANDS:
-            yield SystemCommand(f"{command.label}  [{key_label(command.keys)}]", command.help,
+            # The palette reads titles as markup: "[a]", "[u]", "[i]", "[n]" were taken for
+            # style tags and vanished (and "[b]" made the rest bold), so keys go in brackets
+            # no markup claims.
+            yield SystemCommand(f"{command.label}  ({key_label(command.keys)})", command.help,
                                 partial(editor.run_action, command.action))
 
     async def action_quit(self) -> None:

@@ -182,7 +182,7 @@ async def test_every_command_is_in_the_palette_and_runs_from_it(project_path):
     async with editor(project_path) as (app, pilot):
         titles = [command.title for command in app.get_system_commands(screen_of(app))]
         for command in COMMANDS:
-            assert any(title.startswith(command.label + "  [") for title in titles), command.label
+            assert any(title.startswith(command.label + "  (") for title in titles), command.label
         await pilot.press("tab")
         await pilot.press("ctrl+p")
         await pilot.pause()
@@ -191,6 +191,20 @@ async def test_every_command_is_in_the_palette_and_runs_from_it(project_path):
         await pilot.press("enter")
         await pilot.pause()
         assert item(app, "title").anchor is not None
+
+
+async def test_the_palette_shows_each_commands_keys(project_path):
+    """The palette reads titles as markup: "Anchor  [a]" showed as "Anchor", the key taken
+    for a style tag, and so for u, i, n, A and more."""
+    from textual.command import CommandList
+
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "ctrl+p")
+        await pilot.pause()
+        await pilot.press(*"Unanchor")
+        await pilot.pause(0.5)
+        prompts = [str(option.prompt) for option in app.screen.query_one(CommandList).options]
+        assert any(prompt.startswith("Unanchor  (u)") for prompt in prompts), prompts
 
 
 def test_every_command_names_an_action_the_screen_has():
