@@ -49,8 +49,22 @@ def refuse_read_only(path: Path, target: Path) -> None:
     replaced all the same, its protection gone."""
     if read_only(target):
         shown = path if Path(os.path.abspath(path)) == target else f"{path} (a link to {target})"
+        if os.stat(target).st_mode & 0o222:  # writable, but not by this user: chmod u+w is
+            raise FloatpageError(  # not theirs to run
+                f"{shown}: not saved, because you may not write it (it belongs to "
+                f"{owner_of(target)}); the file is unchanged (ask its owner, or write a copy)")
         raise FloatpageError(f"{shown}: not saved, because the file is read-only; the file is "
                              "unchanged (make it writable with `chmod u+w`, or write elsewhere)")
+
+
+def owner_of(path: Path) -> str:
+    """The file's owner by name where there is one, else by number."""
+    uid = os.stat(path).st_uid
+    try:
+        import pwd
+        return pwd.getpwuid(uid).pw_name
+    except (ImportError, KeyError):
+        return f"user {uid}"
 
 
 def read_only(path: Path) -> bool:

@@ -223,6 +223,37 @@ def test_settle_refuses_a_read_only_project_and_leaves_it_as_it_was(tmp_path):
     assert not (tmp_path / "card.toml.bak").exists()
 
 
+@pytest.mark.skipif(os.geteuid() != 0 or not Path("/usr/bin/setpriv").exists(),
+                    reason="needs root to run settle as another user")
+def test_settle_of_someone_elses_file_says_whose_it_is_not_to_chmod_it():
+    """A file writable by its owner only (0644, root's) was "read-only: chmod u+w", which
+    the user who ran settle may not do."""
+    import shutil
+    import tempfile
+
+    folder = Path(tempfile.mkdtemp(prefix="floatpage-owner-"))
+    try:
+        folder.chmod(0o755)
+        path = card(folder)
+        path.write_text(path.read_text().replace("x = 30.0", "x = 60.0"))
+        path.chmod(0o644)
+        before = path.read_bytes()
+        result = subprocess.run(
+            ["/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups",
+             sys.executable, "-m", "floatpage.cli.main", "settle", str(path)],
+            capture_output=True, text=True, timeout=300, cwd="/", stdin=subprocess.DEVNULL,
+            env={**os.environ, "PYTHONPATH": os.pathsep.join(sys.path)})
+        if "Permission denied" in result.stderr and "not saved" not in result.stderr:
+            pytest.skip(f"this checkout cannot be run by another user: {result.stderr[-200:]}")
+        assert result.returncode == 1, result.stderr
+        assert f"{path}: not saved, because you may not write it (it belongs to root)" \
+            in result.stderr, result.stderr
+        assert "chmod" not in result.stderr
+        assert path.read_bytes() == before
+    finally:
+        shutil.rmtree(folder)
+
+
 def test_render_refuses_a_read_only_output_before_the_engine_runs(tmp_path):
     path = card(tmp_path)
     old = tmp_path / "old.pdf"
