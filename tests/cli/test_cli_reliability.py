@@ -250,6 +250,19 @@ def test_settle_of_someone_elses_file_says_whose_it_is_not_to_chmod_it():
             in result.stderr, result.stderr
         assert "chmod" not in result.stderr
         assert path.read_bytes() == before
+        old_pdf = folder / "old.pdf"  # and render's output, before anything is made
+        old_pdf.write_bytes(b"%PDF-old")
+        old_pdf.chmod(0o644)
+        result = subprocess.run(
+            ["/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups",
+             sys.executable, "-m", "floatpage.cli.main", "render", str(path), "--no-settle",
+             "-o", str(old_pdf)],
+            capture_output=True, text=True, timeout=300, cwd="/", stdin=subprocess.DEVNULL,
+            env={**os.environ, "PYTHONPATH": os.pathsep.join(sys.path), "HOME": str(folder)})
+        assert result.returncode == 1, result.stderr
+        assert f"{old_pdf}: will not write there, because you may not write it (it belongs " \
+            "to root)" in result.stderr, result.stderr
+        assert old_pdf.read_bytes() == b"%PDF-old"
     finally:
         shutil.rmtree(folder)
 
