@@ -225,6 +225,10 @@ def cmd_render(args: argparse.Namespace) -> int:
 
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
     refuse_other_format(out)
+    for option, name in (("--tex", args.tex), ("--fragment", args.fragment)):
+        if name and Path(name).suffix.lower() in NOT_TEX:  # LaTeX source in card.pdf: a swap
+            raise FloatpageError(f"{name}: {option} writes LaTeX source; name it .tex (the PDF "
+                                 "goes to -o)")
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     with progress_line(args.quiet) as show:
         if not args.no_settle:
@@ -275,6 +279,12 @@ def unsettled_warnings(project, path: str) -> list[str]:
 # (A .toml is left to render's own check, which says when it is the project itself.)
 NOT_PDF = {".png": "pdftoppm -png", ".jpg": "pdftoppm -jpeg", ".jpeg": "pdftoppm -jpeg",
            ".svg": "pdftocairo -svg", ".tex": "--tex", ".eps": "pdftops -eps"}
+
+
+# --tex and --fragment names that promise something else: `--tex card.pdf` wrote LaTeX
+# source into a file named as a PDF (the options swapped), and a .toml one into the project's
+# own kind (render's own check refuses the project itself).
+NOT_TEX = {".pdf", ".png", ".jpg", ".jpeg", ".svg", ".eps", ".toml"}
 
 
 PROJECT_PATH_HELP = "the project's .toml file"

@@ -141,3 +141,18 @@ def test_render_refuses_an_output_named_as_another_format(tmp_path, name):
     assert result.returncode == 1
     assert name in result.stderr and ".pdf" in result.stderr
     assert not (tmp_path / name).exists()
+
+
+@pytest.mark.parametrize("option,name", [("--tex", "card.pdf"), ("--fragment", "part.PNG"),
+                                         ("--tex", "other.toml")])
+def test_render_refuses_latex_source_named_as_another_format(tmp_path, option, name):
+    """`--tex card.pdf -o card.tex` (the options swapped) wrote LaTeX source into card.pdf."""
+    from floatpage.model import Page, Project, save_project
+
+    path = tmp_path / "card.toml"
+    save_project(Project(pages=[Page(id="p")]), path)
+    result = run("render", str(path), option, str(tmp_path / name), "-o",
+                 str(tmp_path / "out.pdf"))
+    assert result.returncode == 1, result.stderr
+    assert f"{option} writes LaTeX source; name it .tex" in result.stderr, result.stderr
+    assert not (tmp_path / name).exists() and not (tmp_path / "out.pdf").exists()
