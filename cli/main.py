@@ -71,7 +71,8 @@ def cmd_edit(args: argparse.Namespace) -> int:
     # Fail here, with a clear message, before the screen is taken over; hold the project's lock
     # for the whole session, so a `settle` meanwhile refuses rather than being overwritten.
     with ProjectLock(args.path, wait_s=0.0, purpose="floatpage edit"):
-        load_project(args.path, allow_outside_files=args.allow_outside_files)
+        load_project(args.path, allow_outside_files=args.allow_outside_files,
+                     missing_pictures_ok=True)
         refuse_without_terminal(args.path)
         from floatpage.tui.app import make_app
         from floatpage.tui.recovery import discard_recovery, pending_recovery

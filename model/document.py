@@ -307,6 +307,9 @@ class Project:
     # never save.
     source_text: str | None = field(default=None, repr=False, compare=False)
     parsed_source: Any = field(default=None, repr=False, compare=False)
+    # Pictures whose files were gone when the editor loaded it ("item "x": picture file
+    # "p.jpg""), said when it opens; any other loader refuses such a file.
+    missing_pictures: list[str] = field(default_factory=list, repr=False, compare=False)
 
     @property
     def source_document(self) -> Any:

@@ -44,11 +44,15 @@ def reach(page_mm: float) -> tuple[float, float]:
     return -margin, page_mm + margin
 
 
-def load_project(path: str | Path, *, allow_outside_files: bool = False) -> Project:
+def load_project(path: str | Path, *, allow_outside_files: bool = False,
+                 missing_pictures_ok: bool = False) -> Project:
     """Parse and validate a project file; raise ProjectFileError naming every problem.
 
     Pictures must lie inside the project's folder unless ``allow_outside_files`` (the CLI's
     --allow-outside-files) or the file's own ``[files] allow_outside = true`` says otherwise.
+    ``missing_pictures_ok`` (the editor) loads a project whose picture files are gone, and
+    lists them, as "WHERE: picture file "PATH"", in ``project.missing_pictures``: the editor
+    refused to open it at all, leaving the user to mend the file by hand.
     A merge template may name a picture by a placeholder (``pictures/{photo}``): that path
     is checked per record, once filled, by `floatpage merge`."""
     path = Path(path)
@@ -59,12 +63,14 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False) -> Proj
         raise ProjectFileError([syntax_problem(path, error)]) from None
     except RecursionError:
         raise too_deep(path) from None
-    reader = _Reader(path, text, allow_outside=allow_outside_files)
+    reader = _Reader(path, text, allow_outside=allow_outside_files,
+                     missing_pictures_ok=missing_pictures_ok)
     reader.had_bom = starts_with_bom(path)
     project = reader.project(data)
     if reader.problems:
         raise ProjectFileError(reader.problems)
     project.source_text = text  # parsed by tomlkit only if the project is saved
+    project.missing_pictures = reader.missing_pictures
     project.utf8_bom = reader.had_bom
     project.crlf = "\r\n" in text[:text.find("\n") + 1]  # as its first line ends
     return project
@@ -127,9 +133,12 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError) -> Problem:
 class _Reader:
     """Walks parsed TOML against the schema, building the model and collecting problems."""
 
-    def __init__(self, path: Path, text: str, *, allow_outside: bool = False):
+    def __init__(self, path: Path, text: str, *, allow_outside: bool = False,
+                 missing_pictures_ok: bool = False):
         self.path = path
         self.allow_outside = allow_outside
+        self.missing_pictures_ok = missing_pictures_ok
+        self.missing_pictures: list[str] = []
         self.lines = LineFinder(text)
         self.problems: list[Problem] = []
         self.named_regions: set[tuple[int, str]] = set()  # (page index, id) of every region table
@@ -350,7 +359,9 @@ class _Reader:
             return
         picture = self.path.parent / relative
         header = read_header(picture)
-        if header.problem == "not found":
+        if header.problem == "not found" and self.missing_pictures_ok:
+            self.missing_pictures.append(f'{where}: picture file "{relative}"')
+        elif header.problem == "not found":
             self.add(line, where, f'picture file "{relative}" not found',
                      f"paths are relative to {folder_words(self.path)}; fix the path or copy "
                      "the file there")

@@ -88,8 +88,9 @@ def make_app(project_path: str | Path, *, seed: int | None = None,
     """
     if recovered:
         project = load_recovered(project_path, allow_outside_files=allow_outside_files)
-    else:
-        project = load_project(project_path, allow_outside_files=allow_outside_files)
+    else:  # a picture moved away must not keep the user out of the editor: it says so
+        project = load_project(project_path, allow_outside_files=allow_outside_files,
+                               missing_pictures_ok=True)
     session_seed = project.physics.seed if seed is None else seed
     session = EditSession(project, seed=session_seed)
     if recovered:

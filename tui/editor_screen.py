@@ -154,6 +154,13 @@ class EditorScreen(Screen):
         self.query_one(PagePreview).focus()
         self.redraw()
         self.wake()
+        missing = self.session.project.missing_pictures
+        if missing:  # opened all the same, so that the user can mend it here
+            self.notify("\n".join(f"• {printable(entry)} is missing" for entry in missing[:4])
+                        + (f"\n• and {len(missing) - 4} more" if len(missing) > 4 else "")
+                        + "\nCopy the files back, or delete these items (Del) and insert the "
+                        "pictures again (p); until then the PDF cannot be made",
+                        title="Pictures not found", severity="warning", timeout=20)
         path = self.session.project.path
         if path is not None and read_only(path):  # said at once, not after an hour's edits
             self.notify(f"{printable(path.name)} is read-only: edits can be made and exported, "

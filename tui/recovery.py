@@ -50,7 +50,8 @@ def pending_recovery(project_path: str | Path) -> Path | None:
 
 def load_recovered(project_path: str | Path, *, allow_outside_files: bool = False):
     """The project as the recovery file holds it, to be saved under the project's own name."""
-    project = load_project(recovery_path(project_path), allow_outside_files=allow_outside_files)
+    project = load_project(recovery_path(project_path), allow_outside_files=allow_outside_files,
+                           missing_pictures_ok=True)
     project.path = Path(project_path)
     return project
 

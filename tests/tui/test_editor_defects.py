@@ -580,3 +580,21 @@ async def test_a_page_narrower_than_a_photo_keeps_the_photos_shape_and_says_so(t
         # and it is said: the room search's "made N% smaller" was all a user read
         status = str(screen_of(app).query_one("#status").render())
         assert "11 items larger than the new page were made smaller" in status, status
+
+
+async def test_a_project_whose_picture_is_gone_opens_and_says_what_to_do(project_path):
+    """A picture moved away kept the user out of the editor ("picture file … not found"),
+    to mend the file by hand; it opens, names the picture, and deleting the item mends it."""
+    (project_path.parent / "pictures" / "photo.png").unlink()
+    with pytest.raises(Exception, match="not found"):
+        load_project(project_path)  # every other command still refuses it
+    async with editor(project_path) as (app, pilot):
+        shown = [n for n in app._notifications if n.title == "Pictures not found"]
+        assert shown and 'item "photo": picture file "pictures/photo.png" is missing' \
+            in shown[0].message and "delete these items (Del)" in shown[0].message
+        text = "\n".join(screen_of(app).preview.text_lines())
+        assert "missing" in text and "photo.png" in text, text
+        screen_of(app).selected_id = "photo"
+        await pilot.press("delete", "ctrl+s")
+        await pilot.pause()
+    assert "photo" not in load_project(project_path).pages[0].item_ids()
