@@ -55,6 +55,11 @@ def cmd_new(args: argparse.Namespace) -> int:
     if unused and args.kind != "calendar":
         print(f"note: {' and '.join(unused)} only {'shape' if len(unused) > 1 else 'shapes'} a "
               f"calendar; ignored for `new {args.kind}`", file=sys.stderr)
+    if args.photos:
+        from floatpage.starters.pictures import left_out_photos
+
+        for photo, why in left_out_photos(Path(args.photos)):
+            print(f"note: {printable(str(photo))} was left out: {why}", file=sys.stderr)
     items = sum(len(page.items) for page in project.pages)
     print(f"created {printable(str(project.path))}: {len(project.pages)} page(s), {items} item(s)")
     print(f"next: floatpage edit {printable(str(project.path))}")

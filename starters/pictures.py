@@ -92,6 +92,29 @@ def find_photos(folder: Path) -> list[Path]:
     return readable
 
 
+# Picture formats a camera or phone writes that floatpage cannot read: left out of --photos
+# with a word (other files, such as .xmp sidecars or notes, are passed over quietly).
+OTHER_PICTURE_SUFFIXES = (".heic", ".heif", ".avif", ".jxl", ".dng", ".cr2", ".cr3", ".nef",
+                          ".arw", ".orf", ".rw2", ".raf", ".psd", ".svg")
+
+
+def left_out_photos(folder: Path) -> list[tuple[Path, str]]:
+    """The pictures in `folder` that `find_photos` passes over, each with why: `new album
+    --photos` of 20 photos, two of them cut short and one an iPhone's .HEIC, made an album of
+    17 without a word."""
+    left = []
+    for path in sorted(Path(folder).expanduser().iterdir()):
+        if not path.is_file() or path.name.startswith("."):
+            continue
+        suffix = path.suffix.lower()
+        if suffix in ACCEPTED_SUFFIXES and displayed_size(path) is None:
+            left.append((path, "it cannot be read as a picture (damaged, or not what its name "
+                               "says)"))
+        elif suffix in OTHER_PICTURE_SUFFIXES:
+            left.append((path, f"floatpage reads {accepted_formats()}; convert it to JPG or PNG"))
+    return left
+
+
 def copy_beside(sources: list[Path], project_dir: Path) -> list[Picture]:
     """Copy each source into project_dir/pictures/ and describe it; one Picture per source.
 

@@ -104,3 +104,27 @@ def test_bundled_pictures_are_small_and_mixed():
     assert all(f.stat().st_size < 60_000 for f in files)
     assert shapes == {True, False}  # landscape and portrait
     assert {f.suffix for f in files} == {".jpg", ".png"}
+
+
+def test_new_album_names_each_photo_it_leaves_out_and_why(tmp_path):
+    """Two photos cut short and a phone's .HEIC among the rest made an album without them,
+    and without a word; a notes file is passed over quietly, as before."""
+    import subprocess
+    import sys
+
+    photos = tmp_path / "photos"
+    photos.mkdir()
+    picture(photos / "a.jpg")
+    picture(photos / "b.png")
+    (photos / "broken.jpg").write_bytes(b"not really a jpeg")
+    (photos / "IMG_0001.HEIC").write_bytes(b"ftypheic")
+    (photos / "notes.txt").write_text("not a picture")
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "album",
+                             str(tmp_path / "album.toml"), "--photos", str(photos), "-j", "1"],
+                            capture_output=True, text=True, timeout=300,
+                            stdin=subprocess.DEVNULL)
+    assert result.returncode == 0, result.stderr
+    notes = [line for line in result.stderr.splitlines() if line.startswith("note: ")]
+    assert len(notes) == 2, result.stderr
+    assert f"note: {photos / 'IMG_0001.HEIC'} was left out: floatpage reads JPG" in notes[0]
+    assert f"note: {photos / 'broken.jpg'} was left out: it cannot be read" in notes[1]
