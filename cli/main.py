@@ -232,9 +232,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
     refuse_other_format(out)
     for option, name in (("--tex", args.tex), ("--fragment", args.fragment)):
-        if name and Path(name).suffix.lower() in NOT_TEX:  # LaTeX source in card.pdf: a swap
-            raise FloatpageError(f"{name}: {option} writes LaTeX source; name it .tex (the PDF "
-                                 "goes to -o)")
+        refuse_not_tex(option, name, args.path)
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     with progress_line(args.quiet) as show:
         if not args.no_settle:
@@ -293,6 +291,17 @@ NOT_PDF = {".png": "pdftoppm -png", ".jpg": "pdftoppm -jpeg", ".jpeg": "pdftoppm
 NOT_TEX = {".pdf", ".png", ".jpg", ".jpeg", ".svg", ".eps", ".toml"}
 
 
+def refuse_not_tex(option: str, name: str | None, project: str) -> None:
+    """Refuse LaTeX source named as another format (`--tex card.pdf`: the options swapped).
+    The project itself is left to render's own check, which says that it is an input."""
+    if not name or Path(name).suffix.lower() not in NOT_TEX:
+        return
+    if os.path.exists(name) and os.path.samefile(name, project):
+        return
+    raise FloatpageError(f"{name}: {option} writes LaTeX source; name it .tex (the PDF goes "
+                         "to -o)")
+
+
 PROJECT_PATH_HELP = "the project's .toml file"
 
 
@@ -349,6 +358,21 @@ def bleed_length(text: str) -> float:
         raise argparse.ArgumentTypeError(f"{text!r} is not a number of millimetres") from None
     if not 0.0 <= value <= 20.0:
         raise argparse.ArgumentTypeError("give a bleed between 0 and 20 mm (print shops ask 3)")
+    return value
+
+
+def seed_number(text: str) -> int:
+    """``edit --seed``: a whole number the physics takes (its own range, physics.params); -1
+    or 10**23 got as far as the editor and ended in "internal error", exit 70."""
+    from floatpage.physics.params import out_of_range
+
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    problem = out_of_range("seed", value)
+    if problem:
+        raise argparse.ArgumentTypeError(f"the seed {problem} (it is {value})")
     return value
 
 
@@ -438,7 +462,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     edit = commands.add_parser("edit", help="open the editor", description="Open the terminal editor.")
     edit.add_argument("path", help=PROJECT_PATH_HELP)
-    edit.add_argument("--seed", type=int, default=None,
+    edit.add_argument("--seed", type=seed_number, default=None,
                       help="seed the physics jitter for this session (default: the project's seed)")
     allow_outside_option(edit)
     edit.set_defaults(run=cmd_edit)

@@ -156,3 +156,19 @@ def test_render_refuses_latex_source_named_as_another_format(tmp_path, option, n
     assert result.returncode == 1, result.stderr
     assert f"{option} writes LaTeX source; name it .tex" in result.stderr, result.stderr
     assert not (tmp_path / name).exists() and not (tmp_path / "out.pdf").exists()
+
+
+@pytest.mark.parametrize("seed,said", [("-1", "the seed must be at least 0 (it is -1)"),
+                                       ("1" + "0" * 22, "the seed must be at most"),
+                                       ("1.5", "'1.5' is not a whole number")])
+def test_edit_seed_out_of_range_is_a_mistyped_command_line(tmp_path, seed, said, capsys):
+    """`edit --seed -1` (or 10**22) reached the editor and ended in "internal error", exit 70,
+    with a crash log."""
+    from floatpage.model import Page, Project, save_project
+
+    path = tmp_path / "card.toml"
+    save_project(Project(pages=[Page(id="p")]), path)
+    with pytest.raises(SystemExit) as exited:
+        main(["edit", str(path), "--seed", seed])
+    assert exited.value.code == 2
+    assert said in capsys.readouterr().err
