@@ -482,9 +482,14 @@ class EditSession:
         rest = before[:place] + before[place + 1:]
         self.selected_id = rest[min(place, len(rest) - 1)] if rest else None
         freed = ", ".join(f'"{follower.id}"' for follower in followers)
+        # the group's anchor went with its lead, as unsaid as a freed caption was: a moved
+        # group is anchored by its lead, so deleting that member let the rest float away
+        unanchored = (f'; group "{item.group}" is no longer anchored'
+                      if item.group and isinstance(item.anchor, PointAnchor)
+                      and self.page.group_members(item.group) else "")
         return (f'deleted "{item.id}"'
                 + (f"; {freed} no longer follow{'s' if len(followers) == 1 else ''} it"
-                   if followers else "") + " (Ctrl+Z brings it back)")
+                   if followers else "") + unanchored + " (Ctrl+Z brings it back)")
 
     def begin_move(self, item_id: str) -> None:
         """Hold an item (it pushes the others and is not pushed) for a move or a drag."""

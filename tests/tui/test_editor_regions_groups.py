@@ -61,6 +61,11 @@ async def test_an_arrow_on_any_member_moves_the_whole_group(tmp_path):
         assert 'undid move group "head"' in messages(app)
         assert position(app, "sub") == pytest.approx(before["sub"])
         assert item(app, "title").anchor is None
+        await keys(pilot, "ctrl+y")  # and deleting the lead says the group lost its anchor
+        select(app, "title")
+        await keys(pilot, "delete")
+        assert 'deleted "title"; group "head" is no longer anchored (Ctrl+Z brings it back)' \
+            in messages(app)
 
 
 async def test_G_puts_the_selected_item_in_a_group_and_empty_takes_it_out(tmp_path):
