@@ -13,9 +13,9 @@ from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
     Crossing, Limit, NoArrangement, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack,
     TooLarge, binding,
-    page_limits, unexplained_pairs,
+    page_limits, too_large, unexplained_pairs,
 )
-from floatpage.physics.geometry import GUTTER_FITS_COVER, group_extents
+from floatpage.physics.geometry import GUTTER_FITS_COVER
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -33,17 +33,21 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     problems = (quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
                 + len(quality.outside_region))
     name = _namer(page)
-    chains = _chains_past_region(page, bodies)
-    in_chains = {row for rows, _, _, _ in chains for row in rows}
-    lines += ["  " + _chain_sentence(page, chain, name) for chain in chains]
-    # a chain still inside its region is a problem too: the next settle pulls it out
-    problems += sum(not set(rows) & set(quality.outside_region) for rows, _, _, _ in chains)
     limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
-              if not quality.ok else [])
-    too_large = {row for limit in limits if isinstance(limit, TooLarge) for row in limit.rows}
+              if not quality.ok else too_large(bodies, page.width_mm, page.height_mm,
+                                               engine.margin_mm))
+    chains = [limit for limit in limits if _past_lead_region(limit, page)]
+    limits = [limit for limit in limits if not _past_lead_region(limit, page)]
+    in_chains = {row for chain in chains for row in chain.rows}
+    lines += ["  " + _chain_sentence(page, chain, name) for chain in chains]
+    # a group too large for its walls is a problem even where the file keeps them as
+    # written: the next settle squeezes it (geometry.squeezed), so it is not a settled layout
+    problems += (len(chains) + len(limits) if quality.ok
+                 else sum(not set(chain.rows) & set(quality.outside_region) for chain in chains))
+    oversized = {row for limit in limits if isinstance(limit, TooLarge) for row in limit.rows}
     for k in quality.outside_region:
         item = page.items[k]
-        if k in in_chains or k in too_large:  # named below, with what to do: settle cannot
+        if k in in_chains or k in oversized:  # named below, with what to do: settle cannot
             continue
         lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
                      f'"{printable(item.region)}": {SETTLE}, or make the region larger')
@@ -101,36 +105,27 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     return lines, problems
 
 
-def _chains_past_region(page, bodies) -> list[tuple[tuple[int, ...], int, float, float]]:
-    """Items confined to a region whose followers make their rigid group larger than the
-    region, on an axis: (the root and its followers, the axis, the group's extent, the
-    region's), the root first.  The physics keeps a group inside its lead's walls, so such a
-    chain can never sit in the region, and no settle mends it (check used to send the user to
-    `settle`, which then wrote nothing).  Decorations take no part; the region's own edges count,
-    not the margin inside them (the margin gives way, check names that on its own line)."""
-    roots, offsets = bodies.group_roots()
-    low, high = group_extents(bodies, roots, offsets)
-    active = bodies.active
-    found = []
-    for root, item in enumerate(page.items):
-        if not (active[root] and roots[root] == root and item.region) \
-                or not any(region.id == item.region for region in page.regions):
-            continue
-        members = [int(row) for row in range(len(roots))
-                   if roots[row] == root and row != root and active[row]]
-        if not members:
-            continue
-        region = page.region(item.region)
-        for axis, room in ((0, region.w), (1, region.h)):
-            extent = float(high[root, axis] - low[root, axis])
-            if extent > room + 0.01:
-                found.append(((root, *members), axis, extent, float(room)))
-                break
-    return found
+def _past_lead_region(limit: Limit, page) -> bool:
+    """Whether ``limit`` is a lead confined to a region whose followers make its rigid group
+    larger than the region on an axis.  The physics keeps a group inside its lead's walls
+    (geometry.group_room), so such a chain can never sit in the region, and no settle mends it
+    (check used to send the user to `settle`, which then wrote nothing).  Such a chain gets
+    its own sentence (``_chain_sentence``), which names the region's size, not the margin
+    inside it: the margin gives way, and check names that on its own line."""
+    if not isinstance(limit, TooLarge) or len(limit.rows) < 2:
+        return False
+    lead = page.items[limit.rows[0]]
+    if not lead.region or not any(region.id == lead.region for region in page.regions):
+        return False
+    region = page.region(lead.region)
+    return limit.extent_mm > (region.w, region.h)[limit.axis] + 0.01
 
 
-def _chain_sentence(page, chain, name) -> str:
-    rows, axis, extent, room = chain
+def _chain_sentence(page, chain: TooLarge, name) -> str:
+    rows, axis, extent = chain.rows, chain.axis, chain.extent_mm
+    lead = page.items[rows[0]]
+    region = page.region(lead.region)
+    room = (region.w, region.h)[axis]
     root = page.items[rows[0]]
     followers = _some([name(row) for row in rows[1:1 + SHOWN]], len(rows) - 1)
     size_word, across = AXIS_WORDS[axis]

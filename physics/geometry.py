@@ -181,6 +181,29 @@ def group_bounds(bodies: Bodies, rows: np.ndarray, roots: np.ndarray, root_offse
     return lowest, highest
 
 
+def group_room(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray, near: np.ndarray,
+               far: np.ndarray, page_w_mm: float, page_h_mm: float
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest centre of each root, (n, 2) each and indexed by row, that keeps its
+    rigid group inside its walls by the rule ``group_bounds`` applies: the whole group inside
+    its root's walls, and a follower confined to a region inside that region too.  Lowest
+    passes highest where the group is too large for them; ``group_bounds`` then squeezes it
+    (``squeezed``), and physics.page_limits names it (``TooLarge``), so the two can never
+    disagree on which groups fit.  Rows that are not roots get their own item's room."""
+    low, high = group_extents(bodies, roots, root_offsets)
+    extent = np.array([page_w_mm, page_h_mm])
+    lowest = -low + near
+    highest = extent - high - far
+    followers = np.flatnonzero(bodies.active & bodies.followers
+                               & ~np.isnan(bodies.regions[:, 0]))
+    if len(followers):
+        halves = bodies.sizes[followers] / 2
+        offsets = root_offsets[followers]
+        np.maximum.at(lowest, roots[followers], halves - offsets + near[followers])
+        np.minimum.at(highest, roots[followers], extent - halves - offsets - far[followers])
+    return lowest, highest
+
+
 def page_margins(bodies: Bodies, near: np.ndarray) -> np.ndarray:
     """Each row's print-safe margin as the walls ``near`` (Bodies.insets) were drawn at, (n, 1):
     what an unconfined item keeps (none for bleed items), regions aside."""

@@ -5,7 +5,7 @@ a region whose items do not fit makes overlap the last thing to give, never its 
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from floatpage.physics import Engine, Params
@@ -125,3 +125,45 @@ def test_settled_items_never_leave_their_region(seed, count, share_w, share_h):
     quality = engine.quality()
     assert quality.outside_region == ()
     assert quality.off_page == ()
+
+
+@PROPERTIES
+@given(st.lists(st.tuples(st.floats(10, 200), st.floats(10, 287), st.floats(5, 120),
+                          st.floats(5, 160), st.booleans(), st.floats(-150, 150),
+                          st.floats(-200, 200)), min_size=2, max_size=6),
+       st.tuples(st.floats(0, 100), st.floats(0, 150), st.floats(30, 110), st.floats(30, 150)))
+@example([(60, 60, 30, 20, False, 0, 0), (60, 220, 30, 20, False, 0, 160)], (20, 20, 170, 80))
+def test_check_names_a_group_too_large_exactly_where_the_physics_squeezes_it(items, box):
+    """page_limits' TooLarge and the walls the physics holds a group to (geometry.group_bounds)
+    read one rule (geometry.group_room): check said nothing of a confined lead whose follower,
+    outside the region, made the group taller than the region, while the physics held the whole
+    group to the region and squeezed it; and a group check called too large must be one the
+    physics squeezes.  Each item follows the first; the even ones keep to the region."""
+    from floatpage.physics.geometry import group_bounds, group_room
+    from floatpage.physics.page_limits import page_limits
+    from floatpage.physics.limit_kinds import TooLarge
+    left, top, w, h = box
+    region = (left, top, left + w, top + h)
+    engine = Engine(*A4, Params())
+    for k, (x, y, iw, ih, bleed, dx, dy) in enumerate(items):
+        engine.insert(f"i{k}", x, y, iw, ih, bleed=bleed)
+        if k % 2 == 0:
+            engine.confine(f"i{k}", *region)
+        if k:
+            engine.anchor_to(f"i{k}", "i0", dx, dy)
+    bodies = engine.bodies
+    roots, offsets = bodies.group_roots()
+    near, far = bodies.insets(engine.margin_mm, *A4)
+    rows = np.array([0])
+    lowest, highest = group_room(bodies, roots, offsets, near, far, *A4)
+    bounded_low, bounded_high = group_bounds(bodies, rows, roots, offsets, near, far, *A4)
+    named = {limit.axis for limit in page_limits(bodies, *A4, engine.margin_mm, 3.0)
+             if isinstance(limit, TooLarge) and limit.rows[0] == 0}
+    for axis in (0, 1):
+        if lowest[0, axis] <= highest[0, axis]:
+            assert axis not in named
+            assert bounded_low[0, axis] == lowest[0, axis]
+            assert bounded_high[0, axis] == highest[0, axis]
+        elif lowest[0, axis] > highest[0, axis] + 1e-9:
+            assert axis in named
+            assert bounded_low[0, axis] == bounded_high[0, axis]  # squeezed to one place
