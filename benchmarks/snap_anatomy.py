@@ -4,6 +4,7 @@ give up: three measures, each printed as a table.
     .venv/bin/python benchmarks/snap_anatomy.py --probe      # the two snaps of `floatpage settle`
     .venv/bin/python benchmarks/snap_anatomy.py --units      # the snap's time by unit
     .venv/bin/python benchmarks/snap_anatomy.py --variants   # other searches: time, near misses
+    .venv/bin/python benchmarks/snap_anatomy.py --census     # scorings that find what they found
 
 --probe settles guide_cost's pages the `floatpage settle` way (model.layout.settle_project) and
 times each snap the settle asks for (CPU, best of --repeats): the full run's snap, then the
@@ -27,6 +28,12 @@ per item the snap leaves (physics.alignment), summed over the inputs:
 - ``lines last``: sweeps of groups alone until none moves, then the snap as it is.
 
 None of them is the snap: they show what the line moves cost and what they buy.
+
+--census counts, on the same inputs, the scorings (options worked out, not recalled) of a
+group alone and of a line: the first of each (groups, axis), and of the later ones, those that
+found the very answer the last one did (the same moves, gain and flags; "none" if no move
+helps) and those that found another.  A later scoring runs because a move swept its span: a
+certificate that the answer stands would save the ones that found the same.
 """
 
 from __future__ import annotations
@@ -246,18 +253,63 @@ def variants_table(captured, repeats: int) -> None:
         snapping._Snapper.improve, snapping.snap_to_guides = MAIN_IMPROVE, MAIN_SWEEPS
 
 
+def census_table(captured) -> None:
+    counts: dict[str, int] = defaultdict(int)
+    options = snapping._Snapper.options
+    worked_out = [False]
+    real_candidates = snapping.candidate_shifts
+    last: dict[tuple, tuple] = {}
+
+    def candidates(*args):
+        worked_out[0] = True
+        return real_candidates(*args)
+
+    def counted(self, roots, axis):
+        worked_out[0] = False
+        found = options(self, roots, axis)
+        if worked_out[0] and self.tries == snapping.MAX_TRIES:  # not try_lesser's full lists
+            key = (id(self), tuple(sorted(roots)), axis)
+            answer = (found.shifts, found.gain, found.missing, found.lined_up)
+            kind = "a line" if len(roots) > 1 else "a group alone"
+            earlier = last.get(key)
+            if earlier is None:
+                counts[kind, "first"] += 1
+            elif earlier == answer:
+                counts[kind, "same, none" if not found.shifts else "same, moves"] += 1
+            else:
+                counts[kind, "another"] += 1
+            last[key] = answer
+        return found
+
+    snapping.candidate_shifts, snapping._Snapper.options = candidates, counted
+    try:
+        for _, (bodies, *args) in captured:
+            snapping.snap_page(copy.deepcopy(bodies), *args)
+            last.clear()  # one snap at a time: its snapper's id() is the key's first part
+    finally:
+        snapping.candidate_shifts, snapping._Snapper.options = real_candidates, options
+    print("| scoring of | first | same, none | same, moves | another |")
+    print("|---|---|---|---|---|")
+    for kind in ("a group alone", "a line"):
+        print(f"| {kind} | " + " | ".join(f"{counts[kind, what]:,}" for what in (
+            "first", "same, none", "same, moves", "another")) + " |")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--probe", action="store_true")
     parser.add_argument("--units", action="store_true")
     parser.add_argument("--variants", action="store_true")
+    parser.add_argument("--census", action="store_true")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--only", default="", help="only the scenes whose name contains this")
     args = parser.parse_args()
     if args.probe:
         probe_table(args.repeats)
-    if args.units or args.variants:
+    if args.units or args.variants or args.census:
         captured = captured_snaps(args.only, engine_only=True, roomy=True)
+        if args.census:
+            census_table(captured)
         if args.units:
             units_table(captured)
         if args.variants:
