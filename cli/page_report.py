@@ -8,6 +8,8 @@ can fix.  Only a miss nothing explains is sent back to `settle`.
 
 from __future__ import annotations
 
+import numpy as np
+
 from floatpage.model.errors import printable
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
@@ -15,7 +17,7 @@ from floatpage.physics.page_limits import (
     TooLarge, binding,
     page_limits, too_large, unexplained_pairs,
 )
-from floatpage.physics.geometry import GUTTER_FITS_COVER
+from floatpage.physics.geometry import GUTTER_FITS_COVER, room_covers, rooms_of
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -73,31 +75,29 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     if overlapping:
         pairs = _some([f"{name(a)} and {name(b)}" for a, b in overlapping[:SHOWN]],
                       len(overlapping))
-        packed = engine.grown_cover(0.0)
+        packed, room = _tightest_room(page, engine, 0.0)
         if packed > GUTTER_FITS_COVER:
             lines.append(
                 f"  overlapping: {pairs}; the items may not fit on page {page.id} at all: "
-                f"even without the gutter they need {packed:.0%} of the room inside the "
-                f"margins, more than the {GUTTER_FITS_COVER:.0%} rectangles of mixed shapes "
+                f"even without the gutter they need {packed:.0%} of {room}, more than the {GUTTER_FITS_COVER:.0%} rectangles of mixed shapes "
                 "seldom pack tighter than; make items smaller, or move some to another page")
         else:
             lines.append(f"  overlapping: {pairs}; {SETTLE}; if they still "
                          "overlap after it, hard anchors or anchored groups box them in: move "
                          "an anchor, make items smaller, or move some to another page")
     elif loose:
-        need = engine.grown_cover()
+        need, room = _tightest_room(page, engine, gutter_mm)
         if need > GUTTER_FITS_COVER:
             lines.append(
                 f"  note: the {gutter_mm:g} mm gutter may not fit on page {page.id}: its "
-                f"items, each grown by the gutter, need {need:.0%} of the room inside the "
-                f"margins, more than the {GUTTER_FITS_COVER:.0%} up to which settle promises "
+                f"items, each grown by the gutter, need {need:.0%} of {room}, more than the {GUTTER_FITS_COVER:.0%} up to which settle promises "
                 f"it (rectangles of mixed shapes seldom pack tighter), so settle keeps the "
                 f"widest gap it finds; make items smaller, move some to another page or lower "
                 f"gutter_mm or margin_mm to keep it")
         else:
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
-                f"need {need:.0%} of the room inside the margins) but is not kept: {SETTLE}; "
+                f"need {need:.0%} of {room}) but is not kept: {SETTLE}; "
                 f"if a settled page still misses it, its anchors or the "
                 f"order its items lie in jam it: move an anchored item or nudge items apart, "
                 f"and settle again")
@@ -119,6 +119,22 @@ def _past_lead_region(limit: Limit, page) -> bool:
         return False
     region = page.region(lead.region)
     return limit.extent_mm > (region.w, region.h)[limit.axis] + 0.01
+
+
+def _tightest_room(page, engine, gutter_mm: float) -> tuple[float, str]:
+    """How much of its tightest room the page's items need, each grown by ``gutter_mm``
+    (Engine.grown_cover, which is the same number), and how a sentence names that room: a
+    region's, where that is the tightest, since "95 % of the room inside the margins" on a page
+    half empty but for one full region sent the user looking for room that was there."""
+    bodies = engine.bodies
+    near, far = bodies.insets(engine.margin_mm, page.width_mm, page.height_mm)
+    covers = room_covers(bodies, near, far, page.width_mm, page.height_mm, gutter_mm)
+    tightest = int(np.argmax(covers)) if len(covers) else 0
+    if tightest == 0:
+        return (float(covers[0]) if len(covers) else 0.0), "the room inside the margins"
+    row = int(np.flatnonzero(rooms_of(bodies) == tightest)[0])
+    return float(covers[tightest]), (f'the room of region "{printable(page.items[row].region)}"'
+                                     " that items which cannot move leave")
 
 
 def _chain_sentence(page, chain: TooLarge, name) -> str:

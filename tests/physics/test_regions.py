@@ -5,11 +5,13 @@ a region whose items do not fit makes overlap the last thing to give, never its 
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from floatpage.physics import Engine, Params
 from floatpage.physics.bodies import Bodies
+from floatpage.physics.geometry import room_covers
 from floatpage.physics.guides import page_lines
 from floatpage.physics.quality import MARGIN_TOLERANCE_MM
 
@@ -167,3 +169,28 @@ def test_check_names_a_group_too_large_exactly_where_the_physics_squeezes_it(ite
         elif lowest[0, axis] > highest[0, axis] + 1e-9:
             assert axis in named
             assert bounded_low[0, axis] == bounded_high[0, axis]  # squeezed to one place
+
+
+def test_a_regions_room_is_what_items_that_cannot_move_leave_of_it():
+    """A header hard-anchored across the top of a region of photos takes that part of the
+    region from them: the photos' room is the rest.  Fresh project seed 7088 crammed ten
+    photos into what a header left, and check called the page 70 % full, "run settle", where
+    the photos needed 95 % of their room; a soft-anchored item can move away and takes none."""
+    region = (0.0, 0.0, 210.0, 150.0)
+    photos = [(40 + 60 * (k % 3), 100 + 30 * (k // 3), 50, 20) for k in range(6)]
+    items = [(105, 25, 210, 50), (105, 60, 30, 10), *photos]
+    engine = engine_with(items, [None, None] + [region] * 6, Params(gutter_mm=0.0))
+
+    def photos_cover():  # the region's room: the page's own comes first (room_covers)
+        near, far = engine.bodies.insets(engine.margin_mm, *A4)
+        return room_covers(engine.bodies, near, far, *A4, 0.0)[1]
+
+    free = photos_cover()
+    engine.anchor_point("i1", 105, 60, hard=False, gamma=0.5)  # soft: takes no room
+    assert photos_cover() == free
+    engine.anchor_point("i0", 105, 25, hard=True)
+    photo_area = 6 * 50 * 20
+    room = (210 - 2 * engine.margin_mm) * (150 - engine.margin_mm)  # the margin at three sides
+    header = (210 - 2 * engine.margin_mm) * (50 - engine.margin_mm)
+    assert free == pytest.approx(photo_area / room)
+    assert photos_cover() == pytest.approx(photo_area / (room - header))
