@@ -148,7 +148,9 @@ def taken_by(bodies: Bodies, rows: np.ndarray, low: np.ndarray, high: np.ndarray
     corners), grown by half the gutter on each side, that ``rows``' boxes, grown the same way,
     cover: room the room's own items cannot use.  A header hard-anchored across a page's top,
     in a region of photos, takes a quarter of it: fresh project seed 7088 crammed ten photos
-    into what was left and check called the page roomy (70 %) where it was full (95 %)."""
+    into what was left and check called the page roomy (70 %) where it was full (95 %).
+    Pinned items that overlap each other count twice here; they clash, which check names on
+    its own (page_limits.PinnedClash)."""
     if not len(rows):
         return 0.0
     half = bodies.sizes[rows] / 2 + gutter_mm / 2
