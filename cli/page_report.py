@@ -8,14 +8,16 @@ can fix.  Only a miss nothing explains is sent back to `settle`.
 
 from __future__ import annotations
 
+import numpy as np
+
 from floatpage.model.errors import printable
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
     Crossing, Limit, NoArrangement, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack,
     TooLarge, binding,
-    page_limits, unexplained_pairs,
+    page_limits, too_large, unexplained_pairs,
 )
-from floatpage.physics.geometry import GUTTER_FITS_COVER, group_extents
+from floatpage.physics.geometry import GUTTER_FITS_COVER, room_covers, rooms_of
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -33,17 +35,21 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     problems = (quality.overlap_count + len(quality.off_page) + len(quality.in_margin)
                 + len(quality.outside_region))
     name = _namer(page)
-    chains = _chains_past_region(page, bodies)
-    in_chains = {row for rows, _, _, _ in chains for row in rows}
-    lines += ["  " + _chain_sentence(page, chain, name) for chain in chains]
-    # a chain still inside its region is a problem too: the next settle pulls it out
-    problems += sum(not set(rows) & set(quality.outside_region) for rows, _, _, _ in chains)
     limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
-              if not quality.ok else [])
-    too_large = {row for limit in limits if isinstance(limit, TooLarge) for row in limit.rows}
+              if not quality.ok else too_large(bodies, page.width_mm, page.height_mm,
+                                               engine.margin_mm))
+    chains = [limit for limit in limits if _past_lead_region(limit, page)]
+    limits = [limit for limit in limits if not _past_lead_region(limit, page)]
+    in_chains = {row for chain in chains for row in chain.rows}
+    lines += ["  " + _chain_sentence(page, chain, name) for chain in chains]
+    # a group too large for its walls is a problem even where the file keeps them as
+    # written: the next settle squeezes it (geometry.squeezed), so it is not a settled layout
+    problems += (len(chains) + len(limits) if quality.ok
+                 else sum(not set(chain.rows) & set(quality.outside_region) for chain in chains))
+    oversized = {row for limit in limits if isinstance(limit, TooLarge) for row in limit.rows}
     for k in quality.outside_region:
         item = page.items[k]
-        if k in in_chains or k in too_large:  # named below, with what to do: settle cannot
+        if k in in_chains or k in oversized:  # named below, with what to do: settle cannot
             continue
         lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
                      f'"{printable(item.region)}": {SETTLE}, or make the region larger')
@@ -69,31 +75,29 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     if overlapping:
         pairs = _some([f"{name(a)} and {name(b)}" for a, b in overlapping[:SHOWN]],
                       len(overlapping))
-        packed = engine.grown_cover(0.0)
+        packed, room = _tightest_room(page, engine, 0.0)
         if packed > GUTTER_FITS_COVER:
             lines.append(
                 f"  overlapping: {pairs}; the items may not fit on page {page.id} at all: "
-                f"even without the gutter they need {packed:.0%} of the room inside the "
-                f"margins, more than the {GUTTER_FITS_COVER:.0%} rectangles of mixed shapes "
+                f"even without the gutter they need {packed:.0%} of {room}, more than the {GUTTER_FITS_COVER:.0%} rectangles of mixed shapes "
                 "seldom pack tighter than; make items smaller, or move some to another page")
         else:
             lines.append(f"  overlapping: {pairs}; {SETTLE}; if they still "
                          "overlap after it, hard anchors or anchored groups box them in: move "
                          "an anchor, make items smaller, or move some to another page")
     elif loose:
-        need = engine.grown_cover()
+        need, room = _tightest_room(page, engine, gutter_mm)
         if need > GUTTER_FITS_COVER:
             lines.append(
                 f"  note: the {gutter_mm:g} mm gutter may not fit on page {page.id}: its "
-                f"items, each grown by the gutter, need {need:.0%} of the room inside the "
-                f"margins, more than the {GUTTER_FITS_COVER:.0%} up to which settle promises "
+                f"items, each grown by the gutter, need {need:.0%} of {room}, more than the {GUTTER_FITS_COVER:.0%} up to which settle promises "
                 f"it (rectangles of mixed shapes seldom pack tighter), so settle keeps the "
                 f"widest gap it finds; make items smaller, move some to another page or lower "
                 f"gutter_mm or margin_mm to keep it")
         else:
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
-                f"need {need:.0%} of the room inside the margins) but is not kept: {SETTLE}; "
+                f"need {need:.0%} of {room}) but is not kept: {SETTLE}; "
                 f"if a settled page still misses it, its anchors or the "
                 f"order its items lie in jam it: move an anchored item or nudge items apart, "
                 f"and settle again")
@@ -101,36 +105,43 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     return lines, problems
 
 
-def _chains_past_region(page, bodies) -> list[tuple[tuple[int, ...], int, float, float]]:
-    """Items confined to a region whose followers make their rigid group larger than the
-    region, on an axis: (the root and its followers, the axis, the group's extent, the
-    region's), the root first.  The physics keeps a group inside its lead's walls, so such a
-    chain can never sit in the region, and no settle mends it (check used to send the user to
-    `settle`, which then wrote nothing).  Decorations take no part; the region's own edges count,
-    not the margin inside them (the margin gives way, check names that on its own line)."""
-    roots, offsets = bodies.group_roots()
-    low, high = group_extents(bodies, roots, offsets)
-    active = bodies.active
-    found = []
-    for root, item in enumerate(page.items):
-        if not (active[root] and roots[root] == root and item.region) \
-                or not any(region.id == item.region for region in page.regions):
-            continue
-        members = [int(row) for row in range(len(roots))
-                   if roots[row] == root and row != root and active[row]]
-        if not members:
-            continue
-        region = page.region(item.region)
-        for axis, room in ((0, region.w), (1, region.h)):
-            extent = float(high[root, axis] - low[root, axis])
-            if extent > room + 0.01:
-                found.append(((root, *members), axis, extent, float(room)))
-                break
-    return found
+def _past_lead_region(limit: Limit, page) -> bool:
+    """Whether ``limit`` is a lead confined to a region whose followers make its rigid group
+    larger than the region on an axis.  The physics keeps a group inside its lead's walls
+    (geometry.group_room), so such a chain can never sit in the region, and no settle mends it
+    (check used to send the user to `settle`, which then wrote nothing).  Such a chain gets
+    its own sentence (``_chain_sentence``), which names the region's size, not the margin
+    inside it: the margin gives way, and check names that on its own line."""
+    if not isinstance(limit, TooLarge) or len(limit.rows) < 2:
+        return False
+    lead = page.items[limit.rows[0]]
+    if not lead.region or not any(region.id == lead.region for region in page.regions):
+        return False
+    region = page.region(lead.region)
+    return limit.extent_mm > (region.w, region.h)[limit.axis] + 0.01
 
 
-def _chain_sentence(page, chain, name) -> str:
-    rows, axis, extent, room = chain
+def _tightest_room(page, engine, gutter_mm: float) -> tuple[float, str]:
+    """How much of its tightest room the page's items need, each grown by ``gutter_mm``
+    (Engine.grown_cover, which is the same number), and how a sentence names that room: a
+    region's, where that is the tightest, since "95 % of the room inside the margins" on a page
+    half empty but for one full region sent the user looking for room that was there."""
+    bodies = engine.bodies
+    near, far = bodies.insets(engine.margin_mm, page.width_mm, page.height_mm)
+    covers = room_covers(bodies, near, far, page.width_mm, page.height_mm, gutter_mm)
+    tightest = int(np.argmax(covers)) if len(covers) else 0
+    if tightest == 0:
+        return (float(covers[0]) if len(covers) else 0.0), "the room inside the margins"
+    row = int(np.flatnonzero(rooms_of(bodies) == tightest)[0])
+    return float(covers[tightest]), (f'the room of region "{printable(page.items[row].region)}"'
+                                     " that items which cannot move leave")
+
+
+def _chain_sentence(page, chain: TooLarge, name) -> str:
+    rows, axis, extent = chain.rows, chain.axis, chain.extent_mm
+    lead = page.items[rows[0]]
+    region = page.region(lead.region)
+    room = (region.w, region.h)[axis]
     root = page.items[rows[0]]
     followers = _some([name(row) for row in rows[1:1 + SHOWN]], len(rows) - 1)
     size_word, across = AXIS_WORDS[axis]

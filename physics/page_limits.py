@@ -47,7 +47,7 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import candidate_pairs
 from floatpage.physics.finalize import pair_clearances
-from floatpage.physics.geometry import group_extents, rooms_of
+from floatpage.physics.geometry import group_extents, group_room, rooms_of
 from floatpage.physics.limit_kinds import (  # the records, for the modules that read them
     CROSSING_BLOCK, GAP_LIMITS, LISTED, TOLERANCE_MM, WIDEST_GAP_SLACK_MM, Crossing, Limit,
     NoArrangement, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack, TooLarge,
@@ -250,22 +250,17 @@ def _standing_outside(bodies: Bodies, pinned: np.ndarray, near: np.ndarray, far:
 def _too_large(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray, pinned: np.ndarray,
                near: np.ndarray, far: np.ndarray, page_w_mm: float, page_h_mm: float
                ) -> list[Limit]:
-    """Groups (and lone items) that no shift keeps inside their walls on an axis: the walls
-    of every member count, as each keeps its own (a bleed member none, a confined one its
-    region's)."""
+    """Groups (and lone items) that no shift keeps inside their walls on an axis, by the rule
+    the physics holds them to (geometry.group_room): the whole group inside its root's walls,
+    a confined follower inside its region as well.  A confined photo whose caption follows it
+    160 mm below can never sit in an 80 mm region, though the caption itself keeps no region:
+    the physics holds the caption there with it."""
     low, high = group_extents(bodies, roots, offsets)
+    lowest, highest = group_room(bodies, roots, offsets, near, far, page_w_mm, page_h_mm)
     extent = np.array([page_w_mm, page_h_mm])
-    member_low = offsets - bodies.sizes / 2  # each row's edges relative to its root's centre
-    member_high = offsets + bodies.sizes / 2
-    count = bodies.count
-    # The shift of the root's centre each member's walls allow: from lowest to highest.
-    lowest = np.full((count, 2), -np.inf)
-    highest = np.full((count, 2), np.inf)
     active = bodies.active
-    np.maximum.at(lowest, roots[active], near[active] - member_low[active])
-    np.minimum.at(highest, roots[active], extent - far[active] - member_high[active])
     found: list[Limit] = []
-    groups = np.flatnonzero(active & (roots == np.arange(count)) & ~pinned)
+    groups = np.flatnonzero(active & (roots == np.arange(bodies.count)) & ~pinned)
     for axis in (0, 1):
         short = groups[lowest[groups, axis] > highest[groups, axis] + TOLERANCE_MM]
         for root in short:
@@ -276,6 +271,17 @@ def _too_large(bodies: Bodies, roots: np.ndarray, offsets: np.ndarray, pinned: n
             found.append(TooLarge(tuple(int(m) for m in members), axis, size, room,
                                   float(extent[axis])))
     return found
+
+
+def too_large(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: float
+              ) -> list[Limit]:
+    """Only the groups too large for their walls (``TooLarge``), which `check` names even on a
+    page that keeps every guarantee as written: the next settle would squeeze such a group
+    (geometry.squeezed), so the file is not a layout settle keeps."""
+    roots, offsets = bodies.group_roots()
+    near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
+    return _too_large(bodies, roots, offsets, _pinned(bodies, roots), near, far,
+                      page_w_mm, page_h_mm)
 
 
 def _crossings(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray, near: np.ndarray,

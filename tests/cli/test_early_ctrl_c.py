@@ -30,7 +30,9 @@ def test_ctrl_c_during_the_imports_reads_interrupted_and_leaves_the_file(tmp_pat
     before = path.read_bytes()
     settled = tmp_path / "settled.toml"
     settled.write_bytes(before)
+    started = time.monotonic()
     subprocess.run([FLOATPAGE, "settle", str(settled)], check=True, capture_output=True)
+    whole_run_s = time.monotonic() - started
     outcomes = []
     for delay in DELAYS_S:
         command = subprocess.Popen([FLOATPAGE, "settle", str(path)], stdout=subprocess.PIPE,
@@ -49,4 +51,8 @@ def test_ctrl_c_during_the_imports_reads_interrupted_and_leaves_the_file(tmp_pat
         # the save, kills it with -2) as the whole settle left it
         assert path.read_bytes() in (before, settled.read_bytes()), (delay, command.returncode)
         path.write_bytes(before)
-    assert sum(code == 130 for _, code, _ in outcomes) >= len(DELAYS_S) // 2, outcomes
+    # a Ctrl+C well before the run could have ended must be the rule: on a quiet machine the
+    # whole settle took under 0.15 s once, and those past its end exited 0, as they may
+    early = [code for delay, code, _ in outcomes if delay < whole_run_s / 2]
+    assert len(early) >= 3, (whole_run_s, outcomes)
+    assert sum(code == 130 for code in early) >= len(early) // 2, (whole_run_s, outcomes)

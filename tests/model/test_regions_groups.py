@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from floatpage.model import load_project, save_project
-from floatpage.model.document import BlockItem, Page, Project, Region
+from floatpage.model.document import BlockItem, Page, PointAnchor, Project, Region
 from floatpage.model.errors import ProjectFileError
 from floatpage.model.layout import settle_project
 
@@ -331,3 +331,22 @@ def test_check_tells_a_group_too_tall_for_a_members_region_what_to_do_not_to_set
     assert "move the group's members closer together, make the region larger" in result.stdout
     assert "settle" not in result.stdout.replace("no settle", ""), result.stdout
     assert "dx and dy" not in result.stdout and "print-safe" not in result.stdout
+
+
+def test_check_measures_a_region_by_the_room_a_hard_anchored_header_leaves_it(tmp_path):
+    """Photos confined to a region whose top a hard-anchored header fills: check called such a
+    page (fresh project seed 7088) 70 % full and sent the user to settle, which could not part
+    them; they need 89 % of what the header leaves, and check names that room and the region."""
+    photos = [BlockItem(id=f"photo{k}", x=30.0 + 4 * k, y=70.0 + 3 * k, w=42.0, h=34.0,
+                        color="#3366aa", region="photos") for k in range(7)]
+    header = BlockItem(id="header", x=74.0, y=20.0, w=148.0, h=40.0, color="#aa3333",
+                       bleed=True, anchor=PointAnchor(x=74.0, y=20.0, hard=True))
+    page = Page(id="front", size="A5", width_mm=148.0, height_mm=210.0,
+                regions=[Region(id="photos", left=0.0, top=0.0, w=148.0, h=120.0)],
+                items=[header, *photos])
+    path = tmp_path / "crammed.toml"
+    save_project(Project(title="Crammed", pages=[page]), path)
+    result = floatpage("check", str(path))
+    assert ('even without the gutter they need 89% of the room of region "photos" that items '
+            "which cannot move leave") in result.stdout, result.stdout
+    assert "floatpage settle" not in result.stdout, result.stdout

@@ -5,11 +5,13 @@ a region whose items do not fit makes overlap the last thing to give, never its 
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import HealthCheck, given, settings
+import pytest
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from floatpage.physics import Engine, Params
 from floatpage.physics.bodies import Bodies
+from floatpage.physics.geometry import room_covers
 from floatpage.physics.guides import page_lines
 from floatpage.physics.quality import MARGIN_TOLERANCE_MM
 
@@ -125,3 +127,70 @@ def test_settled_items_never_leave_their_region(seed, count, share_w, share_h):
     quality = engine.quality()
     assert quality.outside_region == ()
     assert quality.off_page == ()
+
+
+@PROPERTIES
+@given(st.lists(st.tuples(st.floats(10, 200), st.floats(10, 287), st.floats(5, 120),
+                          st.floats(5, 160), st.booleans(), st.floats(-150, 150),
+                          st.floats(-200, 200)), min_size=2, max_size=6),
+       st.tuples(st.floats(0, 100), st.floats(0, 150), st.floats(30, 110), st.floats(30, 150)))
+@example([(60, 60, 30, 20, False, 0, 0), (60, 220, 30, 20, False, 0, 160)], (20, 20, 170, 80))
+def test_check_names_a_group_too_large_exactly_where_the_physics_squeezes_it(items, box):
+    """page_limits' TooLarge and the walls the physics holds a group to (geometry.group_bounds)
+    read one rule (geometry.group_room): check said nothing of a confined lead whose follower,
+    outside the region, made the group taller than the region, while the physics held the whole
+    group to the region and squeezed it; and a group check called too large must be one the
+    physics squeezes.  Each item follows the first; the even ones keep to the region."""
+    from floatpage.physics.geometry import group_bounds, group_room
+    from floatpage.physics.page_limits import page_limits
+    from floatpage.physics.limit_kinds import TooLarge
+    left, top, w, h = box
+    region = (left, top, left + w, top + h)
+    engine = Engine(*A4, Params())
+    for k, (x, y, iw, ih, bleed, dx, dy) in enumerate(items):
+        engine.insert(f"i{k}", x, y, iw, ih, bleed=bleed)
+        if k % 2 == 0:
+            engine.confine(f"i{k}", *region)
+        if k:
+            engine.anchor_to(f"i{k}", "i0", dx, dy)
+    bodies = engine.bodies
+    roots, offsets = bodies.group_roots()
+    near, far = bodies.insets(engine.margin_mm, *A4)
+    rows = np.array([0])
+    lowest, highest = group_room(bodies, roots, offsets, near, far, *A4)
+    bounded_low, bounded_high = group_bounds(bodies, rows, roots, offsets, near, far, *A4)
+    named = {limit.axis for limit in page_limits(bodies, *A4, engine.margin_mm, 3.0)
+             if isinstance(limit, TooLarge) and limit.rows[0] == 0}
+    for axis in (0, 1):
+        if lowest[0, axis] <= highest[0, axis]:
+            assert axis not in named
+            assert bounded_low[0, axis] == lowest[0, axis]
+            assert bounded_high[0, axis] == highest[0, axis]
+        elif lowest[0, axis] > highest[0, axis] + 1e-9:
+            assert axis in named
+            assert bounded_low[0, axis] == bounded_high[0, axis]  # squeezed to one place
+
+
+def test_a_regions_room_is_what_items_that_cannot_move_leave_of_it():
+    """A header hard-anchored across the top of a region of photos takes that part of the
+    region from them: the photos' room is the rest.  Fresh project seed 7088 crammed ten
+    photos into what a header left, and check called the page 70 % full, "run settle", where
+    the photos needed 95 % of their room; a soft-anchored item can move away and takes none."""
+    region = (0.0, 0.0, 210.0, 150.0)
+    photos = [(40 + 60 * (k % 3), 100 + 30 * (k // 3), 50, 20) for k in range(6)]
+    items = [(105, 25, 210, 50), (105, 60, 30, 10), *photos]
+    engine = engine_with(items, [None, None] + [region] * 6, Params(gutter_mm=0.0))
+
+    def photos_cover():  # the region's room: the page's own comes first (room_covers)
+        near, far = engine.bodies.insets(engine.margin_mm, *A4)
+        return room_covers(engine.bodies, near, far, *A4, 0.0)[1]
+
+    free = photos_cover()
+    engine.anchor_point("i1", 105, 60, hard=False, gamma=0.5)  # soft: takes no room
+    assert photos_cover() == free
+    engine.anchor_point("i0", 105, 25, hard=True)
+    photo_area = 6 * 50 * 20
+    room = (210 - 2 * engine.margin_mm) * (150 - engine.margin_mm)  # the margin at three sides
+    header = (210 - 2 * engine.margin_mm) * (50 - engine.margin_mm)
+    assert free == pytest.approx(photo_area / room)
+    assert photos_cover() == pytest.approx(photo_area / (room - header))
