@@ -68,7 +68,7 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
     doc), most binding first within each kind.  Decorations take no part."""
     roots, offsets = bodies.group_roots()
     near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
-    pinned = pinned_rows(bodies, roots)
+    pinned = pinned_items(bodies, roots)
     found: list[Limit] = []
     found += _pinned_clashes(bodies, roots, pinned, gutter_mm)
     found += _standing_outside(bodies, pinned, near, far, page_w_mm, page_h_mm)
@@ -143,7 +143,7 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
     28.6 mm into one of them, and the clash was given as the reason.  Closest first, at most
     LISTED."""
     roots, _ = bodies.group_roots()
-    pinned = pinned_rows(bodies, roots)
+    pinned = pinned_items(bodies, roots)
     count = bodies.count
     named: list[int] = []  # pairs as a * count + b, a < b
     for limit in limits:
@@ -177,7 +177,7 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
     return close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter_mm, unexplained)
 
 
-def pinned_rows(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
+def pinned_items(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
     """Rows that no push moves: hard anchors and held items, and everything following one or
     following a decoration (a decoration is never moved, so neither is a caption set beside
     it: on a random page one stood past the page's edge, another 6.5 mm into a hard anchor)."""
@@ -285,7 +285,7 @@ def too_large(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: flo
     (geometry.squeezed), so the file is not a layout settle keeps."""
     roots, offsets = bodies.group_roots()
     near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
-    return _too_large(bodies, roots, offsets, pinned_rows(bodies, roots), near, far,
+    return _too_large(bodies, roots, offsets, pinned_items(bodies, roots), near, far,
                       page_w_mm, page_h_mm)
 
 

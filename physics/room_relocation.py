@@ -16,7 +16,7 @@ from floatpage.physics.finalize import (
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER, room_covers, rooms_of
 from floatpage.physics.page_limits import (
-    WIDEST_GAP_SLACK_MM, capping, page_limits, pinned_rows, room_caps, unexplained_pairs,
+    WIDEST_GAP_SLACK_MM, capping, page_limits, pinned_items, room_caps, unexplained_pairs,
 )
 from floatpage.physics.relocation import (
     MAX_ITEMS as RELOCATE_MAX_ITEMS, placed_anew, relocate_jammed,
@@ -66,7 +66,7 @@ class RoomRelocation:
         bodies = self._bodies
         gutter = self.params.gutter_mm
         roots, _ = bodies.group_roots()
-        pinned = pinned_rows(bodies, roots)
+        pinned = pinned_items(bodies, roots)
         search = search_of(bodies, pinned, self.margin_mm, self.page_w_mm, self.page_h_mm,
                            gutter)
         if search is None:
@@ -96,7 +96,7 @@ class RoomRelocation:
         the deepest overlap); inf with none."""
         bodies = self._bodies
         roots, _ = bodies.group_roots()
-        pinned = pinned_rows(bodies, roots)
+        pinned = pinned_items(bodies, roots)
         rows = np.flatnonzero(bodies.active)
         i, j = np.triu_indices(len(rows), 1)
         i, j = rows[i], rows[j]
