@@ -322,8 +322,8 @@ def _no_arrangement_sentence(limit: NoArrangement, name, gutter_mm: float) -> st
         elif limit.fits_page:
             fate = "they can be parted only by giving up the margin"
         else:
-            fate = (f"they overlap wherever they go on this page, by at least "
-                    f"{-limit.widest_gap_mm:.1f} mm")
+            fate = (f"they overlap wherever they go on this page, inside the margins by at "
+                    f"least {-limit.widest_gap_mm:.1f} mm")
         advice = ("move one of the anchors or make one soft (hard = false), " if limit.pinned
                   else "")
         return (f"items {who} cannot all stand {gutter_mm:g} mm apart{around}, each inside "

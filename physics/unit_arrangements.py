@@ -35,7 +35,14 @@ from floatpage.physics.arrangements import OutOfBudget
 
 MAX_MEMBERS = 10  # free members (the rows of all units) searched at most
 MAX_OBSTACLES = 12  # pinned items near enough to matter, at most
-NODE_BUDGET = 60_000  # relations tried in one search before it gives up
+# relations tried in one search before it gives up (about 1 s of CPU at ten members)
+NODE_BUDGET = 40_000
+# A search's answer depends only on the sizes, the walls, the pinned items and the gap, never
+# on where the free items lie, and a settle asks the same page's question again and again
+# (page_limits in each relocation and each probe, then _arrange_units): the answers are kept,
+# the last MEMO_SIZE of them.  One that ran out of budget cost 1-4 s a settle on seeds 12 and
+# 36 of fresh_projects, twelve times over.
+MEMO_SIZE = 64
 GAP_STEPS = 14  # bisection steps for the widest gap (0.006 mm on 100 mm)
 EPSILON = 1e-9
 
@@ -51,8 +58,34 @@ class Units(NamedTuple):
     highest: np.ndarray
 
 
+_memo: dict[bytes, np.ndarray | None | type] = {}
+
+
 def unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
                      gap: float, centre: bool = False) -> np.ndarray | None:
+    """_unit_arrangement (below), its answers kept (MEMO_SIZE): the same numbers give the same
+    answer, so a kept one is the one a search would find."""
+    key = b"".join(np.ascontiguousarray(part, dtype=float).tobytes() for part in
+                   (units.owner, units.offsets, units.halves, units.lowest, units.highest,
+                    obstacle_centres, obstacle_halves, [gap, float(centre),
+                                                        len(units.owner), len(obstacle_centres)]))
+    if key in _memo:
+        found = _memo[key]
+    else:
+        try:
+            found = _unit_arrangement(units, obstacle_centres, obstacle_halves, gap, centre)
+        except OutOfBudget:
+            found = OutOfBudget
+        if len(_memo) >= MEMO_SIZE:
+            del _memo[next(iter(_memo))]
+        _memo[key] = found
+    if found is OutOfBudget:
+        raise OutOfBudget
+    return None if found is None else found.copy()
+
+
+def _unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
+                      gap: float, centre: bool = False) -> np.ndarray | None:
     """Root centres (u, 2) at which every member of each unit keeps ``gap`` (negative: overlaps
     by at most that much) from every member of another unit and from every obstacle, each root
     inside its walls; None where there is none.  Each unit stands as far up and left as the
@@ -107,6 +140,8 @@ def unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves
                 return None
             choices.append(ways)
     choices.sort(key=len)
+    involved = [{unit for way in ways for unit in ((way[2], way[3]) if way[0] == "edge"
+                                                   else (way[2],))} for ways in choices]
     lows = [units.lowest[:, 0].tolist(), units.lowest[:, 1].tolist()]
     ups = [units.highest[:, 0].tolist(), units.highest[:, 1].tolist()]
     after: list[list[list[tuple[int, float]]]] = [[[] for _ in range(count)] for _ in (0, 1)]
@@ -178,8 +213,14 @@ def unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves
             if spent[0] > NODE_BUDGET:
                 raise OutOfBudget
             fits, raised, lowered = apply(way)
-            fits = fits and all(any(room_left(other) >= -EPSILON for other in later)
-                                for later in choices[index + 1:])
+            # every pair still to place keeps a way that fits: only those of a unit whose
+            # bounds just moved can have lost theirs (the rest were checked before)
+            touched = {unit for _, unit, _ in raised}
+            if lowered is not None:
+                touched.add(lowered[1])
+            fits = fits and all(any(room_left(other) >= -EPSILON for other in choices[later])
+                                for later in range(index + 1, len(choices))
+                                if not touched.isdisjoint(involved[later]))
             if fits:
                 taken.append(way)
                 if search(index + 1):
