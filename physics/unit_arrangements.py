@@ -7,8 +7,8 @@ with a hard-anchored photo, a header that may only slide down and a photo with i
 has none of that, and the limits that do see pinned items (physics.room_limits.no_room, one
 unit among the pinned ones; physics.pinned_rows, one row) each look at one unit or one row:
 on fresh_projects seed 7031 a group, two photos and a header beside a hard anchor overlapped
-by 28.8 mm, each alone had room, and `check` sent the page back to `settle`, which no settle
-mends.
+by 28.8 mm, each alone had room, and `check` sent the page back to `settle`, though no
+layout keeps them less than 4.8 mm into each other.
 
 The search is the one of physics.arrangements, on unit positions (each unit's root centre):
 two members of different units keep the gap when one stands at least the gap beside or above
