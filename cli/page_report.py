@@ -344,6 +344,23 @@ def _pinned_stack_sentence(limit: PinnedStack, name, gutter_mm: float) -> str:
 def _no_arrangement_sentence(limit: NoArrangement, name, gutter_mm: float) -> str:
     who = _some([name(row) for row in limit.rows[:SHOWN]], len(limit.rows))
     width, height = limit.room_mm
+    if limit.units:  # physics.unit_arrangements: around pinned items, with groups, regions
+        around = (f" around the items that cannot move "
+                  f"({_some([name(row) for row in limit.pinned[:SHOWN]], len(limit.pinned))})"
+                  if limit.pinned else "")
+        if limit.widest_gap_mm >= 0:
+            fate = f"the widest gap they can all keep is {limit.widest_gap_mm:.1f} mm"
+        elif limit.fits_page:
+            fate = "they can be parted only by giving up the margin"
+        else:
+            fate = (f"they overlap wherever they go on this page, inside the margins by at "
+                    f"least {-limit.widest_gap_mm:.1f} mm")
+        advice = ("move one of the anchors or make one soft (hard = false), " if limit.pinned
+                  else "")
+        return (f"items {who} cannot all stand {gutter_mm:g} mm apart{around}, each inside "
+                f"its walls, whichever way each stands beside or above another and beside or "
+                f"above those (every such arrangement was tried, groups moving as one); "
+                f"{fate}; {advice}make one smaller, or move one to another page")
     return (f"items {who} cannot all stand {gutter_mm:g} mm apart in the {width:.1f} x "
             f"{height:.1f} mm inside the margins, whichever way each stands beside or above "
             f"another (every such arrangement was tried); "

@@ -84,11 +84,10 @@ class NoArrangement:
     room_mm: tuple[float, float]  # inside the margins
     widest_gap_mm: float  # the widest gap they can all keep inside the margins (< 0: overlap)
     fits_page: bool  # whether they can be parted at all if the margins give way
-
-
-Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack,
-              NoArrangement]
-GAP_LIMITS = (Crossing, Stack, NoRoom, PinnedStack, NoArrangement)  # with a widest_gap_mm
+    pinned: tuple[int, ...] = ()  # the items that cannot move they must stand around
+    # found by physics.unit_arrangements (units, pinned items, regions): it explains a pair
+    # down to its widest gap only, not at any depth, since a settle sets the units down there
+    units: bool = False
 
 
 Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack,

@@ -27,7 +27,9 @@ that no settle will help, and what to change instead:
   rooms, leave no place for (physics.pinned_rows, exact for the row);
 - ``NoArrangement``: a page of a few free items (physics.arrangements: at most six) that no
   arrangement keeps the gutter apart inside the margins, where no limit above says so (an
-  exact search of every way of placing each beside or above another).
+  exact search of every way of placing each beside or above another); or a few free units
+  (groups too) around items that cannot move, or in regions (physics.unit_arrangements: at
+  most ten members), the same search with the pinned items as bounds.
 
 A limit caps the gap of its own room only (``rooms_of``: each region, and the free items):
 what the items of one region rule out says nothing of another's.
@@ -54,7 +56,7 @@ from floatpage.physics.limit_kinds import (  # the records, for the modules that
     block_clearances,
 )
 from floatpage.physics.quality import sweep_candidates
-from floatpage.physics.room_limits import no_arrangement, no_room
+from floatpage.physics.room_limits import no_arrangement, no_room, no_unit_arrangement
 from floatpage.physics.stack_limits import pinned_stacks, stacks
 
 SWEEP_BUDGET = 10_000_000  # neighbour-search candidates (about 300 MB) before blocks instead
@@ -66,7 +68,7 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
     doc), most binding first within each kind.  Decorations take no part."""
     roots, offsets = bodies.group_roots()
     near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
-    pinned = _pinned(bodies, roots)
+    pinned = pinned_items(bodies, roots)
     found: list[Limit] = []
     found += _pinned_clashes(bodies, roots, pinned, gutter_mm)
     found += _standing_outside(bodies, pinned, near, far, page_w_mm, page_h_mm)
@@ -80,6 +82,9 @@ def page_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: f
                                page_w_mm, page_h_mm, gutter_mm)
     found += no_arrangement(bodies, roots, pinned, near, far, page_w_mm, page_h_mm, gutter_mm,
                             widest_gap(found))
+    if not any(isinstance(limit, (NoArrangement, TooLarge)) for limit in found):
+        found += no_unit_arrangement(bodies, pinned, margin_mm, page_w_mm, page_h_mm,
+                                     gutter_mm, widest_gap(found))
     return found
 
 
@@ -138,13 +143,13 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
     28.6 mm into one of them, and the clash was given as the reason.  Closest first, at most
     LISTED."""
     roots, _ = bodies.group_roots()
-    pinned = _pinned(bodies, roots)
+    pinned = pinned_items(bodies, roots)
     count = bodies.count
     named: list[int] = []  # pairs as a * count + b, a < b
     for limit in limits:
         if isinstance(limit, Crossing):
             named.append(limit.rows[0] * count + limit.rows[1])
-        elif isinstance(limit, NoArrangement):
+        elif isinstance(limit, NoArrangement) and not limit.units:
             named += [a * count + b for a in limit.rows for b in limit.rows if a < b]
         elif isinstance(limit, Stack):  # a solid group stands in it by its root
             members = np.flatnonzero(np.isin(roots, limit.rows))
@@ -172,7 +177,7 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
     return close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter_mm, unexplained)
 
 
-def _pinned(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
+def pinned_items(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
     """Rows that no push moves: hard anchors and held items, and everything following one or
     following a decoration (a decoration is never moved, so neither is a caption set beside
     it: on a random page one stood past the page's edge, another 6.5 mm into a hard anchor)."""
@@ -280,7 +285,7 @@ def too_large(bodies: Bodies, page_w_mm: float, page_h_mm: float, margin_mm: flo
     (geometry.squeezed), so the file is not a layout settle keeps."""
     roots, offsets = bodies.group_roots()
     near, far = bodies.insets(margin_mm, page_w_mm, page_h_mm)
-    return _too_large(bodies, roots, offsets, _pinned(bodies, roots), near, far,
+    return _too_large(bodies, roots, offsets, pinned_items(bodies, roots), near, far,
                       page_w_mm, page_h_mm)
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from floatpage.physics import arrangements
+from floatpage.physics import arrangements, unit_arrangements
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.limit_kinds import (
     CROSSING_BLOCK, LISTED, TOLERANCE_MM, WIDEST_GAP_SLACK_MM, Limit, NoArrangement, NoRoom,
@@ -128,3 +128,35 @@ def no_arrangement(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray, near: 
         return []
     return [NoArrangement(tuple(int(row) for row in rows), (float(room[0]), float(room[1])),
                           float(widest), bool(fits_page))]
+
+
+def no_unit_arrangement(bodies: Bodies, pinned: np.ndarray, margin_mm: float, page_w_mm: float,
+                        page_h_mm: float, gutter_mm: float, capped_mm: float) -> list[Limit]:
+    """A NoArrangement (with the pinned items it must stand around) for a page of a few free
+    units among items that cannot move, groups or regions, where ``no_arrangement`` does not
+    apply: no arrangement of the units (physics.unit_arrangements, an exact search) keeps the
+    gutter from one another and from the pinned items inside their walls, and the other
+    limits leave a wider gap than it finds (``capped_mm``).  fresh_projects seed 7031: a
+    photo with its caption, two photos and a header beside a hard-anchored photo on A5
+    overlapped by 28.8 mm, each unit alone had room, and `check` sent the page back to
+    settle; no arrangement keeps them less than 4.8 mm into each other.  A search that runs
+    out of its budget says nothing."""
+    search = unit_arrangements.search_of(bodies, pinned, margin_mm, page_w_mm, page_h_mm,
+                                         gutter_mm)
+    if search is None or (not pinned.any() and len(search.units) == len(search.rows)
+                          and np.isnan(bodies.regions[search.rows, 0]).all()):
+        return []  # free items alone: no_arrangement's
+    high = min(gutter_mm, capped_mm)
+    obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
+    widest = unit_arrangements.widest_gap(search.walls, *obstacles, high)
+    if widest is None or widest >= high - WIDEST_GAP_SLACK_MM:
+        return []
+    try:
+        fits_page = widest >= 0 or unit_arrangements.arranges(search.page_walls, *obstacles,
+                                                               0.0)
+    except arrangements.OutOfBudget:
+        return []
+    room = np.array([page_w_mm, page_h_mm]) - 2 * margin_mm
+    return [NoArrangement(tuple(int(row) for row in search.rows),
+                          (float(room[0]), float(room[1])), float(widest), bool(fits_page),
+                          tuple(int(row) for row in search.obstacles), units=True)]

@@ -1,0 +1,345 @@
+"""Whether a few free units (a free item, or a rigid group: a photo and its caption) can stand
+a gap apart from one another and from the items that cannot move, each inside its own walls,
+decided exactly.
+
+physics.arrangements decides this for free items alone between one pair of walls.  A page
+with a hard-anchored photo, a header that may only slide down and a photo with its caption
+has none of that, and the limits that do see pinned items (physics.room_limits.no_room, one
+unit among the pinned ones; physics.pinned_rows, one row) each look at one unit or one row:
+on fresh_projects seed 7031 a group, two photos and a header beside a hard anchor overlapped
+by 28.8 mm, each alone had room, and `check` sent the page back to `settle`, though no
+layout keeps them less than 4.8 mm into each other.
+
+The search is the one of physics.arrangements, on unit positions (each unit's root centre):
+two members of different units keep the gap when one stands at least the gap beside or above
+the other, so each such pair picks one of four relations, and each relation is a difference
+constraint between the two roots (``x_V - x_U >= c``, with the members' offsets in ``c``).  A
+member beside an item that cannot move picks one of four too, and each is a bound on its
+root (at most, or at least, a value).  A choice of relations fits exactly when the least
+positions the constraints allow (the longest chains from each unit's lower bound) stay below
+every unit's upper bound, on each axis; a cycle of relations that pushes a unit past itself
+fails as it closes.  Pairs that keep the gap wherever their walls let them stand are left
+out, so a unit far from a pinned item costs nothing.
+
+Exponential in the pairs, so it stops after ``NODE_BUDGET`` relations tried and then says
+nothing (``OutOfBudget``): a count, not a clock, so the answer is the same on every machine.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from floatpage.physics.arrangements import OutOfBudget
+
+MAX_MEMBERS = 10  # free members (the rows of all units) searched at most
+MAX_OBSTACLES = 12  # pinned items near enough to matter, at most
+# relations tried in one search before it gives up (about 1 s of CPU at ten members)
+NODE_BUDGET = 40_000
+# A search's answer depends only on the sizes, the walls, the pinned items and the gap, never
+# on where the free items lie, and a settle asks the same page's question again and again
+# (page_limits in each relocation and each probe, then _arrange_units): the answers are kept,
+# the last MEMO_SIZE of them.  One that ran out of budget cost 1-4 s a settle on seeds 12 and
+# 36 of fresh_projects, twelve times over.
+MEMO_SIZE = 64
+GAP_STEPS = 14  # bisection steps for the widest gap (0.006 mm on 100 mm)
+EPSILON = 1e-9
+
+
+class Units(NamedTuple):
+    """The free units of a search: ``owner`` (m,) the unit of each member, ``offsets`` and
+    ``halves`` (m, 2) each member's centre from its unit's root and half size; ``lowest`` and
+    ``highest`` (u, 2) the root centre's walls (relocation.unit_bounds)."""
+    owner: np.ndarray
+    offsets: np.ndarray
+    halves: np.ndarray
+    lowest: np.ndarray
+    highest: np.ndarray
+
+
+_memo: dict[bytes, np.ndarray | None | type] = {}
+
+
+def unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
+                     gap: float, centre: bool = False) -> np.ndarray | None:
+    """_unit_arrangement (below), its answers kept (MEMO_SIZE): the same numbers give the same
+    answer, so a kept one is the one a search would find."""
+    key = b"".join(np.ascontiguousarray(part, dtype=float).tobytes() for part in
+                   (units.owner, units.offsets, units.halves, units.lowest, units.highest,
+                    obstacle_centres, obstacle_halves, [gap, float(centre),
+                                                        len(units.owner), len(obstacle_centres)]))
+    if key in _memo:
+        found = _memo[key]
+    else:
+        try:
+            found = _unit_arrangement(units, obstacle_centres, obstacle_halves, gap, centre)
+        except OutOfBudget:
+            found = OutOfBudget
+        if len(_memo) >= MEMO_SIZE:
+            del _memo[next(iter(_memo))]
+        _memo[key] = found
+    if found is OutOfBudget:
+        raise OutOfBudget
+    return None if found is None else found.copy()
+
+
+def _unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
+                      gap: float, centre: bool = False) -> np.ndarray | None:
+    """Root centres (u, 2) at which every member of each unit keeps ``gap`` (negative: overlaps
+    by at most that much) from every member of another unit and from every obstacle, each root
+    inside its walls; None where there is none.  Each unit stands as far up and left as the
+    relations found let it, or with ``centre`` midway between that and as far down and right
+    (a layout spread over the room it has, not packed into a corner).  Raises OutOfBudget past
+    NODE_BUDGET."""
+    owner, offsets, halves = units.owner, units.offsets, units.halves
+    count = len(units.lowest)
+    if (units.lowest > units.highest + EPSILON).any():
+        return None
+    choices: list[list[tuple]] = []
+    for i in range(len(owner)):
+        for j in range(i + 1, len(owner)):
+            u, v = int(owner[i]), int(owner[j])
+            if u == v:
+                continue
+            reach = halves[i] + halves[j] + gap
+            ways = []
+            clear = False
+            for axis in (0, 1):
+                for first, second, c in ((u, v, offsets[i, axis] - offsets[j, axis]
+                                          + reach[axis]),
+                                         (v, u, offsets[j, axis] - offsets[i, axis]
+                                          + reach[axis])):
+                    if units.lowest[second, axis] - units.highest[first, axis] >= c - EPSILON:
+                        clear = True  # kept wherever the walls let them stand
+                    if units.lowest[first, axis] + c <= units.highest[second, axis] + EPSILON:
+                        ways.append(("edge", axis, first, second, float(c)))
+            if clear:
+                continue
+            if not ways:
+                return None
+            choices.append(ways)
+        for p in range(len(obstacle_centres)):
+            u = int(owner[i])
+            reach = halves[i] + obstacle_halves[p] + gap
+            ways = []
+            clear = False
+            for axis in (0, 1):
+                below = obstacle_centres[p, axis] - reach[axis] - offsets[i, axis]  # at most
+                above = obstacle_centres[p, axis] + reach[axis] - offsets[i, axis]  # at least
+                if units.highest[u, axis] <= below + EPSILON or \
+                        units.lowest[u, axis] >= above - EPSILON:
+                    clear = True
+                if below >= units.lowest[u, axis] - EPSILON:
+                    ways.append(("upper", axis, u, float(below)))
+                if above <= units.highest[u, axis] + EPSILON:
+                    ways.append(("lower", axis, u, float(above)))
+            if clear:
+                continue
+            if not ways:
+                return None
+            choices.append(ways)
+    choices.sort(key=len)
+    involved = [{unit for way in ways for unit in ((way[2], way[3]) if way[0] == "edge"
+                                                   else (way[2],))} for ways in choices]
+    lows = [units.lowest[:, 0].tolist(), units.lowest[:, 1].tolist()]
+    ups = [units.highest[:, 0].tolist(), units.highest[:, 1].tolist()]
+    after: list[list[list[tuple[int, float]]]] = [[[] for _ in range(count)] for _ in (0, 1)]
+    spent = [0]
+
+    def room_left(way: tuple) -> float:
+        kind, axis = way[0], way[1]
+        low, up = lows[axis], ups[axis]
+        if kind == "edge":
+            _, _, first, second, c = way
+            return up[second] - max(low[second], low[first] + c)
+        _, _, unit, value = way
+        if kind == "lower":
+            return up[unit] - max(low[unit], value)
+        return min(up[unit], value) - low[unit]
+
+    def raise_from(axis: int, start: int, value: float, guard: int,
+                   raised: list) -> bool:
+        """Raise ``start``'s least position to ``value`` and every chain after it; False where
+        one passes its upper bound, or a chain comes back to ``guard`` (a cycle that pushes a
+        unit past itself)."""
+        low, up = lows[axis], ups[axis]
+        todo = [(start, value)]
+        while todo:
+            unit, need = todo.pop()
+            if need <= low[unit] + 1e-12:
+                continue
+            if unit == guard:
+                return False
+            raised.append((axis, unit, low[unit]))
+            low[unit] = need
+            if need > up[unit] + EPSILON:
+                return False
+            todo.extend((nxt, need + c) for nxt, c in after[axis][unit])
+        return True
+
+    def apply(way: tuple) -> tuple[bool, list, tuple | None]:
+        """Take ``way``: whether it fits, what it raised, the bound it lowered (to undo)."""
+        raised: list = []
+        kind, axis = way[0], way[1]
+        if kind == "edge":
+            _, _, first, second, c = way
+            after[axis][first].append((second, c))
+            fits = raise_from(axis, second, lows[axis][first] + c, first, raised)
+            return fits, raised, None
+        _, _, unit, value = way
+        if kind == "lower":
+            return raise_from(axis, unit, value, -1, raised), raised, None
+        lowered = (axis, unit, ups[axis][unit])
+        ups[axis][unit] = min(ups[axis][unit], value)
+        return lows[axis][unit] <= ups[axis][unit] + EPSILON, raised, lowered
+
+    def undo(way: tuple, raised: list, lowered: tuple | None) -> None:
+        if way[0] == "edge":
+            after[way[1]][way[2]].pop()
+        for axis, unit, was in reversed(raised):
+            lows[axis][unit] = was
+        if lowered is not None:
+            axis, unit, was = lowered
+            ups[axis][unit] = was
+
+    taken: list[tuple] = []
+
+    def search(index: int) -> bool:
+        if index == len(choices):
+            return True
+        for way in sorted(choices[index], key=room_left, reverse=True):
+            spent[0] += 1
+            if spent[0] > NODE_BUDGET:
+                raise OutOfBudget
+            fits, raised, lowered = apply(way)
+            # every pair still to place keeps a way that fits: only those of a unit whose
+            # bounds just moved can have lost theirs (the rest were checked before)
+            touched = {unit for _, unit, _ in raised}
+            if lowered is not None:
+                touched.add(lowered[1])
+            fits = fits and all(any(room_left(other) >= -EPSILON for other in choices[later])
+                                for later in range(index + 1, len(choices))
+                                if not touched.isdisjoint(involved[later]))
+            if fits:
+                taken.append(way)
+                if search(index + 1):
+                    return True
+                taken.pop()
+            undo(way, raised, lowered)
+        return False
+
+    if not search(0):
+        return None
+    least = np.array(lows).T
+    if not centre:
+        return least
+    # the greatest positions the same relations allow: the upper bounds carried back along
+    # every chain (the layouts of one choice of relations form a convex set, so the midpoint
+    # of its least and greatest layouts is one of them)
+    edges = [way for way in taken if way[0] == "edge"]
+    for _ in range(count + 1):
+        moved = False
+        for _, axis, first, second, c in edges:
+            if ups[axis][second] - c < ups[axis][first] - 1e-12:
+                ups[axis][first] = ups[axis][second] - c
+                moved = True
+        if not moved:
+            break
+    greatest = np.maximum(np.array(ups).T, least)
+    return (least + greatest) / 2
+
+
+def arranges(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
+             gap: float) -> bool:
+    """Whether unit_arrangement finds a layout (raises OutOfBudget as it does)."""
+    return unit_arrangement(units, obstacle_centres, obstacle_halves, gap) is not None
+
+
+def widest_gap(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
+               high: float) -> float | None:
+    """The widest gap, up to ``high``, that the units keep (negative: the least overlap), to
+    GAP_STEPS halvings of the span searched; None where a search runs out of budget."""
+    low = -float(2 * units.halves.max())
+    try:
+        if arranges(units, obstacle_centres, obstacle_halves, high):
+            return high
+        if high > 0 and arranges(units, obstacle_centres, obstacle_halves, 0.0):
+            low = 0.0  # items that can just touch are no overlap, not a bisection's -0.004
+        else:
+            high = min(high, 0.0)
+            if not arranges(units, obstacle_centres, obstacle_halves, low):
+                return low
+        for _ in range(GAP_STEPS):
+            middle = (low + high) / 2
+            if arranges(units, obstacle_centres, obstacle_halves, middle):
+                low = middle
+            else:
+                high = middle
+    except OutOfBudget:
+        return None
+    return low
+
+
+class Search(NamedTuple):
+    """A page's free units set up for the search: ``units`` (relocation.Unit, as
+    movable_units lists them), ``walls`` their Units inside the margins, ``page_walls`` with
+    the margins given way, ``rows`` every member, ``obstacles`` the pinned rows near enough to
+    matter."""
+    units: list
+    walls: Units
+    page_walls: Units
+    rows: np.ndarray
+    obstacles: np.ndarray
+
+
+def search_of(bodies, pinned: np.ndarray, margin_mm: float, page_w_mm: float,
+              page_h_mm: float, gutter_mm: float) -> Search | None:
+    """The page's search, or None where it is out of reach (more than MAX_MEMBERS free members
+    or MAX_OBSTACLES pinned items within their reach, nothing to part, a unit too large for
+    its walls: page_limits.TooLarge names that)."""
+    from floatpage.physics.relocation import movable_units, unit_bounds  # relocation uses this
+    units = movable_units(bodies)
+    if not units:
+        return None
+    rows = np.concatenate([unit.members for unit in units])
+    if len(rows) > MAX_MEMBERS:
+        return None
+    owner = np.concatenate([np.full(len(unit.members), k) for k, unit in enumerate(units)])
+    offsets = np.concatenate([unit.offsets for unit in units])
+    halves = bodies.sizes[rows] / 2
+    lowest, highest = unit_bounds(bodies, units, page_w_mm, page_h_mm, margin_mm)
+    if (lowest > highest + EPSILON).any():
+        return None
+    page_lowest, page_highest = unit_bounds(bodies, units, page_w_mm, page_h_mm, 0.0)
+    obstacles = np.flatnonzero(pinned & bodies.active)
+    if len(obstacles):  # those a member's box can come within the gutter of
+        near = page_lowest[owner] + offsets - halves - gutter_mm  # (m, 2)
+        far = page_highest[owner] + offsets + halves + gutter_mm
+        low = bodies.centres[obstacles] - bodies.sizes[obstacles] / 2
+        high = bodies.centres[obstacles] + bodies.sizes[obstacles] / 2
+        within = ((near[:, None] < high[None]) & (far[:, None] > low[None])).all(axis=2)
+        obstacles = obstacles[within.any(axis=0)]
+    if len(obstacles) > MAX_OBSTACLES or len(units) + len(obstacles) < 2:
+        return None
+    return Search(units, Units(owner, offsets, halves, lowest, highest),
+                  Units(owner, offsets, halves, page_lowest, page_highest), rows, obstacles)
+
+
+def arranged(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
+             roots: np.ndarray, gap: float) -> bool:
+    """Whether root centres ``roots`` (u, 2) keep ``gap`` between every two members of
+    different units and from every obstacle, inside the walls."""
+    if ((roots < units.lowest - EPSILON) | (roots > units.highest + EPSILON)).any():
+        return False
+    centres = roots[units.owner] + units.offsets
+    clear = (np.abs(centres[:, None] - centres[None]) - units.halves[:, None]
+             - units.halves[None]).max(axis=2)
+    apart = units.owner[:, None] != units.owner[None]
+    if (clear[apart] < gap - 1e-6).any():
+        return False
+    if len(obstacle_centres) == 0:
+        return True
+    clear = (np.abs(centres[:, None] - obstacle_centres[None]) - units.halves[:, None]
+             - obstacle_halves[None]).max(axis=2)
+    return bool((clear >= gap - 1e-6).all())
