@@ -117,7 +117,8 @@ def room_covers(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
         rows = np.flatnonzero(active & (of_room == room))
         rooms.append((rows, rows))
     extent = np.array([page_w_mm, page_h_mm])
-    pinned = pinned_rows(bodies)
+    # items that cannot move take room; a decoration takes none (an item may lie on it)
+    pinned = pinned_items(bodies, bodies.group_roots()[0]) & ~bodies.decorative
     covers = []
     for number, (rows, walls) in enumerate(rooms):
         if not len(rows):
@@ -133,13 +134,12 @@ def room_covers(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
     return np.array(covers)
 
 
-def pinned_rows(bodies: Bodies) -> np.ndarray:
-    """Active rows that no push moves, (n,) bool: hard anchors and held items, and everything
-    following one or following a decoration.  Decorations themselves are left out: an item may
-    lie on a decoration, so it takes no room."""
-    roots, _ = bodies.group_roots()
+def pinned_items(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
+    """Rows that no push moves: hard anchors and held items, and everything following one or
+    following a decoration (a decoration is never moved, so neither is a caption set beside
+    it: on a random page one stood past the page's edge, another 6.5 mm into a hard anchor)."""
     fixed = bodies.hard | bodies.held | bodies.decorative
-    return bodies.active & ~bodies.decorative & (fixed | fixed[roots])
+    return bodies.active & (fixed | fixed[roots])
 
 
 def taken_by(bodies: Bodies, rows: np.ndarray, low: np.ndarray, high: np.ndarray,

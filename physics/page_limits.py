@@ -49,7 +49,7 @@ import numpy as np
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import candidate_pairs
 from floatpage.physics.finalize import pair_clearances
-from floatpage.physics.geometry import group_extents, group_room, rooms_of
+from floatpage.physics.geometry import group_extents, group_room, pinned_items, rooms_of
 from floatpage.physics.limit_kinds import (  # the records, for the modules that read them
     CROSSING_BLOCK, GAP_LIMITS, LISTED, TOLERANCE_MM, WIDEST_GAP_SLACK_MM, Crossing, Limit,
     NoArrangement, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack, TooLarge,
@@ -175,14 +175,6 @@ def unexplained_pairs(bodies: Bodies, limits: list[Limit], gutter_mm: float
                          np.where(pinned[b], -np.inf, caps[rooms[b]]))
         return ~(pinned[a] & pinned[b]) & (gaps < cap) & ~np.isin(keys, named_keys)
     return close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter_mm, unexplained)
-
-
-def pinned_items(bodies: Bodies, roots: np.ndarray) -> np.ndarray:
-    """Rows that no push moves: hard anchors and held items, and everything following one or
-    following a decoration (a decoration is never moved, so neither is a caption set beside
-    it: on a random page one stood past the page's edge, another 6.5 mm into a hard anchor)."""
-    fixed = bodies.hard | bodies.held | bodies.decorative
-    return bodies.active & (fixed | fixed[roots])
 
 
 def _pinned_clashes(bodies: Bodies, roots: np.ndarray, pinned: np.ndarray,

@@ -14,9 +14,9 @@ from floatpage.physics.finalize import (
     MARGIN_GIVES_WAY, MAX_ITERATIONS, ROUNDING_MM, STALL_ITERATIONS, pair_clearances,
     project_within,
 )
-from floatpage.physics.geometry import GUTTER_FITS_COVER, room_covers, rooms_of
+from floatpage.physics.geometry import GUTTER_FITS_COVER, pinned_items, room_covers, rooms_of
 from floatpage.physics.page_limits import (
-    WIDEST_GAP_SLACK_MM, capping, page_limits, pinned_items, room_caps, unexplained_pairs,
+    WIDEST_GAP_SLACK_MM, capping, page_limits, room_caps, unexplained_pairs,
 )
 from floatpage.physics.relocation import (
     MAX_ITEMS as RELOCATE_MAX_ITEMS, placed_anew, relocate_jammed,
