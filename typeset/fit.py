@@ -71,7 +71,7 @@ class TextFit:
 
 @dataclass(frozen=True)
 class _Line:
-    words: tuple[str, ...]
+    text: str
     width: float   # advance width, em
     left: float    # ink left of the origin (<= 0 when it leans out), em
     right: float   # ink (or advance) right end, em
@@ -80,7 +80,9 @@ class _Line:
 
 
 class _Segment:
-    """Words that must start on a fresh line, with prefix sums for O(log n) greedy steps."""
+    """Words that must start on a fresh line, with prefix sums for O(log n) greedy steps.
+    A word with no glue before it (a CJK character after another) joins its line's text
+    without a space."""
 
     __slots__ = ("words", "widths", "glues", "prefix", "inks")
 
@@ -106,10 +108,12 @@ class _Segment:
 
     def line(self, start: int, end: int, width: float) -> _Line:
         if start == end:
-            return _Line((), 0.0, 0.0, 0.0, 0.0, 0.0)
+            return _Line("", 0.0, 0.0, 0.0, 0.0, 0.0)
         inks = self.inks[start:end]
         last_origin = width - self.widths[end - 1]
-        return _Line(tuple(self.words[start:end]), width, min(0.0, inks[0].left),
+        text = self.words[start] + "".join(
+            (" " if self.glues[index] else "") + self.words[index] for index in range(start + 1, end))
+        return _Line(text, width, min(0.0, inks[0].left),
                      max(width, last_origin + inks[-1].right),
                      max(ink.top for ink in inks), max(ink.bottom for ink in inks))
 
@@ -140,6 +144,45 @@ def clusters(word: str) -> list[str]:
     return out
 
 
+# Chinese and Japanese are written without spaces and break between any two characters
+# (Unicode's line breaking, UAX #14, class ID), except that a line never starts with closing
+# punctuation, a small kana or a prolonged-sound mark, and never ends with opening punctuation
+# (the Japanese kinsoku rules).  Without these break points a CJK sentence was one "word":
+# fitted on one line at a tiny size, or split with a hyphen no CJK text has.
+NO_BREAK_BEFORE = frozenset("、。，．・：；？！゛゜ヽヾゝゞ々〻ー‐゠–〜～）」』】〕〉》｝］｠〙〗〟’”"
+                            "ぁぃぅぇぉっゃゅょゎゕゖァィゥェォッャュョヮヵヶㇰㇱㇲㇳㇴㇵㇶㇷㇸㇹㇺㇻㇼㇽㇾㇿ"
+                            ",.:;?!)]}%…‥")
+NO_BREAK_AFTER = frozenset("（「『【〔〈《｛［｟〘〖〝‘“([{")
+CJK_RANGES = ((0x2E80, 0x2FDF), (0x3000, 0x303F), (0x3040, 0x30FF), (0x31C0, 0x31FF),
+              (0x3200, 0x4DBF), (0x4E00, 0x9FFF), (0xF900, 0xFAFF), (0xFE30, 0xFE4F),
+              (0xFF00, 0xFF60), (0x20000, 0x3FFFF))
+
+
+def is_cjk(cluster: str) -> bool:
+    """A Han character, kana or CJK punctuation: a line may break on either side of it."""
+    code = ord(cluster[0])
+    return any(low <= code <= high for low, high in CJK_RANGES)
+
+
+def break_units(word: str) -> list[str]:
+    """The pieces of a space-free `word` a line may break between: the word itself, unless
+    it holds CJK characters, which may each end a line (see NO_BREAK_BEFORE)."""
+    if all(ord(char) < 0x2E80 for char in word):
+        return [word]
+    units: list[str] = []
+    previous = ""
+    for cluster in clusters(word):
+        if (units and (is_cjk(previous) or is_cjk(cluster))
+                and cluster[0] not in NO_BREAK_BEFORE and previous[-1] not in NO_BREAK_AFTER):
+            units.append(cluster)
+        elif units:
+            units[-1] += cluster
+        else:
+            units.append(cluster)
+        previous = cluster
+    return units
+
+
 def break_word(word: str, limit_em: float, metrics: Metrics) -> list[str]:
     """Split a too-wide word into hyphenated pieces no wider than `limit_em`."""
     pieces, current = [], ""
@@ -159,27 +202,32 @@ def segments_of(paras: list[list[str]], metrics: Metrics, break_limit_em: float 
     space = metrics.space_em
     descent = getattr(metrics, "descent_em", 0.25)
     ink_of = getattr(metrics, "ink_em", None)
-    segments, broken = [], []
+    segments: list[list[tuple[str, bool]]] = []  # (word, joined to the one before: no space)
+    broken = []
     for words in paras:
-        current: list[str] = []
-        for word in words:
-            if break_limit_em is not None and metrics.advance_em(word) > break_limit_em:
-                pieces = break_word(word, break_limit_em, metrics)
-                if len(pieces) > 1:
-                    broken.append(word)
-                    current.append(pieces[0])
-                    segments.append(current)
-                    segments.extend([piece] for piece in pieces[1:-1])
-                    current = [pieces[-1]]
-                    continue
-            current.append(word)
+        current: list[tuple[str, bool]] = []
+        for whole in words:
+            for index, word in enumerate(break_units(whole)):
+                joined = index > 0
+                if break_limit_em is not None and metrics.advance_em(word) > break_limit_em:
+                    pieces = break_word(word, break_limit_em, metrics)
+                    if len(pieces) > 1:
+                        broken.append(word)
+                        current.append((pieces[0], joined))
+                        segments.append(current)
+                        segments.extend([(piece, False)] for piece in pieces[1:-1])
+                        current = [(pieces[-1], False)]
+                        continue
+                current.append((word, joined))
         segments.append(current)
     built = []
-    for words in segments:
+    for pairs in segments:
+        words = [word for word, _ in pairs]
         widths = [metrics.advance_em(word) for word in words]
         inks = [ink_of(word) if ink_of else _EmInk(width, descent)
                 for word, width in zip(words, widths)]
-        built.append(_Segment(words, widths, [0.0] + [space] * (len(words) - 1), inks))
+        glues = [0.0] + [0.0 if joined else space for _, joined in pairs[1:]]
+        built.append(_Segment(words, widths, glues, inks))
     return built, tuple(broken)
 
 
@@ -261,6 +309,6 @@ def fit_text(text: str, box: Box, metrics: Metrics, *, leading: float = LEADING,
     found = layout(segments, size, box, leading, descent)
     if found is None:  # nothing fits even at the floor: report it, print nothing
         return TextFit(size, (), (), leading, broken, True)
-    return TextFit(size, tuple(" ".join(line.words) for line in found.lines),
+    return TextFit(size, tuple(line.text for line in found.lines),
                    tuple(line.width * size for line in found.lines), leading, broken, below,
                    found.top, found.bottom, tuple(-line.left * size for line in found.lines))
