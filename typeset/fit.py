@@ -125,12 +125,38 @@ class _EmInk:
         self.left, self.right, self.top, self.bottom = 0.0, width, 1 - descent, descent
 
 
+# French (and Swiss German quotes) set a space before ! ? ; : » and after «, which a line must
+# not break: "Joyeux anniversaire !" printed its "!" alone on the last line.  Such a lone
+# mark is kept with its neighbour, the space between them kept as typed.
+CLOSING_MARKS = frozenset("!?;:»›%‰")
+OPENING_MARKS = frozenset("«‹")
+
+
+def tied(words: list[str]) -> list[str]:
+    """`words` with each word of closing marks only joined to the one before it, and each
+    word of opening marks only to the one after it, by a space a line never breaks at."""
+    out: list[str] = []
+    pending = ""
+    for word in words:
+        if out and not pending and set(word) <= CLOSING_MARKS:
+            out[-1] += " " + word
+        elif set(word) <= OPENING_MARKS:
+            pending += word + " "
+        else:
+            out.append(pending + word)
+            pending = ""
+    if pending:
+        out.append(pending.rstrip(" "))
+    return out
+
+
 def paragraphs(text: str) -> list[list[str]]:
-    """Words of each line of `text`; a newline always breaks, runs of spaces are one space."""
+    """Words of each line of `text`; a newline always breaks, runs of spaces are one space,
+    and a space before or after a lone punctuation mark is no break (see `tied`)."""
     text = text.strip(" \n")
     if not text:
         return []
-    return [[word for word in line.split(" ") if word] for line in text.split("\n")]
+    return [tied([word for word in line.split(" ") if word]) for line in text.split("\n")]
 
 
 def clusters(word: str) -> list[str]:
