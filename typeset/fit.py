@@ -305,6 +305,77 @@ def largest_size(segments, box: Box, leading: float, descent: float, low: float,
     return low
 
 
+LONELY = 0.4  # a last line shorter than this share of the longest line looks left behind
+HEIGHT_BINDS = 0.99  # the lines fill this share of the box's height: the width has room
+EVEN_MAX_WORDS = 120  # re-break paragraphs up to this long (the search is quadratic)
+
+
+def even_breaks(segment: _Segment, limit: float, count: int) -> list[tuple[int, int, float]] | None:
+    """`count` lines within `limit` em whose slack is as even as can be (least sum of squared
+    slack, the last line included), or None."""
+    words = len(segment.widths)
+    prefix, glues = segment.prefix, segment.glues
+    inf = float("inf")
+    best = [[inf] * (words + 1) for _ in range(count + 1)]
+    back = [[0] * (words + 1) for _ in range(count + 1)]
+    best[0][0] = 0.0
+    for line in range(1, count + 1):
+        for end in range(line, words + 1):
+            for start in range(end - 1, line - 2, -1):
+                width = prefix[end] - prefix[start] - glues[start]
+                if width > limit:
+                    break
+                cost = best[line - 1][start] + (limit - width) ** 2
+                if cost < best[line][end]:
+                    best[line][end], back[line][end] = cost, start
+    if best[count][words] == inf:
+        return None
+    out, end = [], words
+    for line in range(count, 0, -1):
+        start = back[line][end]
+        out.append((start, end, prefix[end] - prefix[start] - glues[start]))
+        end = start
+    return out[::-1]
+
+
+def without_lonely_last_line(found: _Layout, segments, size: float, box: Box, leading: float,
+                             descent: float) -> _Layout:
+    """The same lines at the same size, re-broken as evenly as they go when greedy breaking
+    left a paragraph's last line nearly empty ("Wishing you a year / full of sunshine, /
+    flowers and good / friends." becomes "... / flowers and / good friends."), as a
+    typesetter re-breaks by hand.  Box, size and line count do not change.  Only where the
+    lines fill the box's height: where its width binds the size, evening the lines out would
+    leave the box's sides empty instead."""
+    height = (found.top + (len(found.lines) - 1) * leading + found.bottom) * size
+    if height < HEIGHT_BINDS * box.h_pt:
+        return found
+    limit = box.w_pt / size
+    lines: list[_Line] = []
+    changed = False
+    for segment in segments:
+        greedy = segment.breaks(limit)
+        if greedy is None:
+            return found
+        widest = max(width for _, _, width in greedy)
+        if (len(greedy) >= 2 and greedy[-1][2] < LONELY * widest
+                and len(segment.widths) <= EVEN_MAX_WORDS):
+            even = even_breaks(segment, limit, len(greedy))
+            if even is not None and even != greedy:
+                greedy, changed = even, True
+        for start, end, width in greedy:
+            line = segment.line(start, end, width)
+            if line.right - line.left > limit * (1 + 1e-12):
+                return found  # ink would lean out of the box's side
+            lines.append(line)
+    if not changed or len(lines) != len(found.lines):
+        return found
+    top = max(1 - descent, lines[0].top)
+    bottom = max(descent, lines[-1].bottom)
+    if top + (len(lines) - 1) * leading + bottom > box.h_pt / size * (1 + 1e-12):
+        return found
+    return _Layout(lines, top, bottom)
+
+
 def fit_text(text: str, box: Box, metrics: Metrics, *, leading: float = LEADING,
              min_pt: float = MIN_PT, max_pt: float = MAX_PT) -> TextFit:
     """The largest size (and its lines) at which `text` fits `box`, breaking words only if needed.
@@ -335,6 +406,7 @@ def fit_text(text: str, box: Box, metrics: Metrics, *, leading: float = LEADING,
     found = layout(segments, size, box, leading, descent)
     if found is None:  # nothing fits even at the floor: report it, print nothing
         return TextFit(size, (), (), leading, broken, True)
+    found = without_lonely_last_line(found, segments, size, box, leading, descent)
     return TextFit(size, tuple(line.text for line in found.lines),
                    tuple(line.width * size for line in found.lines), leading, broken, below,
                    found.top, found.bottom, tuple(-line.left * size for line in found.lines))
