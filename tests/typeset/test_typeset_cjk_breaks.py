@@ -14,7 +14,7 @@ import pytest
 
 from floatpage.model.document import Page, Project, TextItem
 from floatpage.typeset import render_pdf
-from floatpage.typeset.fit import NO_BREAK_BEFORE
+from floatpage.typeset.break_points import NO_BREAK_BEFORE
 from typeset_pdfcheck import BoxPt, chars_in
 
 CHINESE = "祝你生日快乐，万事如意，身体健康，心想事成。愿你的每一天都充满阳光和欢笑。"
