@@ -17,6 +17,8 @@ from floatpage.typeset.text_layout import MM_PER_PT, PT_PER_MM, Run, RunGroup, f
 TITLE_SHARE = 0.2    # of the panel's height
 HEADS_SHARE = 0.1
 CELL_PADDING = 0.18  # of a cell's smaller side, kept clear around a day number
+MOST_WEEKS = 6       # a month spans 4 to 6 rows of weeks
+HEADS_TO_DAYS = 0.8  # weekday heads at most this share of the day numbers' size
 
 
 @dataclass(frozen=True)
@@ -67,17 +69,26 @@ def layout_calendar(item: CalendarItem) -> CalendarLayout:
     col_w = w / 7
     bold, regular = face_for(item.font, True, False), face_for(item.font, False, False)
     pad = CELL_PADDING * min(col_w, row_h)
+    # The title and the weekday heads are sized as in a month of six weeks, whatever this
+    # month's rows: the twelve panels of a calendar then print them at one size (they went
+    # from 15.9 to 18.3 pt with the rows of the month), and the bold heads stay smaller than
+    # the day numbers of a six-week month instead of as large as them.
+    six_row_h = (h - title_h - heads_h) / MOST_WEEKS
+    head_pad = CELL_PADDING * min(col_w, six_row_h)
 
     title = f"{month_name(item.month, item.language)} {item.year}"
     title_metrics = metrics_for(bold)
-    title_fit = fit_text(title, Box((w - 2 * pad) * PT_PER_MM, (title_h - pad) * PT_PER_MM),
-                         title_metrics)
-    title_runs = place_lines(title_fit, title_metrics, left + pad, top, title_h - pad / 2,
-                             widths_mm=w - 2 * pad, align="centre")
+    title_fit = fit_text(title, Box((w - 2 * head_pad) * PT_PER_MM,
+                                    (title_h - head_pad) * PT_PER_MM), title_metrics)
+    title_runs = place_lines(title_fit, title_metrics, left + head_pad, top,
+                             title_h - head_pad / 2, widths_mm=w - 2 * head_pad, align="centre")
 
     centres = [left + col_w * (i + 0.5) for i in range(7)]
     heads = list(weekday_names(item.first_weekday, item.language))
-    heads_size = common_size(heads, bold, col_w - 2 * pad / 2, heads_h - pad)
+    six_week_days = common_size([str(day) for day in range(1, 32)], regular,
+                                col_w - 2 * head_pad, six_row_h - 2 * head_pad)
+    heads_size = min(common_size(heads, bold, col_w - head_pad, heads_h - head_pad),
+                     HEADS_TO_DAYS * six_week_days)
     heads_runs = centred_runs(heads, centres, top + title_h + heads_h / 2, heads_size, bold)
 
     numbers = [str(day) for week in weeks for day in week if day]

@@ -21,10 +21,11 @@ still returns a size that fits.
 from __future__ import annotations
 
 import math
-import unicodedata
 from bisect import bisect_right
 from dataclasses import dataclass
 from typing import Protocol
+
+from floatpage.typeset.break_points import break_units, clusters, tied
 
 LEADING = 1.2   # baseline distance / font size
 MIN_PT = 6.0    # the smallest size we call legible; below it we warn
@@ -71,7 +72,7 @@ class TextFit:
 
 @dataclass(frozen=True)
 class _Line:
-    words: tuple[str, ...]
+    text: str
     width: float   # advance width, em
     left: float    # ink left of the origin (<= 0 when it leans out), em
     right: float   # ink (or advance) right end, em
@@ -80,7 +81,9 @@ class _Line:
 
 
 class _Segment:
-    """Words that must start on a fresh line, with prefix sums for O(log n) greedy steps."""
+    """Words that must start on a fresh line, with prefix sums for O(log n) greedy steps.
+    A word with no glue before it (a CJK character after another) joins its line's text
+    without a space."""
 
     __slots__ = ("words", "widths", "glues", "prefix", "inks")
 
@@ -106,10 +109,12 @@ class _Segment:
 
     def line(self, start: int, end: int, width: float) -> _Line:
         if start == end:
-            return _Line((), 0.0, 0.0, 0.0, 0.0, 0.0)
+            return _Line("", 0.0, 0.0, 0.0, 0.0, 0.0)
         inks = self.inks[start:end]
         last_origin = width - self.widths[end - 1]
-        return _Line(tuple(self.words[start:end]), width, min(0.0, inks[0].left),
+        text = self.words[start] + "".join(
+            (" " if self.glues[index] else "") + self.words[index] for index in range(start + 1, end))
+        return _Line(text, width, min(0.0, inks[0].left),
                      max(width, last_origin + inks[-1].right),
                      max(ink.top for ink in inks), max(ink.bottom for ink in inks))
 
@@ -122,22 +127,12 @@ class _EmInk:
 
 
 def paragraphs(text: str) -> list[list[str]]:
-    """Words of each line of `text`; a newline always breaks, runs of spaces are one space."""
+    """Words of each line of `text`; a newline always breaks, runs of spaces are one space,
+    and a space before or after a lone punctuation mark is no break (see `tied`)."""
     text = text.strip(" \n")
     if not text:
         return []
-    return [[word for word in line.split(" ") if word] for line in text.split("\n")]
-
-
-def clusters(word: str) -> list[str]:
-    """Characters with their combining marks, so a break never separates an accent."""
-    out: list[str] = []
-    for char in word:
-        if out and unicodedata.combining(char):
-            out[-1] += char
-        else:
-            out.append(char)
-    return out
+    return [tied([word for word in line.split(" ") if word]) for line in text.split("\n")]
 
 
 def break_word(word: str, limit_em: float, metrics: Metrics) -> list[str]:
@@ -159,27 +154,32 @@ def segments_of(paras: list[list[str]], metrics: Metrics, break_limit_em: float 
     space = metrics.space_em
     descent = getattr(metrics, "descent_em", 0.25)
     ink_of = getattr(metrics, "ink_em", None)
-    segments, broken = [], []
+    segments: list[list[tuple[str, bool]]] = []  # (word, joined to the one before: no space)
+    broken = []
     for words in paras:
-        current: list[str] = []
-        for word in words:
-            if break_limit_em is not None and metrics.advance_em(word) > break_limit_em:
-                pieces = break_word(word, break_limit_em, metrics)
-                if len(pieces) > 1:
-                    broken.append(word)
-                    current.append(pieces[0])
-                    segments.append(current)
-                    segments.extend([piece] for piece in pieces[1:-1])
-                    current = [pieces[-1]]
-                    continue
-            current.append(word)
+        current: list[tuple[str, bool]] = []
+        for whole in words:
+            for index, word in enumerate(break_units(whole)):
+                joined = index > 0
+                if break_limit_em is not None and metrics.advance_em(word) > break_limit_em:
+                    pieces = break_word(word, break_limit_em, metrics)
+                    if len(pieces) > 1:
+                        broken.append(word)
+                        current.append((pieces[0], joined))
+                        segments.append(current)
+                        segments.extend([(piece, False)] for piece in pieces[1:-1])
+                        current = [(pieces[-1], False)]
+                        continue
+                current.append((word, joined))
         segments.append(current)
     built = []
-    for words in segments:
+    for pairs in segments:
+        words = [word for word, _ in pairs]
         widths = [metrics.advance_em(word) for word in words]
         inks = [ink_of(word) if ink_of else _EmInk(width, descent)
                 for word, width in zip(words, widths)]
-        built.append(_Segment(words, widths, [0.0] + [space] * (len(words) - 1), inks))
+        glues = [0.0] + [0.0 if joined else space for _, joined in pairs[1:]]
+        built.append(_Segment(words, widths, glues, inks))
     return built, tuple(broken)
 
 
@@ -231,6 +231,77 @@ def largest_size(segments, box: Box, leading: float, descent: float, low: float,
     return low
 
 
+LONELY = 0.4  # a last line shorter than this share of the longest line looks left behind
+HEIGHT_BINDS = 0.99  # the lines fill this share of the box's height: the width has room
+EVEN_MAX_WORDS = 120  # re-break paragraphs up to this long (the search is quadratic)
+
+
+def even_breaks(segment: _Segment, limit: float, count: int) -> list[tuple[int, int, float]] | None:
+    """`count` lines within `limit` em whose slack is as even as can be (least sum of squared
+    slack, the last line included), or None."""
+    words = len(segment.widths)
+    prefix, glues = segment.prefix, segment.glues
+    inf = float("inf")
+    best = [[inf] * (words + 1) for _ in range(count + 1)]
+    back = [[0] * (words + 1) for _ in range(count + 1)]
+    best[0][0] = 0.0
+    for line in range(1, count + 1):
+        for end in range(line, words + 1):
+            for start in range(end - 1, line - 2, -1):
+                width = prefix[end] - prefix[start] - glues[start]
+                if width > limit:
+                    break
+                cost = best[line - 1][start] + (limit - width) ** 2
+                if cost < best[line][end]:
+                    best[line][end], back[line][end] = cost, start
+    if best[count][words] == inf:
+        return None
+    out, end = [], words
+    for line in range(count, 0, -1):
+        start = back[line][end]
+        out.append((start, end, prefix[end] - prefix[start] - glues[start]))
+        end = start
+    return out[::-1]
+
+
+def without_lonely_last_line(found: _Layout, segments, size: float, box: Box, leading: float,
+                             descent: float) -> _Layout:
+    """The same lines at the same size, re-broken as evenly as they go when greedy breaking
+    left a paragraph's last line nearly empty ("Wishing you a year / full of sunshine, /
+    flowers and good / friends." becomes "... / flowers and / good friends."), as a
+    typesetter re-breaks by hand.  Box, size and line count do not change.  Only where the
+    lines fill the box's height: where its width binds the size, evening the lines out would
+    leave the box's sides empty instead."""
+    height = (found.top + (len(found.lines) - 1) * leading + found.bottom) * size
+    if height < HEIGHT_BINDS * box.h_pt:
+        return found
+    limit = box.w_pt / size
+    lines: list[_Line] = []
+    changed = False
+    for segment in segments:
+        greedy = segment.breaks(limit)
+        if greedy is None:
+            return found
+        widest = max(width for _, _, width in greedy)
+        if (len(greedy) >= 2 and greedy[-1][2] < LONELY * widest
+                and len(segment.widths) <= EVEN_MAX_WORDS):
+            even = even_breaks(segment, limit, len(greedy))
+            if even is not None and even != greedy:
+                greedy, changed = even, True
+        for start, end, width in greedy:
+            line = segment.line(start, end, width)
+            if line.right - line.left > limit * (1 + 1e-12):
+                return found  # ink would lean out of the box's side
+            lines.append(line)
+    if not changed or len(lines) != len(found.lines):
+        return found
+    top = max(1 - descent, lines[0].top)
+    bottom = max(descent, lines[-1].bottom)
+    if top + (len(lines) - 1) * leading + bottom > box.h_pt / size * (1 + 1e-12):
+        return found
+    return _Layout(lines, top, bottom)
+
+
 def fit_text(text: str, box: Box, metrics: Metrics, *, leading: float = LEADING,
              min_pt: float = MIN_PT, max_pt: float = MAX_PT) -> TextFit:
     """The largest size (and its lines) at which `text` fits `box`, breaking words only if needed.
@@ -261,6 +332,7 @@ def fit_text(text: str, box: Box, metrics: Metrics, *, leading: float = LEADING,
     found = layout(segments, size, box, leading, descent)
     if found is None:  # nothing fits even at the floor: report it, print nothing
         return TextFit(size, (), (), leading, broken, True)
-    return TextFit(size, tuple(" ".join(line.words) for line in found.lines),
+    found = without_lonely_last_line(found, segments, size, box, leading, descent)
+    return TextFit(size, tuple(line.text for line in found.lines),
                    tuple(line.width * size for line in found.lines), leading, broken, below,
                    found.top, found.bottom, tuple(-line.left * size for line in found.lines))

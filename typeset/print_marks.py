@@ -1,11 +1,14 @@
 """`render --print`: what a print shop asks of a PDF: bleed, crop marks, TrimBox and BleedBox.
 
 A press prints on larger paper and trims it, and a cut is never exact to the millimetre. So
-whatever reaches the edge of the finished page (a background, an item marked `bleed = true`)
-is extended `bleed_mm` past it, crop marks outside the bleed show where to cut, and the PDF
-says so itself: TrimBox is the finished page, BleedBox the page with its bleed, MediaBox the
-sheet with room for the marks.  Items that do not bleed are untouched, so the layout the
-physics settled is printed exactly.
+whatever reaches the edge of the finished page (a background, an item marked `bleed = true`,
+any colour block that meets the edge) is extended `bleed_mm` past it, crop marks outside the
+bleed show where to cut, and the PDF says so itself: TrimBox is the finished page, BleedBox
+the page with its bleed, MediaBox the sheet with room for the marks.  Inside the finished
+page nothing moves, so the layout the physics settled is printed exactly.  A block meets the
+edge unmarked when it is a decorative band (decorations keep no margin) or the margin gave
+way; stopping at the trim, it left a hairline of background wherever the cut strayed out.
+A picture still bleeds only when marked: extending it means scaling it.
 """
 
 from __future__ import annotations
@@ -90,7 +93,8 @@ def page_for_print(page: PlacedPage, bleeding: set[str], bleed_mm: float) -> Pla
             background.append(placed)
     items = []
     for placed in page.items:
-        if placed.item_id in bleeding and isinstance(placed, PlacedBlock):
+        if isinstance(placed, PlacedBlock):
+            # marked or not: see the module's docstring
             placed = replace(placed, rect=extended(placed.rect, w, h, bleed_mm, always=False))
         elif placed.item_id in bleeding and isinstance(placed, PlacedPicture):
             own = placed.clip or Rect(placed.left_mm, placed.top_mm, placed.left_mm + placed.w_mm,

@@ -26,9 +26,13 @@ MM_TO_BP = 72 / 25.4
 def printed(tmp_path_factory):
     folder = tmp_path_factory.mktemp("print")
     Image.new("RGB", (200, 100), (250, 200, 0)).save(folder / "sun.png")
+    Image.new("RGB", (100, 100), (120, 60, 200)).save(folder / "moon.png")
     page = Page(id="p", size="custom", width_mm=W, height_mm=H, background=Background(color="#ff0000"),
                 items=[BlockItem(id="left", x=10.0, y=30.0, w=20.0, h=20.0, color="#0000ff", bleed=True),
                        BlockItem(id="right", x=90.0, y=30.0, w=20.0, h=20.0, color="#00ff00"),
+                       BlockItem(id="band", x=50.0, y=100.0, w=100.0, h=10.0, color="#ffff00",
+                                 decorative=True, z=-1),
+                       PictureItem(id="moon", x=90.0, y=70.0, w=20.0, h=20.0, path="moon.png"),
                        PictureItem(id="sun", x=50.0, y=130.0, w=40.0, h=20.0, path="sun.png",
                                    bleed=True)])
     path = folder / "card.toml"
@@ -67,10 +71,26 @@ def test_the_background_and_bleed_items_reach_into_the_bleed_and_no_further(prin
     assert pixel(sheet, -1.5, 70.0) == pytest.approx((255, 0, 0), abs=8)  # background in the bleed
     assert pixel(sheet, -4.5, 70.0) == pytest.approx((255, 255, 255), abs=8)  # white beyond it
     assert pixel(sheet, -1.5, 30.0) == pytest.approx((0, 0, 255), abs=8)  # the bleed block
-    assert pixel(sheet, 101.5, 30.0) == pytest.approx((255, 0, 0), abs=8)  # not the other one
+    assert pixel(sheet, 101.5, 70.0) == pytest.approx((255, 0, 0), abs=8)  # an unmarked picture
     assert pixel(sheet, 50.0, 141.5) == pytest.approx((250, 200, 0), abs=8)  # the bleed picture
     assert pixel(sheet, 50.0, 131.0) == pytest.approx((250, 200, 0), abs=8)
     assert pixel(sheet, 30.0, 30.0) == pytest.approx((255, 0, 0), abs=8)  # the page is unchanged
+
+
+def test_a_block_that_meets_the_page_edge_bleeds_marked_or_not(printed):
+    """An unmarked block flush with the edge (a decorative band, or one the margin gave way
+    for) reaches into the bleed on the edges it meets, and only those: stopping at the trim,
+    a cut a hair outside it showed a line of background.  Inside the page nothing moves."""
+    _, sheet = printed
+    assert pixel(sheet, 101.5, 30.0) == pytest.approx((0, 255, 0), abs=8)  # the right edge
+    assert pixel(sheet, 91.0, 30.0) == pytest.approx((0, 255, 0), abs=8)
+    assert pixel(sheet, 79.0, 30.0) == pytest.approx((255, 0, 0), abs=8)  # its inner edge stays
+    assert pixel(sheet, 90.0, 18.5) == pytest.approx((255, 0, 0), abs=8)
+    for x_mm in (-1.5, 101.5):  # the band: both sides it meets
+        assert pixel(sheet, x_mm, 100.0) == pytest.approx((255, 255, 0), abs=8)
+    assert pixel(sheet, -4.5, 100.0) == pytest.approx((255, 255, 255), abs=8)  # and no further
+    assert pixel(sheet, 50.0, 93.5) == pytest.approx((255, 0, 0), abs=8)  # its height is kept
+    assert pixel(sheet, 50.0, 106.5) == pytest.approx((255, 0, 0), abs=8)
 
 
 def test_crop_marks_stand_outside_the_bleed_at_every_corner(printed):
