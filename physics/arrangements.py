@@ -157,12 +157,19 @@ def widest_gap(sizes: np.ndarray, room: np.ndarray, high: float) -> float | None
             return high
         if not arranges(sizes, room, low):
             return low
-        for _ in range(GAP_STEPS):
-            middle = (low + high) / 2
-            if arranges(sizes, room, middle):
-                low = middle
-            else:
-                high = middle
+        return bisect_widest(lambda gap: arranges(sizes, room, gap), low, high, GAP_STEPS)
     except OutOfBudget:
         return None
+
+
+def bisect_widest(fits, low: float, high: float, steps: int) -> float:
+    """The widest gap between ``low``, which ``fits``, and ``high``, which does not, to
+    ``steps`` halvings of the span: the last step of both exact searches (this module's and
+    physics.unit_arrangements'), whose answer is monotone in the gap."""
+    for _ in range(steps):
+        middle = (low + high) / 2
+        if fits(middle):
+            low = middle
+        else:
+            high = middle
     return low

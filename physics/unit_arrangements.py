@@ -31,7 +31,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from floatpage.physics.arrangements import OutOfBudget
+from floatpage.physics.arrangements import OutOfBudget, bisect_widest
 
 MAX_MEMBERS = 10  # free members (the rows of all units) searched at most
 MAX_OBSTACLES = 12  # pinned items near enough to matter, at most
@@ -270,15 +270,10 @@ def widest_gap(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.n
             high = min(high, 0.0)
             if not arranges(units, obstacle_centres, obstacle_halves, low):
                 return low
-        for _ in range(GAP_STEPS):
-            middle = (low + high) / 2
-            if arranges(units, obstacle_centres, obstacle_halves, middle):
-                low = middle
-            else:
-                high = middle
+        return bisect_widest(lambda gap: arranges(units, obstacle_centres, obstacle_halves, gap),
+                             low, high, GAP_STEPS)
     except OutOfBudget:
         return None
-    return low
 
 
 class Search(NamedTuple):
