@@ -38,18 +38,15 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     limits = (page_limits(bodies, page.width_mm, page.height_mm, engine.margin_mm, gutter_mm)
               if not quality.ok else too_large(bodies, page.width_mm, page.height_mm,
                                                engine.margin_mm))
-    chains = [limit for limit in limits if _past_lead_region(limit, page)]
-    limits = [limit for limit in limits if not _past_lead_region(limit, page)]
-    in_chains = {row for chain in chains for row in chain.rows}
-    lines += ["  " + _chain_sentence(page, chain, name) for chain in chains]
     # a group too large for its walls is a problem even where the file keeps them as
     # written: the next settle squeezes it (geometry.squeezed), so it is not a settled layout
-    problems += (len(chains) + len(limits) if quality.ok
-                 else sum(not set(chain.rows) & set(quality.outside_region) for chain in chains))
+    counted = set(quality.outside_region) | set(quality.off_page) | set(quality.in_margin)
+    problems += sum(isinstance(limit, TooLarge) and not set(limit.rows) & counted
+                    for limit in limits)
     oversized = {row for limit in limits if isinstance(limit, TooLarge) for row in limit.rows}
     for k in quality.outside_region:
         item = page.items[k]
-        if k in in_chains or k in oversized:  # named below, with what to do: settle cannot
+        if k in oversized:  # named below, with what to do: settle cannot
             continue
         lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
                      f'"{printable(item.region)}": {SETTLE}, or make the region larger')
@@ -65,7 +62,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     lines += _explain(limits, name, gutter_mm, engine.margin_mm, page)
     named = {row for limit in limits if isinstance(limit, (PinnedOutside, TooLarge))
              for row in getattr(limit, "rows", (getattr(limit, "row", -1),))}
-    off = [k for k in quality.off_page if k not in named and k not in in_chains]
+    off = [k for k in quality.off_page if k not in named]
     if off:  # every item off the page is named, by a limit or here: never a bare count
         lines.append(f"  {len(off)} item(s) reach past the page's edge: "
                      f"{_some([name(k) for k in off[:SHOWN]], len(off))}; {SETTLE}, or move "
@@ -139,12 +136,11 @@ def _tightest_room(page, engine, gutter_mm: float) -> tuple[float, str]:
 
 def _chain_sentence(page, chain: TooLarge, name) -> str:
     rows, axis, extent = chain.rows, chain.axis, chain.extent_mm
-    lead = page.items[rows[0]]
-    region = page.region(lead.region)
-    room = (region.w, region.h)[axis]
     root = page.items[rows[0]]
+    region = page.region(root.region)
+    room = (region.w, region.h)[axis]
     followers = _some([name(row) for row in rows[1:1 + SHOWN]], len(rows) - 1)
-    size_word, across = AXIS_WORDS[axis]
+    size_word, _ = AXIS_WORDS[axis]
     side = "taller" if axis == 1 else "wider"
     companions, closer = _companions(page, rows)
     if "dx and dy" in closer:
@@ -254,6 +250,8 @@ def _companions(page, rows) -> tuple[str, str]:
 
 
 def _too_large_sentence(limit: TooLarge, name, page) -> str:
+    if page is not None and _past_lead_region(limit, page):
+        return _chain_sentence(page, limit, name)
     size_word, _ = AXIS_WORDS[limit.axis]
     who = f"item {name(limit.rows[0])}"
     companions, closer = _companions(page, limit.rows)

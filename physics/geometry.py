@@ -118,7 +118,8 @@ def room_covers(bodies: Bodies, near: np.ndarray, far: np.ndarray, page_w_mm: fl
         rooms.append((rows, rows))
     extent = np.array([page_w_mm, page_h_mm])
     # items that cannot move take room; a decoration takes none (an item may lie on it)
-    pinned = pinned_items(bodies, bodies.group_roots()[0]) & ~bodies.decorative
+    pinned = (pinned_items(bodies, bodies.group_roots()[0]) & ~bodies.decorative
+              if len(rooms) > 1 else None)  # only regions need it: a page without is spared
     covers = []
     for number, (rows, walls) in enumerate(rooms):
         if not len(rows):
