@@ -39,11 +39,11 @@ import numpy as np
 from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import Params, page_margin, page_scale
-from floatpage.physics.rest_check import RestCheck, group_members, sorted_unique
+from floatpage.physics.rest_check import RestCheck, group_members
+from floatpage.physics.snap_kernel import score_moves
 from floatpage.physics.snap_memo import AxisMemo
 from floatpage.physics.snap_scoring import (
-    ALIGNED_MM, MAX_CANDIDATES, MAX_TRIES, NO_SHIFTS, best_first, candidate_shifts,
-    distance_bounds, misses_after, nearest_shifts, relevant_distance, trues,
+    ALIGNED_MM, MAX_CANDIDATES, MAX_TRIES, NO_SHIFTS, relevant_distance, scoring_ranges, trues,
 )
 from floatpage.physics.fast_forces import target_gap
 from floatpage.physics.finalize import ROUNDING_MM
@@ -58,7 +58,6 @@ ALIGN_REACH = 2.0  # a move onto a line goes up to 2 snap ranges (8 mm on A4): s
 ESCAPE_REACH = 3.0  # a move out of near misses goes up to 3 snap ranges (12 mm on A4)
 EVERY_MOVE = 1 << 30  # ... but once the sweeps end, every move (_Snapper.try_lesser)
 TOLERANCE_MM = 1e-9
-SORT_ALL_BELOW = 400  # options sorts fewer distances as they are, more once cut to the relevant
 # a body's features paired with the lines of the same kind: their edges with each of its
 # edges, their centre with its centre
 THEIRS = np.array([LOW, HIGH, LOW, HIGH, CENTRE])
@@ -149,9 +148,10 @@ class _Snapper:
         self.reach = snap_range(*page)
         self.farthest = ESCAPE_REACH * self.reach  # the longest move
         self.window = max(self.farthest, NEAR_MM) + NEAR_MM  # further apart cannot matter
-        self.bounds = distance_bounds(ALIGN_REACH * self.reach, self.farthest)
-        # what options reads of the distances lies within this (relevant_distance)
-        self.relevant = relevant_distance(self.farthest)
+        # what the scoring reads besides the table (the ranges of distances, the window):
+        # what options reads of the distances lies within relevant_distance
+        self.ranges = scoring_ranges(ALIGN_REACH * self.reach, self.farthest, self.window,
+                                     relevant_distance(self.farthest))
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
         self.half_lists = [self.halves[:, axis].tolist() for axis in (0, 1)]
         # the centres as Python lists per axis, kept in step by attempt (fits reads a handful)
@@ -199,15 +199,6 @@ class _Snapper:
     def mine(self, row: int, axis: int) -> np.ndarray:
         """The group's features on ``axis`` (low edge, centre, high edge per member)."""
         return self.lines[axis][self.members[row]].ravel()
-
-    @staticmethod
-    def near_lines(table: np.ndarray, low: float, high: float) -> np.ndarray:
-        """Which rows of ``table`` (an axis's, with the page's lines) reach into ``(low,
-        high)`` (a new mask): the active rows whose lines are the ones near a body whose
-        features lie a window inside it, and the page's lines (always)."""
-        near = table[:, LOWS_COLUMN] < high
-        near &= table[:, HIGHS_COLUMN] > low
-        return near
 
     def near(self, moved: list[int], axis: int) -> np.ndarray:
         """Movers with a feature within the window of a moved group's features, before or
@@ -299,7 +290,10 @@ class _Snapper:
         Everything is read off the sorted distances from the body's features to the lines of
         the same kind near them, by bisection: which moves to score, their scores, whether the
         body misses a line now.  Most calls (on the 50-item page, three in five) find no move
-        that helps, so a call is a few dozen small NumPy operations, and each one counts."""
+        that helps; as a few dozen small NumPy operations a call was a quarter of the snap's
+        time, scoring lines another quarter, so the scoring after the memo is one call of
+        compiled code (snap_kernel.score_moves; its distances read from the table of the
+        body's kind of page lines, whose rows are the same floats in every kind's table)."""
         if len(roots) == 1:  # most calls: one group, nothing to gather
             root = roots[0]
             members, too_large, key = self.members[root], self.too_large[root][axis], (root,)
@@ -313,37 +307,11 @@ class _Snapper:
         known = self.memo.recall(key, axis)
         if known is not None:  # the same groups, perhaps named in another order
             return known if known.roots == roots else known._replace(roots=roots, members=members)
-        lines = self.lines[axis]
-        table = self.tables[bleed][axis]
-        if len(members) == 1:  # most calls: one row, read by plain indexing
-            row = members[0]
-            low_edge, _, high_edge = lines[row].tolist()
-            low, high = low_edge - self.window, high_edge + self.window
-            near = self.near_lines(table, low, high)
-            near[row] = False
-            ordered = (table[near, THEIRS_COLUMNS] - self.paired_mine[axis][row]).ravel()
-        else:
-            mine = lines[members]
-            low = float(np.minimum.reduce(mine[:, LOW])) - self.window
-            high = float(np.maximum.reduce(mine[:, HIGH])) + self.window
-            near = self.near_lines(table, low, high)
-            near[members] = False
-            ordered = (table[near, THEIRS_COLUMNS][None]
-                       - self.paired_mine[axis][members][:, None]).ravel()
-        if len(ordered) > SORT_ALL_BELOW:  # most of a line's distances are out of every range
-            ordered = ordered[np.abs(ordered) < self.relevant]
-        ordered.sort()
-        shifts, missing, lined_up, now = candidate_shifts(ordered, self.bounds)
-        if len(shifts) > MAX_CANDIDATES:  # perhaps a crowded page: the nearest lines only
-            shifts = nearest_shifts(sorted_unique(shifts))
-        scores = misses_after(ordered, shifts)
-        better = (scores < now).nonzero()[0]
-        if len(better):  # most calls find no better move
-            found = Moves(roots, members,
-                          *best_first(shifts[better], scores[better], now, self.tries),
-                          missing, lined_up)
-        else:
-            found = Moves(roots, members, NO_SHIFTS, 0.0, missing, lined_up)
+        # the compiled scoring (physics/snap_kernel.c): the lines near the body, the sorted
+        # distances to them, the candidates, their scores, the best first
+        shifts, gain, missing, lined_up, low, high = score_moves(
+            self.tables[bleed][axis], members, self.ranges, MAX_CANDIDATES, self.tries)
+        found = Moves(roots, members, shifts, gain, missing, lined_up)
         return self.memo.keep(key, axis, low, high, found)
 
     def attempt(self, moves: "Moves", axis: int) -> bool:

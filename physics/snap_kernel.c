@@ -1,0 +1,523 @@
+/* The alignment snap's scoring (physics.snapping, _Snapper.options), compiled.
+
+Why C: a scoring is a few dozen operations on arrays of tens to hundreds of floats, called
+tens of thousands of times a page.  Written in NumPy each operation paid its own set-up, and
+the snap cost a page of 50 items about twice its settle without guides; the pure-NumPy and
+pure-Python variants were exhausted (docs/benchmarks.md, the fourteenth session's
+snap_anatomy.py).  Here one call does it all, reading the snap's table through the buffer
+protocol: no NumPy headers, no new dependency, only the C API.
+
+Every float is the one the NumPy code computed: the same subtractions in float64, the same
+bisections from the left ("d <= x" as "d < the next float after x"), the same ties.  The only
+freedom taken is the order in which equal floats are sorted, which no result can see (both
+sorts give the same sequence of values).  benchmarks/snap_identity.py checks every move of
+63 snaps against the NumPy code's, bit for bit.
+
+What the constants are comes from Python (snap_scoring.scoring_ranges): the twelve ends of the
+distance ranges, the four window ends around a shift, the escape move, the window around a
+body and the relevant distance, in one array of RANGES doubles. */
+
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* the columns of the snap's table per axis (snapping.feature_table) */
+#define COLUMNS 15
+#define LOW_EDGE 0
+#define HIGH_EDGE 2
+#define THEIRS 3 /* 3..7: a row's features as the lines others pair with */
+#define MINE 8   /* 8..12: the same row's features paired as its own */
+#define PAIRINGS 5
+#define LOWS 13
+#define HIGHS 14
+
+/* snap_scoring.scoring_ranges' layout */
+#define BOUNDS 0       /* 12 needles, distance_bounds */
+#define WINDOW_ENDS 12 /* 4: + NEAR, - ALIGNED, - NEAR, + ALIGNED around a shift */
+#define ESCAPE 16      /* the escape move, ESCAPE_MM */
+#define WINDOW 17      /* how far beyond a body's edges its near lines reach */
+#define RELEVANT 18    /* relevant_distance: no range reads a distance this far */
+#define RANGES 19
+
+/* ---- sorting doubles (no NaN reaches here: the cut to the relevant drops them) ---- */
+
+static void insertion_sort(double *values, Py_ssize_t count)
+{
+    for (Py_ssize_t i = 1; i < count; i++) {
+        double value = values[i];
+        Py_ssize_t j = i;
+        while (j > 0 && values[j - 1] > value) {
+            values[j] = values[j - 1];
+            j--;
+        }
+        values[j] = value;
+    }
+}
+
+static void sort_doubles(double *values, Py_ssize_t count)
+{
+    /* a quicksort (Hoare's partition about the median of the first, middle and last values,
+       moved to the middle so that both parts are never empty), insertion sort below 16
+       values; the smaller part is recursed into and the larger looped over */
+    while (count > 16) {
+        Py_ssize_t middle = count / 2, i = -1, j = count;
+        double swap;
+#define SWAP(a, b) (swap = values[a], values[a] = values[b], values[b] = swap)
+        if (values[middle] < values[0])
+            SWAP(0, middle);
+        if (values[count - 1] < values[middle]) {
+            SWAP(middle, count - 1);
+            if (values[middle] < values[0])
+                SWAP(0, middle);
+        }
+        double pivot = values[middle];
+        for (;;) {
+            do i++; while (values[i] < pivot);
+            do j--; while (values[j] > pivot);
+            if (i >= j)
+                break;
+            SWAP(i, j);
+        }
+#undef SWAP
+        Py_ssize_t left = j + 1; /* values[:left] <= pivot <= values[left:] */
+        if (left < count - left) {
+            sort_doubles(values, left);
+            values += left;
+            count -= left;
+        } else {
+            sort_doubles(values + left, count - left);
+            count = left;
+        }
+    }
+    insertion_sort(values, count);
+}
+
+/* np.searchsorted(ordered, needle) from the left: how many values are below needle */
+static Py_ssize_t below(const double *ordered, Py_ssize_t count, double needle)
+{
+    Py_ssize_t low = 0, high = count;
+    while (low < high) {
+        Py_ssize_t middle = low + (high - low) / 2;
+        if (ordered[middle] < needle)
+            low = middle + 1;
+        else
+            high = middle;
+    }
+    return low;
+}
+
+/* ---- the units of a scoring, each as its NumPy ancestor's docstring had it ---- */
+
+typedef struct {
+    Py_ssize_t count;  /* candidate shifts, staying first */
+    int missing;       /* a feature misses a line now: ALIGNED_MM < |distance| < NEAR_MM */
+    int lined_up;      /* a feature is on a line now: |distance| <= ALIGNED_MM */
+    long now;          /* staying's score (misses_after of 0) */
+} Candidates;
+
+/* Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
+   within reach, or put it just out of a near miss with one (ESCAPE_MM) within ``farthest``;
+   with 0 (staying) first.  The way out of a near miss may be long: two items of nearly the
+   same width cannot line up both edges and centre, and one 1 mm from the other stays in near
+   misses until it has moved 4-5 mm.  Each range of distances (the twelve needles of
+   distance_bounds, with the reach and the farthest move there) is a slice of the sorted ones,
+   so the escape moves need no test of their length.  ``shifts`` holds room for 3 * count + 1. */
+static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
+                                   const double *ranges, double *shifts)
+{
+    Py_ssize_t found[12];
+    for (int k = 0; k < 12; k++)
+        found[k] = below(ordered, count, ranges[BOUNDS + k]);
+    const Py_ssize_t *low = found, *high = found + 4;
+    double escape = ranges[ESCAPE];
+    Candidates made;
+    Py_ssize_t n = 0;
+    shifts[n++] = 0.0;
+    /* |distance| <= reach */
+    for (Py_ssize_t i = low[0]; i < high[0]; i++)
+        shifts[n++] = ordered[i];
+    /* |distance| < farthest + ESCAPE_MM, and of those, the ones whose escape stays in reach */
+    Py_ssize_t start = high[1] > found[8] ? high[1] : found[8];
+    Py_ssize_t stop = low[1] < found[9] ? low[1] : found[9];
+    for (Py_ssize_t i = start; i < stop; i++)
+        shifts[n++] = ordered[i] - escape;
+    start = high[1] > found[10] ? high[1] : found[10];
+    stop = low[1] < found[11] ? low[1] : found[11];
+    for (Py_ssize_t i = start; i < stop; i++)
+        shifts[n++] = ordered[i] + escape;
+    made.count = n;
+    made.missing = low[2] > high[2] || low[3] > high[3];
+    made.lined_up = high[3] > low[2]; /* -ALIGNED_MM <= distance <= ALIGNED_MM */
+    /* staying's score: its four window ends are among the ranges' ends */
+    made.now = 2 * (long)low[3] + 3 * (long)low[2] - 2 * (long)high[2] - 3 * (long)high[3];
+    return made;
+}
+
+/* For each shift, the near misses between a body's features and the lines of the same kind at
+   the sorted distances ``ordered`` from them (one per pair), less ALIGN_GAIN per exact
+   alignment, twice, in integers.  Counted by bisection at the four ends around the shift:
+   d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR, d <= shift + ALIGNED, the last
+   two as "d < the next float after" (weights 2, 3, -2, -3: twice 1 and 1 + ALIGN_GAIN). */
+static void misses_after(const double *ordered, Py_ssize_t count, const double *shifts,
+                         Py_ssize_t shift_count, const double *ranges, long *scores)
+{
+    const double *ends = ranges + WINDOW_ENDS;
+    for (Py_ssize_t k = 0; k < shift_count; k++) {
+        double shift = shifts[k];
+        scores[k] = 2 * (long)below(ordered, count, ends[0] + shift)
+                  + 3 * (long)below(ordered, count, ends[1] + shift)
+                  - 2 * (long)below(ordered, count, nextafter(ends[2] + shift, INFINITY))
+                  - 3 * (long)below(ordered, count, nextafter(ends[3] + shift, INFINITY));
+    }
+}
+
+/* Sorts ``shifts`` and keeps each value once (np.unique; -0.0 and 0.0 are one value);
+   returns how many are left. */
+static Py_ssize_t sorted_unique(double *shifts, Py_ssize_t count)
+{
+    if (count == 0)
+        return 0;
+    sort_doubles(shifts, count);
+    Py_ssize_t kept = 1;
+    for (Py_ssize_t i = 1; i < count; i++)
+        if (shifts[i] != shifts[kept - 1])
+            shifts[kept++] = shifts[i];
+    return kept;
+}
+
+/* The ``wanted`` shifts of ``distinct`` (sorted, each once) nearest to 0, of two as near the
+   lower first, in ascending order: the nearest values of a sorted array are a run of it, the
+   first run whose left end is no farther from 0 than the value just past its right end, found
+   by bisection.  Returns where the run starts (it is min(count, wanted) long). */
+static Py_ssize_t nearest_shifts(const double *distinct, Py_ssize_t count, Py_ssize_t wanted)
+{
+    Py_ssize_t low = 0, high = count > wanted ? count - wanted : 0;
+    while (low < high) {
+        Py_ssize_t middle = (low + high) / 2;
+        if (fabs(distinct[middle]) > fabs(distinct[middle + wanted]))
+            low = middle + 1;
+        else
+            high = middle;
+    }
+    return low;
+}
+
+typedef struct {
+    long score;
+    double shift;
+    Py_ssize_t order; /* its place among the candidates: equal keys keep it (a stable sort) */
+} Move;
+
+static int better_move(const void *a, const void *b)
+{
+    const Move *x = a, *y = b;
+    if (x->score != y->score)
+        return x->score < y->score ? -1 : 1;
+    double length_x = fabs(x->shift), length_y = fabs(y->shift);
+    if (length_x != length_y)
+        return length_x < length_y ? -1 : 1;
+    if (x->shift != y->shift)
+        return x->shift < y->shift ? -1 : 1;
+    return x->order < y->order ? -1 : (x->order > y->order);
+}
+
+/* The moves that lower the score below ``now``, best first: the fewest misses, then the
+   shortest move, then the lower; each once (a shift named twice has one score, so its copies
+   sort side by side), at most ``tries``.  Returns the tuple of shifts and sets ``best`` to the
+   best score; an empty tuple if none lowers it. */
+static PyObject *best_first(const double *shifts, const long *scores, Py_ssize_t count,
+                            long now, Py_ssize_t tries, long *best)
+{
+    Py_ssize_t better = 0;
+    for (Py_ssize_t k = 0; k < count; k++)
+        better += scores[k] < now;
+    if (better == 0)
+        return PyTuple_New(0);
+    Move *moves = PyMem_Malloc(better * sizeof(Move));
+    if (moves == NULL)
+        return PyErr_NoMemory();
+    Py_ssize_t n = 0;
+    for (Py_ssize_t k = 0; k < count; k++)
+        if (scores[k] < now) {
+            moves[n].score = scores[k];
+            moves[n].shift = shifts[k];
+            moves[n].order = n;
+            n++;
+        }
+    qsort(moves, n, sizeof(Move), better_move);
+    *best = moves[0].score;
+    Py_ssize_t kept = 0; /* the chosen written over the sorted moves, never ahead of them */
+    for (Py_ssize_t k = 0; k < n && kept < tries; k++)
+        if (kept == 0 || moves[k].shift != moves[kept - 1].shift)
+            moves[kept++].shift = moves[k].shift;
+    PyObject *found = PyTuple_New(kept);
+    for (Py_ssize_t k = 0; found != NULL && k < kept; k++) {
+        PyObject *value = PyFloat_FromDouble(moves[k].shift);
+        if (value == NULL)
+            Py_CLEAR(found);
+        else
+            PyTuple_SET_ITEM(found, k, value);
+    }
+    PyMem_Free(moves);
+    return found;
+}
+
+/* ---- reading the arguments ---- */
+
+static int read_doubles(PyObject *object, Py_buffer *view, int ndim, const char *name)
+{
+    if (PyObject_GetBuffer(object, view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        return -1;
+    if (view->ndim != ndim || view->itemsize != sizeof(double) || view->format == NULL
+            || strcmp(view->format, "d") != 0) {
+        PyErr_Format(PyExc_TypeError, "%s: a C-contiguous float64 array of %d dimensions",
+                     name, ndim);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    return 0;
+}
+
+static int read_rows(PyObject *object, Py_buffer *view, Py_ssize_t limit)
+{
+    if (PyObject_GetBuffer(object, view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        return -1;
+    const char *format = view->format ? view->format : "B";
+    if (view->ndim != 1 || view->itemsize != 8 || strchr("lqn", format[0]) == NULL
+            || format[1] != '\0') {
+        PyErr_SetString(PyExc_TypeError, "members: a contiguous int64 array of rows");
+        PyBuffer_Release(view);
+        return -1;
+    }
+    const int64_t *rows = view->buf;
+    for (Py_ssize_t k = 0; k < view->shape[0]; k++)
+        if (rows[k] < 0 || rows[k] >= limit) {
+            PyErr_SetString(PyExc_IndexError, "members: a row outside the table");
+            PyBuffer_Release(view);
+            return -1;
+        }
+    return 0;
+}
+
+/* ---- the entry points ---- */
+
+PyDoc_STRVAR(score_moves_doc,
+"score_moves(table, members, ranges, candidates, tries)\n"
+"-> (shifts, gain, missing, lined_up, low, high)\n\n"
+"The moves along one axis that would lower the near misses of the rigid body ``members``\n"
+"(rows of ``table``, the snap's table of that axis with the page's lines below the rows),\n"
+"best first, at most ``tries``; what the best gains; whether the body misses a line now and\n"
+"whether it is on one; and the span [low, high] of the lines read (the memo keeps it).\n\n"
+"Everything is read off the sorted distances from the body's features to the lines of the\n"
+"same kind near them (the rows reaching into the body's extent widened by the window, the\n"
+"body's own rows left out), by bisection: which moves to score, their scores, whether the\n"
+"body misses a line now.  Distances past the relevant one only move every bisection's index\n"
+"by the same count, which every range and score takes as a difference, so they are dropped\n"
+"before the sort.  Of many candidates (a crowded page) only the ``candidates`` nearest 0\n"
+"are scored.");
+
+static PyObject *score_moves(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 5) {
+        PyErr_SetString(PyExc_TypeError,
+                        "score_moves(table, members, ranges, candidates, tries)");
+        return NULL;
+    }
+    Py_ssize_t wanted = PyLong_AsSsize_t(args[3]);
+    Py_ssize_t tries = PyLong_AsSsize_t(args[4]);
+    if ((wanted == -1 || tries == -1) && PyErr_Occurred())
+        return NULL;
+    Py_buffer table_view, members_view, ranges_view;
+    if (read_doubles(args[0], &table_view, 2, "table") < 0)
+        return NULL;
+    if (table_view.shape[1] != COLUMNS) {
+        PyErr_SetString(PyExc_ValueError, "table: the snap's 15 columns");
+        PyBuffer_Release(&table_view);
+        return NULL;
+    }
+    Py_ssize_t rows = table_view.shape[0];
+    if (read_rows(args[1], &members_view, rows) < 0) {
+        PyBuffer_Release(&table_view);
+        return NULL;
+    }
+    if (read_doubles(args[2], &ranges_view, 1, "ranges") < 0) {
+        PyBuffer_Release(&table_view);
+        PyBuffer_Release(&members_view);
+        return NULL;
+    }
+    PyObject *result = NULL;
+    char *excluded = NULL;
+    double *work = NULL;
+    long *scores = NULL;
+    const double *table = table_view.buf, *ranges = ranges_view.buf;
+    const int64_t *members = members_view.buf;
+    Py_ssize_t member_count = members_view.shape[0];
+    if (ranges_view.shape[0] != RANGES || member_count == 0) {
+        PyErr_SetString(PyExc_ValueError, "ranges: scoring_ranges' array; members: some rows");
+        goto done;
+    }
+    /* the body's extent widened by the window: the lines near it reach into it */
+    double low = table[members[0] * COLUMNS + LOW_EDGE];
+    double high = table[members[0] * COLUMNS + HIGH_EDGE];
+    for (Py_ssize_t k = 1; k < member_count; k++) {
+        double member_low = table[members[k] * COLUMNS + LOW_EDGE];
+        double member_high = table[members[k] * COLUMNS + HIGH_EDGE];
+        if (member_low < low) low = member_low;
+        if (member_high > high) high = member_high;
+    }
+    low -= ranges[WINDOW];
+    high += ranges[WINDOW];
+    excluded = PyMem_Calloc(rows ? rows : 1, 1);
+    if (excluded == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t k = 0; k < member_count; k++)
+        excluded[members[k]] = 1;
+    Py_ssize_t near = 0;
+    for (Py_ssize_t row = 0; row < rows; row++)
+        near += !excluded[row] && table[row * COLUMNS + LOWS] < high
+                && table[row * COLUMNS + HIGHS] > low;
+    /* the distances, then room for the candidates (at most 3 per distance, and staying) */
+    Py_ssize_t room = member_count * near * PAIRINGS;
+    work = PyMem_Malloc((4 * room + 1) * sizeof(double));
+    if (work == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    double *ordered = work, *shifts = work + room;
+    double relevant = ranges[RELEVANT];
+    Py_ssize_t count = 0;
+    for (Py_ssize_t k = 0; k < member_count; k++) {
+        const double *mine = table + members[k] * COLUMNS + MINE;
+        for (Py_ssize_t row = 0; row < rows; row++) {
+            const double *line = table + row * COLUMNS;
+            if (excluded[row] || !(line[LOWS] < high) || !(line[HIGHS] > low))
+                continue;
+            for (int pairing = 0; pairing < PAIRINGS; pairing++) {
+                double distance = line[THEIRS + pairing] - mine[pairing];
+                if (fabs(distance) < relevant)
+                    ordered[count++] = distance;
+            }
+        }
+    }
+    sort_doubles(ordered, count);
+    Candidates made = candidate_shifts(ordered, count, ranges, shifts);
+    Py_ssize_t first = 0, scored = made.count;
+    if (scored > wanted) { /* perhaps a crowded page: the nearest lines only */
+        scored = sorted_unique(shifts, scored);
+        first = nearest_shifts(shifts, scored, wanted);
+        scored = scored - first < wanted ? scored - first : wanted;
+    }
+    scores = PyMem_Malloc((scored ? scored : 1) * sizeof(long));
+    if (scores == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    misses_after(ordered, count, shifts + first, scored, ranges, scores);
+    long best = made.now;
+    PyObject *chosen = best_first(shifts + first, scores, scored, made.now, tries, &best);
+    if (chosen == NULL)
+        goto done;
+    result = Py_BuildValue("(NdNNdd)", chosen, (made.now - best) / 2.0,
+                           PyBool_FromLong(made.missing), PyBool_FromLong(made.lined_up),
+                           low, high);
+done:
+    PyMem_Free(excluded);
+    PyMem_Free(work);
+    PyMem_Free(scores);
+    PyBuffer_Release(&table_view);
+    PyBuffer_Release(&members_view);
+    PyBuffer_Release(&ranges_view);
+    return result;
+}
+
+PyDoc_STRVAR(scored_candidates_doc,
+"scored_candidates(ordered, ranges) -> (shifts, scores, missing, lined_up, now)\n\n"
+"score_moves' candidates and their scores for the sorted distances ``ordered``, every one\n"
+"(no cut to the nearest, no choice): the units the kernel is made of, for the tests that\n"
+"hold them to their plain definitions and for benchmarks/near_miss_causes.py, which asks\n"
+"what each candidate would score.");
+
+static PyObject *scored_candidates(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 2) {
+        PyErr_SetString(PyExc_TypeError, "scored_candidates(ordered, ranges)");
+        return NULL;
+    }
+    Py_buffer ordered_view, ranges_view;
+    if (read_doubles(args[0], &ordered_view, 1, "ordered") < 0)
+        return NULL;
+    if (read_doubles(args[1], &ranges_view, 1, "ranges") < 0) {
+        PyBuffer_Release(&ordered_view);
+        return NULL;
+    }
+    PyObject *result = NULL, *shift_list = NULL, *score_list = NULL;
+    const double *ordered = ordered_view.buf;
+    Py_ssize_t count = ordered_view.shape[0];
+    double *shifts = NULL;
+    long *scores = NULL;
+    if (ranges_view.shape[0] != RANGES) {
+        PyErr_SetString(PyExc_ValueError, "ranges: scoring_ranges' array");
+        goto done;
+    }
+    for (Py_ssize_t k = 1; k < count; k++)
+        if (!(ordered[k - 1] <= ordered[k])) {
+            PyErr_SetString(PyExc_ValueError, "ordered: sorted distances, no NaN");
+            goto done;
+        }
+    shifts = PyMem_Malloc((3 * count + 1) * sizeof(double));
+    scores = PyMem_Malloc((3 * count + 1) * sizeof(long));
+    if (shifts == NULL || scores == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    Candidates made = candidate_shifts(ordered, count, ranges_view.buf, shifts);
+    misses_after(ordered, count, shifts, made.count, ranges_view.buf, scores);
+    shift_list = PyList_New(made.count);
+    score_list = PyList_New(made.count);
+    if (shift_list == NULL || score_list == NULL)
+        goto done;
+    for (Py_ssize_t k = 0; k < made.count; k++) {
+        PyObject *shift = PyFloat_FromDouble(shifts[k]), *score = PyLong_FromLong(scores[k]);
+        if (shift == NULL || score == NULL) {
+            Py_XDECREF(shift);
+            Py_XDECREF(score);
+            goto done;
+        }
+        PyList_SET_ITEM(shift_list, k, shift);
+        PyList_SET_ITEM(score_list, k, score);
+    }
+    result = Py_BuildValue("(OONNl)", shift_list, score_list, PyBool_FromLong(made.missing),
+                           PyBool_FromLong(made.lined_up), made.now);
+done:
+    Py_XDECREF(shift_list);
+    Py_XDECREF(score_list);
+    PyMem_Free(shifts);
+    PyMem_Free(scores);
+    PyBuffer_Release(&ordered_view);
+    PyBuffer_Release(&ranges_view);
+    return result;
+}
+
+static PyMethodDef methods[] = {
+    {"score_moves", (PyCFunction)(void (*)(void))score_moves, METH_FASTCALL, score_moves_doc},
+    {"scored_candidates", (PyCFunction)(void (*)(void))scored_candidates, METH_FASTCALL,
+     scored_candidates_doc},
+    {NULL, NULL, 0, NULL},
+};
+
+static struct PyModuleDef module = {
+    PyModuleDef_HEAD_INIT,
+    "floatpage.physics.snap_kernel",
+    "The alignment snap's scoring, compiled (see physics/snap_kernel.c's head comment).",
+    0,
+    methods,
+};
+
+PyMODINIT_FUNC PyInit_snap_kernel(void)
+{
+    return PyModule_Create(&module);
+}
