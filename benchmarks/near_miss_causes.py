@@ -40,9 +40,8 @@ import numpy as np
 from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM, measure_alignment
 from floatpage.physics.guides import CENTRE, HIGH, LOW
-from floatpage.physics.snap_scoring import (
-    ALIGNED_MM as SNAP_ALIGNED_MM, candidate_shifts, misses_after,
-)
+from floatpage.physics.snap_kernel import scored_candidates
+from floatpage.physics.snap_scoring import ALIGNED_MM as SNAP_ALIGNED_MM
 from floatpage.physics.snapping import (
     NUDGE_MM, TOLERANCE_MM, _Snapper, THEIRS_COLUMNS, snap_limits, snap_to_guides,
 )
@@ -88,9 +87,9 @@ def side_cause(snapper: _Snapper, roots: list[int], axis: int, delta: float) -> 
     others[members] = False
     ordered = np.sort((table[others, THEIRS_COLUMNS][None]
                        - snapper.paired_mine[axis][members][:, None]).ravel())
-    shifts, _, _, _ = candidate_shifts(ordered, snapper.bounds)
+    shifts, scores, _, _, _ = scored_candidates(ordered, snapper.ranges)
+    shifts, scores = np.array(shifts), np.array(scores)
     resolving = (np.abs(delta - shifts) <= SNAP_ALIGNED_MM) | (np.abs(delta - shifts) >= NEAR_MM)
-    scores = misses_after(ordered, shifts)
     now = int(scores[0])
     better = shifts[resolving & (scores < now)]
     if not len(better):

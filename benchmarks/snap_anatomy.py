@@ -257,12 +257,12 @@ def census_table(captured) -> None:
     counts: dict[str, int] = defaultdict(int)
     options = snapping._Snapper.options
     worked_out = [False]
-    real_candidates = snapping.candidate_shifts
+    real_scoring = snapping.score_moves
     last: dict[tuple, tuple] = {}
 
-    def candidates(*args):
+    def scoring(*args):
         worked_out[0] = True
-        return real_candidates(*args)
+        return real_scoring(*args)
 
     def counted(self, roots, axis):
         worked_out[0] = False
@@ -281,13 +281,13 @@ def census_table(captured) -> None:
             last[key] = answer
         return found
 
-    snapping.candidate_shifts, snapping._Snapper.options = candidates, counted
+    snapping.score_moves, snapping._Snapper.options = scoring, counted
     try:
         for _, (bodies, *args) in captured:
             snapping.snap_page(copy.deepcopy(bodies), *args)
             last.clear()  # one snap at a time: its snapper's id() is the key's first part
     finally:
-        snapping.candidate_shifts, snapping._Snapper.options = real_candidates, options
+        snapping.score_moves, snapping._Snapper.options = real_scoring, options
     print("| scoring of | first | same, none | same, moves | another |")
     print("|---|---|---|---|---|")
     for kind in ("a group alone", "a line"):

@@ -14,6 +14,8 @@ DEBIAN_PACKAGES=(
   fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji
   # GNU FriBidi, the tests' independent reference for right-to-left order (typeset/bidi.py)
   libfribidi0
+  # a C compiler and the Python headers: pip builds the snap's kernel (physics/snap_kernel.c)
+  gcc python3-dev
 )
 
 missing=()
@@ -32,7 +34,7 @@ if ((${#missing[@]})); then
     apt-get update -qq
     "${command[@]}" -qq >/dev/null
   else
-    echo "setup: TeX Live is missing. Run this as root, then run make again:" >&2
+    echo "setup: Debian packages are missing. Run this as root, then run make again:" >&2
     echo "  sudo apt-get update && sudo ${command[*]}" >&2
     exit 1
   fi
@@ -45,17 +47,18 @@ if [[ ! -x .venv/bin/python ]]; then
 fi
 # A strict editable install: a tree of links under build/ that type checkers can follow, with
 # floatpage.physics -> physics/ and so on. It links files, not folders, so a new or removed
-# module means installing again; the stamp holds the list of files it was made from.
+# module means installing again; the stamp holds the list of files it was made from. A C source
+# newer than the stamp is built again (the compiled module is a copy, not a link).
 stamp=.venv/.floatpage-installed
 package_files=$(find physics model typeset tui cli starters latex_templates merge -type f \
-  \( -name '*.py' -o -name '*.j2' -o -name '*.tcss' -o -path 'starters/bundled/*' \) | LC_ALL=C sort)
+  \( -name '*.py' -o -name '*.c' -o -name '*.j2' -o -name '*.tcss' -o -path 'starters/bundled/*' \) | LC_ALL=C sort)
 if [[ ! -f $stamp || pyproject.toml -nt $stamp ]]; then
   echo "setup: installing Python packages into .venv"
   .venv/bin/python -m pip install -q --upgrade pip
   .venv/bin/python -m pip install -q -e '.[test]' --config-settings editable_mode=strict
   printf '%s\n' "$package_files" > "$stamp"
-elif [[ "$(cat "$stamp")" != "$package_files" ]]; then
-  echo "setup: package files were added or removed; linking them into the editable install"
+elif [[ "$(cat "$stamp")" != "$package_files" || -n $(find physics -name '*.c' -newer "$stamp") ]]; then
+  echo "setup: package files were added, removed or compiled ones changed; installing them again"
   .venv/bin/python -m pip install -q --no-deps -e . --config-settings editable_mode=strict
   printf '%s\n' "$package_files" > "$stamp"
 fi

@@ -1,36 +1,38 @@
-"""The snap's scoring (physics.snapping) is written for few NumPy calls: one bisection for all
-the ends a score needs ("d <= x" as "d < the next float after x"), scores in integers, the
-candidates unsorted with repeats dropped among the winners.  Each must give exactly what the
-plain definition gives, on distances that sit right on the ends of the ranges too: a slip of
-one float there changes which moves the snap makes."""
+"""The snap's scoring (physics/snap_kernel.c) is compiled and written for speed: bisections for
+all the ends a score needs ("d <= x" as "d < the next float after x"), scores in integers, the
+candidates unsorted with repeats dropped among the winners, the far distances dropped before
+the sort.  Each must give exactly what the plain definition gives, on distances that sit right
+on the ends of the ranges too: a slip of one float there changes which moves the snap makes.
+The whole scoring is held to a plain, slow reference written here (plain_scoring), on random
+tables made the snap's way."""
 
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from floatpage.physics.guides import CENTRE, HIGH, LOW, features
 from floatpage.physics.alignment import NEAR_MM
+from floatpage.physics.snap_kernel import score_moves, scored_candidates
 from floatpage.physics.snap_scoring import (
-    ALIGNED_MM, ESCAPE_MM, MAX_TRIES, best_first, candidate_shifts, distance_bounds,
-    misses_after, nearest_shifts,
+    ALIGNED_MM, ESCAPE_MM, MAX_CANDIDATES, MAX_TRIES, scoring_ranges,
 )
-from floatpage.physics.snapping import EVERY_MOVE, MINE, THEIRS, THEIRS_COLUMNS, feature_table
+from floatpage.physics.snapping import (
+    EVERY_MOVE, HIGHS_COLUMN, LOWS_COLUMN, MINE, MINE_COLUMNS, THEIRS, THEIRS_COLUMNS,
+    feature_table,
+)
 
 REACH, FARTHEST = 4.0, 12.0
+RANGES = scoring_ranges(REACH, FARTHEST, window=16.0)
 
 
-@settings(max_examples=300, deadline=None)
-@given(st.lists(st.integers(-40, 40), min_size=1, max_size=120),
-       st.sampled_from([0.05, 0.25, 1.0]), st.integers(1, 70))
-def test_the_nearest_shifts_are_the_first_by_distance_from_zero(steps, unit, count):
-    """The cut to the shifts nearest 0 (of two as near, the lower) is the one a stable sort
-    by distance from 0 makes, on values with many ties (a shift and its negative, 0, -0)."""
-    distinct = np.unique(np.array(steps, dtype=float) * unit + 0.0)
-    by_distance = distinct[np.argsort(np.abs(distinct), kind="stable")[:count]]
-    chosen = nearest_shifts(distinct, count)
-    assert np.array_equal(chosen, np.sort(by_distance))
+def candidates_of(ordered: np.ndarray, reach: float = REACH, farthest: float = FARTHEST):
+    """The kernel's candidates, their scores, whether it misses / is on a line, staying's score."""
+    shifts, scores, missing, lined_up, now = scored_candidates(
+        ordered, scoring_ranges(reach, farthest, window=16.0))
+    return np.array(shifts), scores, missing, lined_up, now
 
 
 def on_the_ends(shifts: list[float], others: list[float]) -> np.ndarray:
@@ -41,15 +43,18 @@ def on_the_ends(shifts: list[float], others: list[float]) -> np.ndarray:
 
 
 distances = st.lists(st.floats(-20.0, 20.0, allow_nan=False), max_size=40)
-some_shifts = st.lists(st.floats(-12.0, 12.0, allow_nan=False), min_size=1, max_size=12)
+some_shifts = st.lists(st.floats(-REACH, REACH, allow_nan=False), min_size=1, max_size=12)
 
 
 @settings(max_examples=200, deadline=None)
 @given(some_shifts, distances)
 def test_scores_are_the_counts_of_their_definition(shifts, others):
+    """Every candidate's score (among them each of ``shifts``: a distance within reach), with
+    distances right on the ends of its windows."""
     ordered = on_the_ends(shifts, others)
-    scores = misses_after(ordered, np.array(shifts))
-    for shift, score in zip(shifts, scores.tolist()):
+    candidates, scores, *_ = candidates_of(ordered)
+    assert set(shifts) <= set(candidates.tolist())
+    for shift, score in zip(candidates.tolist(), scores):
         near = int(((ordered > shift - NEAR_MM) & (ordered < shift + NEAR_MM)).sum())
         aligned = int(((ordered >= shift - ALIGNED_MM) & (ordered <= shift + ALIGNED_MM)).sum())
         # near misses (the near range less the aligned), less half a miss per alignment; twice
@@ -63,9 +68,9 @@ def test_candidates_and_the_ranges_read_off_one_bisection(others, on_lines):
     ordered = np.sort(np.array(others + on_lines + on_lines + [
         REACH, -REACH, ALIGNED_MM, -ALIGNED_MM, NEAR_MM, -NEAR_MM, FARTHEST + ESCAPE_MM,
         -FARTHEST - ESCAPE_MM], dtype=float))
-    shifts, missing, lined_up, now = candidate_shifts(ordered, distance_bounds(REACH, FARTHEST))
+    shifts, scores, missing, lined_up, now = candidates_of(ordered)
     assert shifts[0] == 0.0  # staying comes first
-    assert now == misses_after(ordered, np.zeros(1))[0]
+    assert now == scores[0]
     within_reach = ordered[np.abs(ordered) <= REACH]
     escaping = ordered[np.abs(ordered) < FARTHEST + ESCAPE_MM]
     away = np.concatenate([escaping - ESCAPE_MM, escaping + ESCAPE_MM])
@@ -73,30 +78,6 @@ def test_candidates_and_the_ranges_read_off_one_bisection(others, on_lines):
     assert np.array_equal(np.unique(shifts), expected)
     assert missing == bool(((np.abs(ordered) > ALIGNED_MM) & (np.abs(ordered) < NEAR_MM)).any())
     assert lined_up == bool((np.abs(ordered) <= ALIGNED_MM).any())
-
-
-SHIFTS = [-3.0, -1.5, -0.5, 0.5, 1.5, 2.0, 3.0, 7.25]  # pairs of equal length among them
-
-
-@settings(max_examples=200, deadline=None)
-@given(st.lists(st.integers(-6, 3), min_size=len(SHIFTS), max_size=len(SHIFTS)),
-       st.lists(st.integers(0, len(SHIFTS) - 1), min_size=1, max_size=30),
-       st.sampled_from([None, 1, 3, EVERY_MOVE]))
-def test_the_best_moves_come_first_each_once(score_of, named, tries):
-    """Moves of equal score and length (a shift and its opposite) and moves named twice (a
-    shift's score is a function of the shift); at most ``MAX_TRIES`` of them unless told
-    otherwise (_Snapper.try_lesser asks for every move)."""
-    shifts = np.array([SHIFTS[which] for which in named])
-    scores = np.array([score_of[which] for which in named])
-    now = 4
-    if tries is None:
-        chosen, gain = best_first(shifts, scores, now)
-    else:
-        chosen, gain = best_first(shifts, scores, now, tries)
-    # the plain definition: each shift once, sorted by score, then length, then value
-    unique = sorted({(score_of[which], abs(SHIFTS[which]), SHIFTS[which]) for which in named})
-    assert list(chosen) == [shift for _, _, shift in unique][:tries or MAX_TRIES]
-    assert gain == (now - unique[0][0]) / 2
 
 
 def escape_ends(farthest: float) -> list[float]:
@@ -122,7 +103,7 @@ def test_escape_moves_are_cut_where_their_float_leaves_the_reach(others, reach):
     farthest +/- ESCAPE_MM, which the rounding misses by a float on some reaches)."""
     farthest = 3 * reach
     ordered = np.sort(np.array(others + escape_ends(farthest), dtype=float))
-    shifts, *_ = candidate_shifts(ordered, distance_bounds(reach, farthest))
+    shifts, *_ = candidates_of(ordered, reach, farthest)
     within_reach = ordered[np.abs(ordered) <= reach]
     escaping = ordered[np.abs(ordered) < farthest + ESCAPE_MM]
     down, up = escaping - ESCAPE_MM, escaping + ESCAPE_MM
@@ -157,3 +138,88 @@ def test_the_page_lines_as_rows_give_the_distances_to_each_line(items, edges, mi
         theirs = table[row, THEIRS_COLUMNS]
         assert np.array_equal(theirs, mine[row, THEIRS]) if active[row] else \
             np.isinf(theirs).all()
+
+
+def plain_scoring(table: np.ndarray, members: list[int], reach: float, farthest: float,
+                  window: float, tries: int) -> tuple:
+    """What the snap's scoring of the rigid body ``members`` means, in plain Python floats:
+    every distance from a feature of a member to a line of the same kind of a row near the
+    body (reaching into its extent widened by ``window``) that is not its own; the moves onto
+    a line within ``reach`` and out of a near miss at most ``farthest`` long, and staying; of
+    more than MAX_CANDIDATES of them, the distinct ones nearest 0 (of two as near, the lower);
+    each scored as twice its near misses less three times its alignments; those scoring below
+    staying, by score, length, value, each once, at most ``tries``."""
+    rows = table.tolist()
+    mine = [rows[member] for member in members]
+    low = min(row[0] for row in mine) - window
+    high = max(row[2] for row in mine) + window
+    lines = [row for k, row in enumerate(rows)
+             if k not in members and row[LOWS_COLUMN] < high and row[HIGHS_COLUMN] > low]
+    theirs, paired = range(*THEIRS_COLUMNS.indices(15)), range(*MINE_COLUMNS.indices(15))
+    distances = sorted(line[their] - member[my] for member in mine for line in lines
+                       for their, my in zip(theirs, paired))
+
+    def score(shift: float) -> int:
+        near = sum(shift - NEAR_MM < d < shift + NEAR_MM for d in distances)
+        aligned = sum(shift - ALIGNED_MM <= d <= shift + ALIGNED_MM for d in distances)
+        return 2 * near - 3 * aligned
+
+    escaping = [d for d in distances if abs(d) < farthest + ESCAPE_MM]
+    shifts = ([0.0] + [d for d in distances if abs(d) <= reach]
+              + [d - ESCAPE_MM for d in escaping if abs(d - ESCAPE_MM) <= farthest]
+              + [d + ESCAPE_MM for d in escaping if abs(d + ESCAPE_MM) <= farthest])
+    if len(shifts) > MAX_CANDIDATES:
+        shifts = sorted(sorted(set(shifts), key=lambda v: (abs(v), v))[:MAX_CANDIDATES])
+    now = score(0.0)
+    better = sorted({(score(shift), abs(shift), shift) for shift in shifts if score(shift) < now})
+    chosen = tuple(shift for _, _, shift in better[:tries])
+    gain = (now - better[0][0]) / 2 if better else 0.0
+    missing = any(ALIGNED_MM < abs(d) < NEAR_MM for d in distances)
+    lined_up = any(abs(d) <= ALIGNED_MM for d in distances)
+    return chosen, gain, missing, lined_up, low, high
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.integers(2, 40), st.integers(0, 2 ** 32 - 1), st.sampled_from([0.05, 0.25, None]),
+       st.integers(1, 4), st.sampled_from([1, MAX_TRIES, EVERY_MOVE]),
+       st.sampled_from([(4.0, 12.0), (1.0 / 3.0, 1.0), (8.0, 12.0)]))
+def test_the_kernel_scores_as_the_plain_definition(count, seed, grid, body, tries, reaches):
+    """Random pages made as the snap makes its tables (feature_table: inactive rows, the page's
+    edge and middle lines as rows), items crowded into a strip so that most lines are near and
+    crowded pages cut to the nearest candidates; on a grid of 0.05 or 0.25 mm (ties, exact
+    alignments, a shift and its opposite) or anywhere; a body of 1-4 rows."""
+    rng = np.random.default_rng(seed)
+    if grid is None:
+        centres = rng.uniform(0.0, 60.0, (count, 2))
+        halves = rng.uniform(0.5, 20.0, (count, 2))
+    else:
+        centres = rng.integers(0, int(60 / grid), (count, 2)) * grid
+        halves = rng.integers(1, int(20 / grid), (count, 2)) * grid
+    active = rng.random(count) < 0.9
+    active[0] = True
+    edges, middles = np.array([10.0, 50.0]), np.array([30.0])
+    reach, farthest = reaches
+    window = max(farthest, NEAR_MM) + NEAR_MM
+    ranges = scoring_ranges(reach, farthest, window)
+    movable = np.flatnonzero(active)
+    members = rng.choice(movable, size=min(body, len(movable)), replace=False)
+    for axis in (0, 1):
+        table = feature_table(centres, halves, active, axis, edges, middles)
+        found = score_moves(table, members, ranges, MAX_CANDIDATES, tries)
+        assert found == plain_scoring(table, members.tolist(), reach, farthest, window, tries)
+
+
+def test_the_kernel_refuses_what_is_not_a_table():
+    """Wrong arrays are errors, not reads past their ends."""
+    table = feature_table(np.zeros((2, 2)), np.ones((2, 2)), np.ones(2, dtype=bool), 0,
+                          np.zeros(1), np.zeros(1))
+    for bad in (
+        (table[:, :14].copy(), np.array([0]), RANGES),  # not the snap's 15 columns
+        (table.astype(np.float32), np.array([0]), RANGES),  # not float64
+        (table, np.array([5]), RANGES),  # a row outside the table
+        (table, np.array([0], dtype=np.int32), RANGES),  # rows not as int64
+        (table, np.array([0]), RANGES[:-1]),  # not scoring_ranges' array
+        (table, np.zeros(0, dtype=np.int64), RANGES),  # no body
+    ):
+        with pytest.raises((TypeError, ValueError, IndexError)):
+            score_moves(*bad, MAX_CANDIDATES, MAX_TRIES)

@@ -6,12 +6,15 @@ units themselves on a few seeded pages.)"""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 import floatpage.physics.snapping as snapping
 from floatpage.physics import Engine, Params
 from floatpage.physics.guides import ON_LINE_MM
 from floatpage.physics.line_hold import LineHold
+from floatpage.physics.snap_scoring import relevant_distance
 from floatpage.physics.snapping import snap_limits, snap_to_guides
 
 from seeded_scenes import load, mixed_scene
@@ -91,11 +94,11 @@ def test_the_kept_lines_hold_what_a_plain_search_holds():
 
 
 def test_scoring_the_relevant_distances_makes_the_moves_of_scoring_them_all(monkeypatch):
-    """The same pages snapped with every distance sorted and with the far ones always dropped
-    first: the same moves, to the same floats."""
+    """The same pages snapped with every finite distance sorted and with the far ones dropped
+    first (snap_scoring.relevant_distance): the same moves, to the same floats."""
     snapped = []
-    for sort_all_below in (1 << 30, 0):
-        monkeypatch.setattr(snapping, "SORT_ALL_BELOW", sort_all_below)
+    for relevant in (lambda farthest: math.inf, relevant_distance):
+        monkeypatch.setattr(snapping, "relevant_distance", relevant)
         for count, seed, page in PAGES:
             engine = settled(count, seed, page)
             bodies, params = engine.bodies, engine.params
