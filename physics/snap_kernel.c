@@ -94,38 +94,59 @@ static void sort_doubles(double *values, Py_ssize_t count)
     insertion_sort(values, count);
 }
 
-/* np.searchsorted(ordered, needle) from the left: how many values are below needle */
+/* np.searchsorted(ordered, needle) from the left: how many values are below needle.  Without
+   branches (a conditional move per step): a scoring makes hundreds of these bisections, and
+   their comparisons are the kind a branch predictor cannot guess. */
 static Py_ssize_t below(const double *ordered, Py_ssize_t count, double needle)
 {
-    Py_ssize_t low = 0, high = count;
-    while (low < high) {
-        Py_ssize_t middle = low + (high - low) / 2;
-        if (ordered[middle] < needle)
-            low = middle + 1;
-        else
-            high = middle;
+    if (count == 0)
+        return 0;
+    const double *base = ordered;
+    while (count > 1) {
+        Py_ssize_t half = count / 2;
+        base = base[half - 1] < needle ? base + half : base;
+        count -= half;
     }
-    return low;
+    return (base - ordered) + (base[0] < needle);
 }
 
 /* ---- the units of a scoring, each as its NumPy ancestor's docstring had it ---- */
 
 typedef struct {
-    Py_ssize_t count;  /* candidate shifts, staying first */
+    Py_ssize_t count;  /* candidate shifts, sorted, each once */
     int missing;       /* a feature misses a line now: ALIGNED_MM < |distance| < NEAR_MM */
     int lined_up;      /* a feature is on a line now: |distance| <= ALIGNED_MM */
     long now;          /* staying's score (misses_after of 0) */
 } Candidates;
 
+/* Two ascending runs merged into ``into``; returns its length. */
+static Py_ssize_t merged(const double *a, Py_ssize_t a_count, const double *b,
+                         Py_ssize_t b_count, double *into)
+{
+    Py_ssize_t i = 0, j = 0, n = 0;
+    while (i < a_count && j < b_count)
+        into[n++] = b[j] < a[i] ? b[j++] : a[i++];
+    while (i < a_count)
+        into[n++] = a[i++];
+    while (j < b_count)
+        into[n++] = b[j++];
+    return n;
+}
+
 /* Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
-   within reach, or put it just out of a near miss with one (ESCAPE_MM) within ``farthest``;
-   with 0 (staying) first.  The way out of a near miss may be long: two items of nearly the
-   same width cannot line up both edges and centre, and one 1 mm from the other stays in near
-   misses until it has moved 4-5 mm.  Each range of distances (the twelve needles of
-   distance_bounds, with the reach and the farthest move there) is a slice of the sorted ones,
-   so the escape moves need no test of their length.  ``shifts`` holds room for 3 * count + 1. */
+   within reach, or put it just out of a near miss with one (ESCAPE_MM) within ``farthest``,
+   and 0 (staying); sorted, each once.  The way out of a near miss may be long: two items of
+   nearly the same width cannot line up both edges and centre, and one 1 mm from the other
+   stays in near misses until it has moved 4-5 mm.  Each range of distances (the twelve
+   needles of distance_bounds, with the reach and the farthest move there) is a slice of the
+   sorted ones, so the escape moves need no test of their length, and each kind of move is an
+   ascending run (a distance less or plus ESCAPE_MM keeps the order): the candidates are
+   merged, not sorted.  Their order and repeats change no choice (best_first orders the moves
+   by their keys, each once; staying, and any move of 0 or -0, scores what staying does and is
+   never chosen), so they are kept sorted and once, which lets misses_after sweep instead of
+   bisect.  ``shifts`` and ``spare`` hold room for 3 * count + 1 each. */
 static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
-                                   const double *ranges, double *shifts)
+                                   const double *ranges, double *shifts, double *spare)
 {
     Py_ssize_t found[12];
     for (int k = 0; k < 12; k++)
@@ -133,21 +154,33 @@ static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
     const Py_ssize_t *low = found, *high = found + 4;
     double escape = ranges[ESCAPE];
     Candidates made;
-    Py_ssize_t n = 0;
-    shifts[n++] = 0.0;
-    /* |distance| <= reach */
+    /* the runs, one after the other in spare: staying; |distance| <= reach; of |distance| <
+       farthest + ESCAPE_MM, those whose escape down, then up, stays within farthest */
+    Py_ssize_t n = 0, run[4]; /* run[1..3]: where the three runs after staying end */
+    spare[n++] = 0.0;
     for (Py_ssize_t i = low[0]; i < high[0]; i++)
-        shifts[n++] = ordered[i];
-    /* |distance| < farthest + ESCAPE_MM, and of those, the ones whose escape stays in reach */
+        spare[n++] = ordered[i];
+    run[1] = n;
     Py_ssize_t start = high[1] > found[8] ? high[1] : found[8];
     Py_ssize_t stop = low[1] < found[9] ? low[1] : found[9];
     for (Py_ssize_t i = start; i < stop; i++)
-        shifts[n++] = ordered[i] - escape;
+        spare[n++] = ordered[i] - escape;
+    run[2] = n;
     start = high[1] > found[10] ? high[1] : found[10];
     stop = low[1] < found[11] ? low[1] : found[11];
     for (Py_ssize_t i = start; i < stop; i++)
-        shifts[n++] = ordered[i] + escape;
-    made.count = n;
+        spare[n++] = ordered[i] + escape;
+    run[3] = n;
+    /* merged pairwise into shifts, then the halves back into spare, then each value once */
+    Py_ssize_t half = merged(spare, 1, spare + 1, run[1] - 1, shifts);
+    merged(spare + run[1], run[2] - run[1], spare + run[2], run[3] - run[2], shifts + half);
+    merged(shifts, half, shifts + half, n - half, spare);
+    Py_ssize_t kept = 1;
+    shifts[0] = spare[0];
+    for (Py_ssize_t i = 1; i < n; i++)
+        if (spare[i] != shifts[kept - 1])
+            shifts[kept++] = spare[i];
+    made.count = kept;
     made.missing = low[2] > high[2] || low[3] > high[3];
     made.lined_up = high[3] > low[2]; /* -ALIGNED_MM <= distance <= ALIGNED_MM */
     /* staying's score: its four window ends are among the ranges' ends */
@@ -155,36 +188,32 @@ static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
     return made;
 }
 
-/* For each shift, the near misses between a body's features and the lines of the same kind at
-   the sorted distances ``ordered`` from them (one per pair), less ALIGN_GAIN per exact
-   alignment, twice, in integers.  Counted by bisection at the four ends around the shift:
-   d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR, d <= shift + ALIGNED, the last
-   two as "d < the next float after" (weights 2, 3, -2, -3: twice 1 and 1 + ALIGN_GAIN). */
+/* For each of the sorted ``shifts``, the near misses between a body's features and the lines
+   of the same kind at the sorted distances ``ordered`` from them (one per pair), less
+   ALIGN_GAIN per exact alignment, twice, in integers.  Counted at the four ends around the
+   shift: d < shift + NEAR, d < shift - ALIGNED, d <= shift - NEAR, d <= shift + ALIGNED, the
+   last two as "d < the next float after" (weights 2, 3, -2, -3: twice 1 and 1 + ALIGN_GAIN);
+   each end, a rounded sum, grows with the shift, so each count is a sweep of the distances
+   from where the last shift's stopped (the same counts as a bisection, in a pass). */
 static void misses_after(const double *ordered, Py_ssize_t count, const double *shifts,
                          Py_ssize_t shift_count, const double *ranges, long *scores)
 {
-    const double *ends = ranges + WINDOW_ENDS;
-    for (Py_ssize_t k = 0; k < shift_count; k++) {
-        double shift = shifts[k];
-        scores[k] = 2 * (long)below(ordered, count, ends[0] + shift)
-                  + 3 * (long)below(ordered, count, ends[1] + shift)
-                  - 2 * (long)below(ordered, count, nextafter(ends[2] + shift, INFINITY))
-                  - 3 * (long)below(ordered, count, nextafter(ends[3] + shift, INFINITY));
+    static const long weights[4] = {2, 3, -2, -3};
+    for (Py_ssize_t k = 0; k < shift_count; k++)
+        scores[k] = 0;
+    for (int end = 0; end < 4; end++) {
+        double at = ranges[WINDOW_ENDS + end];
+        long weight = weights[end];
+        Py_ssize_t i = 0;
+        for (Py_ssize_t k = 0; k < shift_count; k++) {
+            double needle = at + shifts[k];
+            if (end >= 2)
+                needle = nextafter(needle, INFINITY);
+            while (i < count && ordered[i] < needle)
+                i++;
+            scores[k] += weight * (long)i;
+        }
     }
-}
-
-/* Sorts ``shifts`` and keeps each value once (np.unique; -0.0 and 0.0 are one value);
-   returns how many are left. */
-static Py_ssize_t sorted_unique(double *shifts, Py_ssize_t count)
-{
-    if (count == 0)
-        return 0;
-    sort_doubles(shifts, count);
-    Py_ssize_t kept = 1;
-    for (Py_ssize_t i = 1; i < count; i++)
-        if (shifts[i] != shifts[kept - 1])
-            shifts[kept++] = shifts[i];
-    return kept;
 }
 
 /* The ``wanted`` shifts of ``distinct`` (sorted, each once) nearest to 0, of two as near the
@@ -380,14 +409,14 @@ static PyObject *score_moves(PyObject *module, PyObject *const *args, Py_ssize_t
     for (Py_ssize_t row = 0; row < rows; row++)
         near += !excluded[row] && table[row * COLUMNS + LOWS] < high
                 && table[row * COLUMNS + HIGHS] > low;
-    /* the distances, then room for the candidates (at most 3 per distance, and staying) */
+    /* the distances, then room for the candidates twice (at most 3 per distance, and staying) */
     Py_ssize_t room = member_count * near * PAIRINGS;
-    work = PyMem_Malloc((4 * room + 1) * sizeof(double));
+    work = PyMem_Malloc((7 * room + 2) * sizeof(double));
     if (work == NULL) {
         PyErr_NoMemory();
         goto done;
     }
-    double *ordered = work, *shifts = work + room;
+    double *ordered = work, *shifts = work + room, *spare = shifts + 3 * room + 1;
     double relevant = ranges[RELEVANT];
     Py_ssize_t count = 0;
     for (Py_ssize_t k = 0; k < member_count; k++) {
@@ -404,12 +433,11 @@ static PyObject *score_moves(PyObject *module, PyObject *const *args, Py_ssize_t
         }
     }
     sort_doubles(ordered, count);
-    Candidates made = candidate_shifts(ordered, count, ranges, shifts);
+    Candidates made = candidate_shifts(ordered, count, ranges, shifts, spare);
     Py_ssize_t first = 0, scored = made.count;
     if (scored > wanted) { /* perhaps a crowded page: the nearest lines only */
-        scored = sorted_unique(shifts, scored);
         first = nearest_shifts(shifts, scored, wanted);
-        scored = scored - first < wanted ? scored - first : wanted;
+        scored = wanted;
     }
     scores = PyMem_Malloc((scored ? scored : 1) * sizeof(long));
     if (scores == NULL) {
@@ -436,8 +464,8 @@ done:
 
 PyDoc_STRVAR(scored_candidates_doc,
 "scored_candidates(ordered, ranges) -> (shifts, scores, missing, lined_up, now)\n\n"
-"score_moves' candidates and their scores for the sorted distances ``ordered``, every one\n"
-"(no cut to the nearest, no choice): the units the kernel is made of, for the tests that\n"
+"score_moves' candidates (sorted, each once) and their scores for the sorted distances\n"
+"``ordered``, every one (no cut to the nearest, no choice): the units the kernel is made of, for the tests that\n"
 "hold them to their plain definitions and for benchmarks/near_miss_causes.py, which asks\n"
 "what each candidate would score.");
 
@@ -468,13 +496,14 @@ static PyObject *scored_candidates(PyObject *module, PyObject *const *args, Py_s
             PyErr_SetString(PyExc_ValueError, "ordered: sorted distances, no NaN");
             goto done;
         }
-    shifts = PyMem_Malloc((3 * count + 1) * sizeof(double));
+    shifts = PyMem_Malloc((6 * count + 2) * sizeof(double));
     scores = PyMem_Malloc((3 * count + 1) * sizeof(long));
     if (shifts == NULL || scores == NULL) {
         PyErr_NoMemory();
         goto done;
     }
-    Candidates made = candidate_shifts(ordered, count, ranges_view.buf, shifts);
+    Candidates made = candidate_shifts(ordered, count, ranges_view.buf, shifts,
+                                       shifts + 3 * count + 1);
     misses_after(ordered, count, shifts, made.count, ranges_view.buf, scores);
     shift_list = PyList_New(made.count);
     score_list = PyList_New(made.count);
