@@ -110,6 +110,68 @@ static Py_ssize_t below(const double *ordered, Py_ssize_t count, double needle)
     return (base - ordered) + (base[0] < needle);
 }
 
+/* nextafter(x, +inf) without the library call (a scoring makes a hundred): the next float up
+   in the bits, towards 0 for a negative x */
+static inline double next_up(double x)
+{
+    if (x != x || x == INFINITY)
+        return x;
+    if (x == 0.0)
+        return 4.9406564584124654e-324; /* the least subnormal, from 0 and -0 alike */
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    bits += x > 0.0 ? 1 : -1;
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+/* Room kept between calls: a scoring's arrays are a few kilobytes, a line's a hundred, and
+   an allocation each call cost more than the arithmetic.  Safe as plain statics: a call holds
+   the GIL throughout and runs no Python code while it uses them. */
+static double *scratch = NULL;
+static Py_ssize_t scratch_size = 0;
+static Py_ssize_t *near_rows = NULL;
+static char *is_member = NULL; /* all 0 between calls */
+static Py_ssize_t row_room = 0;
+static long *score_room = NULL;
+static Py_ssize_t score_size = 0;
+
+static long *scores_for(Py_ssize_t count)
+{
+    if (count > score_size) {
+        long *grown = PyMem_Realloc(score_room, count * sizeof(long));
+        if (grown == NULL)
+            return NULL;
+        score_room = grown;
+        score_size = count;
+    }
+    return score_room;
+}
+
+static int make_room(Py_ssize_t doubles, Py_ssize_t rows)
+{
+    if (doubles > scratch_size) {
+        double *grown = PyMem_Realloc(scratch, doubles * sizeof(double));
+        if (grown == NULL)
+            return -1;
+        scratch = grown;
+        scratch_size = doubles;
+    }
+    if (rows > row_room) {
+        Py_ssize_t *grown_rows = PyMem_Realloc(near_rows, rows * sizeof(Py_ssize_t));
+        if (grown_rows == NULL)
+            return -1;
+        near_rows = grown_rows;
+        char *grown_marks = PyMem_Realloc(is_member, rows);
+        if (grown_marks == NULL)
+            return -1;
+        memset(grown_marks, 0, rows);
+        is_member = grown_marks;
+        row_room = rows;
+    }
+    return 0;
+}
+
 /* ---- the units of a scoring, each as its NumPy ancestor's docstring had it ---- */
 
 typedef struct {
@@ -208,7 +270,7 @@ static void misses_after(const double *ordered, Py_ssize_t count, const double *
         for (Py_ssize_t k = 0; k < shift_count; k++) {
             double needle = at + shifts[k];
             if (end >= 2)
-                needle = nextafter(needle, INFINITY);
+                needle = next_up(needle);
             while (i < count && ordered[i] < needle)
                 i++;
             scores[k] += weight * (long)i;
@@ -377,9 +439,6 @@ static PyObject *score_moves(PyObject *module, PyObject *const *args, Py_ssize_t
         return NULL;
     }
     PyObject *result = NULL;
-    char *excluded = NULL;
-    double *work = NULL;
-    long *scores = NULL;
     const double *table = table_view.buf, *ranges = ranges_view.buf;
     const int64_t *members = members_view.buf;
     Py_ssize_t member_count = members_view.shape[0];
@@ -398,37 +457,38 @@ static PyObject *score_moves(PyObject *module, PyObject *const *args, Py_ssize_t
     }
     low -= ranges[WINDOW];
     high += ranges[WINDOW];
-    excluded = PyMem_Calloc(rows ? rows : 1, 1);
-    if (excluded == NULL) {
+    /* the rows near the body, its own left out; then room for the distances and twice for
+       the candidates (at most 3 per distance, and staying) */
+    if (make_room(0, rows) < 0) {
         PyErr_NoMemory();
         goto done;
     }
     for (Py_ssize_t k = 0; k < member_count; k++)
-        excluded[members[k]] = 1;
+        is_member[members[k]] = 1;
     Py_ssize_t near = 0;
-    for (Py_ssize_t row = 0; row < rows; row++)
-        near += !excluded[row] && table[row * COLUMNS + LOWS] < high
-                && table[row * COLUMNS + HIGHS] > low;
-    /* the distances, then room for the candidates twice (at most 3 per distance, and staying) */
+    for (Py_ssize_t row = 0; row < rows; row++) {
+        const double *line = table + row * COLUMNS;
+        if (line[LOWS] < high && line[HIGHS] > low && !is_member[row])
+            near_rows[near++] = row;
+    }
+    for (Py_ssize_t k = 0; k < member_count; k++)
+        is_member[members[k]] = 0;
     Py_ssize_t room = member_count * near * PAIRINGS;
-    work = PyMem_Malloc((7 * room + 2) * sizeof(double));
-    if (work == NULL) {
+    if (make_room(7 * room + 2, rows) < 0) {
         PyErr_NoMemory();
         goto done;
     }
-    double *ordered = work, *shifts = work + room, *spare = shifts + 3 * room + 1;
+    double *ordered = scratch, *shifts = scratch + room, *spare = shifts + 3 * room + 1;
     double relevant = ranges[RELEVANT];
     Py_ssize_t count = 0;
     for (Py_ssize_t k = 0; k < member_count; k++) {
         const double *mine = table + members[k] * COLUMNS + MINE;
-        for (Py_ssize_t row = 0; row < rows; row++) {
-            const double *line = table + row * COLUMNS;
-            if (excluded[row] || !(line[LOWS] < high) || !(line[HIGHS] > low))
-                continue;
+        for (Py_ssize_t n = 0; n < near; n++) {
+            const double *theirs = table + near_rows[n] * COLUMNS + THEIRS;
             for (int pairing = 0; pairing < PAIRINGS; pairing++) {
-                double distance = line[THEIRS + pairing] - mine[pairing];
-                if (fabs(distance) < relevant)
-                    ordered[count++] = distance;
+                double distance = theirs[pairing] - mine[pairing];
+                ordered[count] = distance;
+                count += fabs(distance) < relevant;
             }
         }
     }
@@ -439,7 +499,7 @@ static PyObject *score_moves(PyObject *module, PyObject *const *args, Py_ssize_t
         first = nearest_shifts(shifts, scored, wanted);
         scored = wanted;
     }
-    scores = PyMem_Malloc((scored ? scored : 1) * sizeof(long));
+    long *scores = scores_for(scored + 1);
     if (scores == NULL) {
         PyErr_NoMemory();
         goto done;
@@ -453,9 +513,6 @@ static PyObject *score_moves(PyObject *module, PyObject *const *args, Py_ssize_t
                            PyBool_FromLong(made.missing), PyBool_FromLong(made.lined_up),
                            low, high);
 done:
-    PyMem_Free(excluded);
-    PyMem_Free(work);
-    PyMem_Free(scores);
     PyBuffer_Release(&table_view);
     PyBuffer_Release(&members_view);
     PyBuffer_Release(&ranges_view);
