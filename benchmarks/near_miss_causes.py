@@ -43,7 +43,7 @@ from floatpage.physics.guides import CENTRE, HIGH, LOW
 from floatpage.physics.snap_kernel import scored_candidates
 from floatpage.physics.snap_scoring import ALIGNED_MM as SNAP_ALIGNED_MM
 from floatpage.physics.snapping import (
-    NUDGE_MM, TOLERANCE_MM, _Snapper, THEIRS_COLUMNS, snap_limits, snap_to_guides,
+    MINE_COLUMNS, NUDGE_MM, TOLERANCE_MM, _Snapper, THEIRS_COLUMNS, snap_limits, snap_to_guides,
 )
 from alignment import benchmark_scenes, random_scenes, scene_project
 from guide_cost import fresh_scenes
@@ -86,7 +86,7 @@ def side_cause(snapper: _Snapper, roots: list[int], axis: int, delta: float) -> 
     others = np.ones(len(table), dtype=bool)
     others[members] = False
     ordered = np.sort((table[others, THEIRS_COLUMNS][None]
-                       - snapper.paired_mine[axis][members][:, None]).ravel())
+                       - table[members, MINE_COLUMNS][:, None]).ravel())
     shifts, scores, _, _, _ = scored_candidates(ordered, snapper.ranges)
     shifts, scores = np.array(shifts), np.array(scores)
     resolving = (np.abs(delta - shifts) <= SNAP_ALIGNED_MM) | (np.abs(delta - shifts) >= NEAR_MM)

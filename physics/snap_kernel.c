@@ -1,4 +1,5 @@
-/* The alignment snap's scoring (physics.snapping, _Snapper.options), compiled.
+/* The alignment snap's scoring (physics.snapping, _Snapper.options) and its finding of a
+   group's line (_Snapper.line_of), compiled.
 
 Why C: a scoring is a few dozen operations on arrays of tens to hundreds of floats, called
 tens of thousands of times a page.  Written in NumPy each operation paid its own set-up, and
@@ -588,10 +589,130 @@ done:
     return result;
 }
 
+static int read_flags(PyObject *object, Py_buffer *view, Py_ssize_t count)
+{
+    if (PyObject_GetBuffer(object, view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        return -1;
+    if (view->ndim != 1 || view->itemsize != 1 || view->format == NULL
+            || strcmp(view->format, "?") != 0 || view->shape[0] < count) {
+        PyErr_SetString(PyExc_TypeError, "movers: a bool array, one per row");
+        PyBuffer_Release(view);
+        return -1;
+    }
+    return 0;
+}
+
+PyDoc_STRVAR(line_of_doc,
+"line_of(table, members, row, count, roots, movers, aligned) -> (line, low, high)\n\n"
+"``row`` and the movers (groups whose root is marked in ``movers``) with a feature on one of\n"
+"the lines of ``row``'s group (its rows ``members``) on the axis of ``table`` (an edge on an\n"
+"edge, a centre on a centre: a pairing's distance within ``aligned``), in row order after\n"
+"``row``; and the span [low, high] of the group's features widened by ``aligned`` (the memo\n"
+"keeps it).  Read from the first ``count`` rows of the table (the items, not the page's\n"
+"lines; an inactive row's lines are at +inf, on none).  Compiled for the reason the scoring\n"
+"is: a third of a line's finding was NumPy's set-up.");
+
+static PyObject *line_of(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 7) {
+        PyErr_SetString(PyExc_TypeError,
+                        "line_of(table, members, row, count, roots, movers, aligned)");
+        return NULL;
+    }
+    Py_ssize_t row = PyLong_AsSsize_t(args[2]), count = PyLong_AsSsize_t(args[3]);
+    double aligned = PyFloat_AsDouble(args[6]);
+    if (PyErr_Occurred())
+        return NULL;
+    Py_buffer table_view, members_view, roots_view, movers_view;
+    if (read_doubles(args[0], &table_view, 2, "table") < 0)
+        return NULL;
+    PyObject *result = NULL;
+    int views = 1;
+    if (table_view.shape[1] != COLUMNS || count < 0 || count > table_view.shape[0]
+            || row < 0 || row >= count) {
+        PyErr_SetString(PyExc_ValueError, "table: the snap's 15 columns, count rows or more");
+        goto done;
+    }
+    if (read_rows(args[1], &members_view, count) < 0)
+        goto done;
+    views++;
+    if (read_rows(args[4], &roots_view, count) < 0)
+        goto done;
+    views++;
+    if (roots_view.shape[0] != count) {
+        PyErr_SetString(PyExc_ValueError, "roots: one per row");
+        goto done;
+    }
+    if (read_flags(args[5], &movers_view, count) < 0)
+        goto done;
+    views++;
+    if (members_view.shape[0] == 0) {
+        PyErr_SetString(PyExc_ValueError, "members: some rows");
+        goto done;
+    }
+    if (make_room(0, count) < 0) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    const double *table = table_view.buf;
+    const int64_t *members = members_view.buf, *roots = roots_view.buf;
+    const char *movers = movers_view.buf;
+    Py_ssize_t member_count = members_view.shape[0];
+    double low = INFINITY, high = -INFINITY;
+    for (Py_ssize_t k = 0; k < member_count; k++)
+        for (int feature = LOW_EDGE; feature <= HIGH_EDGE; feature++) {
+            double at = table[members[k] * COLUMNS + feature];
+            if (at < low) low = at;
+            if (at > high) high = at;
+        }
+    /* is_member marks the roots found (all 0 again before returning) */
+    Py_ssize_t found = 0;
+    for (Py_ssize_t other = 0; other < count; other++) {
+        Py_ssize_t root = roots[other];
+        if (root == row || !movers[root] || is_member[root])
+            continue;
+        const double *theirs = table + other * COLUMNS + THEIRS;
+        int on = 0;
+        for (Py_ssize_t k = 0; k < member_count && !on; k++) {
+            const double *mine = table + members[k] * COLUMNS + MINE;
+            for (int pairing = 0; pairing < PAIRINGS; pairing++)
+                on |= fabs(theirs[pairing] - mine[pairing]) <= aligned;
+        }
+        if (on) {
+            is_member[root] = 1;
+            found++;
+        }
+    }
+    PyObject *line = PyList_New(found + 1);
+    if (line == NULL)
+        goto unmark;
+    PyList_SET_ITEM(line, 0, PyLong_FromSsize_t(row));
+    for (Py_ssize_t other = 0, n = 1; other < count && n <= found; other++)
+        if (is_member[other])
+            PyList_SET_ITEM(line, n++, PyLong_FromSsize_t(other));
+    for (Py_ssize_t k = 0; k <= found; k++)
+        if (PyList_GET_ITEM(line, k) == NULL) {
+            Py_CLEAR(line);
+            break;
+        }
+    if (line != NULL)
+        result = Py_BuildValue("(Ndd)", line, low - aligned, high + aligned);
+unmark:
+    for (Py_ssize_t other = 0; other < count; other++)
+        is_member[other] = 0;
+done:
+    if (views > 3) PyBuffer_Release(&movers_view);
+    if (views > 2) PyBuffer_Release(&roots_view);
+    if (views > 1) PyBuffer_Release(&members_view);
+    PyBuffer_Release(&table_view);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"score_moves", (PyCFunction)(void (*)(void))score_moves, METH_FASTCALL, score_moves_doc},
     {"scored_candidates", (PyCFunction)(void (*)(void))scored_candidates, METH_FASTCALL,
      scored_candidates_doc},
+    {"line_of", (PyCFunction)(void (*)(void))line_of, METH_FASTCALL, line_of_doc},
     {NULL, NULL, 0, NULL},
 };
 

@@ -40,7 +40,7 @@ from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members
-from floatpage.physics.snap_kernel import score_moves
+from floatpage.physics.snap_kernel import line_of as find_line, score_moves
 from floatpage.physics.snap_memo import AxisMemo
 from floatpage.physics.snap_scoring import (
     ALIGNED_MM, MAX_CANDIDATES, MAX_TRIES, NO_SHIFTS, relevant_distance, scoring_ranges, trues,
@@ -165,7 +165,7 @@ class _Snapper:
                                 for axis in (0, 1)] for row, members in member_lists.items()}
         is_mover = np.zeros(bodies.count, dtype=bool)
         is_mover[self.movers] = True
-        self.is_mover = is_mover.tolist()
+        self.mover_mask = is_mover  # per row: whether it is a mover's root (line_of)
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
         self.bleeds = {row: any(bleed[member] for member in members)
@@ -182,11 +182,9 @@ class _Snapper:
                                         *lines[bleed][axis]) for axis in (0, 1)]
                   for bleed in kinds}
         self.tables = tables  # [bleed][axis]: (rows + page lines, COLUMNS)
-        kept = tables[kinds[0]]
+        kept = self.item_tables = tables[kinds[0]]  # [axis]: for what reads the rows alone
         count = bodies.count
         self.lines = [table[:count, FEATURES] for table in kept]
-        self.theirs = [table[:count, THEIRS_COLUMNS] for table in kept]
-        self.paired_mine = [table[:count, MINE_COLUMNS] for table in kept]
         self.lows = [table[:count, LOWS_COLUMN] for table in kept]
         self.highs = [table[:count, HIGHS_COLUMN] for table in kept]
         self.moved_from: dict[int, np.ndarray] = {}
@@ -268,20 +266,12 @@ class _Snapper:
         known = self.memo.recall(("line", row), axis)
         if known is not None:
             return known
-        members = self.members[row]
-        if len(members) == 1:  # most groups: one row, read by plain indexing
-            features = self.lines[axis][row].tolist()
-            gaps = self.theirs[axis] - self.paired_mine[axis][row]  # (n, 5)
-        else:
-            features = self.lines[axis][members].ravel().tolist()
-            gaps = (self.theirs[axis][:, None] - self.paired_mine[axis][members][None]
-                    ).reshape(len(self.theirs[axis]), -1)  # (n, m * 5)
-        # any pairing on a line (an inactive row's are +inf: on none)
-        on = (np.abs(gaps) <= ALIGNED_MM) @ trues(gaps.shape[1])
-        roots, is_mover = self.roots, self.is_mover
-        line = [row] + sorted({root for root in roots[on].tolist() if is_mover[root]} - {row})
-        return self.memo.keep(("line", row), axis, min(features) - ALIGNED_MM,
-                              max(features) + ALIGNED_MM, line)
+        # compiled (physics/snap_kernel.c): any pairing of a member's features with another
+        # row's within ALIGNED_MM, read from the kind of table whose first rows every kind
+        # shares (an inactive row's lines are +inf: on none)
+        line, low, high = find_line(self.item_tables[axis], self.members[row], row,
+                                    self.bodies.count, self.roots, self.mover_mask, ALIGNED_MM)
+        return self.memo.keep(("line", row), axis, low, high, line)
 
     def options(self, roots: list[int], axis: int) -> "Moves":
         """The moves along ``axis`` that would lower the near misses of the groups of

@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from floatpage.physics.guides import CENTRE, HIGH, LOW, features
 from floatpage.physics.alignment import NEAR_MM
-from floatpage.physics.snap_kernel import score_moves, scored_candidates
+from floatpage.physics.snap_kernel import line_of, score_moves, scored_candidates
 from floatpage.physics.snap_scoring import (
     ALIGNED_MM, ESCAPE_MM, MAX_CANDIDATES, MAX_TRIES, scoring_ranges,
 )
@@ -222,3 +222,36 @@ def test_the_kernel_refuses_what_is_not_a_table():
     ):
         with pytest.raises((TypeError, ValueError, IndexError)):
             score_moves(*bad, MAX_CANDIDATES, MAX_TRIES)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.integers(2, 40), st.integers(0, 2 ** 32 - 1), st.sampled_from([0.05, 0.25, None]))
+def test_the_kernel_finds_the_line_of_the_plain_definition(count, seed, grid):
+    """A group's line (snap_kernel.line_of): the group and every mover with a feature within
+    ALIGNED_MM of a line of the group's of the same kind, on random pages of groups (rows
+    following others), movers and inactive rows; on a grid many features line up exactly."""
+    rng = np.random.default_rng(seed)
+    if grid is None:
+        centres, halves = rng.uniform(0.0, 60.0, (count, 2)), rng.uniform(0.5, 20.0, (count, 2))
+    else:
+        centres = rng.integers(0, int(60 / grid), (count, 2)) * grid
+        halves = rng.integers(1, int(20 / grid), (count, 2)) * grid
+    active = rng.random(count) < 0.9
+    follows = rng.random(count) < 0.3
+    follows[0] = False
+    roots = np.where(follows, rng.choice(np.flatnonzero(~follows), count), np.arange(count))
+    movers = rng.random(count) < 0.8
+    row = int(rng.choice(np.flatnonzero(roots == np.arange(count))))
+    members = np.flatnonzero((roots == row) & active)
+    if not len(members):
+        members = np.array([row])
+    for axis in (0, 1):
+        table = feature_table(centres, halves, active, axis, np.array([10.0]), np.array([30.0]))
+        rows = table.tolist()
+        on = {roots[other] for other in range(count) for member in members.tolist()
+              for their, my in zip(range(3, 8), range(8, 13))
+              if abs(rows[other][their] - rows[member][my]) <= ALIGNED_MM}
+        features = [rows[member][k] for member in members.tolist() for k in (0, 1, 2)]
+        expected = ([row] + sorted({root for root in on if movers[root]} - {row}),
+                    min(features) - ALIGNED_MM, max(features) + ALIGNED_MM)
+        assert line_of(table, members, row, count, roots, movers, ALIGNED_MM) == expected
