@@ -265,40 +265,6 @@ def touching_pushes(centres: np.ndarray, reach: np.ndarray, i: np.ndarray, j: np
     return touching, pushes
 
 
-def pair_push(dx: float, dy: float, reach_x: float, reach_y: float, blocked_x: bool,
-              blocked_y: bool, radial_share: float = RADIAL_SHARE) -> tuple[float, float] | None:
-    """``touching_pushes`` for one pair, in Python floats: the push on j away from i, or None
-    if their halos do not touch.  ``dx, dy`` is j's centre less i's, ``reach_*`` the pair's
-    reach, ``blocked_*`` its blocked axes.  The same operations on the same floats in the same
-    order, so the same numbers bit for bit (tests/physics hold the two together): for a caller
-    that sums the forces of a handful of pairs (the snap's rest check, physics.rest_check),
-    where thirty NumPy calls cost far more than the arithmetic."""
-    penetration_x, penetration_y = reach_x - abs(dx), reach_y - abs(dy)
-    if not min(penetration_x, penetration_y) > 0:
-        return None
-    squared_x, squared_y = penetration_x * penetration_x, penetration_y * penetration_y
-    sharp_x, sharp_y = squared_x * squared_x, squared_y * squared_y
-    if blocked_x or blocked_y:
-        sharp_x, sharp_y = (0.0 if blocked_y else sharp_x), (0.0 if blocked_x else sharp_y)
-        sharp_x, sharp_y = (sharp_x + 1.0 if blocked_x else sharp_x), (
-            sharp_y + 1.0 if blocked_y else sharp_y)
-    total = sharp_x + sharp_y
-    if total == 0:
-        total = 1.0
-    push_x = math.copysign(penetration_x, dx) * (sharp_y / total)
-    push_y = math.copysign(penetration_y, dy) * (sharp_x / total)
-    if radial_share == 0:
-        return push_x, push_y
-    length = math.sqrt(dx * dx + dy * dy)
-    if length == 0:
-        length = 1.0
-    depth = math.sqrt(push_x * push_x + push_y * push_y)
-    along = radial_share * depth / length
-    push_x += 0.0 if blocked_x else along * dx
-    push_y += 0.0 if blocked_y else along * dy
-    return push_x, push_y
-
-
 def wall_rest_box(halves: np.ndarray, page_w_mm: float, page_h_mm: float, margin,
                   far_margin=None) -> tuple[np.ndarray, np.ndarray]:
     """Where each centre may rest without a wall push: lowest and highest, (n, 2) each.

@@ -25,17 +25,18 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import (
-    RADIAL_SHARE, blocked_axes, candidate_pairs, pair_push, wall_rest_box,
+    RADIAL_SHARE, blocked_axes, candidate_pairs, wall_rest_box,
 )
 from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
 from floatpage.physics.line_hold import LineHold
+from floatpage.physics.snap_kernel import rest_net
 from floatpage.physics.stillness import PROBE_HEAT
 
 REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
 # such an item 0.0096 mm, below the stillness threshold of 0.01 mm a step
-NOT_KEPT = object()  # RestCheck.net: a pair whose push on the page as it is is not kept
+NO_ROWS = np.zeros(0, dtype=np.int64)  # RestCheck.net: the page as it is, nothing moved
 PROBE_RADIAL = RADIAL_SHARE * min(1.0, PROBE_HEAT / RADIAL_FADE_HEAT)  # the pushes' sliding share
 
 
@@ -92,84 +93,35 @@ class RestCheck:
         self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
         self.group_rows = group_members(roots, active)
         self.grouped = bool((roots != np.arange(count)).any())
-        # what the force sum (net) reads, as Python lists: per pair, its ends, its reach, its
-        # blocked axes and its ends' shares; per row, its rest box and its anchor spring
-        reach_x, reach_y = self.reach.T.tolist()
-        blocked_x, blocked_y = self.blocked.T.tolist() if len(i) else ([], [])
-        self.pair_lists = (i.tolist(), j.tolist(), reach_x, reach_y, blocked_x, blocked_y,
-                           self.share_i.tolist(), self.share_j.tolist())
-        self.row_lists = (self.rest_low[:, 0].tolist(), self.rest_low[:, 1].tolist(),
-                          self.rest_high[:, 0].tolist(), self.rest_high[:, 1].tolist(),
-                          self.anchor_k.tolist(), self.anchors[:, 0].tolist(),
-                          self.anchors[:, 1].tolist())
-        # the centres as Python lists, per axis, kept in step by moved: a check copies one
-        # (pointers) instead of making a float object of every centre
-        self.centre_lists = bodies.centres.T.tolist()
+        # what the force sum (snap_kernel.rest_net) reads, as tables: per pair, its ends, its
+        # reach, its blocked axes and its ends' shares; per row, its rest box and its anchor
+        # spring (the columns rest_net names)
+        self.pair_ends = np.column_stack([i, j]).astype(np.int64)
+        self.pair_table = np.column_stack([self.reach, self.blocked, self.share_i, self.share_j]
+                                          ).astype(float).reshape(len(i), 6)
+        self.row_table = np.column_stack([self.rest_low, self.rest_high, self.anchor_k,
+                                          self.anchors])
+        self.forces = np.array([K_CONTACT, K_WALL, PROBE_RADIAL])
         # what reached_by reads, as Python lists
+        self.pair_ends_lists = (i.tolist(), j.tolist())
         self.pair_lists_of = [pairs.tolist() for pairs in self.pairs_of]
         self.root_list, self.movable_list = roots.tolist(), self.movable.tolist()
         self.group_row_lists = [rows.tolist() for rows in self.group_rows]
         self.reach_of: dict[bytes, tuple[np.ndarray, list[int], list[int]]] = {}
         self.before: dict[int, tuple[np.ndarray | None, float]] = {}  # per group: as_it_is
-        self.pushes: dict[int, tuple[float, float] | None] = {}  # per pair, on the page as it is
 
-    def net(self, rows: list[int], pairs: list[int], xs: list[float], ys: list[float],
-            moving: set[int] | None = None) -> list[tuple[float, float]]:
+    def net(self, rows: list[int], pairs: list[int], members: np.ndarray = NO_ROWS,
+            axis: int = 0, shift: float = 0.0) -> list[tuple[float, float]]:
         """Net acceleration of each of ``rows`` (``pairs`` must hold every pair that touches
-        them), with the items' centres at ``xs, ys``.  The fast mode's sums (ContactPushes,
-        WallPushes, AnchorPulls at the probe's heat: pair_sums adds a row's pushes pair by
-        pair, as j and as i apart), worked in Python floats on the few pairs of one move
-        (fast_forces.pair_push): the same numbers bit for bit, for a tenth of the NumPy calls.
-
-        Given ``moving``, ``xs, ys`` are the page's own centres but for those rows (a move
-        being tried): the push of a pair with neither end among them is then the page's, kept
-        from an earlier sum until an end moves (``moved``); on a page of 120 items three in
-        five of the pushes the snap's rest checks add were kept ones."""
-        ends_i, ends_j, reach_x, reach_y, blocked_x, blocked_y, share_i, share_j = \
-            self.pair_lists
-        kept = self.pushes if moving is not None else None
-        as_j: dict[int, list[float]] = {}
-        as_i: dict[int, list[float]] = {}
-        for pair in pairs:
-            i, j = ends_i[pair], ends_j[pair]
-            if kept is not None and i not in moving and j not in moving:
-                push = kept.get(pair, NOT_KEPT)
-                if push is NOT_KEPT:
-                    push = kept[pair] = pair_push(xs[j] - xs[i], ys[j] - ys[i], reach_x[pair],
-                                                  reach_y[pair], blocked_x[pair],
-                                                  blocked_y[pair], PROBE_RADIAL)
-            else:
-                push = pair_push(xs[j] - xs[i], ys[j] - ys[i], reach_x[pair], reach_y[pair],
-                                 blocked_x[pair], blocked_y[pair], PROBE_RADIAL)
-            if push is None:
-                continue
-            push_x, push_y = push[0] * K_CONTACT, push[1] * K_CONTACT
-            # j's share, then i's, each added to a sum started at 0.0 (so a -0.0 share is 0.0)
-            share = share_j[pair]
-            summed = as_j.get(j)
-            if summed is None:
-                as_j[j] = [0.0 + push_x * share, 0.0 + push_y * share]
-            else:
-                summed[0] += push_x * share
-                summed[1] += push_y * share
-            share = share_i[pair]
-            summed = as_i.get(i)
-            if summed is None:
-                as_i[i] = [0.0 + push_x * share, 0.0 + push_y * share]
-            else:
-                summed[0] += push_x * share
-                summed[1] += push_y * share
-        low_x, low_y, high_x, high_y, anchor_k, anchor_x, anchor_y = self.row_lists
-        nothing = (0.0, 0.0)
-        found = []
-        for row in rows:
-            on_j, on_i = as_j.get(row, nothing), as_i.get(row, nothing)
-            x, y = xs[row], ys[row]
-            acc_x = on_j[0] - on_i[0] + K_WALL * (min(max(x, low_x[row]), high_x[row]) - x)
-            acc_y = on_j[1] - on_i[1] + K_WALL * (min(max(y, low_y[row]), high_y[row]) - y)
-            k = anchor_k[row]
-            found.append((acc_x + k * (anchor_x[row] - x), acc_y + k * (anchor_y[row] - y)))
-        return found
+        them), with ``members`` moved by ``shift`` along ``axis`` (a move being tried) and
+        every other item where it is.  The fast mode's sums (ContactPushes, WallPushes,
+        AnchorPulls at the probe's heat: pair_sums adds a row's pushes pair by pair, as j and
+        as i apart), worked pair by pair on the few pairs of one move, compiled
+        (snap_kernel.rest_net): the same numbers bit for bit, for a fraction of the time of
+        the NumPy terms (thirty calls for a handful of pairs) and of Python floats (most of a
+        successful try's time)."""
+        return rest_net(rows, pairs, self.bodies.centres, members, axis, shift, self.pair_ends,
+                        self.pair_table, self.row_table, self.forces)
 
     def keeps_rest(self, members: np.ndarray, axis: int, shift: float) -> bool:
         """Whether moving the rigid body ``members`` by ``shift`` along ``axis`` leaves it and
@@ -181,12 +133,7 @@ class RestCheck:
         groups, rows, pairs = self.reached_by(members)
         if len(groups) == 0:
             return True
-        along, across = self.centre_lists[axis].copy(), self.centre_lists[1 - axis]
-        moving = members.tolist()
-        for row in moving:
-            along[row] += shift
-        per_row = self.net(rows, pairs, *((along, across) if axis == 0 else (across, along)),
-                           set(moving))
+        per_row = self.net(rows, pairs, members, axis, shift)
         if self.grouped:
             after_net = self.group_sums(per_row, rows, groups)
             size = np.abs(after_net)
@@ -217,7 +164,7 @@ class RestCheck:
         key = members.tobytes()
         found = self.reach_of.get(key)
         if found is None:
-            ends_i, ends_j = self.pair_lists[:2]
+            ends_i, ends_j = self.pair_ends_lists
             pairs_of, roots, movable = self.pair_lists_of, self.root_list, self.movable_list
             touched = set(members.tolist())
             for member in members.tolist():
@@ -244,7 +191,7 @@ class RestCheck:
                     if self.hold > 0 else None)
             rows = [row for group in missing for row in self.group_row_lists[group]]
             pairs = sorted({pair for row in rows for pair in self.pair_lists_of[row]})
-            net = self.group_net(rows, pairs, *self.centre_lists, found, set())
+            net = self.group_net(rows, pairs, found)
             for group, held_now, push in zip(missing, held if held is not None else
                                              [None] * len(missing), self.unheld(net, held)):
                 known[group] = (held_now, push)
@@ -257,14 +204,6 @@ class RestCheck:
         it was."""
         self.before.clear()
         self.lines.moved(rows, axes)
-        for axis in axes:
-            column = self.centre_lists[axis]
-            for row, at in zip(rows.tolist(), self.bodies.centres[rows, axis].tolist()):
-                column[row] = at
-        pushes = self.pushes
-        for row in rows.tolist():
-            for pair in self.pair_lists_of[row]:
-                pushes.pop(pair, None)
 
     def unheld(self, acc: np.ndarray, held: np.ndarray | None) -> np.ndarray:
         """Each group's largest push the lines' hold leaves where ``held`` (on a line, per
@@ -274,10 +213,9 @@ class RestCheck:
             size = np.where(held, np.maximum(size - self.hold, 0.0), size)
         return np.maximum(size[:, 0], size[:, 1])  # a reduction's set-up costs more
 
-    def group_net(self, rows: list[int], pairs: list[int], xs: list[float], ys: list[float],
-                  groups: np.ndarray, moving: set[int] | None = None) -> np.ndarray:
-        """Each group's net acceleration, (len(groups), 2) (``moving``: as ``net``'s)."""
-        return self.group_sums(self.net(rows, pairs, xs, ys, moving), rows, groups)
+    def group_net(self, rows: list[int], pairs: list[int], groups: np.ndarray) -> np.ndarray:
+        """Each group's net acceleration with the page as it is, (len(groups), 2)."""
+        return self.group_sums(self.net(rows, pairs), rows, groups)
 
     def group_sums(self, per_row: list[tuple[float, float]], rows: list[int],
                    groups: np.ndarray) -> np.ndarray:

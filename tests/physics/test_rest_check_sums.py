@@ -1,7 +1,7 @@
-"""The snap's rest check (physics.rest_check) sums the forces of a move's few pairs in Python
-floats (fast_forces.pair_push) instead of the fast mode's vectorised terms: it must give the
-same numbers bit for bit, or a snap would take other moves than the physics it checks for
-(and a settled file would stop being a fixed point)."""
+"""The snap's rest check (physics.rest_check) sums the forces of a move's few pairs pair by pair
+in compiled code (snap_kernel.rest_net) instead of the fast mode's vectorised terms: it must
+give the same numbers bit for bit, or a snap would take other moves than the physics it checks
+for (and a settled file would stop being a fixed point)."""
 
 from __future__ import annotations
 
@@ -10,15 +10,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from floatpage.physics import Engine, Params
-from floatpage.physics.fast_forces import (
-    pair_push, target_gap, touching_pushes, wall_pushes_in,
-)
+from floatpage.physics.fast_forces import target_gap, touching_pushes, wall_pushes_in
 from floatpage.physics.force_terms import K_CONTACT, K_WALL
 from floatpage.physics.geometry import pair_sums, xy_slots
 from floatpage.physics.guides import hold_strength, page_lines, snap_range
 from floatpage.physics.params import page_margin, page_scale
 from floatpage.physics.rest_check import PROBE_RADIAL, RestCheck
-from floatpage.physics.snapping import snap_limits, snap_to_guides
+from floatpage.physics.snap_kernel import rest_net
 
 from seeded_scenes import load, mixed_scene
 
@@ -31,6 +29,8 @@ pair = st.tuples(coordinate, coordinate, st.floats(0.0, 25.0), st.floats(0.0, 25
 @given(st.lists(pair, min_size=1, max_size=12), st.sampled_from([0.0, PROBE_RADIAL, 0.5]),
        st.data())
 def test_one_pairs_push_is_the_vectorised_push_bit_for_bit(pairs, radial_share, data):
+    """The compiled push of one pair (rest_net's pair_push) against touching_pushes, on pairs
+    exactly touching, on one point, on one line, with blocked axes or none."""
     # some pairs exactly touching, on one point, or on one line
     pairs = [(0.0, 0.0, reach_x, reach_y, *rest) if k % 5 == 1 else
              (reach_x, dy, reach_x, reach_y, *rest) if k % 5 == 2 else
@@ -45,11 +45,17 @@ def test_one_pairs_push_is_the_vectorised_push_bit_for_bit(pairs, radial_share, 
     if data.draw(st.booleans()):
         blocked[:] = False  # touching_pushes drops an all-clear table: its other path
     touching, pushes = touching_pushes(centres, reach, i, j, blocked, radial_share)
-    one_by_one = [pair_push(dx, dy, reach_x, reach_y, bool(bx), bool(by), radial_share)
-                  for (dx, dy, reach_x, reach_y, _, _), (bx, by) in zip(pairs, blocked)]
-    assert [k for k, push in enumerate(one_by_one) if push is not None] == touching.tolist()
-    found = np.array([push for push in one_by_one if push is not None]).reshape(-1, 2)
-    assert found.tobytes() == pushes.tobytes()  # the same floats, signed zeros too
+    # each pair's push on its j alone: every other force off (no contact constant, no walls,
+    # no springs, i takes no share), so a row's net is 0.0 plus its push
+    pair_table = np.column_stack([reach, blocked, np.zeros(len(pairs)), np.ones(len(pairs))])
+    row_table = np.zeros((len(centres), 7))
+    row_table[:, :2], row_table[:, 2:4] = -np.inf, np.inf
+    found = np.array(rest_net(j.tolist(), j.tolist(), centres, np.zeros(0, dtype=np.int64), 0,
+                              0.0, np.column_stack([i, j]).astype(np.int64), pair_table,
+                              row_table, np.array([1.0, 0.0, radial_share])))
+    expected = np.zeros((len(pairs), 2))
+    expected[touching] += pushes
+    assert (found + 0.0).tobytes() == (expected + 0.0).tobytes()  # a signed zero is summed away
 
 
 def vectorised_net(rest: RestCheck, rows: list[int], pairs: list[int],
@@ -96,33 +102,9 @@ def test_the_rest_checks_sums_are_the_fast_modes_bit_for_bit():
             for shift in (0.0, 1.3, -2.7):
                 centres = bodies.centres.copy()
                 centres[row, 0] += shift
-                found = np.array(rest.net(rows, pairs, *centres.T.tolist())).reshape(-1, 2)
+                found = np.array(rest.net(rows, pairs, np.array([row]), 0, shift)
+                                 ).reshape(-1, 2)
                 expected = vectorised_net(rest, rows, pairs, centres)
                 assert found.tobytes() == expected.tobytes(), (count, seed, row, shift)
                 touched += int(np.any(found != 0.0))
         assert touched > count  # the pages are pressed: most sums are not zero
-
-
-class SummedTwice(RestCheck):
-    """The snap's rest check, each sum of a move being tried also made with every push worked
-    out afresh: the pushes it keeps between checks must be the page's as it is."""
-
-    def net(self, rows, pairs, xs, ys, moving=None):
-        found = super().net(rows, pairs, xs, ys, moving)
-        if moving is not None:
-            afresh = super().net(rows, pairs, xs, ys)
-            assert np.array(found).tobytes() == np.array(afresh).tobytes(), (rows, moving)
-            self.compared += 1
-        return found
-
-
-def test_the_pushes_kept_between_rest_checks_are_the_pages_own():
-    """A roomy page's snap (120 items on A4 landscape, 80 on A5: hundreds of moves, each
-    making the pushes of its pairs stale) with every sum checked against one afresh."""
-    for count, seed, page in ((120, 3001, (297.0, 210.0)), (80, 3002, (148.0, 210.0))):
-        engine = settled(count, 0.4, seed, page)
-        bodies, params = engine.bodies, engine.params
-        clearance, margin, rest = snap_limits(bodies, *page, params)
-        rest.__class__, rest.compared = SummedTwice, 0
-        moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest)
-        assert moves > 50 and rest.compared > 50, (count, seed, moves, rest.compared)
