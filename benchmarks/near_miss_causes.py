@@ -94,7 +94,7 @@ def side_cause(snapper: _Snapper, roots: list[int], axis: int, delta: float) -> 
     better = shifts[resolving & (scores < now)]
     if not len(better):
         return "no gain, trade" if (resolving & (scores == now)).any() else "no gain"
-    lowest, highest = snapper.limit_lists[axis]
+    lowest, highest = snapper.lowest[:, axis].tolist(), snapper.highest[:, axis].tolist()
     rows = members.tolist()
     at = snapper.bodies.centres[members, axis].tolist()
     inside = [shift for shift in better.tolist()

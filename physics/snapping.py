@@ -40,7 +40,7 @@ from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members
-from floatpage.physics.snap_kernel import line_of as find_line, score_moves
+from floatpage.physics.snap_kernel import fitting_shifts, line_of as find_line, score_moves
 from floatpage.physics.snap_memo import AxisMemo
 from floatpage.physics.snap_scoring import (
     ALIGNED_MM, MAX_CANDIDATES, MAX_TRIES, NO_SHIFTS, relevant_distance, scoring_ranges, trues,
@@ -153,11 +153,8 @@ class _Snapper:
         self.ranges = scoring_ranges(ALIGN_REACH * self.reach, self.farthest, self.window,
                                      relevant_distance(self.farthest))
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
-        self.half_lists = [self.halves[:, axis].tolist() for axis in (0, 1)]
-        # the centres as Python lists per axis, kept in step by attempt (fits reads a handful)
-        self.centre_lists = bodies.centres.T.tolist()
-        self.limit_lists = [(self.lowest[:, axis].tolist(), self.highest[:, axis].tolist())
-                            for axis in (0, 1)]
+        # what fits reads besides the page: the clearance, the longest move, the tolerance
+        self.fit_limits = np.array([clearance_mm, self.farthest, TOLERANCE_MM])
         # per group and axis: too large to fit between its margins (it has no move to make)
         too_large, bleed = (self.lowest > self.highest).tolist(), bodies.bleed.tolist()
         member_lists = {row: members.tolist() for row, members in self.members.items()}
@@ -182,7 +179,7 @@ class _Snapper:
                                         *lines[bleed][axis]) for axis in (0, 1)]
                   for bleed in kinds}
         self.tables = tables  # [bleed][axis]: (rows + page lines, COLUMNS)
-        kept = self.item_tables = tables[kinds[0]]  # [axis]: for what reads the rows alone
+        kept = self.item_tables = tuple(tables[kinds[0]])  # [axis]: what reads the rows alone
         count = bodies.count
         self.lines = [table[:count, FEATURES] for table in kept]
         self.lows = [table[:count, LOWS_COLUMN] for table in kept]
@@ -315,11 +312,7 @@ class _Snapper:
                 for root in moves.roots:
                     self.moved_from[root] = self.mine(root, axis)
                 before = self.lines[axis][members]
-                centres = self.bodies.centres
-                centres[members, axis] += shift
-                along = self.centre_lists[axis]
-                for member, at in zip(members.tolist(), centres[members, axis].tolist()):
-                    along[member] = at
+                self.bodies.centres[members, axis] += shift
                 for tables in self.tables.values():
                     tables[axis][members] += shift
                 self.memo.moved(axis, before, self.lines[axis][members])
@@ -336,106 +329,12 @@ class _Snapper:
 
         Only the items a move could bring within the clearance are tested: within it of a
         member across the axis, and within it and the longest move along it (on a 600-item
-        page the test against every item was two thirds of the snapping's time).  For a body of
-        one item the test is plain Python on floats: it meets a handful of neighbours and tries
-        at most ``MAX_TRIES`` moves, and NumPy's set-up per call cost more than the arithmetic;
-        a body of several (a line) is tested in NumPy (body_fits)."""
-        rows = members.tolist()
-        along = self.centre_lists[axis]
-        current = [along[row] for row in rows]
-        lowest, highest = self.limit_lists[axis]
-        limits = [(min(lowest[row], at) - TOLERANCE_MM, max(highest[row], at) + TOLERANCE_MM)
-                  for row, at in zip(rows, current)]
-        if len(rows) == 1:  # most bodies: one row, no loop over members
-            (low, high), at = limits[0], current[0]
-            inside = [shift for shift in shifts if low <= at + shift <= high]
-        else:
-            inside = [shift for shift in shifts if all(
-                low <= at + shift <= high for at, (low, high) in zip(current, limits))]
-        if not inside:
-            return inside
-        if len(rows) > 1:
-            return self.body_fits(members, axis, inside)
-        beside = self.centre_lists[1 - axis]
-        halves_along, halves_across = self.half_lists[axis], self.half_lists[1 - axis]
-        clearance, far = self.clearance, self.clearance + self.farthest
-        row, at = rows[0], current[0]
-        mine_across, mine_half_across, mine_half = (beside[row], halves_across[row],
-                                               halves_along[row])
-        checks = []  # (its position, their reach, the gap across, the gap needed)
-        for other in self.neighbours(members, axis):
-            there = along[other]
-            across = abs(beside[other] - mine_across) - halves_across[other] - mine_half_across
-            now = abs(there - at) - (halves_along[other] + mine_half)
-            if across < clearance and now < far:
-                needed = min(max(now, across), clearance) - TOLERANCE_MM
-                if not across >= needed:  # else every shift passes: max(gap, across)
-                    checks.append((there, halves_along[other] + mine_half, across, needed))
-        if not checks:
-            return inside
-        fitting = []
-        for shift in inside:
-            moved = at + shift
-            for there, reach, across, needed in checks:  # a loop: no generator's cost
-                if not max(abs(there - moved) - reach, across) >= needed:
-                    break
-            else:
-                fitting.append(shift)
-        return fitting
-
-    def body_fits(self, members: np.ndarray, axis: int, inside: list[float]) -> list[float]:
-        """fits for a body of several members (a line: a dozen members, dozens of neighbours),
-        its tests as (neighbours, members) tables: the same subtractions and comparisons of
-        the same floats as fits' loop, in NumPy, since here the arithmetic outweighs the calls
-        (the loop was a tenth of the snap on a page of 120 items)."""
-        others = self.neighbours(members, axis)
-        if not others:
-            return inside
-        others = np.array(others)
-        centres, halves = self.bodies.centres, self.halves
-        there = centres[others, axis][:, None]
-        at = centres[members, axis]
-        across = (np.abs(centres[others, 1 - axis][:, None] - centres[members, 1 - axis])
-                  - halves[others, 1 - axis][:, None] - halves[members, 1 - axis])
-        reach = halves[others, axis][:, None] + halves[members, axis]
-        now = np.abs(there - at) - reach
-        clearance = self.clearance
-        close = (across < clearance) & (now < clearance + self.farthest)
-        needed = np.minimum(np.maximum(now, across), clearance) - TOLERANCE_MM
-        tested = ~(across >= needed)  # else every shift passes: max(gap, across)
-        tested &= (close @ trues(len(members)))[:, None]  # a neighbour close to any member
-        near, member = tested.nonzero()
-        if not len(near):
-            return inside
-        there, at = there[near, 0], at[member]
-        reach, across, needed = reach[near, member], across[near, member], needed[near, member]
-        moved = at + np.array(inside)[:, None]  # (shifts, tests)
-        passes = (np.maximum(np.abs(there - moved) - reach, across) >= needed).all(axis=1)
-        return [shift for shift, fits in zip(inside, passes.tolist()) if fits]
-
-    def neighbours(self, members: np.ndarray, axis: int) -> list[int]:
-        """The other active rows that the rigid body ``members`` might come within the
-        clearance of, moving along ``axis`` (fits tests them exactly): those within the
-        clearance across the axis and within it and the longest move along it, each with a
-        millimetre to spare."""
-        spare = self.clearance + 1.0
-        reach = spare + self.farthest
-        if len(members) == 1:
-            (low_across, _, high_across), (low, _, high) = (
-                self.lines[1 - axis][members[0]].tolist(), self.lines[axis][members[0]].tolist())
-        else:
-            across, along = self.lines[1 - axis][members], self.lines[axis][members]
-            low_across = float(np.minimum.reduce(across[:, LOW]))
-            high_across = float(np.maximum.reduce(across[:, HIGH]))
-            low = float(np.minimum.reduce(along[:, LOW]))
-            high = float(np.maximum.reduce(along[:, HIGH]))
-        lows, highs = self.lows, self.highs  # an inactive row's are out of every range
-        near = lows[1 - axis] < high_across + spare
-        near &= highs[1 - axis] > low_across - spare
-        near &= lows[axis] < high + reach
-        near &= highs[axis] > low - reach
-        near[members] = False
-        return near.nonzero()[0].tolist()
+        page the test against every item was two thirds of the snapping's time).  Compiled
+        (snap_kernel.fitting_shifts): a body meets a handful of neighbours and tries at most
+        ``MAX_TRIES`` moves, and as Python floats (one item) or NumPy tables (a line) the
+        calls cost more than the arithmetic, a tenth of the snap."""
+        return fitting_shifts(members, axis, shifts, self.bodies.centres, self.halves,
+                              self.lowest, self.highest, self.item_tables, self.fit_limits)
 
 
 class Moves(NamedTuple):
