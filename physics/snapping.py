@@ -167,6 +167,10 @@ class _Snapper:
         # the page's edges for bleed groups (they may reach the edge), and the middle.
         self.bleeds = {row: any(bleed[member] for member in members)
                        for row, members in member_lists.items()}
+        # the same as sets, for a line's groups (options)
+        self.too_large_roots = [{row for row, large in self.too_large.items() if large[axis]}
+                                for axis in (0, 1)]
+        self.bleed_roots = {row for row, bleeds in self.bleeds.items() if bleeds}
         kinds = sorted(set(self.bleeds.values())) or [False]
         lines = {kind: [page_lines(*page, 0.0 if kind else margin_mm, axis, bodies.regions)
                         for axis in (0, 1)] for kind in kinds}
@@ -283,17 +287,24 @@ class _Snapper:
         body's kind of page lines, whose rows are the same floats in every kind's table)."""
         if len(roots) == 1:  # most calls: one group, nothing to gather
             root = roots[0]
-            members, too_large, key = self.members[root], self.too_large[root][axis], (root,)
-            bleed = self.bleeds[root]
-        else:
+            members, key, bleed = self.members[root], (root,), self.bleeds[root]
+            if self.too_large[root][axis]:
+                return Moves(roots, members, NO_SHIFTS, 0.0, False, False)
+            known = self.memo.recall(key, axis)
+            if known is not None:
+                return known
+        else:  # a line: its rows gathered only if it is scored or named in another order
+            key = tuple(sorted(roots))
+            if not self.too_large_roots[axis].isdisjoint(roots):
+                return Moves(roots, np.concatenate([self.members[root] for root in roots]),
+                             NO_SHIFTS, 0.0, False, False)
+            known = self.memo.recall(key, axis)
+            if known is not None and known.roots == roots:
+                return known
             members = np.concatenate([self.members[root] for root in roots])
-            too_large = any(self.too_large[root][axis] for root in roots)
-            key, bleed = tuple(sorted(roots)), all(self.bleeds[root] for root in roots)
-        if too_large:
-            return Moves(roots, members, NO_SHIFTS, 0.0, False, False)
-        known = self.memo.recall(key, axis)
-        if known is not None:  # the same groups, perhaps named in another order
-            return known if known.roots == roots else known._replace(roots=roots, members=members)
+            if known is not None:  # the same groups named in another order
+                return known._replace(roots=roots, members=members)
+            bleed = self.bleed_roots.issuperset(roots)
         # the compiled scoring (physics/snap_kernel.c): the lines near the body, the sorted
         # distances to them, the candidates, their scores, the best first
         shifts, gain, missing, lined_up, low, high = score_moves(
