@@ -76,15 +76,8 @@ class RestCheck:
         # the page's own guide lines per axis, (edges, centres): guides.page_lines
         self.page_lines = lines or [(np.zeros(0), np.zeros(0))] * 2
         self.active_rows = np.flatnonzero(active)
-        # per axis, whose each guide line is (line_hold): the active rows' low edges, their
-        # high edges and the page's edge lines (-1); their centres and the page's middle (-1)
-        their_roots = roots[self.active_rows]
-        self.line_roots = [
-            (np.concatenate([their_roots, their_roots, np.full(len(edges), -1)]),
-             np.concatenate([their_roots, np.full(len(middles), -1)]))
-            for edges, middles in self.page_lines]
         self.lines = LineHold(bodies.centres, self.halves, self.active_rows, roots,
-                              group_members(roots, active), self.page_lines, self.line_roots)
+                              group_members(roots, active), self.page_lines)
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
@@ -203,7 +196,6 @@ class RestCheck:
         """``rows`` have moved (along ``axes``): forget the forces worked out for the page as
         it was."""
         self.before.clear()
-        self.lines.moved(rows, axes)
 
     def unheld(self, acc: np.ndarray, held: np.ndarray | None) -> np.ndarray:
         """Each group's largest push the lines' hold leaves where ``held`` (on a line, per

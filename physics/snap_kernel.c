@@ -1,6 +1,6 @@
 /* The alignment snap's scoring (physics.snapping, _Snapper.options), its finding of a group's
    line (_Snapper.line_of), its test of whether a move fits (_Snapper.fits) and its rest
-   check's force sum (physics.rest_check), compiled.
+   check's force sum and line hold (physics.rest_check, physics.line_hold), compiled.
 
 Why C: a scoring is a few dozen operations on arrays of tens to hundreds of floats, called
 tens of thousands of times a page.  Written in NumPy each operation paid its own set-up, and
@@ -919,6 +919,144 @@ done:
     return result;
 }
 
+/* ---- which groups a guide line holds (physics.line_hold.LineHold.held) ---- */
+
+PyDoc_STRVAR(held_on_lines_doc,
+"held_on_lines(rows, owner, groups, centres, halves, active_rows, roots, page_edges,\n"
+"              page_middles, axis, members, shift, on_line) -> [bool per group]\n\n"
+"Whether a line holds each group on ``axis`` (``rows`` its rows, ``owner`` each row's group\n"
+"index, ``groups`` how many), with ``members`` moved by ``shift`` along the axis: an edge of\n"
+"one of its rows within ``on_line`` of an edge of an active row of another group or of one of\n"
+"the page's edge lines, or its centre within it of another group's centre or of the page's\n"
+"middle (physics.guides).  Every line is worked out from the centres as the kept lines were\n"
+"(a centre less or plus its half), the moved rows' from their moved centres, so every answer\n"
+"is the same; compiled: the rest check asks it of every group a move pushes too hard, for\n"
+"the page as it is and with the move made.");
+
+static PyObject *held_on_lines(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 13) {
+        PyErr_SetString(PyExc_TypeError, "held_on_lines(rows, owner, groups, centres, halves, "
+                        "active_rows, roots, page_edges, page_middles, axis, members, shift, "
+                        "on_line)");
+        return NULL;
+    }
+    Py_ssize_t groups = PyLong_AsSsize_t(args[2]);
+    int axis = PyLong_AsLong(args[9]);
+    double shift = PyFloat_AsDouble(args[11]), on_line = PyFloat_AsDouble(args[12]);
+    if (PyErr_Occurred())
+        return NULL;
+    if ((axis != 0 && axis != 1) || groups < 0) {
+        PyErr_SetString(PyExc_ValueError, "axis: 0 or 1; groups: a count");
+        return NULL;
+    }
+    Py_buffer views[9];
+    int held = 0;
+    PyObject *result = NULL;
+    double *lines = NULL;
+    char *found = NULL;
+    if (read_doubles(args[3], &views[0], 2, "centres") < 0)
+        goto done;
+    held++;
+    Py_ssize_t count = views[0].shape[0];
+    if (views[0].shape[1] != 2) {
+        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
+        goto done;
+    }
+    if (read_rows(args[0], &views[1], count) < 0)
+        goto done;
+    held++;
+    if (read_rows(args[1], &views[2], groups ? groups : 1) < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[4], &views[3], count, "halves") < 0)
+        goto done;
+    held++;
+    if (read_rows(args[5], &views[4], count) < 0)
+        goto done;
+    held++;
+    if (read_rows(args[6], &views[5], count) < 0)
+        goto done;
+    held++;
+    if (read_doubles(args[7], &views[6], 1, "page_edges") < 0)
+        goto done;
+    held++;
+    if (read_doubles(args[8], &views[7], 1, "page_middles") < 0)
+        goto done;
+    held++;
+    if (read_rows(args[10], &views[8], count) < 0)
+        goto done;
+    held++;
+    if (views[2].shape[0] != views[1].shape[0] || views[5].shape[0] != count) {
+        PyErr_SetString(PyExc_ValueError, "owner: one per row; roots: one per item");
+        goto done;
+    }
+    const double *centres = views[0].buf, *halves = views[3].buf;
+    const double *page_edges = views[6].buf, *page_middles = views[7].buf;
+    const int64_t *rows = views[1].buf, *owner = views[2].buf, *active_rows = views[4].buf;
+    const int64_t *roots = views[5].buf, *members = views[8].buf;
+    Py_ssize_t row_count = views[1].shape[0], active = views[4].shape[0];
+    Py_ssize_t edge_count = views[6].shape[0], middle_count = views[7].shape[0];
+    Py_ssize_t member_count = views[8].shape[0];
+    if (make_room(0, count) < 0) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    lines = PyMem_Malloc((3 * active + 1) * sizeof(double));
+    found = PyMem_Calloc(groups + 1, 1);
+    if (lines == NULL || found == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t m = 0; m < member_count; m++)
+        is_member[members[m]] = 1;
+    /* each active row's low edge, high edge and centre, the moved ones moved */
+    for (Py_ssize_t q = 0; q < active; q++) {
+        Py_ssize_t row = active_rows[q];
+        double at = is_member[row] ? centres[2 * row + axis] + shift : centres[2 * row + axis];
+        double half = halves[2 * row + axis];
+        lines[3 * q] = at - half;
+        lines[3 * q + 1] = at + half;
+        lines[3 * q + 2] = at;
+    }
+    for (Py_ssize_t k = 0; k < row_count; k++) {
+        Py_ssize_t row = rows[k], group = owner[k];
+        if (group < 0 || group >= groups || found[group])
+            continue;
+        double at = is_member[row] ? centres[2 * row + axis] + shift : centres[2 * row + axis];
+        double half = halves[2 * row + axis];
+        double low = at - half, high = at + half;
+        int on = 0;
+        for (Py_ssize_t q = 0; q < active && !on; q++) {
+            if (roots[active_rows[q]] == roots[row])
+                continue; /* its own group's lines hold nothing */
+            const double *line = lines + 3 * q;
+            on = fabs(low - line[0]) <= on_line || fabs(low - line[1]) <= on_line
+                 || fabs(high - line[0]) <= on_line || fabs(high - line[1]) <= on_line
+                 || fabs(at - line[2]) <= on_line;
+        }
+        for (Py_ssize_t e = 0; e < edge_count && !on; e++)
+            on = fabs(low - page_edges[e]) <= on_line || fabs(high - page_edges[e]) <= on_line;
+        for (Py_ssize_t e = 0; e < middle_count && !on; e++)
+            on = fabs(at - page_middles[e]) <= on_line;
+        found[group] = (char)on;
+    }
+    for (Py_ssize_t m = 0; m < member_count; m++)
+        is_member[members[m]] = 0;
+    result = PyList_New(groups);
+    for (Py_ssize_t g = 0; result != NULL && g < groups; g++) {
+        PyObject *value = found[g] ? Py_True : Py_False;
+        Py_INCREF(value);
+        PyList_SET_ITEM(result, g, value);
+    }
+done:
+    PyMem_Free(lines);
+    PyMem_Free(found);
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    return result;
+}
+
 /* ---- the rest check's force sum (physics.rest_check.RestCheck.net) ---- */
 
 /* pair_table's columns: a pair's reach on each axis, whether each axis is blocked (1.0), the
@@ -1142,6 +1280,8 @@ static PyMethodDef methods[] = {
     {"rest_net", (PyCFunction)(void (*)(void))rest_net, METH_FASTCALL, rest_net_doc},
     {"fitting_shifts", (PyCFunction)(void (*)(void))fitting_shifts, METH_FASTCALL,
      fitting_shifts_doc},
+    {"held_on_lines", (PyCFunction)(void (*)(void))held_on_lines, METH_FASTCALL,
+     held_on_lines_doc},
     {NULL, NULL, 0, NULL},
 };
 

@@ -1,5 +1,5 @@
-"""The snap's cheaper units must make the very moves the plain ones made: the lines' hold kept
-move by move (physics.line_hold) against a plain search of every line, and the scoring that
+"""The snap's cheaper units must make the very moves the plain ones made: the lines' hold
+(physics.line_hold, compiled) against a plain search of every line, and the scoring that
 drops the distances out of every range before its sort against the scoring of them all.
 (benchmarks/snap_identity.py checks every move of 63 snaps against main's; these check the
 units themselves on a few seeded pages.)"""
@@ -14,6 +14,7 @@ import floatpage.physics.snapping as snapping
 from floatpage.physics import Engine, Params
 from floatpage.physics.guides import ON_LINE_MM
 from floatpage.physics.line_hold import LineHold
+from floatpage.physics.rest_check import RestCheck
 from floatpage.physics.snap_scoring import relevant_distance
 from floatpage.physics.snapping import snap_limits, snap_to_guides
 
@@ -35,7 +36,7 @@ def plainly_held(hold: LineHold, page_lines, groups: list[int], axis: int,
     """Whether a line holds each of ``groups`` on ``axis``, group by group from the centres:
     an edge within ON_LINE_MM of another group's edge or a page edge line, a centre of another
     group's centre or the page's middle."""
-    active = np.flatnonzero(hold.slot >= 0)
+    active = hold.active_rows
     at, half, roots = centres[:, axis], hold.halves[:, axis], hold.roots
     edges = np.concatenate([at[active] - half[active], at[active] + half[active],
                             page_lines[axis][0]])
@@ -54,9 +55,8 @@ def plainly_held(hold: LineHold, page_lines, groups: list[int], axis: int,
 
 
 class CheckedHold(LineHold):
-    """The kept lines, each answer also found plainly from the centres (a trial move's: from
-    a moved copy); after every move, every group's on both axes, as it is and with the moved
-    rows moved on by a trial shift."""
+    """The lines' hold, each answer also found plainly from the centres (a trial move's: from
+    a moved copy)."""
 
     def held(self, groups, axis, members=None, shift=0.0):
         found = super().held(groups, axis, members, shift)
@@ -69,16 +69,22 @@ class CheckedHold(LineHold):
         self.held_some += sum(plain)
         return found
 
+
+class CheckedRest(RestCheck):
+    """The snap's rest check, every group's hold on both axes compared after every move, as
+    the page is and with the moved rows moved on by a trial shift."""
+
     def moved(self, rows, axes=(0, 1)):
         super().moved(rows, axes)
-        every = np.flatnonzero(self.roots == np.arange(len(self.roots)))
-        every = every[self.slot[every] >= 0]
+        lines = self.lines
+        every = np.flatnonzero(lines.roots == np.arange(len(lines.roots)))
+        every = np.intersect1d(every, lines.active_rows)
         for axis in (0, 1):
-            self.held(every, axis)
-            self.held(every, axis, rows, 0.02)
+            lines.held(every, axis)
+            lines.held(every, axis, rows, 0.02)
 
 
-def test_the_kept_lines_hold_what_a_plain_search_holds():
+def test_the_lines_hold_what_a_plain_search_holds():
     """A roomy page's snap and a small one's, every hold the rest checks ask for and every
     group's after each move compared (hundreds of moves, each making its rows' lines stale)."""
     for count, seed, page in PAGES:
@@ -87,7 +93,7 @@ def test_the_kept_lines_hold_what_a_plain_search_holds():
         clearance, margin, rest = snap_limits(bodies, *page, params)
         lines = rest.lines
         lines.__class__, lines.compared, lines.held_some = CheckedHold, 0, 0
-        lines.page_lines = rest.page_lines
+        rest.__class__ = CheckedRest
         moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest)
         assert moves > 20 and lines.compared > 1000 and lines.held_some > 100, (
             count, moves, lines.compared, lines.held_some)
@@ -110,7 +116,7 @@ def test_scoring_the_relevant_distances_makes_the_moves_of_scoring_them_all(monk
     assert snapped[:half] == snapped[half:]
 
 
-def test_the_kept_lines_hold_on_pages_with_followers():
+def test_the_lines_hold_on_pages_with_followers():
     """Groups of several rows (captions and the like following an item) move as one and hold
     as one: the same check on anchored pages whose items follow others."""
     from anchored_pages import random_project
@@ -127,8 +133,8 @@ def test_the_kept_lines_hold_on_pages_with_followers():
         clearance, margin, rest = snap_limits(bodies, *page, params)
         lines = rest.lines
         lines.__class__, lines.compared, lines.held_some = CheckedHold, 0, 0
-        lines.page_lines = rest.page_lines
+        rest.__class__ = CheckedRest
         moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest)
         assert moves > 5 and lines.compared > 50, (seed, moves, lines.compared)
-        grouped += lines.grouped
+        grouped += bool((lines.roots != np.arange(len(lines.roots))).any())
     assert grouped == 3
