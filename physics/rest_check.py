@@ -221,18 +221,6 @@ class RestCheck:
         return summed[groups]
 
 
-def sorted_unique(values: np.ndarray) -> np.ndarray:
-    """``np.unique`` for the small arrays of one move: a sort and a mask (np.unique's set-up
-    cost was a third of the snapping's time).  Sorts ``values`` in place: every caller hands
-    it an array of its own (a gather or a join), and a copy's set-up is a tenth of the call."""
-    values.sort()
-    ordered = values
-    keep = np.empty(len(ordered), dtype=bool)
-    keep[:1] = True
-    np.not_equal(ordered[1:], ordered[:-1], out=keep[1:])
-    return ordered[keep]
-
-
 def group_members(roots: np.ndarray, active: np.ndarray) -> list[np.ndarray]:
     """For each row, the active rows whose group root it is (empty unless it is a root), in
     one sort: a comparison per root cost O(n^2) on a 10,000-item page."""

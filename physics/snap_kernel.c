@@ -524,9 +524,9 @@ done:
 PyDoc_STRVAR(scored_candidates_doc,
 "scored_candidates(ordered, ranges) -> (shifts, scores, missing, lined_up, now)\n\n"
 "score_moves' candidates (sorted, each once) and their scores for the sorted distances\n"
-"``ordered``, every one (no cut to the nearest, no choice): the units the kernel is made of, for the tests that\n"
-"hold them to their plain definitions and for benchmarks/near_miss_causes.py, which asks\n"
-"what each candidate would score.");
+"``ordered``, every one (no cut to the nearest, no choice): the units the kernel is made of,\n"
+"for the tests that hold them to their plain definitions and for\n"
+"benchmarks/near_miss_causes.py, which asks what each candidate would score.");
 
 static PyObject *scored_candidates(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {

@@ -42,13 +42,13 @@ def trues(width: int) -> np.ndarray:
 
 
 def distance_bounds(reach: float, farthest: float) -> np.ndarray:
-    """The ends of the ranges of distances the kernel's candidate_shifts reads, as needles for one
-    np.searchsorted from the left: four lower ends (|distance| <= ``reach``, |distance| <
-    ``farthest`` + ``ESCAPE_MM``, -``NEAR_MM`` < distance < -``ALIGNED_MM``, ``ALIGNED_MM`` <
-    distance < ``NEAR_MM``), then their four upper ends, each found from the right: "d <= x"
-    is "d < the next float after x"; then the ends of the distances whose escape moves,
-    d - ``ESCAPE_MM`` and d + ``ESCAPE_MM`` as floats, are at most ``farthest`` long: the
-    first distance at which each comes within it and the first at which it is past it."""
+    """The ends of the ranges of distances the kernel's candidate_shifts reads, as needles for
+    one bisection from the left (np.searchsorted's): four lower ends (|distance| <= ``reach``,
+    |distance| < ``farthest`` + ``ESCAPE_MM``, -``NEAR_MM`` < distance < -``ALIGNED_MM``,
+    ``ALIGNED_MM`` < distance < ``NEAR_MM``), then their four upper ends, each found from the
+    right: "d <= x" is "d < the next float after x"; then the ends of the distances whose
+    escape moves, d - ``ESCAPE_MM`` and d + ``ESCAPE_MM`` as floats, are at most ``farthest``
+    long: the first distance at which each comes within it and the first past it."""
     escape = farthest + ESCAPE_MM
     escapes = [first_where(lambda d, way=way: way(d) >= -farthest, -farthest - way(0.0))
                if end == 0 else
