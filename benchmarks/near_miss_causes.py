@@ -40,7 +40,7 @@ import numpy as np
 from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM, measure_alignment
 from floatpage.physics.guides import CENTRE, HIGH, LOW
-from floatpage.physics.snap_kernel import scored_candidates
+from floatpage.physics.snap_scoring_kernel import scored_candidates
 from floatpage.physics.snap_scoring import ALIGNED_MM as SNAP_ALIGNED_MM
 from floatpage.physics.snapping import (
     MINE_COLUMNS, NUDGE_MM, TOLERANCE_MM, _Snapper, THEIRS_COLUMNS, snap_limits, snap_to_guides,

@@ -6,7 +6,7 @@ page's middle (physics.guides).  The rest check asks this of every group a trial
 too hard, for the page as it is and with the move made.  In NumPy each check gathered every
 active row's lines, joined them to the page's and compared every row's root with every line's
 owner, and then kept the lines up to date move by move to save the gather; compiled
-(snap_kernel.held_on_lines) every line is worked out afresh from the centres, the same
+(rest_check_kernel.held_on_lines) every line is worked out afresh from the centres, the same
 subtraction or addition of the same floats as before, for less than the kept arrays' upkeep.
 Every answer is the same, bit for bit (benchmarks/snap_identity.py checks the snap's moves on
 main's inputs).
@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from floatpage.physics.guides import ON_LINE_MM
-from floatpage.physics.snap_kernel import held_on_lines
+from floatpage.physics.rest_check_kernel import held_on_lines
 
 NO_ROWS = np.zeros(0, dtype=np.int64)
 

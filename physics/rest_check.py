@@ -31,7 +31,7 @@ from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
 from floatpage.physics.line_hold import LineHold
-from floatpage.physics.snap_kernel import rest_net
+from floatpage.physics.rest_check_kernel import rest_net
 from floatpage.physics.stillness import PROBE_HEAT
 
 REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
@@ -86,7 +86,7 @@ class RestCheck:
         self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
         self.group_rows = group_members(roots, active)
         self.grouped = bool((roots != np.arange(count)).any())
-        # what the force sum (snap_kernel.rest_net) reads, as tables: per pair, its ends, its
+        # what the force sum (rest_check_kernel.rest_net) reads, as tables: per pair, its ends, its
         # reach, its blocked axes and its ends' shares; per row, its rest box and its anchor
         # spring (the columns rest_net names)
         self.pair_ends = np.column_stack([i, j]).astype(np.int64)
@@ -110,7 +110,7 @@ class RestCheck:
         every other item where it is.  The fast mode's sums (ContactPushes, WallPushes,
         AnchorPulls at the probe's heat: pair_sums adds a row's pushes pair by pair, as j and
         as i apart), worked pair by pair on the few pairs of one move, compiled
-        (snap_kernel.rest_net): the same numbers bit for bit, for a fraction of the time of
+        (rest_check_kernel.rest_net): the same numbers bit for bit, for a fraction of the time of
         the NumPy terms (thirty calls for a handful of pairs) and of Python floats (most of a
         successful try's time)."""
         return rest_net(rows, pairs, self.bodies.centres, members, axis, shift, self.pair_ends,

@@ -2,9 +2,9 @@
 figure is read off the sorted distances from its features to the lines of the same kind near
 it, by bisection (which moves to try, what each leaves, whether it misses a line now).
 
-The scoring itself is compiled (physics/snap_kernel.c, score_moves): called tens of thousands
-of times on a page of 120 items, it was a few dozen small NumPy operations a call, and their
-set-up was most of the snap's time.  What is here is worked out once per page: the constants
+The scoring itself is compiled (physics/snap_scoring_kernel.c, score_moves): called tens of
+thousands of times on a page of 120 items, it was a few dozen small NumPy operations a call, and
+their set-up was most of the snap's time.  What is here is worked out once per page: the constants
 and the ends of the distance ranges, handed to the kernel as one array (scoring_ranges).  A
 change here or there must leave every score as it was (benchmarks/snap_identity.py).
 """
@@ -61,7 +61,7 @@ def distance_bounds(reach: float, farthest: float) -> np.ndarray:
 
 def scoring_ranges(reach: float, farthest: float, window: float,
                    relevant: float | None = None) -> np.ndarray:
-    """What the kernel's scoring (snap_kernel.score_moves) reads besides the table, worked
+    """What the kernel's scoring (snap_scoring_kernel.score_moves) reads besides the table, worked
     out once per page, as the one array of 19 floats it takes: the twelve needles of
     distance_bounds (moves onto lines within ``reach``, escape moves at most ``farthest``
     long), WINDOW_ENDS, ``ESCAPE_MM``, the ``window`` around a body within which lines are

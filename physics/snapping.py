@@ -40,7 +40,8 @@ from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members
-from floatpage.physics.snap_kernel import fitting_shifts, line_of as find_line, score_moves
+from floatpage.physics.snap_fit_kernel import fitting_shifts
+from floatpage.physics.snap_scoring_kernel import line_of as find_line, score_moves
 from floatpage.physics.snap_memo import AxisMemo
 from floatpage.physics.snap_scoring import (
     ALIGNED_MM, MAX_CANDIDATES, MAX_TRIES, NO_SHIFTS, relevant_distance, scoring_ranges, trues,
@@ -267,7 +268,7 @@ class _Snapper:
         known = self.memo.recall(("line", row), axis)
         if known is not None:
             return known
-        # compiled (physics/snap_kernel.c): any pairing of a member's features with another
+        # compiled (physics/snap_scoring_kernel.c): any pairing of a member's features with another
         # row's within ALIGNED_MM, read from the kind of table whose first rows every kind
         # shares (an inactive row's lines are +inf: on none)
         line, low, high = find_line(self.item_tables[axis], self.members[row], row,
@@ -283,7 +284,7 @@ class _Snapper:
         body misses a line now.  Most calls (on the 50-item page, three in five) find no move
         that helps; as a few dozen small NumPy operations a call was a quarter of the snap's
         time, scoring lines another quarter, so the scoring after the memo is one call of
-        compiled code (snap_kernel.score_moves; its distances read from the table of the
+        compiled code (snap_scoring_kernel.score_moves; its distances read from the table of the
         body's kind of page lines, whose rows are the same floats in every kind's table)."""
         if len(roots) == 1:  # most calls: one group, nothing to gather
             root = roots[0]
@@ -305,7 +306,7 @@ class _Snapper:
             if known is not None:  # the same groups named in another order
                 return known._replace(roots=roots, members=members)
             bleed = self.bleed_roots.issuperset(roots)
-        # the compiled scoring (physics/snap_kernel.c): the lines near the body, the sorted
+        # the compiled scoring (physics/snap_scoring_kernel.c): the lines near the body, the sorted
         # distances to them, the candidates, their scores, the best first
         shifts, gain, missing, lined_up, low, high = score_moves(
             self.tables[bleed][axis], members, self.ranges, MAX_CANDIDATES, self.tries)
@@ -341,7 +342,7 @@ class _Snapper:
         Only the items a move could bring within the clearance are tested: within it of a
         member across the axis, and within it and the longest move along it (on a 600-item
         page the test against every item was two thirds of the snapping's time).  Compiled
-        (snap_kernel.fitting_shifts): a body meets a handful of neighbours and tries at most
+        (snap_fit_kernel.fitting_shifts): a body meets a handful of neighbours and tries at most
         ``MAX_TRIES`` moves, and as Python floats (one item) or NumPy tables (a line) the
         calls cost more than the arithmetic, a tenth of the snap."""
         return fitting_shifts(members, axis, shifts, self.bodies.centres, self.halves,

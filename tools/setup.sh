@@ -14,7 +14,7 @@ DEBIAN_PACKAGES=(
   fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji
   # GNU FriBidi, the tests' independent reference for right-to-left order (typeset/bidi.py)
   libfribidi0
-  # a C compiler and the Python headers: pip builds the snap's kernel (physics/snap_kernel.c)
+  # a C compiler and the Python headers: pip builds the snap's compiled units (physics/*_kernel.c)
   gcc python3-dev
 )
 
@@ -48,16 +48,18 @@ fi
 # A strict editable install: a tree of links under build/ that type checkers can follow, with
 # floatpage.physics -> physics/ and so on. It links files, not folders, so a new or removed
 # module means installing again; the stamp holds the list of files it was made from. A C source
-# newer than the stamp is built again (the compiled module is a copy, not a link).
+# or header newer than the stamp is built again (a compiled module is a copy, not a link).
 stamp=.venv/.floatpage-installed
 package_files=$(find physics model typeset tui cli starters latex_templates merge -type f \
-  \( -name '*.py' -o -name '*.c' -o -name '*.j2' -o -name '*.tcss' -o -path 'starters/bundled/*' \) | LC_ALL=C sort)
+  \( -name '*.py' -o -name '*.c' -o -name '*.h' -o -name '*.j2' -o -name '*.tcss' \
+     -o -path 'starters/bundled/*' \) | LC_ALL=C sort)
 if [[ ! -f $stamp || pyproject.toml -nt $stamp ]]; then
   echo "setup: installing Python packages into .venv"
   .venv/bin/python -m pip install -q --upgrade pip
   .venv/bin/python -m pip install -q -e '.[test]' --config-settings editable_mode=strict
   printf '%s\n' "$package_files" > "$stamp"
-elif [[ "$(cat "$stamp")" != "$package_files" || -n $(find physics -name '*.c' -newer "$stamp") ]]; then
+elif [[ "$(cat "$stamp")" != "$package_files" \
+      || -n $(find physics \( -name '*.c' -o -name '*.h' \) -newer "$stamp") ]]; then
   echo "setup: package files were added, removed or compiled ones changed; installing them again"
   .venv/bin/python -m pip install -q --no-deps -e . --config-settings editable_mode=strict
   printf '%s\n' "$package_files" > "$stamp"

@@ -1,5 +1,5 @@
 """The snap's rest check (physics.rest_check) sums the forces of a move's few pairs pair by pair
-in compiled code (snap_kernel.rest_net) instead of the fast mode's vectorised terms: it must
+in compiled code (rest_check_kernel.rest_net) instead of the fast mode's vectorised terms: it must
 give the same numbers bit for bit, or a snap would take other moves than the physics it checks
 for (and a settled file would stop being a fixed point)."""
 
@@ -16,7 +16,7 @@ from floatpage.physics.geometry import pair_sums, xy_slots
 from floatpage.physics.guides import hold_strength, page_lines, snap_range
 from floatpage.physics.params import page_margin, page_scale
 from floatpage.physics.rest_check import PROBE_RADIAL, RestCheck
-from floatpage.physics.snap_kernel import rest_net
+from floatpage.physics.rest_check_kernel import rest_net
 
 from seeded_scenes import load, mixed_scene
 

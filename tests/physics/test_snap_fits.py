@@ -1,4 +1,4 @@
-"""The snap's test of whether a move fits (snap_kernel.fitting_shifts, compiled) reads only the
+"""The snap's test of whether a move fits (snap_fit_kernel.fitting_shifts, compiled) reads only the
 neighbours a move could bring within the clearance, and of those only the pairs not already
 apart across.  It must keep exactly the moves the plain definition keeps: every member inside
 its margins (or no further out than it is), and no pair of a member and another item closer
@@ -10,7 +10,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from floatpage.physics.snap_kernel import fitting_shifts
+from floatpage.physics.snap_fit_kernel import fitting_shifts
 from floatpage.physics.snapping import TOLERANCE_MM, feature_table
 
 PAGE = 120.0

@@ -1,10 +1,10 @@
-"""The snap's scoring (physics/snap_kernel.c) is compiled and written for speed: bisections for
-all the ends a score needs ("d <= x" as "d < the next float after x"), scores in integers, the
-candidates unsorted with repeats dropped among the winners, the far distances dropped before
-the sort.  Each must give exactly what the plain definition gives, on distances that sit right
-on the ends of the ranges too: a slip of one float there changes which moves the snap makes.
-The whole scoring is held to a plain, slow reference written here (plain_scoring), on random
-tables made the snap's way."""
+"""The snap's scoring (physics/snap_scoring_kernel.c) is compiled and written for speed:
+bisections for all the ends a score needs ("d <= x" as "d < the next float after x"), scores in
+integers, the candidates merged from their runs, the far distances dropped before the sort.
+Each must give exactly what the plain definition gives, on distances that sit right on the ends
+of the ranges too: a slip of one float there changes which moves the snap makes.  The whole
+scoring is held to a plain, slow reference written here (plain_scoring), on random tables made
+the snap's way."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from floatpage.physics.guides import CENTRE, HIGH, LOW, features
 from floatpage.physics.alignment import NEAR_MM
-from floatpage.physics.snap_kernel import line_of, score_moves, scored_candidates
+from floatpage.physics.snap_scoring_kernel import line_of, score_moves, scored_candidates
 from floatpage.physics.snap_scoring import (
     ALIGNED_MM, ESCAPE_MM, MAX_CANDIDATES, MAX_TRIES, scoring_ranges,
 )
@@ -227,7 +227,7 @@ def test_the_kernel_refuses_what_is_not_a_table():
 @settings(max_examples=300, deadline=None)
 @given(st.integers(2, 40), st.integers(0, 2 ** 32 - 1), st.sampled_from([0.05, 0.25, None]))
 def test_the_kernel_finds_the_line_of_the_plain_definition(count, seed, grid):
-    """A group's line (snap_kernel.line_of): the group and every mover with a feature within
+    """A group's line (snap_scoring_kernel.line_of): the group and every mover with a feature within
     ALIGNED_MM of a line of the group's of the same kind, on random pages of groups (rows
     following others), movers and inactive rows; on a grid many features line up exactly."""
     rng = np.random.default_rng(seed)
