@@ -184,7 +184,7 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
             raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
     fragment = tex_from_placed(document, fragment=True) if fragment_out is not None else ""
     if print_bleed_mm is not None:
-        document = for_print(document, project, print_bleed_mm)
+        document = for_print(document, print_bleed_mm)
     tex = tex_from_placed(document)
     say("typesetting with LuaLaTeX")
     engine_started = time.perf_counter()
