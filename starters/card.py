@@ -68,9 +68,11 @@ def inside(options: Options, picture: Picture):
     page = new_page("inside", PAGE_SIZE, options.orientation, background=Background(color="#fffaf2"))
     W, H = page.width_mm, page.height_mm
     page.items.append(band("inside-band", W / 2, 5.0, W, 10.0))
-    message = dict(text=phrase("card_message", options.lang), font="serif", italic=True, color=INK)
+    # The signature is set in the message's size (one role), as a letter's closing is.
+    message = dict(text=phrase("card_message", options.lang), font="serif", italic=True, color=INK,
+                   role="message")
     signature = phrase("card_signature", options.lang)
-    signature_style = dict(font="serif", italic=True, color=ROSE)
+    signature_style = dict(font="serif", italic=True, color=ROSE, role="message")
     signature_y = H - 16.0
     if options.orientation == "portrait":
         message_h = H * 0.22

@@ -24,8 +24,10 @@ from floatpage.typeset.pictures import PicturePlan, plan_picture
 from floatpage.typeset.templates import SAFE_PATH
 from floatpage.typeset.fonts import FaceKey, font_path, metrics_for
 from floatpage.typeset.text_layout import (
-    RunGroup, face_for, fit_in_box, fit_warnings, missing_glyph_warning, place_lines,
+    RunGroup, face_for, fit_in_box, fit_warnings, missing_glyph_warning,
+    place_lines,
 )
+from floatpage.typeset.roles import role_sizes, size_for
 
 
 @dataclass(frozen=True)
@@ -115,10 +117,18 @@ def rect_of(item) -> Rect:
     return Rect(item.x - item.w / 2, item.y - item.h / 2, item.x + item.w / 2, item.y + item.h / 2)
 
 
-def place_text(item: TextItem, label: str, warnings: list[str]) -> PlacedText | None:
+def place_text(item: TextItem, label: str, warnings: list[str],
+               sizes: dict[str, float] | None = None) -> PlacedText | None:
+    """The text's lines, at its own size (`size_pt`), its role's (``sizes``, from
+    typeset.roles) or the largest its box holds."""
     face = face_for(item.font, item.bold, item.italic)
-    fit, missing, face = fit_in_box(item.text, face, item.w, item.h)
+    wanted = size_for(item, sizes or {})
+    fit, missing, face = fit_in_box(item.text, face, item.w, item.h, max_pt=wanted)
     warnings += fit_warnings(label, face, fit, missing)
+    if item.size_pt and fit.lines and fit.font_pt < item.size_pt * (1 - 1e-3):
+        warnings.append(f"{label}: the text does not fit its box at its own size of "
+                        f"{item.size_pt:g} pt, so it is set at {fit.font_pt:.1f} pt (enlarge "
+                        "the box, shorten the text or lower its size)")
     if not fit.lines:
         return None
     runs = place_lines(fit, None, item.x - item.w / 2, item.y - item.h / 2, item.h,
@@ -160,6 +170,7 @@ def place_background(project: Project, page: Page) -> list:
 def place_document(project: Project) -> PlacedDocument:
     warnings: list[str] = []
     pages = []
+    sizes = role_sizes(project)
     for page in project.pages:
         placed_page = PlacedPage(page.id, page.width_mm, page.height_mm,
                                  background=place_background(project, page))
@@ -168,7 +179,7 @@ def place_document(project: Project) -> PlacedDocument:
             label = item_label(item, page)
             check_item(item, label)
             if isinstance(item, TextItem):
-                made = place_text(item, label, warnings)
+                made = place_text(item, label, warnings, sizes)
             elif isinstance(item, PictureItem):
                 if is_merge_placeholder(item.path):
                     raise RenderError(f'{label}: picture "{item.path}" is filled from a data '
@@ -217,10 +228,11 @@ def place_document(project: Project) -> PlacedDocument:
 def text_warnings(project: Project) -> list[str]:
     """Fit warnings for texts and calendars only (no picture files are read)."""
     warnings: list[str] = []
+    sizes = role_sizes(project)
     for page in project.pages:
         for item in page.items:
             if isinstance(item, TextItem):
-                place_text(item, item_label(item, page), warnings)
+                place_text(item, item_label(item, page), warnings, sizes)
             elif isinstance(item, CalendarItem):
                 place_calendar(item, item_label(item, page), warnings)
     return warnings

@@ -154,13 +154,17 @@ def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: floa
     return tuple(runs)
 
 
-def fit_in_box(text: str, face: FaceKey, w_mm: float, h_mm: float
-               ) -> tuple[TextFit, list[str], FaceKey]:
-    """Fit text in a w x h mm box with the fonts that will set it; also the missing chars
-    and the face (with its fallback chain) to set it in."""
+def fit_in_box(text: str, face: FaceKey, w_mm: float, h_mm: float, *,
+               max_pt: float | None = None) -> tuple[TextFit, list[str], FaceKey]:
+    """Fit text in a w x h mm box with the fonts that will set it, at most ``max_pt`` (a
+    role's or the user's size: exactly that where it fits); also the missing chars and the
+    face (with its fallback chain) to set it in."""
     printable, chained, missing = rich_text(text, face)
     metrics = chain_metrics_for(chained)
-    return fit_text(printable, Box(w_mm * PT_PER_MM, h_mm * PT_PER_MM), metrics), missing, chained
+    box = Box(w_mm * PT_PER_MM, h_mm * PT_PER_MM)
+    if max_pt is None:
+        return fit_text(printable, box, metrics), missing, chained
+    return fit_text(printable, box, metrics, max_pt=max_pt), missing, chained
 
 
 # Ends every warning of a text that does not fit its box (`floatpage merge` fails the record).
