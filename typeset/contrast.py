@@ -157,9 +157,10 @@ def contrast_notes(document: PlacedDocument) -> list[str]:
             found = reading(placed, page.background + page.items[:index])
             if found is None or found.ratio >= found.needed:
                 continue
-            what = "its text" if isinstance(placed, PlacedText) else "its days and names"
-            notes.append(f"{placed.label}: {what} ({hex_of(found.text)}) on "
-                         f"{hex_of(found.behind)} behind it has a contrast of "
+            what = ("its text ({}) with {} behind it" if isinstance(placed, PlacedText)
+                    else "its days and names ({}) with {} behind them")
+            notes.append(f"{placed.label}: the contrast of "
+                         f"{what.format(hex_of(found.text), hex_of(found.behind))} is "
                          f"{found.ratio:.1f}:1, below the {found.needed:g}:1 that text of its "
                          "size needs to read easily (WCAG AA): change its colour or what lies "
                          "behind it")

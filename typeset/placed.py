@@ -27,7 +27,7 @@ from floatpage.typeset.text_layout import (
     RunGroup, face_for, fit_in_box, fit_warnings, missing_glyph_warning,
     place_lines,
 )
-from floatpage.typeset.roles import role_sizes, size_for
+from floatpage.typeset.roles import RoleFits, fit_item
 
 
 @dataclass(frozen=True)
@@ -118,12 +118,10 @@ def rect_of(item) -> Rect:
 
 
 def place_text(item: TextItem, label: str, warnings: list[str],
-               sizes: dict[str, float] | None = None) -> PlacedText | None:
-    """The text's lines, at its own size (`size_pt`), its role's (``sizes``, from
+               roles: RoleFits | None = None) -> PlacedText | None:
+    """The text's lines, at its own size (`size_pt`), its role's (``roles``, from
     typeset.roles) or the largest its box holds."""
-    face = face_for(item.font, item.bold, item.italic)
-    wanted = size_for(item, sizes or {})
-    fit, missing, face = fit_in_box(item.text, face, item.w, item.h, max_pt=wanted)
+    fit, missing, face = roles.fit_of(item) if roles else fit_item(item, {})
     warnings += fit_warnings(label, face, fit, missing)
     if item.size_pt and fit.lines and fit.font_pt < item.size_pt * (1 - 1e-3):
         warnings.append(f"{label}: the text does not fit its box at its own size of "
@@ -132,7 +130,8 @@ def place_text(item: TextItem, label: str, warnings: list[str],
     if not fit.lines:
         return None
     runs = place_lines(fit, None, item.x - item.w / 2, item.y - item.h / 2, item.h,
-                       widths_mm=item.w, align=item.align)
+                       widths_mm=item.w, align=item.align,
+                       block_em=roles.block_of(item, fit) if roles else None)
     return PlacedText(item.id, label, (RunGroup(face, fit.font_pt, item.color, runs),))
 
 
@@ -170,7 +169,7 @@ def place_background(project: Project, page: Page) -> list:
 def place_document(project: Project) -> PlacedDocument:
     warnings: list[str] = []
     pages = []
-    sizes = role_sizes(project)
+    roles = RoleFits.of(project)
     for page in project.pages:
         placed_page = PlacedPage(page.id, page.width_mm, page.height_mm,
                                  background=place_background(project, page))
@@ -179,7 +178,7 @@ def place_document(project: Project) -> PlacedDocument:
             label = item_label(item, page)
             check_item(item, label)
             if isinstance(item, TextItem):
-                made = place_text(item, label, warnings, sizes)
+                made = place_text(item, label, warnings, roles)
             elif isinstance(item, PictureItem):
                 if is_merge_placeholder(item.path):
                     raise RenderError(f'{label}: picture "{item.path}" is filled from a data '
@@ -228,11 +227,11 @@ def place_document(project: Project) -> PlacedDocument:
 def text_warnings(project: Project) -> list[str]:
     """Fit warnings for texts and calendars only (no picture files are read)."""
     warnings: list[str] = []
-    sizes = role_sizes(project)
+    roles = RoleFits.of(project)
     for page in project.pages:
         for item in page.items:
             if isinstance(item, TextItem):
-                place_text(item, item_label(item, page), warnings, sizes)
+                place_text(item, item_label(item, page), warnings, roles)
             elif isinstance(item, CalendarItem):
                 place_calendar(item, item_label(item, page), warnings)
     return warnings

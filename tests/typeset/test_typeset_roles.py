@@ -101,3 +101,25 @@ def test_a_size_set_by_hand_that_does_not_fit_is_reduced_and_said(tmp_path):
     render_pdf(project, out)
     (sizes,) = sizes_in(out, project.pages).values()
     assert max(sizes) == round(own_size(item), 2) < 40.0
+
+
+def test_a_row_of_one_role_stands_on_one_baseline_accents_or_not(tmp_path):
+    """Tags of one size in a row of boxes of one height share their baselines: an accent on
+    a capital ("Túlipas", "Éclair") lowered its tag's lines by 0.4 mm, as the ink block and not
+    the lines' em boxes was centred in the box."""
+    names = ["Queque\n3,20 €", "Túlipas\n4,50 €", "Éclair\n2,10 €", "Bule de chá\n24,50 €"]
+    items = [TextItem(id=f"tag{index}", x=20.0 + 36.0 * index, y=50.0, w=34.0, h=14.0,
+                      text=text, font="sans", bold=True, role="price")
+             for index, text in enumerate(names)]
+    out = tmp_path / "row.pdf"
+    render_pdf(Project(pages=[Page(id="p", size="A5", items=items)]), out)
+    with pdfplumber.open(out) as pdf:
+        lines = []
+        for item in items:
+            chars = chars_in(pdf.pages[0], BoxPt.of_item(item), margin_pt=2)
+            baselines = sorted({round(c["bottom"], 2) for c in chars})
+            assert len(baselines) == 2, (item.id, baselines)  # two lines, each on one baseline
+            lines.append(baselines)
+    for depth in (0, 1):
+        spread = max(b[depth] for b in lines) - min(b[depth] for b in lines)
+        assert spread < 0.05, (depth, lines)
