@@ -56,7 +56,7 @@ class PlacedPicture(PlacedItem):
     w_mm: float
     h_mm: float
     plan: PicturePlan
-    clip: Rect | None = None  # for a background picture that covers (and overflows) the page
+    clip: Rect | None = None  # its frame, where the picture covers (and overflows) it
 
 
 @dataclass(frozen=True)
@@ -135,6 +135,26 @@ def place_text(item: TextItem, label: str, warnings: list[str],
     return PlacedText(item.id, label, (RunGroup(face, fit.font_pt, item.color, runs),))
 
 
+# A frame whose shape is within this of the picture's is filled as it is (a rounding of the
+# size to 0.01 mm is no reason to crop a picture by a pixel).
+SAME_SHAPE = 0.002
+
+
+def framed_picture(item_id: str, label: str, frame: Rect, plan: PicturePlan) -> PlacedPicture:
+    """The picture filling its frame, never distorted: in a frame of another shape (a box the
+    user drew, or one the editor let change shape) it is scaled, proportions kept, to cover
+    the frame, centred, and clipped to it, as a layout program's "fill frame
+    proportionally".  Stretched to the frame, photos printed up to 65 % squashed.  A PDF's
+    own shape is not read here: it fills its frame as it is drawn."""
+    w, h = frame.right_mm - frame.left_mm, frame.bottom_mm - frame.top_mm
+    if plan.pixel_size == (0, 0) or abs(plan.aspect / (w / h) - 1) <= SAME_SHAPE:
+        return PlacedPicture(item_id, label, frame.left_mm, frame.top_mm, w, h, plan)
+    scale = max(w / plan.aspect, h)  # the height of the picture drawn
+    drawn_w, drawn_h = scale * plan.aspect, scale
+    return PlacedPicture(item_id, label, frame.left_mm + (w - drawn_w) / 2,
+                         frame.top_mm + (h - drawn_h) / 2, drawn_w, drawn_h, plan, clip=frame)
+
+
 def place_calendar(item: CalendarItem, label: str, warnings: list[str]) -> PlacedCalendar:
     layout = layout_calendar(item)
     if layout.missing:
@@ -184,10 +204,10 @@ def place_document(project: Project) -> PlacedDocument:
                     raise RenderError(f'{label}: picture "{item.path}" is filled from a data '
                                       "column; this is a merge template: make its documents "
                                       "with `floatpage merge TEMPLATE DATA -o OUTDIR`")
-                left, top = item.x - item.w / 2, item.y - item.h / 2
-                plan = plan_picture(project.base_dir / item.path, item.w, item.h, label)
-                made = PlacedPicture(item.id, f'{label} (picture file "{item.path}")', left, top,
-                                     item.w, item.h, plan)
+                plan = plan_picture(project.base_dir / item.path, item.w, item.h, label,
+                                    cover=True)
+                made = framed_picture(item.id, f'{label} (picture file "{item.path}")',
+                                      rect_of(item), plan)
             elif isinstance(item, BlockItem):
                 made = PlacedBlock(item.id, label, rect_of(item), item.color,
                                    min(1.0, max(0.0, float(item.opacity))))

@@ -73,7 +73,13 @@ def extended(rect: Rect, w_mm: float, h_mm: float, bleed_mm: float, *, always: b
 
 
 def covering(picture: PlacedPicture, target: Rect) -> PlacedPicture:
-    """The picture scaled, proportions kept, to cover ``target``, and clipped to it."""
+    """The picture scaled, proportions kept, to cover ``target``, and clipped to it; where
+    it already covers it (a picture cropped to its frame), only the clip grows: the bleed
+    shows the photo's own cropped margin and nothing inside the trim moves."""
+    if (picture.left_mm <= target.left_mm and picture.top_mm <= target.top_mm
+            and picture.left_mm + picture.w_mm >= target.right_mm
+            and picture.top_mm + picture.h_mm >= target.bottom_mm):
+        return replace(picture, clip=target)
     w, h = target.right_mm - target.left_mm, target.bottom_mm - target.top_mm
     scale = max(w / picture.w_mm, h / picture.h_mm)  # a PDF's too: as placed, never stretched
     new_w, new_h = picture.w_mm * scale, picture.h_mm * scale
