@@ -186,6 +186,13 @@ def place_background(project: Project, page: Page) -> list:
     return []
 
 
+def paint_order(index: int, item) -> tuple[int, bool, int]:
+    """Items print by z; at one z, words (texts, calendars) over pictures and blocks, then in
+    file order.  In file order alone, a text listed before a picture it met (a page too
+    full to part them, or a title put on a photo) printed hidden under it."""
+    return (item.z, isinstance(item, (TextItem, CalendarItem)), index)
+
+
 def place_document(project: Project) -> PlacedDocument:
     warnings: list[str] = []
     pages = []
@@ -193,7 +200,7 @@ def place_document(project: Project) -> PlacedDocument:
     for page in project.pages:
         placed_page = PlacedPage(page.id, page.width_mm, page.height_mm,
                                  background=place_background(project, page))
-        ordered = sorted(enumerate(page.items), key=lambda pair: (pair[1].z, pair[0]))
+        ordered = sorted(enumerate(page.items), key=lambda pair: paint_order(*pair))
         for _, item in ordered:
             label = item_label(item, page)
             check_item(item, label)

@@ -14,7 +14,7 @@ import pdfplumber
 import pytest
 from PIL import Image
 
-from floatpage.model import Background, Page, PictureItem, Project, save_project
+from floatpage.model import Background, Page, PictureItem, Project, TextItem, save_project
 from floatpage.typeset.text_layout import PT_PER_MM
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -78,3 +78,19 @@ def test_a_cropped_picture_at_the_edge_bleeds_with_its_own_cropped_part(folder):
     assert at(sheet, 1.0, 40.0, SLUG) == pytest.approx(GREEN, abs=10)  # inside: unchanged
     assert at(sheet, 49.0, 40.0, SLUG) == pytest.approx(GREEN, abs=10)
     assert at(sheet, -4.5, 40.0, SLUG) == pytest.approx(PAPER, abs=10)  # and no further
+
+
+def test_a_text_listed_before_a_picture_it_meets_prints_over_it(tmp_path):
+    """At one z, words print over pictures and blocks: a text listed first in the file, on a
+    picture (a title on a photo, or a page too full to part them), printed hidden under it."""
+    Image.new("RGB", (300, 200), (250, 230, 120)).save(tmp_path / "sand.png")
+    photo = PictureItem(id="photo", x=60.0, y=50.0, w=90.0, h=60.0, path="sand.png")
+    title = TextItem(id="title", x=60.0, y=50.0, w=60.0, h=16.0, text="MMMM", font="sans",
+                     bold=True, color="#000000")
+    save_project(Project(pages=[Page(id="p", size="A5", items=[title, photo])]),
+                 tmp_path / "frames.toml")
+    _, page = render(tmp_path)
+    scale = DPI / 25.4
+    darkest = min(sum(page.getpixel((x, y))) for x in range(round(35 * scale), round(85 * scale))
+                  for y in range(round(45 * scale), round(55 * scale)))
+    assert darkest < 150  # black glyphs show on the sand
