@@ -136,7 +136,8 @@ class PictureItem(ItemBase):
     path: str = field(default="", metadata=spec("str", required=True))
     lock_aspect: bool = field(default=True, metadata=spec(
         "bool", label="Keep the picture's aspect ratio"))
-    # print: extend past the trim wherever the picture meets the page edge
+    # may reach the page's edge: no print-safe margin (`render --print` carries every picture
+    # and block that meets the edge past the trim, marked or not)
     bleed: bool = field(default=False, metadata=spec("bool"))
 
     kind = "picture"
@@ -149,7 +150,8 @@ class BlockItem(ItemBase):
     color: str = field(default="#cccccc", metadata=spec("str", colour, label=COLOUR_LABEL))
     opacity: float = field(default=1.0, metadata=spec("number", between(0.0, 1.0),
                                                       label="Opacity (0-1)"))
-    # print: extend past the trim wherever the block meets the page edge
+    # may reach the page's edge: no print-safe margin (`render --print` carries every picture
+    # and block that meets the edge past the trim, marked or not)
     bleed: bool = field(default=False, metadata=spec("bool"))
 
     kind = "block"
