@@ -248,7 +248,7 @@ def cmd_render(args: argparse.Namespace) -> int:
         print(f"warning: {printable(warning)}", file=sys.stderr)
     from floatpage.typeset.render import resolution_notes
 
-    for note in resolution_notes(project):
+    for note in resolution_notes(project) + report.notes:
         print(f"note: {printable(note)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
@@ -333,12 +333,13 @@ def cmd_check(args: argparse.Namespace) -> int:
         if settle_may_help(lines):
             settle_lines += lines
     from floatpage.typeset import text_fit_warnings
-    from floatpage.typeset.render import picture_warnings, resolution_notes
+    from floatpage.typeset.render import faint_text_notes, picture_warnings, resolution_notes
 
     for warning in text_fit_warnings(project) + picture_warnings(project):
         print(f"warning: {printable(warning)}")
         issues += 1
-    for note in resolution_notes(project):  # a note, not a problem: --strict still passes
+    # notes, not problems: --strict still passes
+    for note in resolution_notes(project) + faint_text_notes(project):
         print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")

@@ -28,11 +28,11 @@ Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 UTF8_BOM = b"\xef\xbb\xbf"
 LONE_LF = re.compile(r"(?<!\r)\n")
 WRITTEN_ONLY_WHEN_TRUE = {"bleed"}  # rare flags: a file names them only where they are set
-WRITTEN_ONLY_WHEN_SET = {"align"}  # newer keys: a file names them only where not the default
+WRITTEN_ONLY_WHEN_SET = {"align", "size_pt"}  # newer keys: a file names them only where not the default
 # Names that are empty for "none": a new item in no region or group has no such key (every
 # item the editor added said `region = ""` and `group = ""`), while a user's own `region = ""`
 # means the same and is kept as written, so an unchanged file still saves byte-identical.
-WRITTEN_ONLY_WHEN_NAMED = {"region", "group"}
+WRITTEN_ONLY_WHEN_NAMED = {"region", "group", "role"}
 KEEP = object()  # a pair's value meaning "leave whatever the user wrote, if anything"
 ANCHOR_DEFAULTS = {"dx": 0.0, "dy": 0.0, "gamma": 1.0, "hard": False}
 ARRAYS_SYNCED_APART = {"items", "regions"}  # a page's arrays of tables, synced by sync_array

@@ -141,7 +141,9 @@ class PagePainter:
         canvas = CellCanvas(p.cols, p.rows, SURROUND)
         self._background(canvas, view)
         self._regions(canvas, view)
-        items = sorted(view.page.items, key=lambda item: (not item.decorative, item.z))
+        # as the PDF prints them (typeset.placed.paint_order): at one z, words over pictures
+        items = sorted(view.page.items, key=lambda item: (
+            not item.decorative, item.z, item.kind in ("text", "calendar")))
         boxes = {item.id: self._box(item, view) for item in view.page.items}
         for item in items:
             self._item(canvas, view, item, boxes[item.id])

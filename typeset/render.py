@@ -21,6 +21,7 @@ from floatpage.model.save import atomic_write
 from floatpage.model.picture_files import decode_warning, is_merge_placeholder, read_header
 from floatpage.typeset.build_folder import build_folder
 from floatpage.typeset.compile import compile_pdf, engine_path
+from floatpage.typeset.contrast import contrast_notes
 from floatpage.typeset.output_paths import check_outputs, project_companions, project_inputs
 from floatpage.typeset.print_marks import for_print
 from floatpage.typeset.errors import RenderError
@@ -37,6 +38,7 @@ class RenderReport:
     warnings: list[str] = field(default_factory=list)
     seconds: float = 0.0
     engine_seconds: float = 0.0
+    notes: list[str] = field(default_factory=list)  # said, not wrong: faint text (contrast)
 
 
 def placed_document(project: Project) -> PlacedDocument:
@@ -75,6 +77,15 @@ def text_fit_warnings(project: Project) -> list[str]:
         return text_warnings(project)
     except FontNotFoundError as error:
         raise RenderError(str(error)) from None
+
+
+def faint_text_notes(project: Project) -> list[str]:
+    """For `floatpage check`: texts too faint against what lies behind them
+    (typeset.contrast); none for a merge template, whose pictures are not known yet."""
+    try:
+        return contrast_notes(placed_document(project))
+    except RenderError:
+        return []
 
 
 def count_pages(build: Path, expected: int) -> int:
@@ -176,6 +187,7 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     say("laying out text")
     document = placed_document(project)
     document.warnings.extend(picture_warnings(project))
+    notes = contrast_notes(document)
     say("preparing pictures")
     for plan in document.pictures:
         try:
@@ -184,7 +196,7 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
             raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
     fragment = tex_from_placed(document, fragment=True) if fragment_out is not None else ""
     if print_bleed_mm is not None:
-        document = for_print(document, project, print_bleed_mm)
+        document = for_print(document, print_bleed_mm)
     tex = tex_from_placed(document)
     say("typesetting with LuaLaTeX")
     engine_started = time.perf_counter()
@@ -204,4 +216,4 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     log_path_for(out_pdf).unlink(missing_ok=True)  # a failed render's log is now stale
     say(f"wrote {out_pdf}")
     return RenderReport(out_pdf, pages, document.warnings,
-                        time.perf_counter() - started, engine_seconds)
+                        time.perf_counter() - started, engine_seconds, notes)
