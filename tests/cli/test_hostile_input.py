@@ -1,0 +1,72 @@
+"""Hostile and careless input found by a fresh attacker's eye (fifteenth session).
+
+Each test is a case that lost a file or ended in "internal error" (exit 70) before its fix:
+now it gets exit 1 and a message that names the file and what to do, and nothing is written.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from floatpage.model import BlockItem, Page, Project, TextItem, save_project
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def run(*args: str, cwd: Path = ROOT, timeout: float = 300) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "floatpage.cli.main", *args], capture_output=True,
+                          text=True, timeout=timeout, cwd=cwd, stdin=subprocess.DEVNULL)
+
+
+def card(folder: Path, name: str = "card.toml") -> Path:
+    path = folder / name
+    save_project(Project(title="Card", pages=[Page(id="front", size="A5", width_mm=148.0,
+                                                   height_mm=210.0, items=[
+        BlockItem(id="block", x=30.0, y=40.0, w=30.0, h=30.0, color="#3366aa"),
+        TextItem(id="title", x=60.0, y=100.0, w=60.0, h=20.0, text="Hello")])]), path)
+    return path
+
+
+def listing(folder: Path) -> dict[str, bytes | None]:
+    return {str(path.relative_to(folder)): (path.read_bytes() if path.is_file() else None)
+            for path in sorted(folder.rglob("*"))}
+
+
+@pytest.mark.parametrize("option", ["-o", "--tex", "--fragment"])
+@pytest.mark.parametrize("name", [".", "..", "out/", "./"])
+def test_an_output_that_names_a_folder_is_refused_with_the_file_to_name(tmp_path, option, name):
+    """`-o .` was an internal error (Path('.') has no name), and `-o out/` wrote a PDF
+    called `out` where the user meant a folder."""
+    folder = tmp_path / "work"
+    folder.mkdir()
+    card(folder)
+    before = listing(tmp_path)
+    args = ["render", "card.toml", option, name, *(["-o", "card.pdf"] if option != "-o" else [])]
+    result = run(*args, cwd=folder)
+    assert result.returncode == 1, result.stderr
+    assert "internal error" not in result.stderr
+    suffix = ".pdf" if option == "-o" else ".tex"
+    assert result.stderr.startswith(f"floatpage: {name}: names a folder, and {option} writes one "
+                                    f"file; name the file, e.g. {os.path.join(name, 'card' + suffix)}")
+    assert listing(tmp_path) == before
+
+
+def test_render_will_not_write_its_pdf_over_another_project(tmp_path):
+    """`render card.toml -o other.toml` replaced the other project with the PDF."""
+    card(tmp_path)
+    other = card(tmp_path, "other.toml")
+    before = other.read_bytes()
+    result = run("render", str(tmp_path / "card.toml"), "-o", str(other))
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith(f"floatpage: {other}: will not write the PDF there, because "
+                                    "it is a project file, which the PDF would replace; name the "
+                                    f"output .pdf (e.g. -o {other.with_suffix('.pdf')})")
+    assert other.read_bytes() == before
+    fresh = run("render", str(tmp_path / "card.toml"), "-o", str(tmp_path / "new.TOML"))
+    assert fresh.returncode == 1 and "a .toml name is a project's" in fresh.stderr
+    assert not (tmp_path / "new.TOML").exists()
