@@ -210,11 +210,24 @@ class Report:
     def row(self, number: int, line: int, name: str, status: str, reason: str = "") -> None:
         if status == "failed":
             self.failed += 1
-        self.writer.writerow((number, line, name, status, " ".join(reason.split())))
+        try:
+            self.writer.writerow((number, line, name, status, " ".join(reason.split())))
+        except OSError as error:
+            raise self.unwritten(error) from None
 
     def save(self) -> None:
-        self.handle.close()
-        os.replace(self.partial, self.path)
+        """report.partial becomes report.csv; on a full disk (whose error surfaces only at
+        the close) a message, as for a record's PDF, not an internal error."""
+        try:
+            self.handle.close()
+            os.replace(self.partial, self.path)
+        except OSError as error:
+            raise self.unwritten(error) from None
+
+    def unwritten(self, error: OSError) -> FloatpageError:
+        return FloatpageError(f"{self.path}: could not write it ({error.strerror or error}); "
+                              "check that the output folder is writable and the disk not "
+                              "full, then run merge again (it skips the records already made)")
 
     def made_names(self):
         """The names of the records that have a PDF, in record order, read back from the

@@ -78,8 +78,11 @@ class ProjectLock:
                         f"{self.project}: is being edited by {holder}; close it there, "
                         "or wait for it to finish, then try again") from None
                 time.sleep(POLL_S)
-        os.ftruncate(fd, 0)
-        os.pwrite(fd, f"{os.getpid()} {self.purpose}\n".encode(), 0)
+        try:  # who holds it, for a waiter's message; a full disk refuses even these bytes,
+            os.ftruncate(fd, 0)  # and the save that follows says so, naming the project
+            os.pwrite(fd, f"{os.getpid()} {self.purpose}\n".encode(), 0)
+        except OSError:
+            pass
         self.fd = fd
         return self
 

@@ -70,3 +70,57 @@ def test_render_will_not_write_its_pdf_over_another_project(tmp_path):
     fresh = run("render", str(tmp_path / "card.toml"), "-o", str(tmp_path / "new.TOML"))
     assert fresh.returncode == 1 and "a .toml name is a project's" in fresh.stderr
     assert not (tmp_path / "new.TOML").exists()
+
+
+@pytest.fixture
+def full_disk(tmp_path):
+    """A real full disk: a 256 KiB tmpfs (root only) filled to the last byte by `filler`."""
+    if os.geteuid() != 0:
+        pytest.skip("mounting a small tmpfs needs root")
+    mount = tmp_path / "full"
+    mount.mkdir()
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=256k", "tmpfs", str(mount)],
+                      capture_output=True).returncode:
+        pytest.skip("this machine will not mount a tmpfs")
+    try:
+        yield mount
+    finally:
+        subprocess.run(["umount", "-l", str(mount)], check=True)
+
+
+def fill(folder: Path) -> None:
+    with open(folder / "filler", "wb", buffering=0) as handle:
+        try:
+            while True:
+                handle.write(b"x" * 4096)
+        except OSError:
+            pass
+
+
+def test_settle_on_a_full_disk_says_so_and_keeps_the_project(full_disk):
+    """Writing the holder's PID into the lock file hit the full disk first: internal error."""
+    path = card(full_disk)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 90.0"))  # settle must write
+    before = path.read_bytes()
+    fill(full_disk)
+    result = run("settle", str(path))
+    assert result.returncode == 1, result.stderr
+    assert "internal error" not in result.stderr
+    assert result.stderr.startswith(f"floatpage: {path}: could not save: No space left on device")
+    assert path.read_bytes() == before
+
+
+def test_merge_onto_a_full_disk_names_the_file_it_could_not_write(full_disk):
+    """The PDF's clear message was lost: report.csv's own failure to close on the full disk
+    replaced it with an internal error."""
+    sample = ROOT / "sample_projects" / "merge-offers"
+    out = full_disk / "out"
+    out.mkdir()
+    fill(full_disk)
+    result = run("merge", str(sample / "offer.toml"), str(sample / "customers.csv"), "-o",
+                 str(out), "-q", "--workers", "1", timeout=600)
+    assert result.returncode == 1, result.stderr
+    assert "internal error" not in result.stderr
+    assert "could not write it (No space left on device); check that the output folder is " \
+           "writable and the disk not full" in result.stderr
+    assert not list(out.glob("*.pdf"))
