@@ -60,7 +60,7 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False,
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
-        raise ProjectFileError([syntax_problem(path, error)]) from None
+        raise ProjectFileError([syntax_problem(path, error, text)]) from None
     except RecursionError:
         raise too_deep(path) from None
     reader = _Reader(path, text, allow_outside=allow_outside_files,
@@ -117,7 +117,7 @@ def read_text(path: Path) -> str:
         raise fail(f"is not UTF-8 text (byte {error.start})", "save it as UTF-8") from None
 
 
-def syntax_problem(path: Path, error: tomllib.TOMLDecodeError) -> Problem:
+def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -> Problem:
     message = str(error)
     line = getattr(error, "lineno", None)
     if line is None and "(at line " in message:
@@ -126,6 +126,12 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError) -> Problem:
         except (IndexError, ValueError):
             line = None
     short = message.split(" (at line")[0]
+    if "\r" in text.replace("\r\n", ""):
+        # Lines ended by a bare carriage return (classic Mac OS, some exporters) are one
+        # long line to TOML: "line 1: Expected newline" sent the user to a line that was fine.
+        return Problem(path, line, "", f"TOML syntax error: {short}",
+                       "the file ends lines with a bare carriage return (CR), which TOML does "
+                       "not read as a line end; save it with LF or CRLF line ends")
     return Problem(path, line, "", f"TOML syntax error: {short}",
                    "check quotes, brackets and `key = value` pairs on that line")
 
