@@ -134,6 +134,12 @@ def place_calendar(item: CalendarItem, label: str, warnings: list[str]) -> Place
                           layout.weekend)
 
 
+def merge_template_error(label: str, path: str) -> RenderError:
+    return RenderError(f'{label}: picture "{path}" is filled from a data column; this is a '
+                       "merge template: make its documents with `floatpage merge TEMPLATE DATA "
+                       "-o OUTDIR`")
+
+
 def place_background(project: Project, page: Page) -> list:
     background = page.background
     if background is None:
@@ -142,6 +148,9 @@ def place_background(project: Project, page: Page) -> list:
         f' (picture file "{background.picture}")' if background.picture else '')
     whole = Rect(0.0, 0.0, page.width_mm, page.height_mm)
     if background.picture:
+        if is_merge_placeholder(background.picture):  # as for a picture item: was "cannot be
+            raise merge_template_error(f'the background of page "{page.id}"',  # read", of a
+                                       background.picture)  # name with braces
         plan = plan_picture(project.base_dir / background.picture, page.width_mm, page.height_mm,
                             label, cover=True)
         # Cover the page, keeping the picture's proportions; the clip trims the overflow.
@@ -171,9 +180,7 @@ def place_document(project: Project) -> PlacedDocument:
                 made = place_text(item, label, warnings)
             elif isinstance(item, PictureItem):
                 if is_merge_placeholder(item.path):
-                    raise RenderError(f'{label}: picture "{item.path}" is filled from a data '
-                                      "column; this is a merge template: make its documents "
-                                      "with `floatpage merge TEMPLATE DATA -o OUTDIR`")
+                    raise merge_template_error(label, item.path)
                 left, top = item.x - item.w / 2, item.y - item.h / 2
                 plan = plan_picture(project.base_dir / item.path, item.w, item.h, label)
                 made = PlacedPicture(item.id, f'{label} (picture file "{item.path}")', left, top,

@@ -124,3 +124,17 @@ def test_merge_onto_a_full_disk_names_the_file_it_could_not_write(full_disk):
     assert "could not write it (No space left on device); check that the output folder is " \
            "writable and the disk not full" in result.stderr
     assert not list(out.glob("*.pdf"))
+
+
+def test_a_background_filled_from_a_data_column_says_it_is_a_merge_template(tmp_path):
+    """A picture item with `{photo}` said so; a background with one said "cannot be read: No
+    such file or directory" of the path with its braces."""
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace('size = "A5"', 'size = "A5"\n'
+                                             'background = {picture = "pictures/{photo}"}', 1))
+    result = run("render", str(path), "-o", str(tmp_path / "card.pdf"))
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith('floatpage: the background of page "front": picture '
+                                    '"pictures/{photo}" is filled from a data column; this is a '
+                                    "merge template: make its documents with `floatpage merge")
+    assert not (tmp_path / "card.pdf").exists()
