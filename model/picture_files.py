@@ -125,9 +125,13 @@ def decode_warning(path: Path) -> str:
     return ""
 
 
-def is_merge_placeholder(relative: str) -> bool:
-    """A template's picture path that a data column fills (`pictures/{photo}`)."""
-    return MERGE_FIELD.search(relative) is not None
+def is_merge_placeholder(relative: str, folder: Path | None = None) -> bool:
+    """A template's picture path that a data column fills (`pictures/{photo}`). Given the
+    project's ``folder``, a file that is there by that very name is a picture, not a
+    placeholder: `photo {1}.png` passed `check` and `render` called it a merge template."""
+    if MERGE_FIELD.search(relative) is None:
+        return False
+    return folder is None or not os.path.lexists(folder / relative)
 
 
 def is_outside(picture: Path, folder: Path) -> bool:

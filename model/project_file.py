@@ -361,7 +361,7 @@ class _Reader:
         return Background(color=values.get("color"), picture=values.get("picture"))
 
     def check_picture(self, relative: str, where: str, line: int | None) -> None:
-        if is_merge_placeholder(relative):
+        if is_merge_placeholder(relative, self.path.parent):
             return
         picture = self.path.parent / relative
         header = read_header(picture)

@@ -148,9 +148,9 @@ def place_background(project: Project, page: Page) -> list:
         f' (picture file "{background.picture}")' if background.picture else '')
     whole = Rect(0.0, 0.0, page.width_mm, page.height_mm)
     if background.picture:
-        if is_merge_placeholder(background.picture):  # as for a picture item: was "cannot be
-            raise merge_template_error(f'the background of page "{page.id}"',  # read", of a
-                                       background.picture)  # name with braces
+        # as for a picture item (it said "cannot be read", of the name with its braces)
+        if is_merge_placeholder(background.picture, project.base_dir):
+            raise merge_template_error(f'the background of page "{page.id}"', background.picture)
         plan = plan_picture(project.base_dir / background.picture, page.width_mm, page.height_mm,
                             label, cover=True)
         # Cover the page, keeping the picture's proportions; the clip trims the overflow.
@@ -179,7 +179,7 @@ def place_document(project: Project) -> PlacedDocument:
             if isinstance(item, TextItem):
                 made = place_text(item, label, warnings)
             elif isinstance(item, PictureItem):
-                if is_merge_placeholder(item.path):
+                if is_merge_placeholder(item.path, project.base_dir):
                     raise merge_template_error(label, item.path)
                 left, top = item.x - item.w / 2, item.y - item.h / 2
                 plan = plan_picture(project.base_dir / item.path, item.w, item.h, label)

@@ -89,13 +89,13 @@ def picture_warnings(project: Project) -> list[str]:
     found = []
     for page in project.pages:
         for item in page.items:
-            if item.kind == "picture" and not is_merge_placeholder(item.path):
+            if item.kind == "picture" and not is_merge_placeholder(item.path, project.base_dir):
                 problem = decode_warning(project.base_dir / item.path)
                 if problem:
                     found.append(f'item "{item.id}" on page "{page.id}": picture '
                                  f'"{item.path}": {problem}')
         if page.background is not None and page.background.picture and \
-                not is_merge_placeholder(page.background.picture):
+                not is_merge_placeholder(page.background.picture, project.base_dir):
             problem = decode_warning(project.base_dir / page.background.picture)
             if problem:
                 found.append(f'page "{page.id}" background "{page.background.picture}": {problem}')
@@ -125,7 +125,7 @@ def resolution_notes(project: Project) -> list[str]:
     notes = []
     for page in project.pages:
         for item in page.items:
-            if item.kind != "picture" or is_merge_placeholder(item.path):
+            if item.kind != "picture" or is_merge_placeholder(item.path, project.base_dir):
                 continue
             found = print_dpi(project.base_dir / item.path, item.w, item.h)
             if found is not None and found[1] < BLOCKY_DPI:

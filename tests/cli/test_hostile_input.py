@@ -138,3 +138,22 @@ def test_a_background_filled_from_a_data_column_says_it_is_a_merge_template(tmp_
                                     '"pictures/{photo}" is filled from a data column; this is a '
                                     "merge template: make its documents with `floatpage merge")
     assert not (tmp_path / "card.pdf").exists()
+
+
+def test_a_picture_whose_file_name_has_braces_is_a_picture_not_a_merge_field(tmp_path):
+    """`photo {1}.png` (a real file) passed check, and render refused it as a merge template."""
+    from PIL import Image
+
+    Image.new("RGB", (300, 200), "red").save(tmp_path / "photo {1}.png")
+    Image.new("RGB", (300, 200), "blue").save(tmp_path / "back {x} % #.png")
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace('size = "A5"', 'size = "A5"\n'
+                                             'background = {picture = "back {x} % #.png"}', 1)
+                    + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\nx = 100.0\ny = 170.0\n'
+                      'w = 30.0\nh = 20.0\npath = "photo {1}.png"\n')
+    assert run("check", str(path)).returncode == 0
+    result = run("render", str(path), "--no-settle", "-o", str(tmp_path / "card.pdf"))
+    assert result.returncode == 0, result.stderr
+    listed = subprocess.run(["pdfimages", "-list", str(tmp_path / "card.pdf")],
+                            capture_output=True, text=True, check=True).stdout
+    assert len([line for line in listed.splitlines() if " image " in line]) == 2, listed
