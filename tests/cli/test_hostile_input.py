@@ -157,3 +157,48 @@ def test_a_picture_whose_file_name_has_braces_is_a_picture_not_a_merge_field(tmp
     listed = subprocess.run(["pdfimages", "-list", str(tmp_path / "card.pdf")],
                             capture_output=True, text=True, check=True).stdout
     assert len([line for line in listed.splitlines() if " image " in line]) == 2, listed
+
+
+CORPUS_PICTURES = ROOT / "tests" / "fuzz" / "corpus" / "pictures"
+
+
+def picture_card(folder: Path, picture: str) -> Path:
+    import shutil
+
+    shutil.copy(CORPUS_PICTURES / picture, folder / picture)
+    path = card(folder)
+    path.write_text(path.read_text() + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\n'
+                    f'x = 100.0\ny = 170.0\nw = 30.0\nh = 20.0\npath = "{picture}"\n')
+    return path
+
+
+@pytest.mark.parametrize("picture,size", [("pdf-page-10-metres.pdf", "10,000 x 35 mm"),
+                                          ("pdf-crop-speck.pdf", "0.0035 x 0.0035 mm")])
+def test_a_pdf_page_tex_cannot_place_is_refused_by_check_not_by_lualatex(tmp_path, picture,
+                                                                        size):
+    """Check passed them; LuaLaTeX stopped on "Dimension too large" or "Arithmetic overflow"."""
+    path = picture_card(tmp_path, picture)
+    for command in ("check", "render"):
+        result = run(command, str(path))
+        assert result.returncode == 1, result.stderr
+        assert f'item "photo": picture file "{picture}" has a first page of {size}, a size TeX ' \
+               "cannot place (0.35 mm to 5 m a side) (export it again at the size it should " \
+               "print, or use PNG or JPEG)" in result.stderr
+        assert "LaTeX" not in result.stderr
+
+
+def test_a_damaged_pdf_is_printed_mended_and_check_says_so(tmp_path):
+    """A PDF with a broken cross-reference table: qpdf opened it, so check passed it, and
+    LuaLaTeX stopped with "reading image failed"."""
+    path = picture_card(tmp_path, "pdf-broken-xref.pdf")
+    checked = run("check", "--strict", str(path))
+    assert checked.returncode == 1
+    warning = ('item "photo" on page "front": picture "pdf-broken-xref.pdf": the PDF is damaged '
+               "(xref not found); a mended copy is printed: look at it, or export the PDF again")
+    assert f"warning: {warning}" in checked.stdout
+    result = run("render", str(path), "--no-settle", "-o", str(tmp_path / "card.pdf"))
+    assert result.returncode == 0, result.stderr
+    assert warning in result.stderr
+    listed = subprocess.run(["pdfimages", "-list", str(tmp_path / "card.pdf")],
+                            capture_output=True, text=True, check=True).stdout
+    assert len([line for line in listed.splitlines() if " image " in line]) == 1, listed
