@@ -164,6 +164,11 @@ class DataFile:
                     record.problem = f"not valid JSON ({getattr(error, 'msg', 'too deep')})"
                     yield record
                     continue
+                except ValueError:  # Python reads no integer of more than 4,300 digits
+                    record.problem = ("a number in it is too long to read (more than 4,300 "
+                                      'digits); quote it as a string: "123…"')
+                    yield record
+                    continue
                 if not isinstance(data, dict):
                     record.problem = "the line is not a JSON object ({...})"
                     yield record

@@ -28,3 +28,25 @@ def test_a_dask_address_that_is_no_address_is_a_clear_error(merge_folder, addres
     assert "internal error" not in result.stderr
     assert f"floatpage: --dask {address}: not a scheduler's address" in result.stderr
     assert "tcp://HOST:PORT" in result.stderr
+
+
+def test_a_json_integer_too_long_for_python_fails_its_record_alone(tmp_path):
+    """`{"id": 999…9}` with 5,000 digits: json.loads raises a plain ValueError (Python's
+    4,300-digit limit), which escaped as an internal error; as the first line, it said so."""
+    from floatpage.merge.records import DataFile
+    from floatpage.model.errors import FloatpageError
+
+    huge = "9" * 5000
+    data = tmp_path / "people.jsonl"
+    data.write_text('{"id": "1", "name": "Ann"}\n{"id": ' + huge + ', "name": "Bo"}\n'
+                    '{"id": "3", "name": "Cy"}\n')
+    records = list(DataFile(data).records())
+    assert [record.problem for record in records] == [
+        "", 'a number in it is too long to read (more than 4,300 digits); quote it as a string: '
+            '"123…"', ""]
+    assert records[2].values == {"id": "3", "name": "Cy"}
+    first = tmp_path / "first.jsonl"
+    first.write_text('{"id": ' + huge + "}\n")
+    with pytest.raises(FloatpageError, match=r"first\.jsonl, line 1: the first line must be a "
+                                             r"JSON object .* too long to read"):
+        DataFile(first)
