@@ -50,3 +50,33 @@ def test_a_json_integer_too_long_for_python_fails_its_record_alone(tmp_path):
     with pytest.raises(FloatpageError, match=r"first\.jsonl, line 1: the first line must be a "
                                              r"JSON object .* too long to read"):
         DataFile(first)
+
+
+def test_json_lines_with_a_key_left_out_a_lone_surrogate_or_no_object_fail_alone(merge_folder):
+    """A record that leaves out a key ended the whole run with KeyError; a "\\ud800" escape
+    with UnicodeEncodeError; a line that is no object, with `--name {id}`, with KeyError."""
+    import csv
+    import json
+
+    first = dict(zip(next(csv.reader([",".join(["id", "first_name", "surname", "product",
+                                                 "price", "photo", "note", "valid_until"])])),
+                     rows(1)[0]))
+    left_out = {key: value for key, value in first.items() if key != "first_name"}
+    lines = [json.dumps(first), json.dumps(left_out),
+             json.dumps(first).replace(first["first_name"], "\\ud800"), "[1, 2]",
+             json.dumps(first).replace('"surname"', '"\\udc00"')]
+    data = merge_folder / "people.jsonl"
+    data.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    result = merge("offer.toml", str(data), "-o", "out", "--name", "{id}-{surname}", "-q",
+                   cwd=merge_folder, timeout=600)
+    assert result.returncode == 3, result.stderr
+    assert "internal error" not in result.stderr
+    report = list(csv.DictReader((merge_folder / "out" / "report.csv").open(encoding="utf-8")))
+    assert [row["status"] for row in report] == ["made", "made", "failed", "failed", "failed"]
+    assert report[2]["reason"] == (
+        "the value of 'first_name' holds half of a UTF-16 surrogate pair (\\ud800-\\udfff "
+        "written alone), which is no character; export the data again as UTF-8")
+    assert report[3]["reason"] == "the line is not a JSON object ({...})"
+    assert report[4]["reason"].startswith("the key '\\udc00' holds half of a UTF-16 surrogate")
+    assert sorted(path.name for path in (merge_folder / "out").glob("*.pdf")) == [
+        f"{first['id']}-{first['surname']}-2.pdf", f"{first['id']}-{first['surname']}.pdf"]
