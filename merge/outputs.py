@@ -36,6 +36,9 @@ MAX_NAME_BYTES = 120
 WINDOWS_RESERVED = {"con", "prn", "aux", "nul", *(f"com{n}" for n in range(10)),
                     *(f"lpt{n}" for n in range(10))}
 REPORT_COLUMNS = ("record", "line", "name", "status", "reason")
+# A name, the only report.csv cell a record's data begins, never starts as a spreadsheet
+# formula: `--name {id}` with an id of `=HYPERLINK(…)` ran in the print shop's Excel.
+FORMULA_START = "=+@-. "
 
 
 def name_fields(pattern: str | None) -> list[str]:
@@ -51,7 +54,7 @@ def safe_name(text: str, number: int) -> str:
     """A file name any file system takes: no separators, controls or leading dots, at most
     MAX_NAME_BYTES in UTF-8, and no name Windows reserves for a device."""
     text = unicodedata.normalize("NFC", text)
-    text = UNSAFE.sub("-", text).strip(" .-")
+    text = UNSAFE.sub("-", text).strip(" .-").lstrip(FORMULA_START)
     text = re.sub(r"\s+", " ", text)
     text = text.encode("utf-8")[:MAX_NAME_BYTES].decode("utf-8", "ignore").strip(" .-")
     first, dot, rest = text.partition(".")

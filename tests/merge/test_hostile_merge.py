@@ -80,3 +80,16 @@ def test_json_lines_with_a_key_left_out_a_lone_surrogate_or_no_object_fail_alone
     assert report[4]["reason"].startswith("the key '\\udc00' holds half of a UTF-16 surrogate")
     assert sorted(path.name for path in (merge_folder / "out").glob("*.pdf")) == [
         f"{first['id']}-{first['surname']}-2.pdf", f"{first['id']}-{first['surname']}.pdf"]
+
+
+@pytest.mark.parametrize("value,name", [('=HYPERLINK("http://evil.example","click")',
+                                         "HYPERLINK(-http-evil.example-,-click-)"),
+                                        ("+1+1", "1+1"), ("@SUM(A1)", "SUM(A1)"),
+                                        ("-2+3", "2+3"), ("=cmd|' /C calc'!A0", "cmd- -C calc-A0"),
+                                        ("= @ =", "record-00004"), ("a=b", "a=b")])
+def test_a_record_name_never_starts_as_a_spreadsheet_formula(value, name):
+    """`--name {id}` with an id of `=HYPERLINK(…)` wrote that name first in its report.csv
+    cell (and its file name), where the print shop's spreadsheet ran it as a formula."""
+    from floatpage.merge.outputs import Names
+
+    assert Names("{id}").name_for(4, {"id": value}) == name
