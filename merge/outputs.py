@@ -138,6 +138,11 @@ class OutputFolder:
         except OSError as error:
             raise FloatpageError(f"{self.folder}: cannot create the output folder "
                                  f"({error.strerror})") from None
+        state = self.folder / STATE_DIR
+        if state.is_symlink():  # mkdir took the link's folder, and the keys went there
+            raise FloatpageError(f"{state}: is a symbolic link; floatpage keeps its merge state "
+                                 "in a folder of its own there (remove the link, or name "
+                                 "another output folder with -o)")
         remove_leftovers(self.folder)
         remove_leftovers(self.folder / STATE_DIR)
         self.inputs = {self.key(path) for path in inputs}

@@ -93,3 +93,18 @@ def test_a_record_name_never_starts_as_a_spreadsheet_formula(value, name):
     from floatpage.merge.outputs import Names
 
     assert Names("{id}").name_for(4, {"id": value}) == name
+
+
+def test_a_state_folder_that_is_a_link_is_refused_and_nothing_is_written_through_it(merge_folder):
+    """A `.floatpage-merge` link in the output folder took every record's key and the
+    partial report to wherever it pointed."""
+    data = write_csv(merge_folder / "customers.csv", rows(1))
+    elsewhere = merge_folder / "elsewhere"
+    elsewhere.mkdir()
+    (merge_folder / "out").mkdir()
+    (merge_folder / "out" / ".floatpage-merge").symlink_to(elsewhere)
+    result = merge("offer.toml", str(data), "-o", "out", "-q", cwd=merge_folder)
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith("floatpage: out/.floatpage-merge: is a symbolic link; ")
+    assert not list(elsewhere.iterdir())
+    assert not list((merge_folder / "out").glob("*.pdf"))
