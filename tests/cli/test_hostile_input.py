@@ -202,3 +202,17 @@ def test_a_damaged_pdf_is_printed_mended_and_check_says_so(tmp_path):
     listed = subprocess.run(["pdfimages", "-list", str(tmp_path / "card.pdf")],
                             capture_output=True, text=True, check=True).stdout
     assert len([line for line in listed.splitlines() if " image " in line]) == 1, listed
+
+
+@pytest.mark.parametrize("name", [".", "..", "prints/", "/"])
+def test_the_editors_export_name_that_is_a_folder_says_so(tmp_path, name):
+    """The export dialog's check said "PosixPath('.') has an empty name" for `.`, and turned
+    `prints/` into prints.pdf."""
+    from floatpage.tui.item_forms import export_parser
+
+    parse = export_parser(tmp_path, lambda path: None)
+    with pytest.raises(ValueError) as refused:
+        parse({"name": name})
+    assert str(refused.value) == (f"{name} names a folder; type a file name, e.g. "
+                                  f"{os.path.join(name, 'card-print.pdf')}")
+    assert parse({"name": "prints/card"}) == tmp_path / "prints" / "card.pdf"
