@@ -49,12 +49,32 @@ def refuse_read_only(path: Path, target: Path) -> None:
     replaced all the same, its protection gone."""
     if read_only(target):
         shown = path if Path(os.path.abspath(path)) == target else f"{path} (a link to {target})"
+        held = held_by_system(target)
+        if held:
+            raise FloatpageError(f"{shown}: not saved, because {held}; the file is unchanged")
         if os.stat(target).st_mode & 0o222:  # writable, but not by this user: chmod u+w is
             raise FloatpageError(  # not theirs to run
                 f"{shown}: not saved, because you may not write it (it belongs to "
                 f"{owner_of(target)}); the file is unchanged (ask its owner, or write a copy)")
         raise FloatpageError(f"{shown}: not saved, because the file is read-only; the file is "
                              "unchanged (make it writable with `chmod u+w`, or write elsewhere)")
+
+
+def held_by_system(path: Path) -> str:
+    """Why a file whose permissions allow a write is refused all the same ('' if it is not):
+    a read-only mount or the immutable flag.  They were told "it belongs to alice" (their own
+    name), or to make it writable with chmod, which changes neither."""
+    try:
+        if os.statvfs(path).f_flag & os.ST_RDONLY:
+            return ("its folder is on a read-only file system (a read-only mount, a CD or a "
+                    "locked card); copy the project to a writable folder")
+        status = os.stat(path)
+    except OSError:
+        return ""
+    if status.st_mode & 0o200 and status.st_uid == os.geteuid():
+        return ("the system keeps it from being written, although its permissions allow it "
+                "(`lsattr` shows an immutable flag: `chattr -i` clears it)")
+    return ""
 
 
 def owner_of(path: Path) -> str:

@@ -216,3 +216,41 @@ def test_the_editors_export_name_that_is_a_folder_says_so(tmp_path, name):
     assert str(refused.value) == (f"{name} names a folder; type a file name, e.g. "
                                   f"{os.path.join(name, 'card-print.pdf')}")
     assert parse({"name": "prints/card"}) == tmp_path / "prints" / "card.pdf"
+
+
+def test_a_project_on_a_read_only_mount_is_named_as_such(full_disk):
+    """A read-only mount (or card) was told "you may not write it (it belongs to alice)",
+    alice being the user herself."""
+    path = card(full_disk)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 90.0"))
+    before = path.read_bytes()
+    subprocess.run(["mount", "-o", "remount,ro", str(full_disk)], check=True)
+    result = run("settle", str(path))
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith(f"floatpage: {path}: not saved, because its folder is on a "
+                                    "read-only file system (a read-only mount, a CD or a locked "
+                                    "card); copy the project to a writable folder")
+    assert path.read_bytes() == before
+
+
+def test_an_immutable_project_and_output_are_named_as_such(tmp_path):
+    """`chattr +i`: its owner was told that it belongs to them, so they may not write it."""
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace("x = 30.0", "x = 90.0"))
+    out = tmp_path / "card.pdf"
+    out.write_bytes(b"%PDF-old")
+    flagged = [subprocess.run(["chattr", "+i", str(name)], capture_output=True).returncode == 0
+               for name in (path, out)]
+    if not all(flagged):
+        pytest.skip("chattr +i needs root and a file system that keeps the flag")
+    try:
+        before = path.read_bytes()
+        settled = run("settle", str(path))
+        rendered = run("render", str(path), "-o", str(out))
+    finally:
+        subprocess.run(["chattr", "-i", str(path), str(out)], check=True)
+    flag = ("the system keeps it from being written, although its permissions allow it "
+            "(`lsattr` shows an immutable flag: `chattr -i` clears it)")
+    assert settled.returncode == 1 and f"not saved, because {flag}" in settled.stderr
+    assert rendered.returncode == 1 and f"will not write there, because {flag}" in rendered.stderr
+    assert path.read_bytes() == before and out.read_bytes() == b"%PDF-old"
