@@ -49,6 +49,10 @@ class ProjectLock:
         self.fd: int | None = None
 
     def acquire(self) -> "ProjectLock":
+        if not os.path.isfile(self.project):
+            # Nothing to lock, and the load says why: a mistyped name left `.nope.toml.lock`
+            # behind, and `settle /dev/zero` (as root) made /dev/.zero.lock.
+            return self
         try:
             # O_NONBLOCK: a pipe put where the lock file belongs must not hang the open.
             fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC | os.O_NOFOLLOW

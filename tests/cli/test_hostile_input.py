@@ -254,3 +254,30 @@ def test_an_immutable_project_and_output_are_named_as_such(tmp_path):
     assert settled.returncode == 1 and f"not saved, because {flag}" in settled.stderr
     assert rendered.returncode == 1 and f"will not write there, because {flag}" in rendered.stderr
     assert path.read_bytes() == before and out.read_bytes() == b"%PDF-old"
+
+
+@pytest.mark.parametrize("command", ["settle", "edit"])
+def test_a_project_that_is_not_there_leaves_no_lock_file_behind(tmp_path, command):
+    """`settle nope.toml` left `.nope.toml.lock`, and `settle /dev/zero` (as root) made
+    /dev/.zero.lock: the lock was taken before the load said there was nothing to lock."""
+    os.mkfifo(tmp_path / "pipe.toml")
+    (tmp_path / "link.toml").symlink_to("gone.toml")
+    for name in ("nope.toml", "pipe.toml", "link.toml"):
+        result = run(command, str(tmp_path / name))
+        assert result.returncode == 1, result.stderr
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["link.toml", "pipe.toml"]
+
+
+def test_a_project_link_that_leads_nowhere_says_where_it_leads(tmp_path):
+    """Both were "no such file", of a name `ls` shows."""
+    (tmp_path / "card.toml").symlink_to("moved-away.toml")
+    (tmp_path / "a.toml").symlink_to("b.toml")
+    (tmp_path / "b.toml").symlink_to("a.toml")
+    dangling = run("check", str(tmp_path / "card.toml"))
+    assert dangling.returncode == 1
+    assert dangling.stderr.startswith(f"floatpage: {tmp_path / 'card.toml'}: is a symbolic link "
+                                      "to moved-away.toml, which does not exist (point it at "
+                                      "the project's .toml file, or restore that file)")
+    looping = run("render", str(tmp_path / "a.toml"))
+    assert looping.returncode == 1
+    assert "is a symbolic link that leads back to itself" in looping.stderr
