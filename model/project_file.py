@@ -9,6 +9,7 @@ page sizes, missing pictures, anchors to unknown ids and anchor cycles.
 from __future__ import annotations
 
 import difflib
+import errno
 import os
 import stat
 import tomllib
@@ -92,6 +93,15 @@ def read_text(path: Path) -> str:
     def fail(message: str, hint: str) -> ProjectFileError:
         return ProjectFileError([Problem(path, None, "", message, hint)])
 
+    if not path.exists() and os.path.islink(path):  # "no such file" of a file that is there
+        try:
+            os.stat(path)
+        except OSError as error:
+            if error.errno == errno.ELOOP:
+                raise fail("is a symbolic link that leads back to itself",
+                           "point it at the project's .toml file") from None
+        raise fail(f"is a symbolic link to {os.readlink(path)}, which does not exist",
+                   "point it at the project's .toml file, or restore that file")
     if not path.exists():
         raise fail("no such file", "check the path, or create one with `floatpage new blank PATH`")
     if path.is_dir():
