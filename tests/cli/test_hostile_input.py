@@ -281,3 +281,19 @@ def test_a_project_link_that_leads_nowhere_says_where_it_leads(tmp_path):
     looping = run("render", str(tmp_path / "a.toml"))
     assert looping.returncode == 1
     assert "is a symbolic link that leads back to itself" in looping.stderr
+
+
+def test_new_album_takes_a_photo_whose_name_is_not_utf8(tmp_path):
+    """`caf\\xe9.png` (Latin-1, from an old camera card): the name reached the project file as
+    a surrogate escape, and saving it ended in an internal error (UnicodeEncodeError)."""
+    from PIL import Image
+
+    photos = tmp_path / "photos"
+    photos.mkdir()
+    Image.new("RGB", (400, 300), "red").save(os.fsdecode(os.fsencode(photos) + b"/caf\xe9.png"))
+    Image.new("RGB", (400, 300), "blue").save(photos / "ok.png")
+    result = run("new", "album", str(tmp_path / "album.toml"), "--photos", str(photos))
+    assert result.returncode == 0, result.stderr
+    text = (tmp_path / "album.toml").read_text(encoding="utf-8")
+    assert 'path = "pictures/caf_.png"' in text and 'path = "pictures/ok.png"' in text
+    assert run("check", str(tmp_path / "album.toml")).returncode == 0
