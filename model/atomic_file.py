@@ -14,6 +14,7 @@ renamed over the original: rename is atomic on POSIX.  Three cases need more tha
 
 from __future__ import annotations
 
+import errno
 import os
 import secrets
 import shutil
@@ -149,6 +150,15 @@ def glob_escape(name: str) -> str:
     return "".join(f"[{c}]" if c in "*?[" else c for c in name)
 
 
+SAVE_HINT = "check that the folder exists and is writable"
+# A full disk was told to check that the folder exists and is writable.
+SAVE_HINTS = {errno.ENOSPC: "the disk is full; free some space and save again: the file is "
+                            "unchanged",
+              errno.EDQUOT: "your disk quota is used up; free some space and save again: the "
+                            "file is unchanged",
+              errno.EROFS: "the folder is on a read-only file system; save to a writable folder"}
+
+
 def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
     """Replace the file at ``path`` with ``data``; keep the old version as NAME.bak if asked."""
     path = Path(path)
@@ -176,7 +186,7 @@ def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
         sync_folder(target.parent)
     except OSError as error:
         raise FloatpageError(f"{path}: could not save: {error.strerror or error}"
-                             " (check that the folder exists and is writable)") from None
+                             f" ({SAVE_HINTS.get(error.errno, SAVE_HINT)})") from None
     finally:  # also on Ctrl+C: no half-written temporary stays behind
         if temporary is not None:
             try:

@@ -106,7 +106,9 @@ def test_settle_on_a_full_disk_says_so_and_keeps_the_project(full_disk):
     result = run("settle", str(path))
     assert result.returncode == 1, result.stderr
     assert "internal error" not in result.stderr
-    assert result.stderr.startswith(f"floatpage: {path}: could not save: No space left on device")
+    assert result.stderr.startswith(f"floatpage: {path}: could not save: No space left on device "
+                                    "(the disk is full; free some space and save again: the "
+                                    "file is unchanged)")
     assert path.read_bytes() == before
 
 
