@@ -20,7 +20,7 @@ from floatpage.model.schema import complaints
 from floatpage.typeset.calendar_panel import Rect, layout_calendar
 from floatpage.model.picture_files import is_merge_placeholder
 from floatpage.typeset.errors import RenderError
-from floatpage.typeset.pictures import PicturePlan, plan_picture
+from floatpage.typeset.pictures import PicturePlan, materialize, plan_picture
 from floatpage.typeset.templates import SAFE_PATH
 from floatpage.typeset.fonts import FaceKey, font_path, metrics_for
 from floatpage.typeset.text_layout import (
@@ -231,3 +231,19 @@ def text_warnings(project: Project) -> list[str]:
             elif isinstance(item, CalendarItem):
                 place_calendar(item, item_label(item, page), warnings)
     return warnings
+
+
+def materialize_pictures(document: PlacedDocument) -> None:
+    """Write every picture's cached file; one that cannot be converted (a PNG whose pixels
+    stop short, which its header check cannot see) is named by its item and file: the message
+    was 'picture "/abs/path" could not be converted: image file is truncated', no item, no fix."""
+    labels = {placed.plan.cache_path: placed.label for page in document.pages
+              for placed in page.background + page.items if isinstance(placed, PlacedPicture)}
+    for plan in document.pictures:
+        try:
+            materialize(plan)
+        except (OSError, ValueError) as error:
+            label = labels.get(plan.cache_path, f'picture "{plan.source}"')
+            raise RenderError(f"{label}: the picture could not be converted ({error}); it may "
+                              "be cut short or damaged: export it again, or use another "
+                              "picture") from None

@@ -25,8 +25,9 @@ from floatpage.typeset.output_paths import check_outputs, project_companions, pr
 from floatpage.typeset.print_marks import for_print
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FontNotFoundError
-from floatpage.typeset.pictures import cache_dir, materialize
-from floatpage.typeset.placed import PlacedDocument, place_document, text_warnings
+from floatpage.typeset.pictures import cache_dir
+from floatpage.typeset.placed import (PlacedDocument, materialize_pictures, place_document,
+                                      text_warnings)
 from floatpage.typeset.templates import make_environment
 
 
@@ -177,11 +178,7 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     document = placed_document(project)
     document.warnings.extend(picture_warnings(project))
     say("preparing pictures")
-    for plan in document.pictures:
-        try:
-            materialize(plan)
-        except OSError as error:
-            raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
+    materialize_pictures(document)
     fragment = tex_from_placed(document, fragment=True) if fragment_out is not None else ""
     if print_bleed_mm is not None:
         document = for_print(document, project, print_bleed_mm)

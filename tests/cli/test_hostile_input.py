@@ -299,3 +299,28 @@ def test_new_album_takes_a_photo_whose_name_is_not_utf8(tmp_path):
     text = (tmp_path / "album.toml").read_text(encoding="utf-8")
     assert 'path = "pictures/caf_.png"' in text and 'path = "pictures/ok.png"' in text
     assert run("check", str(tmp_path / "album.toml")).returncode == 0
+
+
+def test_a_png_cut_short_that_must_be_converted_names_its_item(tmp_path):
+    """A PNG whose header claims 9000 x 9000 pixels and whose data stops short passes the
+    header check; converting it for print failed with 'picture "/abs/path" could not be
+    converted: image file is truncated', naming no item and no fix."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+    (tmp_path / "short.png").write_bytes(
+        b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 9000, 9000, 16, 6, 0, 0, 0))
+        + chunk(b"IDAT", zlib.compress(b"\x00" * 100_000)) + chunk(b"IEND", b""))
+    path = card(tmp_path)
+    path.write_text(path.read_text() + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\n'
+                    'x = 100.0\ny = 170.0\nw = 30.0\nh = 20.0\npath = "short.png"\n')
+    result = run("render", str(path), "--no-settle", "-o", str(tmp_path / "card.pdf"))
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith(
+        'floatpage: item "photo" on page "front" (picture file "short.png"): the picture could '
+        "not be converted (image file is truncated")
+    assert "export it again, or use another picture" in result.stderr
+    assert not (tmp_path / "card.pdf").exists()
