@@ -232,6 +232,10 @@ def export_parser(folder: Path, check: Callable[[Path], None]) -> Callable[[dict
         name = str(values["name"]).strip()
         if not name:
             raise ValueError("type a file name, e.g. card-print.pdf")
+        if name.endswith(("/", os.sep)) or Path(name).name in ("", ".", ".."):
+            # "." showed Python's own words: "PosixPath('.') has an empty name"
+            raise ValueError(f"{name} names a folder; type a file name, e.g. "
+                             f"{os.path.join(name, 'card-print.pdf')}")
         path = Path(name).expanduser()
         if path.suffix.lower() != ".pdf":
             path = path.with_name(path.name + ".pdf")

@@ -20,7 +20,7 @@ from floatpage.model.schema import complaints
 from floatpage.typeset.calendar_panel import Rect, layout_calendar
 from floatpage.model.picture_files import is_merge_placeholder
 from floatpage.typeset.errors import RenderError
-from floatpage.typeset.pictures import PicturePlan, plan_picture
+from floatpage.typeset.pictures import PicturePlan, materialize, plan_picture
 from floatpage.typeset.templates import SAFE_PATH
 from floatpage.typeset.fonts import FaceKey, font_path, metrics_for
 from floatpage.typeset.text_layout import (
@@ -163,6 +163,12 @@ def place_calendar(item: CalendarItem, label: str, warnings: list[str]) -> Place
                           layout.weekend)
 
 
+def merge_template_error(label: str, path: str) -> RenderError:
+    return RenderError(f'{label}: picture "{path}" is filled from a data column; this is a '
+                       "merge template: make its documents with `floatpage merge TEMPLATE DATA "
+                       "-o OUTDIR`")
+
+
 def place_background(project: Project, page: Page) -> list:
     background = page.background
     if background is None:
@@ -171,6 +177,9 @@ def place_background(project: Project, page: Page) -> list:
         f' (picture file "{background.picture}")' if background.picture else '')
     whole = Rect(0.0, 0.0, page.width_mm, page.height_mm)
     if background.picture:
+        # as for a picture item (it said "cannot be read", of the name with its braces)
+        if is_merge_placeholder(background.picture, project.base_dir):
+            raise merge_template_error(f'the background of page "{page.id}"', background.picture)
         plan = plan_picture(project.base_dir / background.picture, page.width_mm, page.height_mm,
                             label, cover=True)
         # Cover the page, keeping the picture's proportions; the clip trims the overflow.
@@ -207,10 +216,8 @@ def place_document(project: Project) -> PlacedDocument:
             if isinstance(item, TextItem):
                 made = place_text(item, label, warnings, roles)
             elif isinstance(item, PictureItem):
-                if is_merge_placeholder(item.path):
-                    raise RenderError(f'{label}: picture "{item.path}" is filled from a data '
-                                      "column; this is a merge template: make its documents "
-                                      "with `floatpage merge TEMPLATE DATA -o OUTDIR`")
+                if is_merge_placeholder(item.path, project.base_dir):
+                    raise merge_template_error(label, item.path)
                 plan = plan_picture(project.base_dir / item.path, item.w, item.h, label,
                                     cover=True)
                 made = framed_picture(item.id, f'{label} (picture file "{item.path}")',
@@ -262,3 +269,19 @@ def text_warnings(project: Project) -> list[str]:
             elif isinstance(item, CalendarItem):
                 place_calendar(item, item_label(item, page), warnings)
     return warnings
+
+
+def materialize_pictures(document: PlacedDocument) -> None:
+    """Write every picture's cached file; one that cannot be converted (a PNG whose pixels
+    stop short, which its header check cannot see) is named by its item and file: the message
+    was 'picture "/abs/path" could not be converted: image file is truncated', no item, no fix."""
+    labels = {placed.plan.cache_path: placed.label for page in document.pages
+              for placed in page.background + page.items if isinstance(placed, PlacedPicture)}
+    for plan in document.pictures:
+        try:
+            materialize(plan)
+        except (OSError, ValueError) as error:
+            label = labels.get(plan.cache_path, f'picture "{plan.source}"')
+            raise RenderError(f"{label}: the picture could not be converted ({error}); it may "
+                              "be cut short or damaged: export it again, or use another "
+                              "picture") from None

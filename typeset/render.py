@@ -26,8 +26,9 @@ from floatpage.typeset.output_paths import check_outputs, project_companions, pr
 from floatpage.typeset.print_marks import for_print
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FontNotFoundError
-from floatpage.typeset.pictures import cache_dir, materialize
-from floatpage.typeset.placed import PlacedDocument, place_document, text_warnings
+from floatpage.typeset.pictures import cache_dir
+from floatpage.typeset.placed import (PlacedDocument, materialize_pictures, place_document,
+                                      text_warnings)
 from floatpage.typeset.templates import make_environment
 
 
@@ -100,13 +101,13 @@ def picture_warnings(project: Project) -> list[str]:
     found = []
     for page in project.pages:
         for item in page.items:
-            if item.kind == "picture" and not is_merge_placeholder(item.path):
+            if item.kind == "picture" and not is_merge_placeholder(item.path, project.base_dir):
                 problem = decode_warning(project.base_dir / item.path)
                 if problem:
                     found.append(f'item "{item.id}" on page "{page.id}": picture '
                                  f'"{item.path}": {problem}')
         if page.background is not None and page.background.picture and \
-                not is_merge_placeholder(page.background.picture):
+                not is_merge_placeholder(page.background.picture, project.base_dir):
             problem = decode_warning(project.base_dir / page.background.picture)
             if problem:
                 found.append(f'page "{page.id}" background "{page.background.picture}": {problem}')
@@ -136,7 +137,7 @@ def resolution_notes(project: Project) -> list[str]:
     notes = []
     for page in project.pages:
         for item in page.items:
-            if item.kind != "picture" or is_merge_placeholder(item.path):
+            if item.kind != "picture" or is_merge_placeholder(item.path, project.base_dir):
                 continue
             found = print_dpi(project.base_dir / item.path, item.w, item.h)
             if found is not None and found[1] < BLOCKY_DPI:
@@ -189,11 +190,7 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     document.warnings.extend(picture_warnings(project))
     notes = contrast_notes(document)
     say("preparing pictures")
-    for plan in document.pictures:
-        try:
-            materialize(plan)
-        except OSError as error:
-            raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
+    materialize_pictures(document)
     fragment = tex_from_placed(document, fragment=True) if fragment_out is not None else ""
     if print_bleed_mm is not None:
         document = for_print(document, print_bleed_mm)
