@@ -12,8 +12,9 @@ from typing import Any, Callable, Generic, Literal, TypeVar
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical, VerticalScroll
-from textual.screen import ModalScreen
 from textual.widgets import Button, Checkbox, Input, Label, Select, TextArea
+
+from floatpage.tui.dialogs.base import Dialog, Hint
 
 FieldKind = Literal["line", "text", "choice", "bool"]
 
@@ -33,12 +34,13 @@ Answer = TypeVar("Answer")
 Parser = Callable[[dict[str, Any]], Answer]
 
 
-class FormDialog(ModalScreen[Answer | None], Generic[Answer]):
+class FormDialog(Dialog[Answer | None], Generic[Answer]):
     """Fields, an error line and OK / Cancel. Enter in a one-line field or Ctrl+S applies.
 
     It dismisses with what the parser made of the fields (its type is the parser's), or None.
 
-    Compact widgets and a scrolling field list keep the buttons on screen at 80 x 24.
+    Compact widgets and a scrolling field list keep the buttons on screen at 80 x 24; the
+    list takes the height the terminal has (see `Dialog`).
     """
 
     BINDINGS = [Binding("escape", "cancel", "Cancel"), Binding("ctrl+s", "apply", "Apply")]
@@ -50,19 +52,22 @@ class FormDialog(ModalScreen[Answer | None], Generic[Answer]):
         self.fields = fields
         self.parse = parse
 
-    def compose(self) -> ComposeResult:
+    def compose_dialog(self) -> ComposeResult:
         with Vertical(classes="dialog form"):
-            yield Label(self.title_text, classes="dialog-title", markup=False)
+            yield Label(self.title_text, classes="dialog-title dialog-head", markup=False)
             with VerticalScroll(classes="form-fields"):
                 for field in self.fields:
                     yield from self._field(field)
-            yield Label("", id="form-error", classes="dialog-error", markup=False)
-            multi_line = any(field.kind == "text" for field in self.fields)
-            yield Label("Tab moves · " + ("Ctrl+S" if multi_line else "Enter or Ctrl+S")
-                        + " applies · Esc cancels", classes="dialog-hint")
-            with Horizontal(classes="dialog-buttons"):
-                yield Button("OK", variant="primary", id="ok", compact=True)
-                yield Button("Cancel", id="cancel", compact=True)
+            with Vertical(classes="dialog-foot"):
+                yield Label("", id="form-error", classes="dialog-error", markup=False)
+                multi_line = any(field.kind == "text" for field in self.fields)
+                apply = "Ctrl+S" if multi_line else "Enter"
+                yield Hint("Tab moves · " + ("Ctrl+S" if multi_line else "Enter or Ctrl+S")
+                           + " applies · Esc cancels", f"{apply} applies · Esc cancels",
+                           "Esc cancels")
+                with Horizontal(classes="dialog-buttons"):
+                    yield Button("OK", variant="primary", id="ok", compact=True)
+                    yield Button("Cancel", id="cancel", compact=True)
 
     def _field(self, field: Field) -> ComposeResult:
         widget_id = f"field-{field.name}"
