@@ -158,8 +158,9 @@ class EditorScreen(Screen):
         if missing:  # opened all the same, so that the user can mend it here
             self.notify("\n".join(f"• {printable(entry)} is missing" for entry in missing[:4])
                         + (f"\n• and {len(missing) - 4} more" if len(missing) > 4 else "")
-                        + "\nCopy the files back, or delete these items (Del) and insert the "
-                        "pictures again (p); until then the PDF cannot be made",
+                        + "\nCopy the files back, give each its new path (Tab to it, Enter: "
+                        "Picture file), or delete these items (Del); until then the PDF "
+                        "cannot be made",
                         title="Pictures not found", severity="warning", timeout=20)
         path = self.session.project.path
         if path is not None and read_only(path):  # said at once, not after an hour's edits
@@ -628,9 +629,11 @@ class EditorScreen(Screen):
         item = self.session.selected_item
         if item is not None:
             regions = tuple(region.id for region in self.session.page.regions)
+            parse = item_forms.parse_edit if item.kind != "picture" else \
+                item_forms.picture_edit_parser(item.path, self.session.typed_picture_path)
             self.ask(FormDialog(f"Edit {item.id} ({item.kind})",
-                                item_forms.edit_fields(item, regions),
-                                item_forms.parse_edit, dialog_id="edit-dialog"),
+                                item_forms.edit_fields(item, regions), parse,
+                                dialog_id="edit-dialog"),
                      partial(self.attempt, self.session.update_item, item.id))
 
     def action_toggle_decorative(self) -> None:

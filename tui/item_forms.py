@@ -200,6 +200,20 @@ def parse_edit(values: dict[str, Any]) -> dict[str, Any]:
     return parse_form(EDITED_CLASSES, values)
 
 
+def picture_edit_parser(current_path: str, resolve: Callable[[str], str]
+                        ) -> Callable[[dict[str, Any]], dict[str, Any]]:
+    """`parse_edit` for a picture: a path typed anew goes through ``resolve`` (the session's
+    check of the file: a missing, unreadable or non-picture file is a sentence, and the form
+    stays open); an unchanged path passes as it is, even while its file is missing, so a
+    picture whose file is gone can still have its other fields edited."""
+    def parse(values: dict[str, Any]) -> dict[str, Any]:
+        parsed = parse_edit(values)
+        if parsed.get("path", current_path) != current_path:
+            parsed["path"] = resolve(parsed["path"])
+        return parsed
+    return parse
+
+
 def group_fields(item, groups: tuple[str, ...]) -> list[Field]:
     known = f" (this page has {', '.join(groups)})" if groups else ""
     return [Field("group", f"Group name{known}; empty takes {item.id} out", "line", item.group)]

@@ -12,6 +12,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import itertools
+import math
 import os
 from pathlib import Path
 
@@ -461,6 +462,23 @@ class EditSession:
             return os.fspath(path)
         return str(copy_into(path, base / "pictures").relative_to(base))
 
+    def typed_picture_path(self, typed: str) -> str:
+        """The path to write for a picture path typed in the edit form (relative to the
+        project's folder, or a full path; `relative_picture_path` then keeps it inside the
+        folder); ValueError names the file it looked at and what to do, when it is missing,
+        unreadable or not a picture (the form shows it and stays open)."""
+        if not typed:
+            raise ValueError("type the picture's file path, e.g. pictures/photo.jpg")
+        full = self.project.base_dir / Path(typed).expanduser()
+        header = read_header(full)
+        if header.problem:
+            raise ValueError(f"{full} {header.problem}" + (f": {header.hint}" if header.hint
+                                                            else ""))
+        try:
+            return self.relative_picture_path(full)
+        except (EditError, OSError) as error:  # e.g. a copy into pictures/ that failed
+            raise ValueError(f"{full}: {error}") from None
+
     def delete_selected(self) -> str:
         """Delete the selected item; its followers stay where they are, free.  Returns what
         the editor says of it (a caption freed from its deleted photo used to go unsaid)."""
@@ -608,6 +626,14 @@ class EditSession:
             return
         self.refuse_bad_group_or_region(item, changes)
         self.checkpoint(f"edit {item_id}")
+        if "path" in changes and isinstance(item, PictureItem) \
+                and changes.get("lock_aspect", item.lock_aspect):
+            aspect = picture_aspect(self.project.base_dir / changes["path"])
+            if aspect:  # another photo's shape, on the same area of paper
+                w = math.sqrt(item.w * item.h / aspect)
+                scale = min(1.0, 0.9 * self.page.width_mm / w,
+                            0.9 * self.page.height_mm / (w * aspect))
+                changes["w"], changes["h"] = w * scale, w * aspect * scale
         for key, value in changes.items():
             setattr(item, key, value)
         if gamma_changes:

@@ -72,7 +72,7 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
     def _field(self, field: Field) -> ComposeResult:
         widget_id = f"field-{field.name}"
         if field.kind == "bool":
-            yield Checkbox(field.label, value=bool(field.value), id=widget_id)
+            yield Checkbox(field.label, value=bool(field.value), id=widget_id, compact=True)
             return
         yield Label(field.label, classes="field-label", markup=False)  # may hold a path
         if field.kind == "line":
