@@ -31,7 +31,7 @@ from floatpage.model.atomic_file import read_only
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
 from floatpage.model.layout import copy_of
-from floatpage.tui import item_forms
+from floatpage.tui import item_forms, region_edits
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.direct_paint import draws_none_of, stale_lines_hidden
 from floatpage.tui.frame_meter import FrameMeter
@@ -681,6 +681,24 @@ class EditorScreen(Screen):
 
     def say_group(self, group: str) -> None:
         self.notify(self.session.set_group(group))
+
+    def action_region(self) -> None:
+        """Make a region, or change or remove the selected item's (`tui.region_edits`)."""
+        session = self.session
+        item = session.selected_item
+        if item is not None:
+            session.sync_positions()  # the region offered is around where the item is now
+        region = region_edits.proposed_region(session.page, item)
+        old_id = item.region if item is not None and item.region else None
+        title = f"Region {old_id}" if old_id else "New region"
+        self.ask(FormDialog(title, region_edits.region_fields(region, item, new=old_id is None),
+                            region_edits.region_parser(session.page, old_id, item),
+                            dialog_id="region-dialog"),
+                 partial(self.attempt, self.say_region, old_id,
+                         item.id if item is not None else None))
+
+    def say_region(self, old_id: str | None, item_id: str | None, answer: dict) -> None:
+        self.notify(region_edits.put_region(self.session, old_id, answer, item_id))
 
     # -- physics ------------------------------------------------------------------------------
 

@@ -671,9 +671,11 @@ class EditSession:
         return (f'"{item.id}" joined group "{group}": its members move as one' if group
                 else f'"{item.id}" left its group')
 
-    def rebuild_engine(self) -> None:
-        """Rebuild the engine from the model after an edit the engine has no call for."""
-        self.sync_positions()
+    def rebuild_engine(self, *, sync: bool = True) -> None:
+        """Rebuild the engine from the model after an edit the engine has no call for;
+        ``sync=False`` keeps positions the edit itself wrote into the model."""
+        if sync:
+            self.sync_positions()
         self.held_id = None
         self.engine = self._build_engine()
         self.engine.reheat()
