@@ -14,7 +14,7 @@ import itertools
 from typing import Any
 
 from floatpage.model.document import Region
-from floatpage.tui.dialogs.form import Field
+from floatpage.tui.dialogs.form import Field, FieldError
 from floatpage.tui.item_forms import checked, number
 
 AROUND_MM = 10.0  # a new region around the selected item leaves it this much room each side
@@ -61,10 +61,17 @@ def parse_region(values: dict[str, Any]) -> dict[str, Any]:
     confine = bool(values.get("confine", False))
     if not name:
         return {"region": None, "confine": False}
-    checked(Region, "id", name, "the region name")
-    numbers = {key: number(str(values[key]).strip(), words, Region, key)
-               for key, words in (("left", "the left edge"), ("top", "the top edge"),
-                                  ("w", "the width"), ("h", "the height"))}
+    try:
+        checked(Region, "id", name, "the region name")
+    except ValueError as error:
+        raise FieldError("id", str(error)) from None
+    numbers = {}
+    for key, words in (("left", "the left edge"), ("top", "the top edge"), ("w", "the width"),
+                       ("h", "the height")):
+        try:
+            numbers[key] = number(str(values[key]).strip(), words, Region, key)
+        except ValueError as error:
+            raise FieldError(key, str(error)) from None
     return {"region": Region(name, **numbers), "confine": confine}
 
 

@@ -101,3 +101,18 @@ async def test_the_edit_form_scrolls_on_a_short_terminal(project_path):
         await pilot.pause()
         focused = app.screen.focused
         assert focused is not None and on_screen(focused, size)
+
+
+async def test_a_refused_field_gets_the_cursor(project_path):
+    """A width typed wrong, applied from the height field: the error names the width, and the
+    cursor goes there (it stayed in the height field, where the user had to look for it)."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("S", "end", "enter")  # Custom… page size
+        await pilot.pause()
+        assert app.screen.id == "custom-size-dialog"
+        app.screen.query_one("#field-width_mm", Input).value = "5"
+        app.screen.query_one("#field-height_mm", Input).focus()
+        await pilot.press("enter")
+        await pilot.pause()
+        assert "the width must be between" in str(app.screen.query_one("#form-error").render())
+        assert app.screen.focused is app.screen.query_one("#field-width_mm")

@@ -30,6 +30,15 @@ class Field:
     choices: tuple[tuple[str, Any], ...] = ()
 
 
+class FieldError(ValueError):
+    """A parser's complaint about one field: the form shows it and puts the cursor there (a
+    wrong width was reported while the cursor stayed in the height field)."""
+
+    def __init__(self, field: str, message: str):
+        super().__init__(message)
+        self.field = field
+
+
 Answer = TypeVar("Answer")
 Parser = Callable[[dict[str, Any]], Answer]
 
@@ -107,6 +116,9 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
             result = self.parse(self.values())
         except ValueError as error:
             self.query_one("#form-error", Label).update(str(error))
+            if isinstance(error, FieldError):
+                for widget in self.query(f"#field-{error.field}"):
+                    widget.focus()
             return
         self.dismiss(result)
 
