@@ -116,3 +116,20 @@ async def test_a_refused_field_gets_the_cursor(project_path):
         await pilot.pause()
         assert "the width must be between" in str(app.screen.query_one("#form-error").render())
         assert app.screen.focused is app.screen.query_one("#field-width_mm")
+
+
+async def test_a_choice_field_opens_with_every_choice_at_40x12(project_path):
+    """The font field's list, opened in the edit form at 40 x 12, shows serif, sans and
+    display (the dialogs' own list rule once reached it and cut it to one row)."""
+    from textual.widgets._select import SelectOverlay
+
+    size = (40, 12)
+    async with editor(project_path, size=size) as (app, pilot):
+        screen_of(app).selected_id = "title"
+        await pilot.press("enter")
+        await pilot.pause()
+        await pilot.press("tab", "enter")  # from the text to the font field, opened
+        await pilot.pause()
+        overlay = app.screen.query_one("#field-font").query_one(SelectOverlay)
+        assert overlay.display and option_rows_shown(overlay) >= 3
+        assert on_screen(overlay, size)
