@@ -469,7 +469,7 @@ class EditSession:
         unreadable or not a picture (the form shows it and stays open)."""
         if not typed:
             raise ValueError("type the picture's file path, e.g. pictures/photo.jpg")
-        full = self.project.base_dir / Path(typed).expanduser()
+        full = (self.project.base_dir / Path(typed).expanduser()).absolute()
         header = read_header(full)
         if header.problem:
             raise ValueError(f"{full} {header.problem}" + (f": {header.hint}" if header.hint

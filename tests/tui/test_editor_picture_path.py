@@ -113,3 +113,20 @@ async def test_a_missing_picture_keeps_its_other_fields_editable(project_path):
         await pilot.pause()
         assert app.screen is screen_of(app)
         assert item(app, "photo").group == "top"
+
+
+async def test_the_refusal_names_the_full_path_when_the_project_was_opened_by_a_relative_one(
+        project_path, monkeypatch):
+    """`floatpage edit card.toml` in its folder: "many/p5.jpg not found" named the file only
+    as typed; the full path says where it was looked for."""
+    monkeypatch.chdir(project_path.parent)
+    from floatpage.tui.app import make_app
+
+    app = make_app("card.toml", autostart=False)
+    async with app.run_test(size=(100, 40)) as pilot:
+        await pilot.pause()
+        field = await open_path_field(app, pilot, "photo")
+        field.value = "moved/photo.png"
+        await pilot.press("enter")
+        await pilot.pause()
+        assert str(project_path.parent / "moved" / "photo.png") in form_error(app)
