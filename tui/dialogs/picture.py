@@ -58,8 +58,15 @@ class PictureDialog(Dialog[Path | None]):
         event.stop()
         typed = event.value.strip()
         path = (self.folder / Path(typed).expanduser()) if typed else None
-        if path is None or not path.is_file():
-            self.query_one("#picture-error", Label).update(f"no file at {typed or '(empty)'}")
+        if path is None:
+            self.query_one("#picture-error", Label).update(
+                "type a path, e.g. pictures/photo.jpg, or pick a file in the tree above")
+            return
+        if not path.is_file():  # where it looked, in full, and what to do
+            header = read_header(path)
+            self.query_one("#picture-error", Label).update(
+                f"{path.absolute()} {header.problem}: {header.hint}, or pick a file in the "
+                "tree above")
             return
         if path.suffix.lower() not in PICTURE_SUFFIXES:
             self.query_one("#picture-error", Label).update(
