@@ -156,12 +156,14 @@ class EditorScreen(Screen):
         self.wake()
         missing = self.session.project.missing_pictures
         if missing:  # opened all the same, so that the user can mend it here
-            self.notify("\n".join(f"• {printable(entry)} is missing" for entry in missing[:4])
+            gone = all(entry.endswith(" is missing") for entry in missing)
+            self.notify("\n".join(f"• {printable(entry)}" for entry in missing[:4])
                         + (f"\n• and {len(missing) - 4} more" if len(missing) > 4 else "")
-                        + "\nCopy the files back, give each its new path (Tab to it, Enter: "
+                        + "\nCopy the files back (or good ones over them), give each its new path (Tab to it, Enter: "
                         "Picture file), or delete these items (Del); until then the PDF "
                         "cannot be made",
-                        title="Pictures not found", severity="warning", timeout=20)
+                        title="Pictures not found" if gone else "Pictures that cannot be used",
+                        severity="warning", timeout=20)
         path = self.session.project.path
         if path is not None and read_only(path):  # said at once, not after an hour's edits
             self.notify(f"{printable(path.name)} is read-only: edits can be made and exported, "

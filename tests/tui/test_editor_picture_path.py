@@ -130,3 +130,45 @@ async def test_the_refusal_names_the_full_path_when_the_project_was_opened_by_a_
         await pilot.press("enter")
         await pilot.pause()
         assert str(project_path.parent / "moved" / "photo.png") in form_error(app)
+
+
+async def test_a_project_whose_picture_is_no_picture_opens_to_be_mended(project_path):
+    """A photo overwritten by a text file kept the user out of the editor ("is not a picture
+    floatpage can read"), as a missing one once did; it opens, names the file and what is
+    wrong, shows a stand-in, and the path field mends it."""
+    import pytest
+
+    (project_path.parent / "pictures" / "photo.png").write_text("oops")
+    with pytest.raises(Exception, match="is not a picture"):
+        load_project(project_path)  # every other command still refuses it
+    async with editor(project_path) as (app, pilot):
+        shown = [n for n in app._notifications if n.title == "Pictures that cannot be used"]
+        assert shown and 'item "photo": picture file "pictures/photo.png" is not a picture' \
+            in shown[0].message
+        text = "\n".join(screen_of(app).preview.text_lines())
+        assert "unreadable" in text
+        field = await open_path_field(app, pilot, "photo")
+        field.value = "pictures/second.png"
+        await pilot.press("enter")
+        await pilot.pause()
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+    assert load_project(project_path).pages[0].item("photo").path == "pictures/second.png"
+
+
+def test_a_picture_the_loader_refuses_is_never_decoded_for_a_thumbnail(tmp_path):
+    """The editor opens such a project; its thumbnails must not decode what the loader
+    refuses (a 200-megapixel PNG would take gigabytes)."""
+    from PIL import Image
+
+    from floatpage.model.picture_files import MAX_PIXELS
+    from floatpage.tui import thumbnails
+
+    path = tmp_path / "huge.png"
+    side = int(MAX_PIXELS ** 0.5) + 100
+    Image.new("1", (side, side)).save(path)  # one bit a pixel: a small file that claims much
+    before = thumbnails._working_copy.cache_info().misses
+    assert thumbnails.thumbnail(path, 10, 10) is None
+    assert thumbnails._working_copy.cache_info().misses == before + 1
+    assert thumbnails.thumbnail(path, 12, 12) is None  # remembered, not read again
+    assert thumbnails._working_copy.cache_info().misses == before + 1
