@@ -24,7 +24,7 @@ from floatpage.model.document import (
 from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
 from floatpage.model.page_sizes import page_dimensions
-from floatpage.model.picture_files import read_header
+from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
@@ -469,6 +469,8 @@ class EditSession:
         unreadable or not a picture (the form shows it and stays open)."""
         if not typed:
             raise ValueError("type the picture's file path, e.g. pictures/photo.jpg")
+        if is_merge_placeholder(typed):  # a merge template's, filled per record (as loaded)
+            return typed
         full = (self.project.base_dir / Path(typed).expanduser()).absolute()
         header = read_header(full)
         if header.problem:

@@ -172,3 +172,18 @@ def test_a_picture_the_loader_refuses_is_never_decoded_for_a_thumbnail(tmp_path)
     assert thumbnails._working_copy.cache_info().misses == before + 1
     assert thumbnails.thumbnail(path, 12, 12) is None  # remembered, not read again
     assert thumbnails._working_copy.cache_info().misses == before + 1
+
+
+async def test_a_merge_template_picture_takes_a_placeholder_path(project_path):
+    """A merge template names its picture by a data column (`pictures/{photo}`), a path no
+    file has until `merge` fills it: the loader takes it, and so does the form."""
+    async with editor(project_path) as (app, pilot):
+        field = await open_path_field(app, pilot, "photo")
+        field.value = "pictures/{photo}"
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.screen is screen_of(app)
+        assert item(app, "photo").path == "pictures/{photo}"
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+    assert load_project(project_path).pages[0].item("photo").path == "pictures/{photo}"
