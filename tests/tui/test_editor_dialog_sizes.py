@@ -67,6 +67,9 @@ async def test_a_terminal_below_20x6_says_it_is_too_small(project_path):
         assert notice.display and on_screen(notice, size)
         assert "20 × 6" in str(notice.render()) and "18 × 5" in str(notice.render())
         assert not app.screen.query_one(".dialog").display
+        await pilot.resize_terminal(19, 5)
+        await pilot.pause()
+        assert "(now 19 × 5)" in str(notice.render())
         await pilot.resize_terminal(30, 10)
         await pilot.pause()
         assert not notice.display and app.screen.query_one(".dialog").display
