@@ -73,6 +73,8 @@ async def test_a_terminal_below_20x6_says_it_is_too_small(project_path):
         await pilot.resize_terminal(30, 10)
         await pilot.pause()
         assert not notice.display and app.screen.query_one(".dialog").display
+        await pilot.pause(0.2)
+        assert isinstance(app.screen.focused, OptionList)  # opened too small, it had no focus
         await pilot.press("escape")
         await pilot.pause()
         assert app.screen is screen_of(app)
@@ -136,3 +138,4 @@ async def test_a_choice_field_opens_with_every_choice_at_40x12(project_path):
         overlay = app.screen.query_one("#field-font").query_one(SelectOverlay)
         assert overlay.display and option_rows_shown(overlay) >= 3
         assert on_screen(overlay, size)
+

@@ -62,3 +62,12 @@ class Dialog(ModalScreen[Answer]):
 
     def on_resize(self, event: events.Resize) -> None:
         self.query_one(".too-small", Label).update(self.too_small_words(*event.size))
+        self.call_after_refresh(self.focus_when_shown)
+
+    def focus_when_shown(self) -> None:
+        """A dialog opened in a terminal too small for it gave its focus to a hidden widget,
+        which refused it; made larger, the dialog showed with no widget taking keys (Enter
+        and the arrows did nothing until Tab).  Its first field or list takes them now."""
+        columns, rows = self.app.size
+        if columns >= MIN_CELLS[0] and rows >= MIN_CELLS[1] and self.focused is None:
+            self.focus_next()
