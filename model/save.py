@@ -155,7 +155,17 @@ def sync_table(table: Table, pairs: Pairs) -> None:
             if not equivalent(key, current, value):
                 table[key] = inline(value)
         elif default is None or not same(value, default):
-            table[key] = inline(value)
+            add_key(table, key, inline(value))
+
+
+def add_key(table: Table, key: str, value: Any) -> None:
+    """Add ``key`` to ``table`` before the blank line that ends it: put after it, a group
+    joined in the editor was written apart from its item's other keys (user walk 5)."""
+    body = table.value.body
+    if trailing_space(table) and hasattr(table.value, "_insert_at"):
+        table.value._insert_at(len(body) - 1, key, value)
+    else:
+        table[key] = value
 
 
 def new_table(pairs: Pairs) -> Table:
@@ -201,7 +211,26 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
     array = tomlkit.aot()
     for table in tables:
         array.append(table)
+    if existing is None:
+        set_apart(parent, tables)
     parent[key] = array
+
+
+def set_apart(parent: Table, tables: list) -> None:
+    """A new array of tables (a page's first region) goes after the parent's last one (its
+    items): part it from that one and from the next page by the blank line they use (it was
+    written jammed against the next `[[pages]]`)."""
+    from tomlkit.items import AoT
+    import tomlkit
+    before = [value for value in parent.values() if isinstance(value, AoT) and len(value)]
+    if not before:
+        return
+    last = before[-1][-1]
+    spacing = trailing_space(last)
+    if spacing:
+        tables[-1].add(tomlkit.ws(spacing))
+    else:  # the file's last table: a blank line before the new one
+        last.add(tomlkit.ws("\n"))
 
 
 def edit_in_place(array: AoT, tables: list) -> bool:
