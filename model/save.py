@@ -177,7 +177,8 @@ def new_table(pairs: Pairs) -> Table:
     return table
 
 
-def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=None) -> None:
+def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=None, *,
+               at_end: bool = True) -> None:
     """Sync an array of tables by id: keep existing tables (and their comments), add new ones."""
     import tomlkit
     from tomlkit.items import AoT
@@ -212,25 +213,24 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
     for table in tables:
         array.append(table)
     if existing is None:
-        set_apart(parent, tables)
+        set_apart(parent, tables, at_end)
     parent[key] = array
 
 
-def set_apart(parent: Table, tables: list) -> None:
+def set_apart(parent: Table, tables: list, at_end: bool) -> None:
     """A new array of tables (a page's first region) goes after the parent's last one (its
-    items): part it from that one and from the next page by the blank line they use (it was
-    written jammed against the next `[[pages]]`)."""
+    items): a blank line parts it from that one and, unless it ends the file (``at_end``),
+    from the next page (it was written jammed against the next `[[pages]]`)."""
     from tomlkit.items import AoT
     import tomlkit
     before = [value for value in parent.values() if isinstance(value, AoT) and len(value)]
     if not before:
         return
     last = before[-1][-1]
-    spacing = trailing_space(last)
-    if spacing:
-        tables[-1].add(tomlkit.ws(spacing))
-    else:  # the file's last table: a blank line before the new one
+    if not trailing_space(last):
         last.add(tomlkit.ws("\n"))
+    if not at_end:
+        tables[-1].add(tomlkit.ws("\n"))
 
 
 def edit_in_place(array: AoT, tables: list) -> bool:
@@ -313,7 +313,8 @@ def to_document(project: Project) -> tomlkit.TOMLDocument:
             doc["physics"] = new_table(changed)
 
     def fill_page(table: Table, page: Page) -> None:
-        sync_array(table, "regions", page.regions, region_pairs, lambda region: region.id)
+        sync_array(table, "regions", page.regions, region_pairs, lambda region: region.id,
+                   at_end=page is project.pages[-1])
         sync_array(table, "items", page.items, item_pairs, lambda item: item.id)
 
     sync_array(doc, "pages", project.pages, page_pairs, lambda page: page.id, fill_page)

@@ -258,6 +258,11 @@ def test_a_key_added_and_a_first_region_keep_the_files_blank_lines(tmp_path):
     assert 'color = "#ff8800"\ngroup = "g"\n\n[[pages.regions]]\n' in text, text
     assert "h = 100.0\n\n[[pages]]\nid = \"back\"" in text, text
     assert load_project(path).pages[0].region("top").w == 100.0
+    path.write_text(HAND_WRITTEN + '\ngroup = "g"\n[[pages]]\nid = "back"\nsize = "5x8in"\n')
+    project = load_project(path)  # as an older save left it: the group after the blank line
+    project.pages[0].regions.append(Region("top", 0.0, 0.0, 100.0, 100.0))
+    save_project(project)
+    assert "h = 100.0\n\n[[pages]]\nid = \"back\"" in path.read_text(), path.read_text()
     path.write_text(HAND_WRITTEN)  # the file's only page: the region after a blank line
     project = load_project(path)
     project.pages[0].regions.append(Region("top", 0.0, 0.0, 100.0, 100.0))
