@@ -133,7 +133,8 @@ class TextItem(ItemBase):
 class PictureItem(ItemBase):
     """A picture scaled to its rectangle; `path` is relative to the project file."""
 
-    path: str = field(default="", metadata=spec("str", required=True))
+    path: str = field(default="", metadata=spec(
+        "str", required=True, label="Picture file (from the project's folder, or a full path)"))
     lock_aspect: bool = field(default=True, metadata=spec(
         "bool", label="Keep the picture's aspect ratio"))
     # may reach the page's edge: no print-safe margin (`render --print` carries every picture

@@ -51,9 +51,11 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False,
 
     Pictures must lie inside the project's folder unless ``allow_outside_files`` (the CLI's
     --allow-outside-files) or the file's own ``[files] allow_outside = true`` says otherwise.
-    ``missing_pictures_ok`` (the editor) loads a project whose picture files are gone, and
-    lists them, as "WHERE: picture file "PATH"", in ``project.missing_pictures``: the editor
-    refused to open it at all, leaving the user to mend the file by hand.
+    ``missing_pictures_ok`` (the editor) loads a project whose picture files are gone or
+    cannot be used (a file that is no picture, one that cannot be read), and lists them, as
+    "WHERE: picture file "PATH" is missing" (or what else is wrong with it), in
+    ``project.missing_pictures``: the editor refused to open it at all, leaving the user to
+    mend the file by hand, where it now has a field for the path.
     A merge template may name a picture by a placeholder (``pictures/{photo}``): that path
     is checked per record, once filled, by `floatpage merge`."""
     path = Path(path)
@@ -375,8 +377,9 @@ class _Reader:
             return
         picture = self.path.parent / relative
         header = read_header(picture)
-        if header.problem == "not found" and self.missing_pictures_ok:
-            self.missing_pictures.append(f'{where}: picture file "{relative}"')
+        if header.problem and self.missing_pictures_ok:
+            problem = "is missing" if header.problem == "not found" else header.problem
+            self.missing_pictures.append(f'{where}: picture file "{relative}" {problem}')
         elif header.problem == "not found":
             self.add(line, where, f'picture file "{relative}" not found',
                      f"paths are relative to {folder_words(self.path)}; fix the path or copy "

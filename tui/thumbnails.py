@@ -22,13 +22,22 @@ CROP_ABOVE = 0.05
 
 @lru_cache(maxsize=64)
 def _working_copy(path: str, mtime_ns: int):
+    """The decoded copy, or None for a file the loader would refuse (the editor opens a
+    project with such a picture, to mend it): a 200-megapixel PNG is never decoded here."""
     from PIL import Image
 
-    with Image.open(path) as image:
-        image.draft("RGB", (WORKING_SIZE, WORKING_SIZE))  # JPEG: decode at reduced scale, fast
-        image = image.convert("RGB")
-        image.thumbnail((WORKING_SIZE, WORKING_SIZE))
-        return image.copy()
+    from floatpage.model.picture_files import read_header
+
+    if read_header(Path(path)).problem:
+        return None
+    try:
+        with Image.open(path) as image:
+            image.draft("RGB", (WORKING_SIZE, WORKING_SIZE))  # JPEG: decode at reduced scale
+            image = image.convert("RGB")
+            image.thumbnail((WORKING_SIZE, WORKING_SIZE))
+            return image.copy()
+    except Exception:  # a PDF, a JPEG cut short: remembered until the file changes, as a
+        return None   # failure tried again every frame cost a header read and a decode
 
 
 @lru_cache(maxsize=512)
@@ -38,6 +47,8 @@ def _thumbnail(path: str, mtime_ns: int, width_px: int, height_px: int) -> np.nd
     from PIL import ImageOps
 
     image = _working_copy(path, mtime_ns)
+    if image is None:
+        raise ValueError(f"{path} is not a picture the editor shows")
     if abs(image.width / image.height / (width_px / height_px) - 1) > CROP_ABOVE:
         image = ImageOps.fit(image, (width_px, height_px), Image.Resampling.BOX)
     else:
