@@ -404,28 +404,31 @@ def layout_score(quality: Quality,
 
 
 SOUNDNESS_TERMS = 6  # layout_score's terms that depend on the layout alone, not on its probe
-DEPTH_TERM, GAP_TERM = 2, 5  # the terms in millimetres: compared with the rounding's slack
+DEPTH_TERM, COUNT_TERM, GAP_TERM = 2, 3, 5  # soundness_key's summed depth, pair count, gap
 
 
 def soundness_key(quality: Quality) -> tuple[int, int, float, int, int, float]:
     """The one order in which settle_page compares layouts, lower is sounder: whether any items
-    overlap, then items off the page, then how deep the deepest overlap is, then how many
-    pairs overlap, then items in the print-safe margin, then the smallest gap (up to the
-    gutter; lengths to 0.01 mm).  The at-rest test (``keeps_guarantees``), the stuck test
-    (``proves_stuck``), the sequence's best layout and ``soundest_start`` all use it: were
-    they to order layouts differently, a layout one of them keeps the next settle's probe would
-    leave, and the settled file would not be a fixed point.
+    overlap, then items off the page, then how deep the overlaps go (every overlapping pair's
+    depth summed, ``Quality.overlap_depth_mm``), then how many pairs overlap, then items in the
+    print-safe margin, then the smallest gap (up to the gutter; negative: the deepest
+    overlap; lengths to 0.01 mm).  The at-rest test (``keeps_guarantees``), the stuck test
+    (``proves_stuck``), the sequence's best layout and ``soundest_start`` all use it: where
+    they ordered layouts differently, a layout one of them kept the next settle's probe left,
+    and the settled file was not a fixed point.
 
     Zero overlap comes first: a layout without any is what issue 10 promises where one
-    exists.  Among layouts that overlap, the depth comes before the count, as a user sees it:
-    an item hidden 48.5 mm deep under another is worse than seven hairline overlaps of at
-    most 0.76 mm, which print as touching edges (fresh project seed 7062, p3, kept the six
-    deep ones when the count came first).  The depth comes before the margin, as issue 16's
-    order gives up the margin before it lets items overlap: of two layouts with two overlaps
-    each, the deepest 15.8 mm with two items in the margin or 7.1 mm with four (fresh project
-    seed 15, p1), the second is the sounder."""
+    exists.  Among layouts that overlap, the summed depth comes before the count, as a user
+    sees it: six overlaps, one of them 48.5 mm deep (186.6 mm summed), hide far more than
+    seven hairline ones of at most 0.77 mm (5.4 mm summed), which print as touching edges;
+    with the count first the six were saved (fresh project seed 7062, p3).  Summed, not the
+    deepest alone: on seed 149 the deepest alone preferred eight overlaps of up to 8.8 mm
+    (59.0 mm summed, 3,290 mm2 hidden) to two of 17.7 mm (35.4 mm, 1,827 mm2).  The depth
+    comes before the margin, as issue 16's order gives up the margin before it lets items
+    overlap: of two layouts with two overlaps each, the deepest 15.8 mm with two items in the
+    margin or 7.1 mm with four (fresh project seed 15, p1), the second is the sounder."""
     gap = min(quality.min_gap_mm, quality.gutter_mm)
-    depth = 0.0 if math.isinf(gap) else round(max(-gap, 0.0), POSITION_DECIMALS) + 0.0
+    depth = round(quality.overlap_depth_mm, POSITION_DECIMALS) + 0.0
     return (int(quality.overlap_count > 0), len(quality.off_page), depth,
             quality.overlap_count, len(quality.in_margin),
             0.0 if math.isinf(gap) else -round(gap, POSITION_DECIMALS) + 0.0)
@@ -433,9 +436,11 @@ def soundness_key(quality: Quality) -> tuple[int, int, float, int, int, float]:
 
 def sound_as(key: tuple, other: tuple, slack_mm: float = 0.0) -> bool:
     """Whether the layout of soundness ``key`` is at least as sound as that of ``other`` in
-    soundness_key's order, its lengths (the depth and the gap) equal within ``slack_mm``."""
+    soundness_key's order, its lengths equal within ``slack_mm`` (the summed depth within
+    that much for each overlapping pair)."""
+    pairs = max(key[COUNT_TERM], other[COUNT_TERM])
     for term, (mine, theirs) in enumerate(zip(key[:SOUNDNESS_TERMS], other[:SOUNDNESS_TERMS])):
-        slack = slack_mm if term in (DEPTH_TERM, GAP_TERM) else 0.0
+        slack = {DEPTH_TERM: slack_mm * pairs, GAP_TERM: slack_mm}.get(term, 0.0)
         if mine < theirs - slack:
             return True
         if mine > theirs + slack:
