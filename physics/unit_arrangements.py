@@ -289,12 +289,17 @@ class Search(NamedTuple):
 
 
 def search_of(bodies, pinned: np.ndarray, margin_mm: float, page_w_mm: float,
-              page_h_mm: float, gutter_mm: float) -> Search | None:
+              page_h_mm: float, gutter_mm: float, taken: np.ndarray | None = None
+              ) -> Search | None:
     """The page's search, or None where it is out of reach (more than MAX_MEMBERS free members
     or MAX_OBSTACLES pinned items within their reach, nothing to part, a unit too large for
-    its walls: page_limits.TooLarge names that)."""
+    its walls: page_limits.TooLarge names that).  With ``taken`` (n,) bool, only the units
+    whose root it marks: the others are left out, and ``pinned`` says which items stand
+    as obstacles."""
     from floatpage.physics.relocation import movable_units, unit_bounds  # relocation uses this
     units = movable_units(bodies)
+    if taken is not None:
+        units = [unit for unit in units if taken[unit.root]]
     if not units:
         return None
     rows = np.concatenate([unit.members for unit in units])

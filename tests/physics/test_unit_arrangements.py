@@ -167,3 +167,72 @@ def test_units_that_fit_only_touching_are_set_down_touching(tmp_path):
     settle_project(again)
     save_project(again)
     assert path.read_bytes() == settled
+
+
+def test_units_of_one_room_that_cannot_keep_the_gutter_are_named_where_the_page_is_too_many(
+        tmp_path):
+    """fresh_projects seed 7067, p4: the page's nine free members ran past the search's budget,
+    and check sent the page back to settle; the four texts of its words region, searched
+    alone around the hard-anchored text, keep 2.8 mm at most (room_limits.room_arrangements),
+    and the page's closest pair is explained."""
+    project, page, engine = settled_engine(tmp_path, "units-room-7067.toml")
+    gutter = project.physics.gutter_mm
+    limits, (limit,) = unit_limit(engine, page, gutter)
+    ids = [item.id for item in page.items]
+    assert set(ids[row] for row in limit.rows) == {"p4-text2", "p4-text4", "p4-text6",
+                                                   "p4-text8"}
+    assert [ids[row] for row in limit.pinned] == ["p4-text7"]
+    assert 2.7 < limit.widest_gap_mm < 2.9
+    assert unexplained_pairs(engine.bodies, limits, gutter) == []
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_no_limit_rules_out_the_gutter_on_a_page_that_keeps_it(seed):
+    """Pages drawn keeping the gutter (a grid of cells, each item in its own cell, some
+    hard-anchored, some confined to one of two regions, some photos with a caption that
+    follows them), with more free members than one search takes: no limit may say the
+    gutter does not fit (a NoArrangement found room by room is a proof only if it never
+    fires where a layout exists)."""
+    from floatpage.model.document import BlockItem, ItemAnchor, Page, PhysicsSettings, \
+        PointAnchor, Region
+    rng = np.random.default_rng(seed)
+    gutter, margin = float(rng.choice([2.0, 3.0, 4.0])), float(rng.choice([0.0, 5.0]))
+    columns, rows, cell = int(rng.integers(3, 6)), int(rng.integers(4, 7)), 30.0
+    width, height = columns * cell + 2 * margin, rows * cell + 2 * margin
+    split = margin + int(rng.integers(1, rows)) * cell  # the regions meet on a cell edge
+    regions = [Region("top", 0.0, 0.0, width, split), Region("bottom", 0.0, split, width,
+                                                            height - split)]
+    items = []
+    for col in range(columns):
+        for row in range(rows):
+            if rng.random() < 0.2:
+                continue
+            left, top = margin + col * cell + gutter / 2, margin + row * cell + gutter / 2
+            room = cell - gutter  # the gutter between any two cells' items
+            w, h = rng.uniform(0.4, 1.0) * room, rng.uniform(0.4, 1.0) * room
+            x, y = left + rng.uniform(0, room - w) + w / 2, top + rng.uniform(0, room - h) + h / 2
+            name = f"i{col}-{row}"
+            region = "" if rng.random() < 0.3 else ("top" if top < split else "bottom")
+            if rng.random() < 0.25:
+                items.append(BlockItem(name, round(x, 2), round(y, 2), round(w, 2), round(h, 2),
+                                       anchor=PointAnchor(round(x, 2), round(y, 2), hard=True)))
+            elif rng.random() < 0.3 and h > 12:  # a photo and its caption below it
+                photo = h - 6
+                items.append(BlockItem(name, round(x, 2), round(top + rng.uniform(0, room - h)
+                                                              + photo / 2, 2), round(w, 2),
+                                       round(photo, 2), region=region))
+                lead = items[-1]
+                items.append(BlockItem(name + "c", lead.x, round(lead.y + photo / 2 + 3, 2),
+                                       round(w, 2), 6.0, region=region,
+                                       anchor=ItemAnchor(name, 0.0, round(photo / 2 + 3, 2))))
+            else:
+                items.append(BlockItem(name, round(x, 2), round(y, 2), round(w, 2),
+                                       round(h, 2), region=region))
+    page = Page(id="p", width_mm=width, height_mm=height, items=items, regions=regions)
+    settings = PhysicsSettings(gutter_mm=gutter, margin_mm=margin)
+    engine = engine_for_page(page, settings)
+    assert engine.quality().min_gap_mm >= gutter - 0.02  # the page keeps it, as drawn
+    limits = page_limits(engine.bodies, width, height, engine.margin_mm, gutter)
+    capping = [limit for limit in limits if getattr(limit, "widest_gap_mm", np.inf)
+               < gutter - WIDEST_GAP_SLACK_MM]
+    assert capping == [], capping
