@@ -144,7 +144,9 @@ def no_unit_arrangement(bodies: Bodies, pinned: np.ndarray, margin_mm: float, pa
     out of its budget says nothing.
 
     Where the page's units are too many for one search (more than MAX_MEMBERS members) or
-    it runs out of its budget, the units of each room alone (``room_arrangements``)."""
+    it runs out of its budget, the units of each room alone (``room_arrangements``); where
+    it only ran out on the way to the widest gap (the limit not ``proved``), the rooms'
+    limits that are proved, if any, else the page's."""
     search = unit_arrangements.search_of(bodies, pinned, margin_mm, page_w_mm, page_h_mm,
                                          gutter_mm)
     if search is not None and not pinned.any() and len(search.units) == len(search.rows) \
@@ -153,10 +155,12 @@ def no_unit_arrangement(bodies: Bodies, pinned: np.ndarray, margin_mm: float, pa
     high = min(gutter_mm, capped_mm)
     found = None if search is None else _no_arrangement_of(bodies, search, margin_mm,
                                                           page_w_mm, page_h_mm, high)
+    if found is not None and all(limit.proved for limit in found):
+        return found
+    rooms = room_arrangements(bodies, pinned, margin_mm, page_w_mm, page_h_mm, gutter_mm, high)
     if found is None:
-        return room_arrangements(bodies, pinned, margin_mm, page_w_mm, page_h_mm, gutter_mm,
-                                 high)
-    return found
+        return rooms
+    return [limit for limit in rooms if limit.proved] or found
 
 
 def room_arrangements(bodies: Bodies, pinned: np.ndarray, margin_mm: float, page_w_mm: float,
@@ -185,19 +189,25 @@ def _no_arrangement_of(bodies: Bodies, search: unit_arrangements.Search, margin_
                        page_w_mm: float, page_h_mm: float, high: float
                        ) -> list[Limit] | None:
     """The NoArrangement of ``search``'s units where its widest gap is below ``high``, none
-    where it reaches it; None where a search runs out of its budget."""
+    where it reaches it; None where the search cannot tell whether ``high`` fits.  Where it
+    rules ``high`` out but runs out of its budget on the way to the widest gap, the widest gap
+    a layout was found for, marked not ``proved`` (unit_arrangements.widest_bracket)."""
     obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
-    widest = unit_arrangements.widest_gap(search.walls, *obstacles, high)
-    if widest is None:
+    bracket = unit_arrangements.widest_bracket(search.walls, *obstacles, high)
+    if bracket is None:
         return None
+    widest = bracket.low
     if widest >= high - WIDEST_GAP_SLACK_MM:
         return []
     try:
         fits_page = widest >= 0 or unit_arrangements.arranges(search.page_walls, *obstacles,
                                                                0.0)
     except arrangements.OutOfBudget:
-        return None
+        if bracket.exact:
+            return None
+        fits_page = True  # not known: overlap is not taken as forced (the margin gives way first)
     room = np.array([page_w_mm, page_h_mm]) - 2 * margin_mm
     return [NoArrangement(tuple(int(row) for row in search.rows),
                           (float(room[0]), float(room[1])), float(widest), bool(fits_page),
-                          tuple(int(row) for row in search.obstacles), units=True)]
+                          tuple(int(row) for row in search.obstacles), units=True,
+                          proved=bracket.exact, at_most_mm=float(bracket.high))]

@@ -236,3 +236,63 @@ def test_no_limit_rules_out_the_gutter_on_a_page_that_keeps_it(seed):
     capping = [limit for limit in limits if getattr(limit, "widest_gap_mm", np.inf)
                < gutter - WIDEST_GAP_SLACK_MM]
     assert capping == [], capping
+
+
+def test_a_bisection_that_runs_out_of_budget_keeps_only_what_it_decided(monkeypatch):
+    """widest_bracket where the searches above some gap run out of budget (the real search
+    below it, and at the gutter): the gap it keeps has a layout, the gap it rules out has
+    none (both checked by the search itself), and where no search ran out it is the answer
+    without any cut."""
+    from floatpage.physics import unit_arrangements
+    from floatpage.physics.unit_arrangements import Units, unit_arrangement, widest_bracket
+    part_way = 0
+    for seed in range(40):
+        rng = np.random.default_rng(1000 + seed)
+        count = int(rng.integers(4, 7))
+        sizes = rng.integers(4, 20, (count, 2)).astype(float)
+        room = np.array([60.0, 50.0])
+        units = Units(np.arange(count), np.zeros((count, 2)), sizes / 2, sizes / 2,
+                      room - sizes / 2)
+        centres = np.array([[30.0, 25.0]])
+        halves = np.array([[float(rng.integers(3, 10)), float(rng.integers(3, 10))]])
+        gutter = float(rng.integers(2, 8))
+        unit_arrangements._memo.clear()
+        exact = widest_bracket(units, centres, halves, gutter)
+        real = unit_arrangements.arranges
+        if exact is None or exact.low >= gutter:
+            continue
+        for cut in (0.1, 0.3, 0.5, 0.7, 0.9):  # searches at gaps above a cut run out
+            cut_gap = exact.low + cut * (gutter - exact.low) - 0.5
+
+            def runs_out_above(units, centres, halves, gap, cut_gap=cut_gap):
+                if cut_gap < gap < gutter:
+                    raise unit_arrangements.OutOfBudget
+                return real(units, centres, halves, gap)
+            monkeypatch.setattr(unit_arrangements, "arranges", runs_out_above)
+            found = widest_bracket(units, centres, halves, gutter)
+            monkeypatch.undo()
+            if found is None:
+                continue
+            assert unit_arrangement(units, centres, halves, found.low) is not None
+            assert found.low == found.high or \
+                unit_arrangement(units, centres, halves, found.high) is None
+            if found.exact:
+                assert found == exact
+            else:
+                part_way += 1
+    assert part_way > 0  # the cuts did stop some bisections part way
+
+
+def test_a_page_whose_widest_gap_the_search_cannot_finish_is_named_not_sent_back(tmp_path):
+    """fresh_projects seed 2, p3: the search rules the 6 mm gutter out at once but runs out of
+    its budget at 0 mm, so widest_gap said nothing and check sent the page back to settle.
+    The bisection goes on below (widest_bracket): a layout 2.3 mm into each other, marked
+    not proved, and check says the search stopped rather than calling it the widest."""
+    project, page, engine = settled_engine(tmp_path, "units-budget-2.toml")
+    gutter = project.physics.gutter_mm
+    limits, (limit,) = unit_limit(engine, page, gutter)
+    assert not limit.proved and limit.widest_gap_mm < 0 <= limit.at_most_mm <= gutter
+    assert unexplained_pairs(engine.bodies, limits, gutter) == []
+    from floatpage.cli.page_report import _no_arrangement_sentence
+    sentence = _no_arrangement_sentence(limit, lambda row: page.items[row].id, gutter)
+    assert "stopped before it could tell" in sentence and "widest gap they" not in sentence
