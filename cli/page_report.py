@@ -346,7 +346,13 @@ def _no_arrangement_sentence(limit: NoArrangement, name, gutter_mm: float) -> st
         around = (f" around the items that cannot move "
                   f"({_some([name(row) for row in limit.pinned[:SHOWN]], len(limit.pinned))})"
                   if limit.pinned else "")
-        if limit.widest_gap_mm >= 0:
+        if not limit.proved:  # the search ran out of its budget on the way to the widest gap
+            kept = (f"{limit.widest_gap_mm:.1f} mm apart" if limit.widest_gap_mm >= 0 else
+                    f"{-limit.widest_gap_mm:.1f} mm into each other")
+            fate = (f"a layout was found with them {kept}, and none keeps "
+                    f"{limit.at_most_mm:.1f} mm; whether a gap in between fits, the search "
+                    f"stopped before it could tell")
+        elif limit.widest_gap_mm >= 0:
             fate = f"the widest gap they can all keep is {limit.widest_gap_mm:.1f} mm"
         elif limit.fits_page:
             fate = "they can be parted only by giving up the margin"
@@ -355,9 +361,11 @@ def _no_arrangement_sentence(limit: NoArrangement, name, gutter_mm: float) -> st
                     f"least {-limit.widest_gap_mm:.1f} mm")
         advice = ("move one of the anchors or make one soft (hard = false), " if limit.pinned
                   else "")
+        tried = ("every such arrangement was tried, groups moving as one" if limit.proved
+                 else "every such arrangement was tried at the gutter, groups moving as one")
         return (f"items {who} cannot all stand {gutter_mm:g} mm apart{around}, each inside "
                 f"its walls, whichever way each stands beside or above another and beside or "
-                f"above those (every such arrangement was tried, groups moving as one); "
+                f"above those ({tried}); "
                 f"{fate}; {advice}make one smaller, or move one to another page")
     return (f"items {who} cannot all stand {gutter_mm:g} mm apart in the {width:.1f} x "
             f"{height:.1f} mm inside the margins, whichever way each stands beside or above "

@@ -209,12 +209,12 @@ def settle_page(page: Page, settings: PhysicsSettings, *, max_steps: int = 200_0
     full run: see ``plainly_scattered``).  The layout is kept exactly as it is when it is
 
     - *at rest*: the probe moves no item more than ``AT_REST_MM`` and the layout already keeps
-      every guarantee the probe reaches; or
+      every guarantee the probe reaches (``keeps_guarantees``: it is at least as sound, in
+      ``soundness_key``'s order, as the probe's result); or
     - *stuck*: a page whose probes only shuffle its items (too full, or torn between the
       physics and the no-overlap pass): the next ``STUCK_ROUNDS`` probes, each from the last
-      one's result, never improve on it (``layout_score``: fewer overlaps, fewer items off the
-      page, shallower overlaps, fewer items in the margin, a wider smallest gap, or a probe
-      that moves items less).  A probe that finds a less sound layout at rest is no gain.
+      one's result, never improve on it (``layout_score``: a sounder layout in
+      ``soundness_key``'s order, or one as sound whose probe moves items less).  A probe that finds a less sound layout at rest is no gain.
 
     Otherwise a layout *near rest* (it keeps every guarantee, and so does its probe, which
     moves no item further than the alignment snap's longest move, ``ESCAPE_REACH`` snap
@@ -277,8 +277,7 @@ def soundest_start(settled: Page, report: SettleReport, probes: list["Probe"], s
     """The items (and report) the probe sequence starts from after a full run: the full run's
     layout (``settled``), unless a layout the probes before it left (``probes``: the first
     probe's, then those of ``proves_stuck``) or the page as it was (``start``) is sounder
-    (``soundness``: fewer overlaps, items off the page, shallower overlaps, fewer items in
-    the margin, then a wider gap).
+    (``soundness``, in ``soundness_key``'s order).
 
     The sequence keeps the soundest, stillest layout it probes, but a layout it never probes
     it cannot keep.  On fresh project seed 227, p1 (a hard-anchored group, a soft-anchored
@@ -371,7 +370,7 @@ class Probe:
     trial: Page  # the page the probe leaves, positions rounded as a save would write them
     at_rest: bool
     near_rest: bool
-    score: tuple[int, int, float, int, float, float]  # lower is better (see layout_score)
+    score: tuple[int, int, float, int, int, float, float]  # lower is better (layout_score)
 
     def sound_as(self, score: tuple) -> bool:
         """Whether the layout this probe started from is at least as sound as the one
@@ -398,28 +397,61 @@ def probe_rest(page: Page, settings: PhysicsSettings, max_steps: int) -> Probe:
 
 
 def layout_score(quality: Quality,
-                 probe_moved_mm: float) -> tuple[int, int, float, int, float, float]:
-    """How sound and how still a layout is, lower is better: overlaps, then items off the
-    page, then how deep the deepest overlap is, then items in the print-safe margin, then the
-    smallest gap (up to the gutter), then how far its probe moved an item (lengths to
-    0.01 mm, so that noise is no gain).  The depth comes before the margin, as issue 16's
-    order gives up the margin before it lets items overlap: of two layouts with two overlaps
-    each, the deepest 15.8 mm with two items in the margin or 7.1 mm with four (fresh project
-    seed 15, p1), the second is the sounder."""
+                 probe_moved_mm: float) -> tuple[int, int, float, int, int, float, float]:
+    """How sound and how still a layout is, lower is better: its ``soundness_key``, then how
+    far its probe moved an item (to 0.01 mm, so that noise is no gain)."""
+    return (*soundness_key(quality), round(probe_moved_mm, POSITION_DECIMALS))
+
+
+SOUNDNESS_TERMS = 6  # layout_score's terms that depend on the layout alone, not on its probe
+DEPTH_TERM, COUNT_TERM, GAP_TERM = 2, 3, 5  # soundness_key's summed depth, pair count, gap
+
+
+def soundness_key(quality: Quality) -> tuple[int, int, float, int, int, float]:
+    """The one order in which settle_page compares layouts, lower is sounder: whether any items
+    overlap, then items off the page, then how deep the overlaps go (every overlapping pair's
+    depth summed, ``Quality.overlap_depth_mm``), then how many pairs overlap, then items in the
+    print-safe margin, then the smallest gap (up to the gutter; negative: the deepest
+    overlap; lengths to 0.01 mm).  The at-rest test (``keeps_guarantees``), the stuck test
+    (``proves_stuck``), the sequence's best layout and ``soundest_start`` all use it: where
+    they ordered layouts differently, a layout one of them kept the next settle's probe left,
+    and the settled file was not a fixed point.
+
+    Zero overlap comes first: a layout without any is what issue 10 promises where one
+    exists.  Among layouts that overlap, the summed depth comes before the count, as a user
+    sees it: six overlaps, one of them 48.5 mm deep (186.6 mm summed), hide far more than
+    seven hairline ones of at most 0.77 mm (5.4 mm summed), which print as touching edges;
+    with the count first the six were saved (fresh project seed 7062, p3).  Summed, not the
+    deepest alone: on seed 149 the deepest alone preferred eight overlaps of up to 8.8 mm
+    (59.0 mm summed, 3,290 mm2 hidden) to two of 17.7 mm (35.4 mm, 1,827 mm2).  The depth
+    comes before the margin, as issue 16's order gives up the margin before it lets items
+    overlap: of two layouts with two overlaps each, the deepest 15.8 mm with two items in the
+    margin or 7.1 mm with four (fresh project seed 15, p1), the second is the sounder."""
     gap = min(quality.min_gap_mm, quality.gutter_mm)
-    depth = 0.0 if math.isinf(gap) else round(max(-gap, 0.0), POSITION_DECIMALS) + 0.0
-    return (quality.overlap_count, len(quality.off_page), depth, len(quality.in_margin),
-            0.0 if math.isinf(gap) else -round(gap, POSITION_DECIMALS),
-            round(probe_moved_mm, POSITION_DECIMALS))
+    depth = round(quality.overlap_depth_mm, POSITION_DECIMALS) + 0.0
+    return (int(quality.overlap_count > 0), len(quality.off_page), depth,
+            quality.overlap_count, len(quality.in_margin),
+            0.0 if math.isinf(gap) else -round(gap, POSITION_DECIMALS) + 0.0)
 
 
-SOUNDNESS_TERMS = 5  # layout_score's terms that depend on the layout alone, not on its probe
+def sound_as(key: tuple, other: tuple, slack_mm: float = 0.0) -> bool:
+    """Whether the layout of soundness ``key`` is at least as sound as that of ``other`` in
+    soundness_key's order, its lengths equal within ``slack_mm`` (the summed depth within
+    that much for each overlapping pair)."""
+    pairs = max(key[COUNT_TERM], other[COUNT_TERM])
+    for term, (mine, theirs) in enumerate(zip(key[:SOUNDNESS_TERMS], other[:SOUNDNESS_TERMS])):
+        slack = {DEPTH_TERM: slack_mm * pairs, GAP_TERM: slack_mm}.get(term, 0.0)
+        if mine < theirs - slack:
+            return True
+        if mine > theirs + slack:
+            return False
+    return True
 
 
 def soundness(page: Page, settings: PhysicsSettings) -> tuple:
     """The leading terms of the score a probe from ``page`` would give it (layout_score),
     without the probe."""
-    return layout_score(engine_for_page(page, settings).quality(), 0.0)[:SOUNDNESS_TERMS]
+    return soundness_key(engine_for_page(page, settings).quality())
 
 
 def copy_of(page: Page) -> Page:
@@ -438,17 +470,11 @@ def _copy_item(item):
 
 
 def keeps_guarantees(layout: Quality, settled: Quality) -> bool:
-    """Whether ``layout`` is as sound as what settling reaches: no overlap or item off the page
-    that the settled layout avoids, and a minimum gap at least the settled one's (or the gutter),
-    less the rounding slack."""
-    if layout.overlap_count > settled.overlap_count:
-        return False
-    if len(layout.off_page) > len(settled.off_page):
-        return False
-    if len(layout.in_margin) > len(settled.in_margin):
-        return False
-    wanted = min(settled.min_gap_mm, settled.gutter_mm)
-    return math.isinf(wanted) or layout.min_gap_mm >= wanted - ROUNDING_MM
+    """Whether ``layout`` is as sound as what settling reaches, in the one order of
+    ``soundness_key`` (the stuck test's and the saved layout's), its lengths within the
+    rounding slack: a probe that leaves a less sound layout does not unsettle a sounder one,
+    and one that leaves a sounder layout is taken."""
+    return sound_as(soundness_key(layout), soundness_key(settled), ROUNDING_MM)
 
 
 def settle_project(project: Project, *, max_steps: int = 200_000,

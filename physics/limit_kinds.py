@@ -88,6 +88,11 @@ class NoArrangement:
     # found by physics.unit_arrangements (units, pinned items, regions): it explains a pair
     # down to its widest gap only, not at any depth, since a settle sets the units down there
     units: bool = False
+    # False where the search for the widest gap ran out of its budget part way (physics.
+    # unit_arrangements.widest_bracket): the gutter is ruled out, ``widest_gap_mm`` is the
+    # widest gap a layout was found for, and none keeps ``at_most_mm``
+    proved: bool = True
+    at_most_mm: float = float("nan")
 
 
 Limit = Union[PinnedClash, PinnedOutside, TooLarge, Crossing, Stack, NoRoom, PinnedStack,

@@ -29,6 +29,9 @@ class Quality:
     in_margin: tuple[int, ...] = ()
     margin_mm: float = 0.0
     overlap_count: int = 0  # every overlapping pair, listed or not
+    # the depths of every overlapping pair summed (each as min_gap_mm measures a pair: how far
+    # one item must move to clear the other), what model.layout's order weighs overlaps by
+    overlap_depth_mm: float = 0.0
     outside_region: tuple[int, ...] = ()  # items not wholly inside the region they are confined to
 
     @property
@@ -59,9 +62,9 @@ SWEPT_PAIRS = 2_000_000  # a page whose sweep would meet more candidates is meas
 
 
 def pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
-             ) -> tuple[float, list[tuple[int, int]], int, np.ndarray]:
+             ) -> tuple[float, list[tuple[int, int]], int, np.ndarray, float]:
     """Total overlap area, the first PAIRS_LISTED overlapping pairs (i < j), how many there
-    are, and each item's nearest edge gap.
+    are, each item's nearest edge gap, and the depths of the overlapping pairs summed.
 
     On a page of many items that are not piled up, only the pairs within a neighbour's reach
     are measured (``near_pairwise``: the same figures, in O(n log n) and the pairs found);
@@ -125,7 +128,7 @@ def pair_gaps(clear: np.ndarray) -> np.ndarray:
 
 
 def near_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None,
-                  reach: float) -> tuple[float, list[tuple[int, int]], int, np.ndarray]:
+                  reach: float) -> tuple[float, list[tuple[int, int]], int, np.ndarray, float]:
     """``pairwise`` from the pairs within ``reach`` (physics.fast_forces.candidate_pairs: every
     pair closer than ``reach`` is among them, so an item's nearest gap found below ``reach`` is
     exact); items with no neighbour that near are measured against every item."""
@@ -160,17 +163,18 @@ def near_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | N
                                         centres[others][None, :, :], halves[others][None, :, :]))
         gaps_far[groups[block][:, None] == groups[others][None, :]] = np.inf
         nearest[block] = gaps_far.min(axis=1)
-    return float(overlap.sum()), hits, int(np.count_nonzero(overlapping)), nearest
+    return (float(overlap.sum()), hits, int(np.count_nonzero(overlapping)), nearest,
+            float(-gaps[overlapping].sum()))
 
 
 def all_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | None
-                 ) -> tuple[float, list[tuple[int, int]], int, np.ndarray]:
+                 ) -> tuple[float, list[tuple[int, int]], int, np.ndarray, float]:
     """``pairwise`` over every pair,
     ``PAIR_BLOCK`` rows at a time: the whole (n, n) matrices took 6.7 GB at 10,000 items, and
     `floatpage check` must stay under 1 GB for any file that loads.  Pairs within one anchor
     group count for neither."""
     n = len(centres)
-    total, hits, count = 0.0, [], 0
+    total, hits, count, depth = 0.0, [], 0, 0.0
     nearest = np.full(n, np.inf)
     for start in range(0, n, PAIR_BLOCK):
         # Each block of rows against itself and the rows after it: every pair once (the pairs
@@ -196,10 +200,11 @@ def all_pairwise(centres: np.ndarray, halves: np.ndarray, group: np.ndarray | No
             hits += [(int(start + a), int(start + b))
                      for a, b in np.argwhere(overlapping)[:PAIRS_LISTED - len(hits)]]
         gaps = pair_gaps(clear)
+        depth -= float(gaps[overlapping].sum())
         gaps[excluded] = np.inf
         nearest[start:stop] = np.minimum(nearest[start:stop], gaps.min(axis=1))
         nearest[start:] = np.minimum(nearest[start:], gaps.min(axis=0))
-    return total, hits, count, nearest
+    return total, hits, count, nearest, depth
 
 
 def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_mm: float = 0.0,
@@ -258,9 +263,11 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
 
     rows = np.flatnonzero(~layered)
     overlap_total, pairs, overlap_count, min_gap, evenness = 0.0, (), 0, math.inf, 1.0
+    overlap_depth = 0.0
     if len(rows) >= 2:
         group = None if groups is None else np.asarray(groups).reshape(count)[rows]
-        overlap_total, hits, overlap_count, nearest = pairwise(centres[rows], halves[rows], group)
+        overlap_total, hits, overlap_count, nearest, overlap_depth = pairwise(
+            centres[rows], halves[rows], group)
         pairs = tuple((int(rows[a]), int(rows[b])) for a, b in hits)
         min_gap = float(nearest.min())
         nearest = np.clip(nearest, 0.0, None)
@@ -289,6 +296,7 @@ def measure_quality(page_w_mm: float, page_h_mm: float, centres, sizes, gutter_m
         in_margin=in_margin,
         margin_mm=margin_mm,
         overlap_count=overlap_count,
+        overlap_depth_mm=overlap_depth,
         outside_region=outside_region,
     )
 

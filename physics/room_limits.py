@@ -10,6 +10,7 @@ import numpy as np
 
 from floatpage.physics import arrangements, unit_arrangements
 from floatpage.physics.bodies import Bodies
+from floatpage.physics.geometry import rooms_of
 from floatpage.physics.limit_kinds import (
     CROSSING_BLOCK, LISTED, TOLERANCE_MM, WIDEST_GAP_SLACK_MM, Limit, NoArrangement, NoRoom,
     block_clearances,
@@ -140,23 +141,73 @@ def no_unit_arrangement(bodies: Bodies, pinned: np.ndarray, margin_mm: float, pa
     photo with its caption, two photos and a header beside a hard-anchored photo on A5
     overlapped by 28.8 mm, each unit alone had room, and `check` sent the page back to
     settle; no arrangement keeps them less than 4.8 mm into each other.  A search that runs
-    out of its budget says nothing."""
+    out of its budget says nothing.
+
+    Where the page's units are too many for one search (more than MAX_MEMBERS members) or
+    it runs out of its budget, the units of each room alone (``room_arrangements``); where
+    it only ran out on the way to the widest gap (the limit not ``proved``), the rooms'
+    limits that are proved, if any, else the page's."""
     search = unit_arrangements.search_of(bodies, pinned, margin_mm, page_w_mm, page_h_mm,
                                          gutter_mm)
-    if search is None or (not pinned.any() and len(search.units) == len(search.rows)
-                          and np.isnan(bodies.regions[search.rows, 0]).all()):
+    if search is not None and not pinned.any() and len(search.units) == len(search.rows) \
+            and np.isnan(bodies.regions[search.rows, 0]).all():
         return []  # free items alone: no_arrangement's
     high = min(gutter_mm, capped_mm)
+    found = None if search is None else _no_arrangement_of(bodies, search, margin_mm,
+                                                          page_w_mm, page_h_mm, high)
+    if found is not None and all(limit.proved for limit in found):
+        return found
+    rooms = room_arrangements(bodies, pinned, margin_mm, page_w_mm, page_h_mm, gutter_mm, high)
+    if found is None:
+        return rooms
+    return [limit for limit in rooms if limit.proved] or found
+
+
+def room_arrangements(bodies: Bodies, pinned: np.ndarray, margin_mm: float, page_w_mm: float,
+                      page_h_mm: float, gutter_mm: float, high: float) -> list[Limit]:
+    """A NoArrangement for each room (geometry.rooms_of: a region's units, or the units free
+    to go anywhere) whose own units no arrangement keeps ``high`` apart from one another and
+    from the pinned items: the page's units taken all at once were too many for the search,
+    or ran out of its budget.  Sound for the whole page: leaving units out only takes
+    relations away, so a gap the room's units cannot keep among the pinned items alone the
+    page cannot keep with the others there too.  Seed 7067 of fresh_projects, p4: three
+    texts of a words region cannot share the room a hard-anchored text leaves them with the
+    4 mm gutter (2.8 mm at most), but the page's nine members ran out of the search's
+    budget, and `check` sent the page back to settle."""
+    rooms = rooms_of(bodies)
+    found: list[Limit] = []
+    for room in np.unique(rooms[bodies.active & bodies.free]):
+        search = unit_arrangements.search_of(bodies, pinned, margin_mm, page_w_mm, page_h_mm,
+                                             gutter_mm, taken=rooms == room)
+        if search is not None:
+            found += _no_arrangement_of(bodies, search, margin_mm, page_w_mm, page_h_mm,
+                                        high) or []
+    return found
+
+
+def _no_arrangement_of(bodies: Bodies, search: unit_arrangements.Search, margin_mm: float,
+                       page_w_mm: float, page_h_mm: float, high: float
+                       ) -> list[Limit] | None:
+    """The NoArrangement of ``search``'s units where its widest gap is below ``high``, none
+    where it reaches it; None where the search cannot tell whether ``high`` fits.  Where it
+    rules ``high`` out but runs out of its budget on the way to the widest gap, the widest gap
+    a layout was found for, marked not ``proved`` (unit_arrangements.widest_bracket)."""
     obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
-    widest = unit_arrangements.widest_gap(search.walls, *obstacles, high)
-    if widest is None or widest >= high - WIDEST_GAP_SLACK_MM:
+    bracket = unit_arrangements.widest_bracket(search.walls, *obstacles, high)
+    if bracket is None:
+        return None
+    widest = bracket.low
+    if widest >= high - WIDEST_GAP_SLACK_MM:
         return []
     try:
         fits_page = widest >= 0 or unit_arrangements.arranges(search.page_walls, *obstacles,
                                                                0.0)
     except arrangements.OutOfBudget:
-        return []
+        if bracket.exact:
+            return None
+        fits_page = True  # not known: overlap is not taken as forced (the margin gives way first)
     room = np.array([page_w_mm, page_h_mm]) - 2 * margin_mm
     return [NoArrangement(tuple(int(row) for row in search.rows),
                           (float(room[0]), float(room[1])), float(widest), bool(fits_page),
-                          tuple(int(row) for row in search.obstacles), units=True)]
+                          tuple(int(row) for row in search.obstacles), units=True,
+                          proved=bracket.exact, at_most_mm=float(bracket.high))]

@@ -35,6 +35,14 @@ def test_min_gap_is_minus_the_smaller_penetration(quality):
     assert quality.min_gap_mm == pytest.approx(-5.0)
 
 
+def test_overlap_depth_sums_each_pairs_smaller_penetration():
+    # A [0,20]x[0,20]; B [15,35]x[0,10] overlaps it 5 mm deep, C [0,10]x[18,28] 2 mm deep
+    quality = measure_quality(100, 100, [(10, 10), (25, 5), (5, 23)],
+                              [(20, 20), (20, 10), (10, 10)])
+    assert quality.overlap_count == 2
+    assert quality.overlap_depth_mm == pytest.approx(7.0)
+
+
 def test_gap_evenness(quality):
     # nearest-neighbour gaps: A 0 (overlap), B 0, C sqrt(40^2 + 10^2) to B: cv = sqrt 2
     assert quality.gap_evenness == pytest.approx(1 / (1 + math.sqrt(2)))
@@ -87,6 +95,7 @@ def test_many_items_are_measured_from_their_neighbours_with_the_same_figures_as_
         near = pairwise(centres, halves, groups)
         assert near[2] == dense[2] > 0 and near[1] == dense[1]
         assert near[0] == pytest.approx(dense[0], rel=1e-12)
+        assert near[4] == pytest.approx(dense[4], rel=1e-12) and near[4] > 0
         np.testing.assert_array_equal(np.isinf(near[3]), np.isinf(dense[3]))
         finite = np.isfinite(dense[3])
         np.testing.assert_allclose(near[3][finite], dense[3][finite], rtol=0, atol=1e-12)
@@ -96,5 +105,5 @@ def test_one_anchor_group_of_many_items_has_no_gap_and_is_measured_quickly():
     count = 2000
     centres = np.column_stack([np.linspace(20, 120, count), np.linspace(20, 120, count)])
     halves = np.ones((count, 2))
-    total, hits, overlaps, nearest = pairwise(centres, halves, np.zeros(count, dtype=int))
-    assert (total, hits, overlaps) == (0.0, [], 0) and np.isinf(nearest).all()
+    total, hits, overlaps, nearest, depth = pairwise(centres, halves, np.zeros(count, dtype=int))
+    assert (total, hits, overlaps, depth) == (0.0, [], 0, 0.0) and np.isinf(nearest).all()

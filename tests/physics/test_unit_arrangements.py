@@ -167,3 +167,132 @@ def test_units_that_fit_only_touching_are_set_down_touching(tmp_path):
     settle_project(again)
     save_project(again)
     assert path.read_bytes() == settled
+
+
+def test_units_of_one_room_that_cannot_keep_the_gutter_are_named_where_the_page_is_too_many(
+        tmp_path):
+    """fresh_projects seed 7067, p4: the page's nine free members ran past the search's budget,
+    and check sent the page back to settle; the four texts of its words region, searched
+    alone around the hard-anchored text, keep 2.8 mm at most (room_limits.room_arrangements),
+    and the page's closest pair is explained."""
+    project, page, engine = settled_engine(tmp_path, "units-room-7067.toml")
+    gutter = project.physics.gutter_mm
+    limits, (limit,) = unit_limit(engine, page, gutter)
+    ids = [item.id for item in page.items]
+    assert set(ids[row] for row in limit.rows) == {"p4-text2", "p4-text4", "p4-text6",
+                                                   "p4-text8"}
+    assert [ids[row] for row in limit.pinned] == ["p4-text7"]
+    assert 2.7 < limit.widest_gap_mm < 2.9
+    assert unexplained_pairs(engine.bodies, limits, gutter) == []
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_no_limit_rules_out_the_gutter_on_a_page_that_keeps_it(seed):
+    """Pages drawn keeping the gutter (a grid of cells, each item in its own cell, some
+    hard-anchored, some confined to one of two regions, some photos with a caption that
+    follows them), with more free members than one search takes: no limit may say the
+    gutter does not fit (a NoArrangement found room by room is a proof only if it never
+    fires where a layout exists)."""
+    from floatpage.model.document import BlockItem, ItemAnchor, Page, PhysicsSettings, \
+        PointAnchor, Region
+    rng = np.random.default_rng(seed)
+    gutter, margin = float(rng.choice([2.0, 3.0, 4.0])), float(rng.choice([0.0, 5.0]))
+    columns, rows, cell = int(rng.integers(3, 6)), int(rng.integers(4, 7)), 30.0
+    width, height = columns * cell + 2 * margin, rows * cell + 2 * margin
+    split = margin + int(rng.integers(1, rows)) * cell  # the regions meet on a cell edge
+    regions = [Region("top", 0.0, 0.0, width, split), Region("bottom", 0.0, split, width,
+                                                            height - split)]
+    items = []
+    for col in range(columns):
+        for row in range(rows):
+            if rng.random() < 0.2:
+                continue
+            left, top = margin + col * cell + gutter / 2, margin + row * cell + gutter / 2
+            room = cell - gutter  # the gutter between any two cells' items
+            w, h = rng.uniform(0.4, 1.0) * room, rng.uniform(0.4, 1.0) * room
+            x, y = left + rng.uniform(0, room - w) + w / 2, top + rng.uniform(0, room - h) + h / 2
+            name = f"i{col}-{row}"
+            region = "" if rng.random() < 0.3 else ("top" if top < split else "bottom")
+            if rng.random() < 0.25:
+                items.append(BlockItem(name, round(x, 2), round(y, 2), round(w, 2), round(h, 2),
+                                       anchor=PointAnchor(round(x, 2), round(y, 2), hard=True)))
+            elif rng.random() < 0.3 and h > 12:  # a photo and its caption below it
+                photo = h - 6
+                items.append(BlockItem(name, round(x, 2), round(top + rng.uniform(0, room - h)
+                                                              + photo / 2, 2), round(w, 2),
+                                       round(photo, 2), region=region))
+                lead = items[-1]
+                items.append(BlockItem(name + "c", lead.x, round(lead.y + photo / 2 + 3, 2),
+                                       round(w, 2), 6.0, region=region,
+                                       anchor=ItemAnchor(name, 0.0, round(photo / 2 + 3, 2))))
+            else:
+                items.append(BlockItem(name, round(x, 2), round(y, 2), round(w, 2),
+                                       round(h, 2), region=region))
+    page = Page(id="p", width_mm=width, height_mm=height, items=items, regions=regions)
+    settings = PhysicsSettings(gutter_mm=gutter, margin_mm=margin)
+    engine = engine_for_page(page, settings)
+    assert engine.quality().min_gap_mm >= gutter - 0.02  # the page keeps it, as drawn
+    limits = page_limits(engine.bodies, width, height, engine.margin_mm, gutter)
+    capping = [limit for limit in limits if getattr(limit, "widest_gap_mm", np.inf)
+               < gutter - WIDEST_GAP_SLACK_MM]
+    assert capping == [], capping
+
+
+def test_a_bisection_that_runs_out_of_budget_keeps_only_what_it_decided(monkeypatch):
+    """widest_bracket where the searches above some gap run out of budget (the real search
+    below it, and at the gutter): the gap it keeps has a layout, the gap it rules out has
+    none (both checked by the search itself), and where no search ran out it is the answer
+    without any cut."""
+    from floatpage.physics import unit_arrangements
+    from floatpage.physics.unit_arrangements import Units, unit_arrangement, widest_bracket
+    part_way = 0
+    for seed in range(40):
+        rng = np.random.default_rng(1000 + seed)
+        count = int(rng.integers(4, 7))
+        sizes = rng.integers(4, 20, (count, 2)).astype(float)
+        room = np.array([60.0, 50.0])
+        units = Units(np.arange(count), np.zeros((count, 2)), sizes / 2, sizes / 2,
+                      room - sizes / 2)
+        centres = np.array([[30.0, 25.0]])
+        halves = np.array([[float(rng.integers(3, 10)), float(rng.integers(3, 10))]])
+        gutter = float(rng.integers(2, 8))
+        unit_arrangements._memo.clear()
+        exact = widest_bracket(units, centres, halves, gutter)
+        real = unit_arrangements.arranges
+        if exact is None or exact.low >= gutter:
+            continue
+        for cut in (0.1, 0.3, 0.5, 0.7, 0.9):  # searches at gaps above a cut run out
+            cut_gap = exact.low + cut * (gutter - exact.low) - 0.5
+
+            def runs_out_above(units, centres, halves, gap, cut_gap=cut_gap):
+                if cut_gap < gap < gutter:
+                    raise unit_arrangements.OutOfBudget
+                return real(units, centres, halves, gap)
+            monkeypatch.setattr(unit_arrangements, "arranges", runs_out_above)
+            found = widest_bracket(units, centres, halves, gutter)
+            monkeypatch.undo()
+            if found is None:
+                continue
+            assert unit_arrangement(units, centres, halves, found.low) is not None
+            assert found.low == found.high or \
+                unit_arrangement(units, centres, halves, found.high) is None
+            if found.exact:
+                assert found == exact
+            else:
+                part_way += 1
+    assert part_way > 0  # the cuts did stop some bisections part way
+
+
+def test_a_page_whose_widest_gap_the_search_cannot_finish_is_named_not_sent_back(tmp_path):
+    """fresh_projects seed 2, p3: the search rules the 6 mm gutter out at once but runs out of
+    its budget at 0 mm, so widest_gap said nothing and check sent the page back to settle.
+    The bisection goes on below (widest_bracket): a layout 2.3 mm into each other, marked
+    not proved, and check says the search stopped rather than calling it the widest."""
+    project, page, engine = settled_engine(tmp_path, "units-budget-2.toml")
+    gutter = project.physics.gutter_mm
+    limits, (limit,) = unit_limit(engine, page, gutter)
+    assert not limit.proved and limit.widest_gap_mm < 0 <= limit.at_most_mm <= gutter
+    assert unexplained_pairs(engine.bodies, limits, gutter) == []
+    from floatpage.cli.page_report import _no_arrangement_sentence
+    sentence = _no_arrangement_sentence(limit, lambda row: page.items[row].id, gutter)
+    assert "stopped before it could tell" in sentence and "widest gap they" not in sentence
