@@ -83,7 +83,10 @@ def region_edges(regions: np.ndarray | None, axis: int) -> np.ndarray:
     own items, guides for everyone (a region's edge is a line the page's design drew)."""
     if regions is None or not len(regions):
         return np.zeros(0)
-    boxes = regions[~np.isnan(regions[:, 0])]
+    confined = ~np.isnan(regions[:, 0])
+    if not confined.any():  # no region: np.unique's answer, without its sort (four calls a
+        return np.zeros(0)  # snap's set-up, page_lines, a tenth of it on an 8-item page)
+    boxes = regions[confined]
     return np.unique(np.concatenate([boxes[:, axis], boxes[:, axis + 2]]))
 
 
@@ -172,6 +175,11 @@ class GuidePulls:
                 np.concatenate([guides, [PAGE]]),  # centre owners
                 np.concatenate([rows, rows]),  # who asks, for the low edges then the high
                 halves[rows, axis], halves[guides, axis])
+            edge_rows, edge_sides, centre_rows = self.fixed[axis][2:5]
+            # the owners and offsets of the edge lines then the centre lines, as refresh pools
+            # them: one gather each picks the chosen lines'
+            self.fixed[axis] += (np.concatenate([edge_rows, centre_rows]),
+                                 np.concatenate([edge_sides, np.zeros(len(centre_rows))]))
         return self.fixed[axis]
 
     def refresh(self, centres: np.ndarray) -> None:
@@ -181,11 +189,14 @@ class GuidePulls:
         own, partner, factor, offset = [], [], [], []
         for axis in (0, 1):
             (edges_page, centres_page, edge_rows, edge_sides, centre_rows, askers, my_halves,
-             their_halves) = self.fixed_parts(axis)
+             their_halves, line_rows, line_sides) = self.fixed_parts(axis)
             mine, theirs = centres[rows, axis], centres[guides, axis]
+            # Every line in one array, the edge lines then the centre lines (two views), so
+            # that the chosen lines are one gather, not a choice between two per column.
+            lines = np.concatenate([theirs - their_halves, theirs + their_halves, edges_page,
+                                    theirs, centres_page])
+            edge_pool, centre_pool = lines[:len(edge_rows)], lines[len(edge_rows):]
             # Edges: both of a pulled item's edges against every guide edge and margin line.
-            edge_pool = np.concatenate([theirs - their_halves, theirs + their_halves,
-                                        edges_page])
             found_e, dist_e = nearest_guides(edge_pool, edge_rows,
                                              np.concatenate([mine - my_halves,
                                                              mine + my_halves]),
@@ -195,14 +206,12 @@ class GuidePulls:
             found_e = np.where(low_better, found_e[:count], found_e[count:])
             dist_e = np.where(low_better, dist_e[:count], dist_e[count:])
             own_side_e = np.where(low_better, -my_halves, my_halves)
-            centre_pool = np.concatenate([theirs, centres_page])
             found_c, dist_c = nearest_guides(centre_pool, centre_rows, mine, rows, self.reach)
             use_edge = np.abs(dist_e) <= np.abs(dist_c)
             found = np.where(use_edge, found_e, found_c)
             keep = found >= 0
-            pool = np.where(use_edge, edge_pool[found_e], centre_pool[found_c])[keep]
-            guide_row = np.where(use_edge, edge_rows[found_e], centre_rows[found_c])[keep]
-            guide_side = np.where(use_edge, edge_sides[found_e], 0.0)[keep]
+            chosen = np.where(use_edge, found_e, found_c + len(edge_rows))[keep]  # into lines
+            pool, guide_row, guide_side = lines[chosen], line_rows[chosen], line_sides[chosen]
             on_page = guide_row == PAGE
             own.append(rows[keep] * 2 + axis)
             partner.append(np.where(on_page, rows[keep], guide_row) * 2 + axis)
