@@ -321,6 +321,7 @@ def miss_reasons(path: Path, check_output: str) -> list[str]:
 
 
 TEX_BLOCK = re.compile(r"% \[fp:\d+\] item \"([^\"]+)\" on page \"[^\"]+\"[^\n]*\n"
+                       r"(?:\\begin\{scope\}\n\\clip [^\n]*\n)?"  # a picture cropped to its box
                        r"(?:\\fpblock\{[^}]*\}\{[^}]*\}\{([-\d.]+)\}\{([-\d.]+)\}\{([-\d.]+)\}"
                        r"\{([-\d.]+)\}|\\node\[[^\]]*\] at \(([-\d.]+), ([-\d.]+)\) "
                        r"\{\\includegraphics\[width=([-\d.]+)mm, height=([-\d.]+)mm\])")
@@ -328,7 +329,8 @@ TEX_BLOCK = re.compile(r"% \[fp:\d+\] item \"([^\"]+)\" on page \"[^\"]+\"[^\n]*
 
 def typeset_centres(tex: str) -> dict[str, tuple[float, float]]:
     """The centre of every block and picture in a .tex `render --tex` wrote, by item id (a
-    picture that keeps its aspect ratio is centred in its box)."""
+    picture that keeps its aspect ratio is centred in its box, and so is one cropped to a box
+    of another shape: drawn larger, clipped to the box)."""
     centres = {}
     for match in TEX_BLOCK.finditer(tex):
         numbers = [float(value) for value in match.groups()[1:] if value is not None]

@@ -229,8 +229,10 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.model.layout import settle_project
     from floatpage.typeset import render_pdf
 
+    for option, name in (("-o", args.output), ("--tex", args.tex), ("--fragment", args.fragment)):
+        refuse_folder_name(option, name, Path(args.path).stem)
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
-    refuse_other_format(out)
+    refuse_other_format(out, args.path)
     for option, name in (("--tex", args.tex), ("--fragment", args.fragment)):
         refuse_not_tex(option, name, args.path)
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
@@ -248,7 +250,7 @@ def cmd_render(args: argparse.Namespace) -> int:
         print(f"warning: {printable(warning)}", file=sys.stderr)
     from floatpage.typeset.render import resolution_notes
 
-    for note in resolution_notes(project):
+    for note in resolution_notes(project) + report.notes:
         print(f"note: {printable(note)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
@@ -280,7 +282,8 @@ def unsettled_warnings(project, path: str) -> list[str]:
 
 
 # Output names that promise another format: `render -o card.png` wrote a PDF called card.png.
-# (A .toml is left to render's own check, which says when it is the project itself.)
+# (A .toml is refused by refuse_toml_output; the project itself is left to render's own check,
+# which says that it is an input.)
 NOT_PDF = {".png": "pdftoppm -png", ".jpg": "pdftoppm -jpeg", ".jpeg": "pdftoppm -jpeg",
            ".svg": "pdftocairo -svg", ".tex": "--tex", ".eps": "pdftops -eps"}
 
@@ -289,6 +292,17 @@ NOT_PDF = {".png": "pdftoppm -png", ".jpg": "pdftoppm -jpeg", ".jpeg": "pdftoppm
 # source into a file named as a PDF (the options swapped), and a .toml one into the project's
 # own kind (render's own check refuses the project itself).
 NOT_TEX = {".pdf", ".png", ".jpg", ".jpeg", ".svg", ".eps", ".toml"}
+
+
+def refuse_toml_output(out: Path, project: str) -> None:
+    """`render card.toml -o other.toml` replaced another project with the PDF: a .toml name
+    is a project's, never a PDF's."""
+    if os.path.exists(out) and os.path.exists(project) and os.path.samefile(out, project):
+        return
+    what = ("it is a project file, which the PDF would replace" if os.path.exists(out)
+            else "a .toml name is a project's")
+    raise FloatpageError(f"{out}: will not write the PDF there, because {what}; name the "
+                         f"output .pdf (e.g. -o {out.with_suffix('.pdf')})")
 
 
 def refuse_not_tex(option: str, name: str | None, project: str) -> None:
@@ -305,8 +319,22 @@ def refuse_not_tex(option: str, name: str | None, project: str) -> None:
 PROJECT_PATH_HELP = "the project's .toml file"
 
 
-def refuse_other_format(out: Path) -> None:
+def refuse_folder_name(option: str, name: str | None, stem: str) -> None:
+    """`-o .` ended in "internal error" and `-o out/` wrote a PDF called `out`: a name that
+    can only be a folder is refused, with the file name to give instead."""
+    if not name:
+        return
+    base = os.path.basename(name)
+    if base in ("", ".", "..") or name.endswith(os.sep + ".") or name == os.sep:
+        example = os.path.join(name, stem + (".pdf" if option == "-o" else ".tex"))
+        raise FloatpageError(f"{name}: names a folder, and {option} writes one file; name the "
+                             f"file, e.g. {example}")
+
+
+def refuse_other_format(out: Path, project: str) -> None:
     suffix = out.suffix.lower()
+    if suffix == ".toml":
+        refuse_toml_output(out, project)
     if suffix not in NOT_PDF:
         return
     how = NOT_PDF[suffix]
@@ -333,12 +361,13 @@ def cmd_check(args: argparse.Namespace) -> int:
         if settle_may_help(lines):
             settle_lines += lines
     from floatpage.typeset import text_fit_warnings
-    from floatpage.typeset.render import picture_warnings, resolution_notes
+    from floatpage.typeset.render import faint_text_notes, picture_warnings, resolution_notes
 
     for warning in text_fit_warnings(project) + picture_warnings(project):
         print(f"warning: {printable(warning)}")
         issues += 1
-    for note in resolution_notes(project):  # a note, not a problem: --strict still passes
+    # notes, not problems: --strict still passes
+    for note in resolution_notes(project) + faint_text_notes(project):
         print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")

@@ -36,6 +36,9 @@ MAX_NAME_BYTES = 120
 WINDOWS_RESERVED = {"con", "prn", "aux", "nul", *(f"com{n}" for n in range(10)),
                     *(f"lpt{n}" for n in range(10))}
 REPORT_COLUMNS = ("record", "line", "name", "status", "reason")
+# A name, the only report.csv cell a record's data begins, never starts as a spreadsheet
+# formula: `--name {id}` with an id of `=HYPERLINK(…)` ran in the print shop's Excel.
+FORMULA_START = "=+@-. "
 
 
 def name_fields(pattern: str | None) -> list[str]:
@@ -51,7 +54,7 @@ def safe_name(text: str, number: int) -> str:
     """A file name any file system takes: no separators, controls or leading dots, at most
     MAX_NAME_BYTES in UTF-8, and no name Windows reserves for a device."""
     text = unicodedata.normalize("NFC", text)
-    text = UNSAFE.sub("-", text).strip(" .-")
+    text = UNSAFE.sub("-", text).strip(" .-").lstrip(FORMULA_START)
     text = re.sub(r"\s+", " ", text)
     text = text.encode("utf-8")[:MAX_NAME_BYTES].decode("utf-8", "ignore").strip(" .-")
     first, dot, rest = text.partition(".")
@@ -135,6 +138,11 @@ class OutputFolder:
         except OSError as error:
             raise FloatpageError(f"{self.folder}: cannot create the output folder "
                                  f"({error.strerror})") from None
+        state = self.folder / STATE_DIR
+        if state.is_symlink():  # mkdir took the link's folder, and the keys went there
+            raise FloatpageError(f"{state}: is a symbolic link; floatpage keeps its merge state "
+                                 "in a folder of its own there (remove the link, or name "
+                                 "another output folder with -o)")
         remove_leftovers(self.folder)
         remove_leftovers(self.folder / STATE_DIR)
         self.inputs = {self.key(path) for path in inputs}
@@ -210,11 +218,24 @@ class Report:
     def row(self, number: int, line: int, name: str, status: str, reason: str = "") -> None:
         if status == "failed":
             self.failed += 1
-        self.writer.writerow((number, line, name, status, " ".join(reason.split())))
+        try:
+            self.writer.writerow((number, line, name, status, " ".join(reason.split())))
+        except OSError as error:
+            raise self.unwritten(error) from None
 
     def save(self) -> None:
-        self.handle.close()
-        os.replace(self.partial, self.path)
+        """report.partial becomes report.csv; on a full disk (whose error surfaces only at
+        the close) a message, as for a record's PDF, not an internal error."""
+        try:
+            self.handle.close()
+            os.replace(self.partial, self.path)
+        except OSError as error:
+            raise self.unwritten(error) from None
+
+    def unwritten(self, error: OSError) -> FloatpageError:
+        return FloatpageError(f"{self.path}: could not write it ({error.strerror or error}); "
+                              "check that the output folder is writable and the disk not "
+                              "full, then run merge again (it skips the records already made)")
 
     def made_names(self):
         """The names of the records that have a PDF, in record order, read back from the

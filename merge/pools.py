@@ -68,6 +68,10 @@ def dask_client(address: str, workers: int):
     except (OSError, TimeoutError) as error:
         raise FloatpageError(f"--dask {address}: no Dask scheduler answered ({error}); start "
                              "one with `dask scheduler`, or use --dask local") from None
+    except ValueError as error:  # `ftp://x`, `host` without a port: was an internal error
+        raise FloatpageError(f"--dask {address}: not a scheduler's address ({error}); give "
+                             "tcp://HOST:PORT (a `dask scheduler` prints it, port 8786 by "
+                             "default), or --dask local") from None
 
 
 def dask_results(tasks: Iterator[ChunkTask], address: str, workers: int, retries: int = 3

@@ -162,11 +162,16 @@ class DataFile:
                     data = json.loads(line)
                 except (json.JSONDecodeError, RecursionError) as error:
                     record.problem = f"not valid JSON ({getattr(error, 'msg', 'too deep')})"
-                    yield record
+                    yield self.padded(record)
+                    continue
+                except ValueError:  # Python reads no integer of more than 4,300 digits
+                    record.problem = ("a number in it is too long to read (more than 4,300 "
+                                      'digits); quote it as a string: "123…"')
+                    yield self.padded(record)
                     continue
                 if not isinstance(data, dict):
                     record.problem = "the line is not a JSON object ({...})"
-                    yield record
+                    yield self.padded(record)
                     continue
                 for key, value in data.items():
                     if isinstance(value, (dict, list)):
@@ -174,7 +179,30 @@ class DataFile:
                                          "give a string or a number"
                     record.values[str(key)] = "" if value is None else (
                         ("true" if value else "false") if isinstance(value, bool) else str(value))
-                yield too_long_values_dropped(record)
+                    if not is_text(str(key)) or not is_text(record.values[str(key)]):
+                        record.problem = (  # "\ud800" alone: an internal error at the digest
+                            f"{'the key' if not is_text(str(key)) else 'the value of'} "
+                            f"{ascii(str(key))} holds half of a UTF-16 surrogate pair (\\ud800-"
+                            "\\udfff written alone), which is no character; export the data "
+                            "again as UTF-8")
+                yield too_long_values_dropped(self.padded(record))
+
+    def padded(self, record: Record) -> Record:
+        """A key left out is an empty value, as null is and as a CSV row's missing fields
+        are: it ended the whole run with an internal error (KeyError), as did `--name {id}`
+        on a line that is no JSON object."""
+        for name in getattr(self, "columns", ()):
+            record.values.setdefault(name, "")
+        return record
+
+
+def is_text(value: str) -> bool:
+    """Whether ``value`` can be written as UTF-8 (no lone surrogate from a JSON escape)."""
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
 
 
 SEPARATORS = (",", ";", "\t")

@@ -217,15 +217,23 @@ class Merge:
         self.digests: dict[int, str] = {}
         results = (dask_results(tasks(), options.dask, workers) if options.dask
                    else local_results(tasks(), workers))
+        failure: BaseException | None = None
         try:
             for chunk_results in results:
                 for result in chunk_results:
                     self.write(result, ordered, summary)
                 show(ordered.count, total, report.failed)
+        except BaseException as error:
+            failure = error
+            raise
         finally:
             results.close()  # now, not when the traceback lets go: stops the pool's workers
-            ordered.flush_all()
-            report.save()
+            try:
+                ordered.flush_all()
+                report.save()
+            except FloatpageError:
+                if failure is None:  # else the first error (a PDF the full disk refused) says
+                    raise            # what went wrong first
             self.out.flush()
             summary.failed = report.failed
             summary.seconds = time.perf_counter() - started

@@ -14,6 +14,7 @@ renamed over the original: rename is atomic on POSIX.  Three cases need more tha
 
 from __future__ import annotations
 
+import errno
 import os
 import secrets
 import shutil
@@ -49,12 +50,32 @@ def refuse_read_only(path: Path, target: Path) -> None:
     replaced all the same, its protection gone."""
     if read_only(target):
         shown = path if Path(os.path.abspath(path)) == target else f"{path} (a link to {target})"
+        held = held_by_system(target)
+        if held:
+            raise FloatpageError(f"{shown}: not saved, because {held}; the file is unchanged")
         if os.stat(target).st_mode & 0o222:  # writable, but not by this user: chmod u+w is
             raise FloatpageError(  # not theirs to run
                 f"{shown}: not saved, because you may not write it (it belongs to "
                 f"{owner_of(target)}); the file is unchanged (ask its owner, or write a copy)")
         raise FloatpageError(f"{shown}: not saved, because the file is read-only; the file is "
                              "unchanged (make it writable with `chmod u+w`, or write elsewhere)")
+
+
+def held_by_system(path: Path) -> str:
+    """Why a file whose permissions allow a write is refused all the same ('' if it is not):
+    a read-only mount or the immutable flag.  They were told "it belongs to alice" (their own
+    name), or to make it writable with chmod, which changes neither."""
+    try:
+        if os.statvfs(path).f_flag & os.ST_RDONLY:
+            return ("its folder is on a read-only file system (a read-only mount, a CD or a "
+                    "locked card); copy the project to a writable folder")
+        status = os.stat(path)
+    except OSError:
+        return ""
+    if status.st_mode & 0o200 and status.st_uid == os.geteuid():
+        return ("the system keeps it from being written, although its permissions allow it "
+                "(`lsattr` shows an immutable flag: `chattr -i` clears it)")
+    return ""
 
 
 def owner_of(path: Path) -> str:
@@ -129,6 +150,15 @@ def glob_escape(name: str) -> str:
     return "".join(f"[{c}]" if c in "*?[" else c for c in name)
 
 
+SAVE_HINT = "check that the folder exists and is writable"
+# A full disk was told to check that the folder exists and is writable.
+SAVE_HINTS = {errno.ENOSPC: "the disk is full; free some space and save again: the file is "
+                            "unchanged",
+              errno.EDQUOT: "your disk quota is used up; free some space and save again: the "
+                            "file is unchanged",
+              errno.EROFS: "the folder is on a read-only file system; save to a writable folder"}
+
+
 def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
     """Replace the file at ``path`` with ``data``; keep the old version as NAME.bak if asked."""
     path = Path(path)
@@ -156,7 +186,7 @@ def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:
         sync_folder(target.parent)
     except OSError as error:
         raise FloatpageError(f"{path}: could not save: {error.strerror or error}"
-                             " (check that the folder exists and is writable)") from None
+                             f" ({SAVE_HINTS.get(error.errno, SAVE_HINT)})") from None
     finally:  # also on Ctrl+C: no half-written temporary stays behind
         if temporary is not None:
             try:

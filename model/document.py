@@ -19,8 +19,9 @@ from pathlib import Path
 from typing import Any, Literal, Union
 
 from floatpage.model.key_specs import (
-    CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_TEXT_CHARS, TEXT_ALIGNMENTS, WEEKDAYS, at_most_chars,
-    between, colour, finite, item_id, name_or_empty, one_of, positive, spec,
+    CALENDAR_LANGUAGES, FONT_FAMILIES, MAX_SET_PT, MAX_TEXT_CHARS, MIN_SET_PT, TEXT_ALIGNMENTS,
+    WEEKDAYS, at_most_chars, between, colour, finite, item_id, name_or_empty, one_of, positive,
+    spec, zero_or_between,
 )
 from floatpage.physics.params import DISTANCES, MODES, Params, out_of_range
 
@@ -115,6 +116,15 @@ class TextItem(ItemBase):
         "str", one_of(*TEXT_ALIGNMENTS), label="Alignment",
         choices=(("Start (right for right-to-left text)", "start"), ("Left", "left"),
                  ("Centred", "centre"), ("Right", "right"))))
+    # What the text is ("price", "caption", "month-name"): every text of one role in the
+    # document is set at one size, the largest at which each of their boxes still fits
+    # (typeset.roles), as a designer gives each paragraph style one size; "" for none: the
+    # text fills its own box.
+    role: str = field(default="", metadata=spec(
+        "str", name_or_empty, label="Role (texts of one role share one size; empty: none)"))
+    # A size set by hand, in points, kept whatever its role; 0 fits the text to its box.
+    size_pt: float = field(default=0.0, metadata=spec(
+        "number", zero_or_between(MIN_SET_PT, MAX_SET_PT), label="Size in pt (0: fit the box)"))
 
     kind = "text"
 
@@ -123,10 +133,12 @@ class TextItem(ItemBase):
 class PictureItem(ItemBase):
     """A picture scaled to its rectangle; `path` is relative to the project file."""
 
-    path: str = field(default="", metadata=spec("str", required=True))
+    path: str = field(default="", metadata=spec(
+        "str", required=True, label="Picture file (from the project's folder, or a full path)"))
     lock_aspect: bool = field(default=True, metadata=spec(
         "bool", label="Keep the picture's aspect ratio"))
-    # print: extend past the trim wherever the picture meets the page edge
+    # may reach the page's edge: no print-safe margin (`render --print` carries every picture
+    # and block that meets the edge past the trim, marked or not)
     bleed: bool = field(default=False, metadata=spec("bool"))
 
     kind = "picture"
@@ -139,7 +151,8 @@ class BlockItem(ItemBase):
     color: str = field(default="#cccccc", metadata=spec("str", colour, label=COLOUR_LABEL))
     opacity: float = field(default=1.0, metadata=spec("number", between(0.0, 1.0),
                                                       label="Opacity (0-1)"))
-    # print: extend past the trim wherever the block meets the page edge
+    # may reach the page's edge: no print-safe margin (`render --print` carries every picture
+    # and block that meets the edge past the trim, marked or not)
     bleed: bool = field(default=False, metadata=spec("bool"))
 
     kind = "block"

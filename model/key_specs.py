@@ -35,6 +35,9 @@ WEEKDAYS = ("monday", "tuesday", "wednesday", "thursday", "friday", "saturday", 
 PICTURE_SUFFIXES = (".jpg", ".jpeg", ".png", ".pdf", ".webp", ".gif", ".bmp", ".tif", ".tiff")
 MAX_TITLE_CHARS = 1_000  # a title is PDF metadata; 200,000 characters overflowed TeX's line buffer
 MAX_TEXT_CHARS = 20_000  # a poster's worth; 1 MB of text drove LuaLaTeX to 2.5 GB
+# A text's own size (`size_pt`): from the smallest a print shop still prints legibly (the
+# typesetter's own floor for fitted text is lower, and warns) to the fitter's largest.
+MIN_SET_PT, MAX_SET_PT = 4.0, 1000.0
 
 Check = Callable[[Any], "str | None"]
 
@@ -102,6 +105,16 @@ def at_most_chars(limit: int) -> Check:
 def between(low: float, high: float) -> Check:
     def check(value: float) -> str | None:
         return finite(value) or (None if low <= value <= high else f"must be between {low} and {high}")
+    return check
+
+
+def zero_or_between(low: float, high: float) -> Check:
+    """0 for "not set", else a value in [low, high]."""
+    def check(value: float) -> str | None:
+        if value == 0:
+            return None
+        return finite(value) or (None if low <= value <= high else
+                                 f"must be 0 (fit the box) or between {low:g} and {high:g}")
     return check
 
 

@@ -22,6 +22,9 @@ FORMAT_WORDS = "PNG, JPEG, PDF, WebP, GIF, BMP or TIFF"
 
 
 MERGE_FIELD = re.compile(r"\{[^{}]+\}")
+# A PDF picture's sides, in PDF units (1/72 in): 14,400 is PDF's own largest page (5.08 m;
+# TeX stops at 16,322), and below one unit the scale to the item's size overflows TeX.
+PDF_SIDE_UNITS = (1.0, 14_400.0)
 
 
 @dataclass(frozen=True)
@@ -81,15 +84,46 @@ def pdf_header(path: Path) -> PictureHeader:
 
     try:
         with pikepdf.open(path) as pdf:
-            box = [float(v) for v in pdf.pages[0].mediabox]
+            page = pdf.pages[0]
+            # LuaTeX places the crop box (the media box when there is none)
+            boxes = [[float(v) for v in page.mediabox], [float(v) for v in page.cropbox]]
     except Exception as error:  # pikepdf raises its own errors, and IndexError for no pages
         reason = str(error).splitlines()[0][:120] if str(error) else type(error).__name__
         return PictureHeader(kind="PDF", problem=f"is not a PDF floatpage can read ({reason})",
                              hint="export it again, or use PNG or JPEG")
-    if not (len(box) == 4 and box[2] - box[0] > 0 and box[3] - box[1] > 0):
-        return PictureHeader(kind="PDF", problem="has a first page without a size",
-                             hint="export it again, or use PNG or JPEG")
+    for box in boxes:
+        if not (len(box) == 4 and box[2] - box[0] > 0 and box[3] - box[1] > 0):
+            return PictureHeader(kind="PDF", problem="has a first page without a size",
+                                 hint="export it again, or use PNG or JPEG")
+    for box in boxes:
+        sides = (box[2] - box[0], box[3] - box[1])
+        if not PDF_SIDE_UNITS[0] <= min(sides) <= max(sides) <= PDF_SIDE_UNITS[1]:
+            # a page past TeX's largest length stopped LuaLaTeX with "Dimension too large",
+            # a speck of one with "Arithmetic overflow", after `check` had passed them
+            mm = " x ".join(f"{side:,.0f}" if side >= 10 else f"{side:.2g}"
+                            for side in (side * 25.4 / 72 for side in sides))
+            return PictureHeader(kind="PDF", problem=f"has a first page of {mm} mm, a size TeX "
+                                 "cannot place (0.35 mm to 5 m a side)",
+                                 hint="export it again at the size it should print, or use "
+                                      "PNG or JPEG")
     return PictureHeader(kind="PDF")
+
+
+def pdf_damage(path: Path) -> str:
+    """What qpdf had to mend to open a PDF ('' for a sound one): LuaTeX reads no damaged
+    PDF ("reading image failed", after `check` had passed it), so render prints the mended
+    copy (typeset.pictures) and `check` says so."""
+    import pikepdf
+
+    try:
+        with pikepdf.open(path) as pdf:
+            found = pdf.get_warnings()
+    except Exception:  # noqa: BLE001 - unreadable: read_header has said so already
+        return ""
+    reasons = [re.sub(r"^\(offset \d+\):\s*", "", str(warning).removeprefix(f"{path}")
+                      .lstrip(": ")).splitlines()[0][:120] for warning in found]
+    telling = [reason for reason in reasons if reason != "file is damaged"]
+    return (telling or reasons or [""])[0]
 
 
 def too_many_pixels(what: str, kind: str = "", size: tuple[int, int] = (0, 0)) -> PictureHeader:
@@ -111,7 +145,9 @@ def decode_warning(path: Path) -> str:
     try:
         with open(path, "rb") as handle:
             if handle.read(5) == b"%PDF-":  # no pixels: read_header opened it as a PDF
-                return ""
+                damage = pdf_damage(path)
+                return (f"the PDF is damaged ({damage}); a mended copy is printed: look at "
+                        "it, or export the PDF again") if damage else ""
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             with Image.open(path) as image:
@@ -125,9 +161,13 @@ def decode_warning(path: Path) -> str:
     return ""
 
 
-def is_merge_placeholder(relative: str) -> bool:
-    """A template's picture path that a data column fills (`pictures/{photo}`)."""
-    return MERGE_FIELD.search(relative) is not None
+def is_merge_placeholder(relative: str, folder: Path | None = None) -> bool:
+    """A template's picture path that a data column fills (`pictures/{photo}`). Given the
+    project's ``folder``, a file that is there by that very name is a picture, not a
+    placeholder: `photo {1}.png` passed `check` and `render` called it a merge template."""
+    if MERGE_FIELD.search(relative) is None:
+        return False
+    return folder is None or not os.path.lexists(folder / relative)
 
 
 def is_outside(picture: Path, folder: Path) -> bool:

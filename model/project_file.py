@@ -9,6 +9,7 @@ page sizes, missing pictures, anchors to unknown ids and anchor cycles.
 from __future__ import annotations
 
 import difflib
+import errno
 import os
 import stat
 import tomllib
@@ -50,9 +51,11 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False,
 
     Pictures must lie inside the project's folder unless ``allow_outside_files`` (the CLI's
     --allow-outside-files) or the file's own ``[files] allow_outside = true`` says otherwise.
-    ``missing_pictures_ok`` (the editor) loads a project whose picture files are gone, and
-    lists them, as "WHERE: picture file "PATH"", in ``project.missing_pictures``: the editor
-    refused to open it at all, leaving the user to mend the file by hand.
+    ``missing_pictures_ok`` (the editor) loads a project whose picture files are gone or
+    cannot be used (a file that is no picture, one that cannot be read), and lists them, as
+    "WHERE: picture file "PATH" is missing" (or what else is wrong with it), in
+    ``project.missing_pictures``: the editor refused to open it at all, leaving the user to
+    mend the file by hand, where it now has a field for the path.
     A merge template may name a picture by a placeholder (``pictures/{photo}``): that path
     is checked per record, once filled, by `floatpage merge`."""
     path = Path(path)
@@ -60,7 +63,7 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False,
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
-        raise ProjectFileError([syntax_problem(path, error)]) from None
+        raise ProjectFileError([syntax_problem(path, error, text)]) from None
     except RecursionError:
         raise too_deep(path) from None
     reader = _Reader(path, text, allow_outside=allow_outside_files,
@@ -92,6 +95,15 @@ def read_text(path: Path) -> str:
     def fail(message: str, hint: str) -> ProjectFileError:
         return ProjectFileError([Problem(path, None, "", message, hint)])
 
+    if not path.exists() and os.path.islink(path):  # "no such file" of a file that is there
+        try:
+            os.stat(path)
+        except OSError as error:
+            if error.errno == errno.ELOOP:
+                raise fail("is a symbolic link that leads back to itself",
+                           "point it at the project's .toml file") from None
+        raise fail(f"is a symbolic link to {os.readlink(path)}, which does not exist",
+                   "point it at the project's .toml file, or restore that file")
     if not path.exists():
         raise fail("no such file", "check the path, or create one with `floatpage new blank PATH`")
     if path.is_dir():
@@ -117,7 +129,7 @@ def read_text(path: Path) -> str:
         raise fail(f"is not UTF-8 text (byte {error.start})", "save it as UTF-8") from None
 
 
-def syntax_problem(path: Path, error: tomllib.TOMLDecodeError) -> Problem:
+def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -> Problem:
     message = str(error)
     line = getattr(error, "lineno", None)
     if line is None and "(at line " in message:
@@ -126,6 +138,12 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError) -> Problem:
         except (IndexError, ValueError):
             line = None
     short = message.split(" (at line")[0]
+    if "\r" in text.replace("\r\n", ""):
+        # Lines ended by a bare carriage return (classic Mac OS, some exporters) are one
+        # long line to TOML: "line 1: Expected newline" sent the user to a line that was fine.
+        return Problem(path, line, "", f"TOML syntax error: {short}",
+                       "the file ends lines with a bare carriage return (CR), which TOML does "
+                       "not read as a line end; save it with LF or CRLF line ends")
     return Problem(path, line, "", f"TOML syntax error: {short}",
                    "check quotes, brackets and `key = value` pairs on that line")
 
@@ -355,12 +373,13 @@ class _Reader:
         return Background(color=values.get("color"), picture=values.get("picture"))
 
     def check_picture(self, relative: str, where: str, line: int | None) -> None:
-        if is_merge_placeholder(relative):
+        if is_merge_placeholder(relative, self.path.parent):
             return
         picture = self.path.parent / relative
         header = read_header(picture)
-        if header.problem == "not found" and self.missing_pictures_ok:
-            self.missing_pictures.append(f'{where}: picture file "{relative}"')
+        if header.problem and self.missing_pictures_ok:
+            problem = "is missing" if header.problem == "not found" else header.problem
+            self.missing_pictures.append(f'{where}: picture file "{relative}" {problem}')
         elif header.problem == "not found":
             self.add(line, where, f'picture file "{relative}" not found',
                      f"paths are relative to {folder_words(self.path)}; fix the path or copy "

@@ -49,6 +49,10 @@ class ProjectLock:
         self.fd: int | None = None
 
     def acquire(self) -> "ProjectLock":
+        if not os.path.isfile(self.project):
+            # Nothing to lock, and the load says why: a mistyped name left `.nope.toml.lock`
+            # behind, and `settle /dev/zero` (as root) made /dev/.zero.lock.
+            return self
         try:
             # O_NONBLOCK: a pipe put where the lock file belongs must not hang the open.
             fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC | os.O_NOFOLLOW
@@ -78,8 +82,11 @@ class ProjectLock:
                         f"{self.project}: is being edited by {holder}; close it there, "
                         "or wait for it to finish, then try again") from None
                 time.sleep(POLL_S)
-        os.ftruncate(fd, 0)
-        os.pwrite(fd, f"{os.getpid()} {self.purpose}\n".encode(), 0)
+        try:  # who holds it, for a waiter's message; a full disk refuses even these bytes,
+            os.ftruncate(fd, 0)  # and the save that follows says so, naming the project
+            os.pwrite(fd, f"{os.getpid()} {self.purpose}\n".encode(), 0)
+        except OSError:
+            pass
         self.fd = fd
         return self
 

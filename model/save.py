@@ -28,11 +28,11 @@ Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 UTF8_BOM = b"\xef\xbb\xbf"
 LONE_LF = re.compile(r"(?<!\r)\n")
 WRITTEN_ONLY_WHEN_TRUE = {"bleed"}  # rare flags: a file names them only where they are set
-WRITTEN_ONLY_WHEN_SET = {"align"}  # newer keys: a file names them only where not the default
+WRITTEN_ONLY_WHEN_SET = {"align", "size_pt"}  # newer keys: a file names them only where not the default
 # Names that are empty for "none": a new item in no region or group has no such key (every
 # item the editor added said `region = ""` and `group = ""`), while a user's own `region = ""`
 # means the same and is kept as written, so an unchanged file still saves byte-identical.
-WRITTEN_ONLY_WHEN_NAMED = {"region", "group"}
+WRITTEN_ONLY_WHEN_NAMED = {"region", "group", "role"}
 KEEP = object()  # a pair's value meaning "leave whatever the user wrote, if anything"
 ANCHOR_DEFAULTS = {"dx": 0.0, "dy": 0.0, "gamma": 1.0, "hard": False}
 ARRAYS_SYNCED_APART = {"items", "regions"}  # a page's arrays of tables, synced by sync_array
@@ -155,7 +155,17 @@ def sync_table(table: Table, pairs: Pairs) -> None:
             if not equivalent(key, current, value):
                 table[key] = inline(value)
         elif default is None or not same(value, default):
-            table[key] = inline(value)
+            add_key(table, key, inline(value))
+
+
+def add_key(table: Table, key: str, value: Any) -> None:
+    """Add ``key`` to ``table`` before the blank line that ends it: put after it, a group
+    joined in the editor was written apart from its item's other keys (user walk 5)."""
+    body = table.value.body
+    if trailing_space(table) and hasattr(table.value, "_insert_at"):
+        table.value._insert_at(len(body) - 1, key, value)
+    else:
+        table[key] = value
 
 
 def new_table(pairs: Pairs) -> Table:
@@ -167,7 +177,8 @@ def new_table(pairs: Pairs) -> Table:
     return table
 
 
-def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=None) -> None:
+def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=None, *,
+               at_end: bool = True) -> None:
     """Sync an array of tables by id: keep existing tables (and their comments), add new ones."""
     import tomlkit
     from tomlkit.items import AoT
@@ -201,7 +212,25 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
     array = tomlkit.aot()
     for table in tables:
         array.append(table)
+    if existing is None:
+        set_apart(parent, tables, at_end)
     parent[key] = array
+
+
+def set_apart(parent: Table, tables: list, at_end: bool) -> None:
+    """A new array of tables (a page's first region) goes after the parent's last one (its
+    items): a blank line parts it from that one and, unless it ends the file (``at_end``),
+    from the next page (it was written jammed against the next `[[pages]]`)."""
+    from tomlkit.items import AoT
+    import tomlkit
+    before = [value for value in parent.values() if isinstance(value, AoT) and len(value)]
+    if not before:
+        return
+    last = before[-1][-1]
+    if not trailing_space(last):
+        last.add(tomlkit.ws("\n"))
+    if not at_end:
+        tables[-1].add(tomlkit.ws("\n"))
 
 
 def edit_in_place(array: AoT, tables: list) -> bool:
@@ -284,7 +313,8 @@ def to_document(project: Project) -> tomlkit.TOMLDocument:
             doc["physics"] = new_table(changed)
 
     def fill_page(table: Table, page: Page) -> None:
-        sync_array(table, "regions", page.regions, region_pairs, lambda region: region.id)
+        sync_array(table, "regions", page.regions, region_pairs, lambda region: region.id,
+                   at_end=page is project.pages[-1])
         sync_array(table, "items", page.items, item_pairs, lambda item: item.id)
 
     sync_array(doc, "pages", project.pages, page_pairs, lambda page: page.id, fill_page)

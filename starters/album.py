@@ -42,7 +42,7 @@ def caption_for(photo: PictureItem, picture: Picture) -> TextItem:
     dx = (w - photo.w) / 2  # flush left with the photo, also when the photo is narrower
     return TextItem(id=f"{photo.id}-caption", x=photo.x + dx, y=photo.y + dy, w=w, h=CAPTION_H_MM,
                     text=readable(picture.stem), font="serif", italic=True, color=INK,
-                    anchor=ItemAnchor(to=photo.id, dx=dx, dy=dy))
+                    role="caption", anchor=ItemAnchor(to=photo.id, dx=dx, dy=dy))
 
 
 def photo_region(width: float, height: float, with_title: bool) -> Region:

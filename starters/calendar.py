@@ -107,7 +107,7 @@ def build(options: Options, pictures: list[Picture]) -> Project:
         x, y, w, h = title_rect
         page.items.append(TextItem(
             id=f"{mid}-title", x=x, y=y, w=w, h=h, text=month_name(month, options.lang),
-            font="display", color=accent, bold=True, align="centre",
+            font="display", color=accent, bold=True, align="centre", role="month-name",
             anchor=PointAnchor(x=x, y=y, hard=True)))
         x, y, w, h = panel_rect
         page.items.append(CalendarItem(

@@ -68,7 +68,10 @@ def inside(options: Options, picture: Picture):
     page = new_page("inside", PAGE_SIZE, options.orientation, background=Background(color="#fffaf2"))
     W, H = page.width_mm, page.height_mm
     page.items.append(band("inside-band", W / 2, 5.0, W, 10.0))
-    message = dict(text=phrase("card_message", options.lang), font="serif", italic=True, color=INK)
+    # The signature is not of the message's role: its box is a short line, and "Com carinho,
+    # Sam" in it would have set the whole message at 27 pt where its own box holds 37.
+    message = dict(text=phrase("card_message", options.lang), font="serif", italic=True, color=INK,
+                   role="message")
     signature = phrase("card_signature", options.lang)
     signature_style = dict(font="serif", italic=True, color=ROSE)
     signature_y = H - 16.0

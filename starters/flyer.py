@@ -43,7 +43,7 @@ def price_tag(photo: PictureItem, name: str, cents: int, lang: str) -> TextItem:
         w = photo.w
     return TextItem(id=f"{photo.id}-price", x=photo.x, y=photo.y + dy, w=w, h=TAG_H_MM,
                     text=f"{name}\n{price(cents, lang)}", font="sans", bold=True, color=RED,
-                    anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy))
+                    role="price", anchor=ItemAnchor(to=photo.id, dx=0.0, dy=dy))
 
 
 def header(page, lang: str) -> list:

@@ -8,6 +8,7 @@ zipped or committed as one folder and still render.
 from __future__ import annotations
 
 import filecmp
+import os
 import shutil
 from dataclasses import dataclass
 from importlib import resources
@@ -140,9 +141,16 @@ def copy_beside(sources: list[Path], project_dir: Path) -> list[Picture]:
     return pictures
 
 
+def utf8_name(name: str) -> str:
+    """`name` as UTF-8 can hold it: a file named in another encoding (`caf\xe9.png` from an
+    old Latin-1 camera card) reaches Python with surrogate escapes, which the project file
+    cannot hold (`new album` ended in an internal error); each byte that is no UTF-8 becomes _."""
+    return os.fsencode(name).decode("utf-8", errors="replace").replace("\ufffd", "_")
+
+
 def free_name(source: Path, target_dir: Path) -> Path:
     """Where to put `source` in target_dir: its own name, an identical file's name, or name-N."""
-    stem, suffix = source.stem, source.suffix.lower()
+    stem, suffix = utf8_name(source.stem), source.suffix.lower()
     if suffix == ".jpeg":
         suffix = ".jpg"
     for n in range(1, 10_000):

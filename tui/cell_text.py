@@ -14,6 +14,7 @@ import unicodedata
 from rich.cells import cell_len
 
 from floatpage.typeset.bidi import base_direction, directional_runs, has_rtl, number_runs
+from floatpage.typeset.break_points import pieces
 
 
 def graphemes(text: str) -> list[str]:
@@ -56,13 +57,17 @@ def visual(line: str) -> str:
 
 
 def wrap_cells(text: str, cells: int) -> list[str]:
-    """Greedy lines of at most ``cells`` cells; a word longer than a line is broken."""
+    """Greedy lines of at most ``cells`` cells, broken where the typesetter may break them
+    (`break_points.pieces`: between words, and between Chinese or Japanese characters but
+    never before a 。 or a small kana, nor before a French "!" set after a space); a piece
+    longer than a line is broken.  The preview had its own rule, spaces only, and put a
+    whole CJK sentence on the next line that the PDF began on this one."""
     lines: list[str] = []
     line, line_cells = "", 0
-    for word in text.split():
+    for word, joined in pieces(text.replace("\t", " ")):
         parts = graphemes(word)
         word_cells = sum(width(g) for g in parts)
-        gap = 1 if line else 0
+        gap = 1 if line and not joined else 0
         if line_cells + gap + word_cells <= cells:
             line, line_cells = line + " " * gap + word, line_cells + gap + word_cells
             continue

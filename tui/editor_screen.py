@@ -31,7 +31,7 @@ from floatpage.model.atomic_file import read_only
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
 from floatpage.model.layout import copy_of
-from floatpage.tui import item_forms
+from floatpage.tui import item_forms, region_edits
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.direct_paint import draws_none_of, stale_lines_hidden
 from floatpage.tui.frame_meter import FrameMeter
@@ -156,11 +156,14 @@ class EditorScreen(Screen):
         self.wake()
         missing = self.session.project.missing_pictures
         if missing:  # opened all the same, so that the user can mend it here
-            self.notify("\n".join(f"• {printable(entry)} is missing" for entry in missing[:4])
+            gone = all(entry.endswith(" is missing") for entry in missing)
+            self.notify("\n".join(f"• {printable(entry)}" for entry in missing[:4])
                         + (f"\n• and {len(missing) - 4} more" if len(missing) > 4 else "")
-                        + "\nCopy the files back, or delete these items (Del) and insert the "
-                        "pictures again (p); until then the PDF cannot be made",
-                        title="Pictures not found", severity="warning", timeout=20)
+                        + "\nCopy the files back (or good ones over them), give each its new path (Tab to it, Enter: "
+                        "Picture file), or delete these items (Del); until then the PDF "
+                        "cannot be made",
+                        title="Pictures not found" if gone else "Pictures that cannot be used",
+                        severity="warning", timeout=20)
         path = self.session.project.path
         if path is not None and read_only(path):  # said at once, not after an hour's edits
             self.notify(f"{printable(path.name)} is read-only: edits can be made and exported, "
@@ -628,9 +631,11 @@ class EditorScreen(Screen):
         item = self.session.selected_item
         if item is not None:
             regions = tuple(region.id for region in self.session.page.regions)
+            parse = item_forms.parse_edit if item.kind != "picture" else \
+                item_forms.picture_edit_parser(item.path, self.session.typed_picture_path)
             self.ask(FormDialog(f"Edit {item.id} ({item.kind})",
-                                item_forms.edit_fields(item, regions),
-                                item_forms.parse_edit, dialog_id="edit-dialog"),
+                                item_forms.edit_fields(item, regions), parse,
+                                dialog_id="edit-dialog"),
                      partial(self.attempt, self.session.update_item, item.id))
 
     def action_toggle_decorative(self) -> None:
@@ -678,6 +683,24 @@ class EditorScreen(Screen):
 
     def say_group(self, group: str) -> None:
         self.notify(self.session.set_group(group))
+
+    def action_region(self) -> None:
+        """Make a region, or change or remove the selected item's (`tui.region_edits`)."""
+        session = self.session
+        item = session.selected_item
+        if item is not None:
+            session.sync_positions()  # the region offered is around where the item is now
+        region = region_edits.proposed_region(session.page, item)
+        old_id = item.region if item is not None and item.region else None
+        title = f"Region {old_id}" if old_id else "New region"
+        self.ask(FormDialog(title, region_edits.region_fields(region, item, new=old_id is None),
+                            region_edits.region_parser(session.page, old_id, item),
+                            dialog_id="region-dialog"),
+                 partial(self.attempt, self.say_region, old_id,
+                         item.id if item is not None else None))
+
+    def say_region(self, old_id: str | None, item_id: str | None, answer: dict) -> None:
+        self.notify(region_edits.put_region(self.session, old_id, answer, item_id))
 
     # -- physics ------------------------------------------------------------------------------
 

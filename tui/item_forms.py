@@ -20,7 +20,7 @@ from floatpage.model.document import (
 )
 from floatpage.model.key_specs import HEX_COLOUR, colour as colour_check, keys_of
 from floatpage.model.page_sizes import PAGE_SIZES_MM
-from floatpage.tui.dialogs.form import Field
+from floatpage.tui.dialogs.form import Field, FieldError
 
 INSERT_CHOICES = [("Text box", "text"), ("Picture…", "picture"), ("Colour block", "block"),
                   ("Calendar month", "calendar"), ("Background…", "background")]
@@ -77,16 +77,19 @@ def parse_form(owners: tuple[type, ...], values: dict[str, Any]) -> dict[str, An
         owner = next(cls for cls in owners if name in {f.name for f in dataclasses.fields(cls)})
         key = next(key for key in keys_of(owner) if key.name == name)
         words = field_words(owner, name)
-        if key.kind == "int":
-            value = whole(raw, words, owner, name)
-        elif key.kind == "number":
-            value = number(raw, words, owner, name)
-        elif key.check is colour_check:
-            value = colour(raw, words)
-        elif isinstance(raw, str) and key.kind == "str" and name != "text":
-            value = checked(owner, name, raw.strip(), words)
-        else:
-            value = checked(owner, name, raw, words)
+        try:
+            if key.kind == "int":
+                value = whole(raw, words, owner, name)
+            elif key.kind == "number":
+                value = number(raw, words, owner, name)
+            elif key.check is colour_check:
+                value = colour(raw, words)
+            elif isinstance(raw, str) and key.kind == "str" and name != "text":
+                value = checked(owner, name, raw.strip(), words)
+            else:
+                value = checked(owner, name, raw, words)
+        except ValueError as error:  # the form puts the cursor on the field it names
+            raise FieldError(name, str(error)) from None
         parsed[name] = value
     return parsed
 
@@ -200,6 +203,23 @@ def parse_edit(values: dict[str, Any]) -> dict[str, Any]:
     return parse_form(EDITED_CLASSES, values)
 
 
+def picture_edit_parser(current_path: str, resolve: Callable[[str], str]
+                        ) -> Callable[[dict[str, Any]], dict[str, Any]]:
+    """`parse_edit` for a picture: a path typed anew goes through ``resolve`` (the session's
+    check of the file: a missing, unreadable or non-picture file is a sentence, and the form
+    stays open); an unchanged path passes as it is, even while its file is missing, so a
+    picture whose file is gone can still have its other fields edited."""
+    def parse(values: dict[str, Any]) -> dict[str, Any]:
+        parsed = parse_edit(values)
+        if parsed.get("path", current_path) != current_path:
+            try:
+                parsed["path"] = resolve(parsed["path"])
+            except ValueError as error:
+                raise FieldError("path", str(error)) from None
+        return parsed
+    return parse
+
+
 def group_fields(item, groups: tuple[str, ...]) -> list[Field]:
     known = f" (this page has {', '.join(groups)})" if groups else ""
     return [Field("group", f"Group name{known}; empty takes {item.id} out", "line", item.group)]
@@ -232,6 +252,10 @@ def export_parser(folder: Path, check: Callable[[Path], None]) -> Callable[[dict
         name = str(values["name"]).strip()
         if not name:
             raise ValueError("type a file name, e.g. card-print.pdf")
+        if name.endswith(("/", os.sep)) or Path(name).name in ("", ".", ".."):
+            # "." showed Python's own words: "PosixPath('.') has an empty name"
+            raise ValueError(f"{name} names a folder; type a file name, e.g. "
+                             f"{os.path.join(name, 'card-print.pdf')}")
         path = Path(name).expanduser()
         if path.suffix.lower() != ".pdf":
             path = path.with_name(path.name + ".pdf")

@@ -114,6 +114,9 @@ COMMANDS: tuple[Command, ...] = (
     Command("G", "group", "Group", "Put the selected item in a group that moves as one "
             "(asks for its name; empty takes it out)", "Anchor", footer="item", rank=6,
             needs_item=True),
+    Command("R", "region", "Region", "Make a region (around the selected item, which keeps "
+            "inside it), or change or remove the selected item's region", "Anchor",
+            footer="item", rank=6),
     Command("space", "toggle_pause", "Pause", "Pause or resume the physics", "Physics",
             footer="both", rank=9),
     Command("r", "reheat", "Reheat", "Reheat the physics so the items spread out again",

@@ -119,15 +119,20 @@ def picture_stand_in(path: str, exists: bool = False) -> str:
 
 
 @lru_cache(maxsize=1024)
-def cut_short(line: str, cells: int) -> str:
+def cut_short(line: str, cells: int, rtl: bool = False) -> str:
     """The line with "…" at its end, in at most ``cells`` cells: at 80x24 the flyer's
-    captions read "Sunfl" and "Coffe", as if that were all of them."""
-    kept, used = "", 0
-    for grapheme in graphemes(line.rstrip()):
+    captions read "Sunfl" and "Coffe", as if that were all of them.  A right-to-left line
+    (in visual order) ends at its left: the "…" goes there, and a cut keeps its right, where
+    it begins (the first letters of a Hebrew or Arabic line were cut instead)."""
+    parts = graphemes(line.strip() if rtl else line.rstrip())
+    kept: list[str] = []
+    used = 0
+    for grapheme in reversed(parts) if rtl else parts:
         if used + cell_width(grapheme) > cells - 1:
             break
-        kept, used = kept + grapheme, used + cell_width(grapheme)
-    return kept + "\u2026"
+        kept.append(grapheme)
+        used += cell_width(grapheme)
+    return "\u2026" + "".join(reversed(kept)).lstrip() if rtl else "".join(kept) + "\u2026"
 
 
 class PagePainter:
@@ -141,7 +146,9 @@ class PagePainter:
         canvas = CellCanvas(p.cols, p.rows, SURROUND)
         self._background(canvas, view)
         self._regions(canvas, view)
-        items = sorted(view.page.items, key=lambda item: (not item.decorative, item.z))
+        # as the PDF prints them (typeset.placed.paint_order): at one z, words over pictures
+        items = sorted(view.page.items, key=lambda item: (
+            not item.decorative, item.z, item.kind in ("text", "calendar")))
         boxes = {item.id: self._box(item, view) for item in view.page.items}
         for item in items:
             self._item(canvas, view, item, boxes[item.id])
@@ -291,10 +298,15 @@ class PagePainter:
         width = col1 - col0
         if width < 1 or first >= row1:
             return
-        lines = [line for paragraph in paragraphs for line in wrapped(paragraph, width)]
+        lines, directions = [], []
+        for paragraph in paragraphs:
+            shown = wrapped(paragraph, width)
+            lines.extend(shown)
+            directions.extend([base_direction(paragraph)] * len(shown))
         rows = row1 - first
         if len(lines) > rows:  # the last line shown ends in "…": the text goes on
-            lines = lines[:rows - 1] + [cut_short(lines[rows - 1], width)]
+            lines = lines[:rows - 1] + [cut_short(lines[rows - 1], width,
+                                                  directions[rows - 1] == "R")]
         share = alignment_share(align, base_direction("".join(paragraphs)))
         for row, line in zip(range(first, row1), lines):
             spare = max(width - sum(cell_width(g) for g in graphemes(line)), 0)

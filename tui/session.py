@@ -12,6 +12,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import itertools
+import math
 import os
 from pathlib import Path
 
@@ -23,7 +24,7 @@ from floatpage.model.document import (
 from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
 from floatpage.model.page_sizes import page_dimensions
-from floatpage.model.picture_files import read_header
+from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
@@ -461,6 +462,25 @@ class EditSession:
             return os.fspath(path)
         return str(copy_into(path, base / "pictures").relative_to(base))
 
+    def typed_picture_path(self, typed: str) -> str:
+        """The path to write for a picture path typed in the edit form (relative to the
+        project's folder, or a full path; `relative_picture_path` then keeps it inside the
+        folder); ValueError names the file it looked at and what to do, when it is missing,
+        unreadable or not a picture (the form shows it and stays open)."""
+        if not typed:
+            raise ValueError("type the picture's file path, e.g. pictures/photo.jpg")
+        if is_merge_placeholder(typed):  # a merge template's, filled per record (as loaded)
+            return typed
+        full = (self.project.base_dir / Path(typed).expanduser()).absolute()
+        header = read_header(full)
+        if header.problem:
+            raise ValueError(f"{full} {header.problem}" + (f": {header.hint}" if header.hint
+                                                            else ""))
+        try:
+            return self.relative_picture_path(full)
+        except (EditError, OSError) as error:  # e.g. a copy into pictures/ that failed
+            raise ValueError(f"{full}: {error}") from None
+
     def delete_selected(self) -> str:
         """Delete the selected item; its followers stay where they are, free.  Returns what
         the editor says of it (a caption freed from its deleted photo used to go unsaid)."""
@@ -608,6 +628,14 @@ class EditSession:
             return
         self.refuse_bad_group_or_region(item, changes)
         self.checkpoint(f"edit {item_id}")
+        if "path" in changes and isinstance(item, PictureItem) \
+                and changes.get("lock_aspect", item.lock_aspect):
+            aspect = picture_aspect(self.project.base_dir / changes["path"])
+            if aspect:  # another photo's shape, on the same area of paper
+                w = math.sqrt(item.w * item.h / aspect)
+                scale = min(1.0, 0.9 * self.page.width_mm / w,
+                            0.9 * self.page.height_mm / (w * aspect))
+                changes["w"], changes["h"] = w * scale, w * aspect * scale
         for key, value in changes.items():
             setattr(item, key, value)
         if gamma_changes:
@@ -645,9 +673,11 @@ class EditSession:
         return (f'"{item.id}" joined group "{group}": its members move as one' if group
                 else f'"{item.id}" left its group')
 
-    def rebuild_engine(self) -> None:
-        """Rebuild the engine from the model after an edit the engine has no call for."""
-        self.sync_positions()
+    def rebuild_engine(self, *, sync: bool = True) -> None:
+        """Rebuild the engine from the model after an edit the engine has no call for;
+        ``sync=False`` keeps positions the edit itself wrote into the model."""
+        if sync:
+            self.sync_positions()
         self.held_id = None
         self.engine = self._build_engine()
         self.engine.reheat()

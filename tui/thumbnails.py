@@ -14,24 +14,45 @@ import numpy as np
 
 WORKING_SIZE = 256  # longest side of the decoded copy that thumbnails are cut from
 LEVEL_STEP = 17  # 16 levels a channel (0, 17, ..., 255): neighbouring cells share colours more
+# A box further than this from the picture's shape shows its middle, cropped, as the PDF
+# prints it (typeset.placed.framed_picture); nearer, cells rounding the box's size would
+# crop a picture of the very shape by a cell.
+CROP_ABOVE = 0.05
 
 
 @lru_cache(maxsize=64)
 def _working_copy(path: str, mtime_ns: int):
+    """The decoded copy, or None for a file the loader would refuse (the editor opens a
+    project with such a picture, to mend it): a 200-megapixel PNG is never decoded here."""
     from PIL import Image
 
-    with Image.open(path) as image:
-        image.draft("RGB", (WORKING_SIZE, WORKING_SIZE))  # JPEG: decode at reduced scale, fast
-        image = image.convert("RGB")
-        image.thumbnail((WORKING_SIZE, WORKING_SIZE))
-        return image.copy()
+    from floatpage.model.picture_files import read_header
+
+    if read_header(Path(path)).problem:
+        return None
+    try:
+        with Image.open(path) as image:
+            image.draft("RGB", (WORKING_SIZE, WORKING_SIZE))  # JPEG: decode at reduced scale
+            image = image.convert("RGB")
+            image.thumbnail((WORKING_SIZE, WORKING_SIZE))
+            return image.copy()
+    except Exception:  # a PDF, a JPEG cut short: remembered until the file changes, as a
+        return None   # failure tried again every frame cost a header read and a decode
 
 
 @lru_cache(maxsize=512)
 def _thumbnail(path: str, mtime_ns: int, width_px: int, height_px: int) -> np.ndarray:
     from PIL import Image
 
-    image = _working_copy(path, mtime_ns).resize((width_px, height_px), Image.Resampling.BOX)
+    from PIL import ImageOps
+
+    image = _working_copy(path, mtime_ns)
+    if image is None:
+        raise ValueError(f"{path} is not a picture the editor shows")
+    if abs(image.width / image.height / (width_px / height_px) - 1) > CROP_ABOVE:
+        image = ImageOps.fit(image, (width_px, height_px), Image.Resampling.BOX)
+    else:
+        image = image.resize((width_px, height_px), Image.Resampling.BOX)
     # Fewer distinct colours: a photo's pixels each had a colour of their own, so every cell
     # of a moved picture cost both its colour codes over the link; with 16 levels a channel,
     # runs of equal cells (sky, walls) go as one code, and pure colours stay pure.

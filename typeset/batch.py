@@ -24,8 +24,8 @@ from floatpage.typeset.compile import compile_pdf, engine_path
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FaceKey, fallback_candidates
 from floatpage.typeset.pdf_split import split_records
-from floatpage.typeset.pictures import cache_dir, materialize
-from floatpage.typeset.placed import PlacedDocument
+from floatpage.typeset.pictures import cache_dir
+from floatpage.typeset.placed import PlacedDocument, materialize_pictures
 from floatpage.typeset.templates import make_environment, tex_path
 
 
@@ -189,12 +189,7 @@ def typeset_run(documents: list[PlacedDocument], *, timeout_s: float) -> list[by
     """One PDF per document, from one engine run."""
     engine_path()
     for document in documents:
-        for plan in document.pictures:
-            try:
-                materialize(plan)
-            except OSError as error:
-                raise RenderError(f'picture "{plan.source}" could not be converted: '
-                                  f"{error}") from None
+        materialize_pictures(document)
     with build_folder() as build:
         tex = batch_tex(documents, Path(build) / "fonts")
         # Markers count from 0 in every record: alone, an error names the record's item.

@@ -1,7 +1,9 @@
 """Where a line may break inside a run of text, beyond the spaces between words.
 
 Chinese and Japanese break between characters; a French punctuation mark set after a space
-never starts a line alone.  `typeset.fit` asks these before its greedy breaking.
+never starts a line alone.  `pieces` is the one rule both line breakers follow: the
+typesetter's (`typeset.fit`) and the editor's preview (`tui.cell_text`), so the preview
+breaks a line where the PDF does.
 """
 
 from __future__ import annotations
@@ -81,3 +83,13 @@ def break_units(word: str) -> list[str]:
             units.append(cluster)
         previous = cluster
     return units
+
+
+def pieces(line: str) -> list[tuple[str, bool]]:
+    """What a line of text (no newline) may be broken into: each piece a line may start with,
+    and whether it is joined to the piece before it (no space between them, as inside a
+    CJK sentence).  Runs of spaces are one space; see `tied` and `break_units`."""
+    out: list[tuple[str, bool]] = []
+    for word in tied([word for word in line.split(" ") if word]):
+        out.extend((unit, index > 0) for index, unit in enumerate(break_units(word)))
+    return out

@@ -25,7 +25,7 @@ from bisect import bisect_right
 from dataclasses import dataclass
 from typing import Protocol
 
-from floatpage.typeset.break_points import break_units, clusters, tied
+from floatpage.typeset.break_points import clusters, pieces
 
 LEADING = 1.2   # baseline distance / font size
 MIN_PT = 6.0    # the smallest size we call legible; below it we warn
@@ -126,13 +126,13 @@ class _EmInk:
         self.left, self.right, self.top, self.bottom = 0.0, width, 1 - descent, descent
 
 
-def paragraphs(text: str) -> list[list[str]]:
-    """Words of each line of `text`; a newline always breaks, runs of spaces are one space,
-    and a space before or after a lone punctuation mark is no break (see `tied`)."""
+def paragraphs(text: str) -> list[list[tuple[str, bool]]]:
+    """The pieces of each line of `text` (`break_points.pieces`: a word, or a CJK character,
+    and whether it is joined to the one before); a newline always breaks."""
     text = text.strip(" \n")
     if not text:
         return []
-    return [tied([word for word in line.split(" ") if word]) for line in text.split("\n")]
+    return [pieces(line) for line in text.split("\n")]
 
 
 def break_word(word: str, limit_em: float, metrics: Metrics) -> list[str]:
@@ -148,7 +148,7 @@ def break_word(word: str, limit_em: float, metrics: Metrics) -> list[str]:
     return pieces
 
 
-def segments_of(paras: list[list[str]], metrics: Metrics, break_limit_em: float | None
+def segments_of(paras: list[list[tuple[str, bool]]], metrics: Metrics, break_limit_em: float | None
                 ) -> tuple[list[_Segment], tuple[str, ...]]:
     """Build segments; with a limit, words wider than it are broken and each piece gets its line."""
     space = metrics.space_em
@@ -156,21 +156,19 @@ def segments_of(paras: list[list[str]], metrics: Metrics, break_limit_em: float 
     ink_of = getattr(metrics, "ink_em", None)
     segments: list[list[tuple[str, bool]]] = []  # (word, joined to the one before: no space)
     broken = []
-    for words in paras:
+    for para in paras:
         current: list[tuple[str, bool]] = []
-        for whole in words:
-            for index, word in enumerate(break_units(whole)):
-                joined = index > 0
-                if break_limit_em is not None and metrics.advance_em(word) > break_limit_em:
-                    pieces = break_word(word, break_limit_em, metrics)
-                    if len(pieces) > 1:
-                        broken.append(word)
-                        current.append((pieces[0], joined))
-                        segments.append(current)
-                        segments.extend([(piece, False)] for piece in pieces[1:-1])
-                        current = [(pieces[-1], False)]
-                        continue
-                current.append((word, joined))
+        for word, joined in para:
+            if break_limit_em is not None and metrics.advance_em(word) > break_limit_em:
+                parts = break_word(word, break_limit_em, metrics)
+                if len(parts) > 1:
+                    broken.append(word)
+                    current.append((parts[0], joined))
+                    segments.append(current)
+                    segments.extend([(part, False)] for part in parts[1:-1])
+                    current = [(parts[-1], False)]
+                    continue
+            current.append((word, joined))
         segments.append(current)
     built = []
     for pairs in segments:

@@ -12,7 +12,7 @@ import stat
 from pathlib import Path
 from typing import Iterable
 
-from floatpage.model.atomic_file import owner_of, read_only
+from floatpage.model.atomic_file import held_by_system, owner_of, read_only
 from floatpage.model.document import Project
 from floatpage.model.project_lock import lock_path_for
 from floatpage.typeset.errors import RenderError
@@ -101,6 +101,9 @@ def check_outputs(outputs: Iterable[Path | None], inputs: Iterable[Path],
         # after the input tests, so `-o card.toml` on a read-only project is not told to
         # make the project writable
         if mode is not None and read_only(output):
+            held = held_by_system(output)
+            if held:
+                raise RenderError(f"{output}: will not write there, because {held}")
             if mode & 0o222:  # writable by its owner, who is someone else
                 raise RenderError(f"{output}: will not write there, because you may not write "
                                   f"it (it belongs to {owner_of(output)}); name another file")

@@ -24,6 +24,7 @@ from pathlib import Path
 
 from PIL import Image, ImageOps, UnidentifiedImageError
 
+from floatpage.model.picture_files import pdf_damage
 from floatpage.model.save import atomic_write
 from floatpage.typeset.errors import RenderError
 
@@ -61,7 +62,7 @@ class PicturePlan:
 
     source: Path
     cache_path: Path
-    action: str              # "copy", "convert", "rotate", "downsample"
+    action: str              # "copy", "mend" (a damaged PDF), "convert", "rotate", "downsample"
     pixel_size: tuple[int, int]  # after rotation, cropping and downsampling; (0, 0) for PDF
     target_size: tuple[int, int] | None = None
     crop_box: tuple[int, int, int, int] | None = None  # (left, top, right, bottom), upright
@@ -127,6 +128,8 @@ def plan_picture(source: Path, w_mm: float, h_mm: float, label: str,
                           f"{error.strerror or error} (fix the path in the project file)") from None
     digest = hashlib.sha256(data).hexdigest()[:32]
     if data[:5] == b"%PDF-":
+        if pdf_damage(source):  # LuaTeX reads no damaged PDF; qpdf mends what it can
+            return PicturePlan(source, folder / f"{digest}-mended.pdf", "mend", (0, 0))
         return PicturePlan(source, folder / f"{digest}.pdf", "copy", (0, 0))
     try:
         with Image.open(source) as image:
@@ -185,6 +188,14 @@ def materialize(plan: PicturePlan) -> Path:
     plan.cache_path.parent.mkdir(parents=True, exist_ok=True)
     if plan.action == "copy":
         atomic_write(plan.cache_path, plan.source.read_bytes(), backup=False)
+        return plan.cache_path
+    if plan.action == "mend":
+        import pikepdf
+
+        out = BytesIO()
+        with pikepdf.open(plan.source) as pdf:
+            pdf.save(out, deterministic_id=True)
+        atomic_write(plan.cache_path, out.getvalue(), backup=False)
         return plan.cache_path
     with Image.open(plan.source) as opened:
         opened.seek(0)  # the first frame of an animation

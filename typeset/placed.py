@@ -20,12 +20,14 @@ from floatpage.model.schema import complaints
 from floatpage.typeset.calendar_panel import Rect, layout_calendar
 from floatpage.model.picture_files import is_merge_placeholder
 from floatpage.typeset.errors import RenderError
-from floatpage.typeset.pictures import PicturePlan, plan_picture
+from floatpage.typeset.pictures import PicturePlan, materialize, plan_picture
 from floatpage.typeset.templates import SAFE_PATH
 from floatpage.typeset.fonts import FaceKey, font_path, metrics_for
 from floatpage.typeset.text_layout import (
-    RunGroup, face_for, fit_in_box, fit_warnings, missing_glyph_warning, place_lines,
+    RunGroup, face_for, fit_in_box, fit_warnings, missing_glyph_warning,
+    place_lines,
 )
+from floatpage.typeset.roles import RoleFits, fit_item
 
 
 @dataclass(frozen=True)
@@ -54,7 +56,7 @@ class PlacedPicture(PlacedItem):
     w_mm: float
     h_mm: float
     plan: PicturePlan
-    clip: Rect | None = None  # for a background picture that covers (and overflows) the page
+    clip: Rect | None = None  # its frame, where the picture covers (and overflows) it
 
 
 @dataclass(frozen=True)
@@ -115,15 +117,42 @@ def rect_of(item) -> Rect:
     return Rect(item.x - item.w / 2, item.y - item.h / 2, item.x + item.w / 2, item.y + item.h / 2)
 
 
-def place_text(item: TextItem, label: str, warnings: list[str]) -> PlacedText | None:
-    face = face_for(item.font, item.bold, item.italic)
-    fit, missing, face = fit_in_box(item.text, face, item.w, item.h)
+def place_text(item: TextItem, label: str, warnings: list[str],
+               roles: RoleFits | None = None) -> PlacedText | None:
+    """The text's lines, at its own size (`size_pt`), its role's (``roles``, from
+    typeset.roles) or the largest its box holds."""
+    fit, missing, face = roles.fit_of(item) if roles else fit_item(item, {})
     warnings += fit_warnings(label, face, fit, missing)
+    if item.size_pt and fit.lines and fit.font_pt < item.size_pt * (1 - 1e-3):
+        warnings.append(f"{label}: the text does not fit its box at its own size of "
+                        f"{item.size_pt:g} pt, so it is set at {fit.font_pt:.1f} pt (enlarge "
+                        "the box, shorten the text or lower its size)")
     if not fit.lines:
         return None
     runs = place_lines(fit, None, item.x - item.w / 2, item.y - item.h / 2, item.h,
-                       widths_mm=item.w, align=item.align)
+                       widths_mm=item.w, align=item.align,
+                       block_em=roles.block_of(item, fit) if roles else None)
     return PlacedText(item.id, label, (RunGroup(face, fit.font_pt, item.color, runs),))
+
+
+# A frame whose shape is within this of the picture's is filled as it is (a rounding of the
+# size to 0.01 mm is no reason to crop a picture by a pixel).
+SAME_SHAPE = 0.002
+
+
+def framed_picture(item_id: str, label: str, frame: Rect, plan: PicturePlan) -> PlacedPicture:
+    """The picture filling its frame, never distorted: in a frame of another shape (a box the
+    user drew, or one the editor let change shape) it is scaled, proportions kept, to cover
+    the frame, centred, and clipped to it, as a layout program's "fill frame
+    proportionally".  Stretched to the frame, photos printed up to 65 % squashed.  A PDF's
+    own shape is not read here: it fills its frame as it is drawn."""
+    w, h = frame.right_mm - frame.left_mm, frame.bottom_mm - frame.top_mm
+    if plan.pixel_size == (0, 0) or abs(plan.aspect / (w / h) - 1) <= SAME_SHAPE:
+        return PlacedPicture(item_id, label, frame.left_mm, frame.top_mm, w, h, plan)
+    scale = max(w / plan.aspect, h)  # the height of the picture drawn
+    drawn_w, drawn_h = scale * plan.aspect, scale
+    return PlacedPicture(item_id, label, frame.left_mm + (w - drawn_w) / 2,
+                         frame.top_mm + (h - drawn_h) / 2, drawn_w, drawn_h, plan, clip=frame)
 
 
 def place_calendar(item: CalendarItem, label: str, warnings: list[str]) -> PlacedCalendar:
@@ -134,6 +163,12 @@ def place_calendar(item: CalendarItem, label: str, warnings: list[str]) -> Place
                           layout.weekend)
 
 
+def merge_template_error(label: str, path: str) -> RenderError:
+    return RenderError(f'{label}: picture "{path}" is filled from a data column; this is a '
+                       "merge template: make its documents with `floatpage merge TEMPLATE DATA "
+                       "-o OUTDIR`")
+
+
 def place_background(project: Project, page: Page) -> list:
     background = page.background
     if background is None:
@@ -142,6 +177,9 @@ def place_background(project: Project, page: Page) -> list:
         f' (picture file "{background.picture}")' if background.picture else '')
     whole = Rect(0.0, 0.0, page.width_mm, page.height_mm)
     if background.picture:
+        # as for a picture item (it said "cannot be read", of the name with its braces)
+        if is_merge_placeholder(background.picture, project.base_dir):
+            raise merge_template_error(f'the background of page "{page.id}"', background.picture)
         plan = plan_picture(project.base_dir / background.picture, page.width_mm, page.height_mm,
                             label, cover=True)
         # Cover the page, keeping the picture's proportions; the clip trims the overflow.
@@ -157,27 +195,33 @@ def place_background(project: Project, page: Page) -> list:
     return []
 
 
+def paint_order(index: int, item) -> tuple[int, bool, int]:
+    """Items print by z; at one z, words (texts, calendars) over pictures and blocks, then in
+    file order.  In file order alone, a text listed before a picture it met (a page too
+    full to part them, or a title put on a photo) printed hidden under it."""
+    return (item.z, isinstance(item, (TextItem, CalendarItem)), index)
+
+
 def place_document(project: Project) -> PlacedDocument:
     warnings: list[str] = []
     pages = []
+    roles = RoleFits.of(project)
     for page in project.pages:
         placed_page = PlacedPage(page.id, page.width_mm, page.height_mm,
                                  background=place_background(project, page))
-        ordered = sorted(enumerate(page.items), key=lambda pair: (pair[1].z, pair[0]))
+        ordered = sorted(enumerate(page.items), key=lambda pair: paint_order(*pair))
         for _, item in ordered:
             label = item_label(item, page)
             check_item(item, label)
             if isinstance(item, TextItem):
-                made = place_text(item, label, warnings)
+                made = place_text(item, label, warnings, roles)
             elif isinstance(item, PictureItem):
-                if is_merge_placeholder(item.path):
-                    raise RenderError(f'{label}: picture "{item.path}" is filled from a data '
-                                      "column; this is a merge template: make its documents "
-                                      "with `floatpage merge TEMPLATE DATA -o OUTDIR`")
-                left, top = item.x - item.w / 2, item.y - item.h / 2
-                plan = plan_picture(project.base_dir / item.path, item.w, item.h, label)
-                made = PlacedPicture(item.id, f'{label} (picture file "{item.path}")', left, top,
-                                     item.w, item.h, plan)
+                if is_merge_placeholder(item.path, project.base_dir):
+                    raise merge_template_error(label, item.path)
+                plan = plan_picture(project.base_dir / item.path, item.w, item.h, label,
+                                    cover=True)
+                made = framed_picture(item.id, f'{label} (picture file "{item.path}")',
+                                      rect_of(item), plan)
             elif isinstance(item, BlockItem):
                 made = PlacedBlock(item.id, label, rect_of(item), item.color,
                                    min(1.0, max(0.0, float(item.opacity))))
@@ -217,10 +261,27 @@ def place_document(project: Project) -> PlacedDocument:
 def text_warnings(project: Project) -> list[str]:
     """Fit warnings for texts and calendars only (no picture files are read)."""
     warnings: list[str] = []
+    roles = RoleFits.of(project)
     for page in project.pages:
         for item in page.items:
             if isinstance(item, TextItem):
-                place_text(item, item_label(item, page), warnings)
+                place_text(item, item_label(item, page), warnings, roles)
             elif isinstance(item, CalendarItem):
                 place_calendar(item, item_label(item, page), warnings)
     return warnings
+
+
+def materialize_pictures(document: PlacedDocument) -> None:
+    """Write every picture's cached file; one that cannot be converted (a PNG whose pixels
+    stop short, which its header check cannot see) is named by its item and file: the message
+    was 'picture "/abs/path" could not be converted: image file is truncated', no item, no fix."""
+    labels = {placed.plan.cache_path: placed.label for page in document.pages
+              for placed in page.background + page.items if isinstance(placed, PlacedPicture)}
+    for plan in document.pictures:
+        try:
+            materialize(plan)
+        except (OSError, ValueError) as error:
+            label = labels.get(plan.cache_path, f'picture "{plan.source}"')
+            raise RenderError(f"{label}: the picture could not be converted ({error}); it may "
+                              "be cut short or damaged: export it again, or use another "
+                              "picture") from None

@@ -21,12 +21,14 @@ from floatpage.model.save import atomic_write
 from floatpage.model.picture_files import decode_warning, is_merge_placeholder, read_header
 from floatpage.typeset.build_folder import build_folder
 from floatpage.typeset.compile import compile_pdf, engine_path
+from floatpage.typeset.contrast import contrast_notes
 from floatpage.typeset.output_paths import check_outputs, project_companions, project_inputs
 from floatpage.typeset.print_marks import for_print
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FontNotFoundError
-from floatpage.typeset.pictures import cache_dir, materialize
-from floatpage.typeset.placed import PlacedDocument, place_document, text_warnings
+from floatpage.typeset.pictures import cache_dir
+from floatpage.typeset.placed import (PlacedDocument, materialize_pictures, place_document,
+                                      text_warnings)
 from floatpage.typeset.templates import make_environment
 
 
@@ -37,6 +39,7 @@ class RenderReport:
     warnings: list[str] = field(default_factory=list)
     seconds: float = 0.0
     engine_seconds: float = 0.0
+    notes: list[str] = field(default_factory=list)  # said, not wrong: faint text (contrast)
 
 
 def placed_document(project: Project) -> PlacedDocument:
@@ -77,6 +80,15 @@ def text_fit_warnings(project: Project) -> list[str]:
         raise RenderError(str(error)) from None
 
 
+def faint_text_notes(project: Project) -> list[str]:
+    """For `floatpage check`: texts too faint against what lies behind them
+    (typeset.contrast); none for a merge template, whose pictures are not known yet."""
+    try:
+        return contrast_notes(placed_document(project))
+    except RenderError:
+        return []
+
+
 def count_pages(build: Path, expected: int) -> int:
     """Pages LuaLaTeX says it wrote ("Output written on main.pdf (12 pages, ...)")."""
     log = (build / "main.log").read_text(encoding="utf-8", errors="replace")
@@ -89,13 +101,13 @@ def picture_warnings(project: Project) -> list[str]:
     found = []
     for page in project.pages:
         for item in page.items:
-            if item.kind == "picture" and not is_merge_placeholder(item.path):
+            if item.kind == "picture" and not is_merge_placeholder(item.path, project.base_dir):
                 problem = decode_warning(project.base_dir / item.path)
                 if problem:
                     found.append(f'item "{item.id}" on page "{page.id}": picture '
                                  f'"{item.path}": {problem}')
         if page.background is not None and page.background.picture and \
-                not is_merge_placeholder(page.background.picture):
+                not is_merge_placeholder(page.background.picture, project.base_dir):
             problem = decode_warning(project.base_dir / page.background.picture)
             if problem:
                 found.append(f'page "{page.id}" background "{page.background.picture}": {problem}')
@@ -125,7 +137,7 @@ def resolution_notes(project: Project) -> list[str]:
     notes = []
     for page in project.pages:
         for item in page.items:
-            if item.kind != "picture" or is_merge_placeholder(item.path):
+            if item.kind != "picture" or is_merge_placeholder(item.path, project.base_dir):
                 continue
             found = print_dpi(project.base_dir / item.path, item.w, item.h)
             if found is not None and found[1] < BLOCKY_DPI:
@@ -176,15 +188,12 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     say("laying out text")
     document = placed_document(project)
     document.warnings.extend(picture_warnings(project))
+    notes = contrast_notes(document)
     say("preparing pictures")
-    for plan in document.pictures:
-        try:
-            materialize(plan)
-        except OSError as error:
-            raise RenderError(f'picture "{plan.source}" could not be converted: {error}') from None
+    materialize_pictures(document)
     fragment = tex_from_placed(document, fragment=True) if fragment_out is not None else ""
     if print_bleed_mm is not None:
-        document = for_print(document, project, print_bleed_mm)
+        document = for_print(document, print_bleed_mm)
     tex = tex_from_placed(document)
     say("typesetting with LuaLaTeX")
     engine_started = time.perf_counter()
@@ -204,4 +213,4 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     log_path_for(out_pdf).unlink(missing_ok=True)  # a failed render's log is now stale
     say(f"wrote {out_pdf}")
     return RenderReport(out_pdf, pages, document.warnings,
-                        time.perf_counter() - started, engine_seconds)
+                        time.perf_counter() - started, engine_seconds, notes)

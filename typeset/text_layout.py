@@ -129,16 +129,26 @@ def printable_text(text: str, metrics: FontMetrics) -> tuple[str, list[str]]:
 
 
 def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: float,
-                h_mm: float, *, widths_mm: float | None = None,
-                align: str = "start") -> tuple[Run, ...]:
+                h_mm: float, *, widths_mm: float | None = None, align: str = "start",
+                block_em: tuple[float, float] | None = None) -> tuple[Run, ...]:
     """Runs for fitted lines: block centred vertically in the box, lines at the start of the
     text's direction, or set as ``align`` says (model.key_specs.alignment_share) in a box
-    ``widths_mm`` wide."""
+    ``widths_mm`` wide.
+
+    The block centred reaches from ``block_em``'s first (em above the first baseline) to its
+    second (em below the last), by default the lines' own ink.  Texts of one role pass the
+    role's (typeset.roles.role_blocks), so an accent on a capital ("Túlipas") no longer
+    lowers one tag's baselines below its neighbours'; the text's own ink still stays inside
+    its box."""
     direction = base_direction("".join(fit.lines))
     share = alignment_share(align, direction) if widths_mm is not None else 0.0
     size = fit.font_pt
-    spare_mm = max(0.0, h_mm - fit.height_pt * MM_PER_PT) / 2
-    first_baseline_mm = top_mm + spare_mm + size * fit.top_em * MM_PER_PT
+    top_em, bottom_em = block_em or (fit.top_em, fit.bottom_em)
+    between_mm = (len(fit.lines) - 1) * fit.leading * size * MM_PER_PT
+    block_mm = (top_em + bottom_em) * size * MM_PER_PT + between_mm
+    first_baseline_mm = top_mm + max(0.0, h_mm - block_mm) / 2 + size * top_em * MM_PER_PT
+    lowest = top_mm + h_mm - size * fit.bottom_em * MM_PER_PT - between_mm  # its ink inside
+    first_baseline_mm = max(min(first_baseline_mm, lowest), top_mm + size * fit.top_em * MM_PER_PT)
     runs = []
     offsets = fit.line_offsets_pt or (0.0,) * len(fit.lines)
     for index, (line, width_pt, offset_pt) in enumerate(zip(fit.lines, fit.line_widths_pt,
@@ -154,13 +164,17 @@ def place_lines(fit: TextFit, metrics: FontMetrics, left_mm: float, top_mm: floa
     return tuple(runs)
 
 
-def fit_in_box(text: str, face: FaceKey, w_mm: float, h_mm: float
-               ) -> tuple[TextFit, list[str], FaceKey]:
-    """Fit text in a w x h mm box with the fonts that will set it; also the missing chars
-    and the face (with its fallback chain) to set it in."""
+def fit_in_box(text: str, face: FaceKey, w_mm: float, h_mm: float, *,
+               max_pt: float | None = None) -> tuple[TextFit, list[str], FaceKey]:
+    """Fit text in a w x h mm box with the fonts that will set it, at most ``max_pt`` (a
+    role's or the user's size: exactly that where it fits); also the missing chars and the
+    face (with its fallback chain) to set it in."""
     printable, chained, missing = rich_text(text, face)
     metrics = chain_metrics_for(chained)
-    return fit_text(printable, Box(w_mm * PT_PER_MM, h_mm * PT_PER_MM), metrics), missing, chained
+    box = Box(w_mm * PT_PER_MM, h_mm * PT_PER_MM)
+    if max_pt is None:
+        return fit_text(printable, box, metrics), missing, chained
+    return fit_text(printable, box, metrics, max_pt=max_pt), missing, chained
 
 
 # Ends every warning of a text that does not fit its box (`floatpage merge` fails the record).

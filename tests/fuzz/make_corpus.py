@@ -239,6 +239,12 @@ def files() -> dict[str, bytes]:
         out[f"picture-{stem}"] = picture_project(f"pictures/{name}")
         out[f"background-{stem}"] = picture_project(f"pictures/{name}", background=True)
     out["picture-good-pdf"] = picture_project("pictures/good.pdf")
+    # PDFs LuaTeX cannot place though check passed them (fifteenth session): a page wider than
+    # TeX's largest length, a speck of a crop box, and a broken xref that qpdf mends
+    for stem in ("pdf-page-10-metres", "pdf-crop-speck", "pdf-broken-xref"):
+        out[f"picture-{stem}"] = picture_project(f"pictures/{stem}.pdf")
+    # a real file whose name has braces is a picture, not a merge field
+    out["picture-name-with-braces"] = picture_project("pictures/photo {1}.png")
     piled = "".join(f'\n[[pages.items]]\nid = "q{i}"\nkind = "block"\nx = 74.0\ny = 105.0\n'
                     f"w = 2.0\nh = 2.0\n" for i in range(2000))
     out["items-2000-piled"] = HEAD.format(**DEFAULTS) + piled  # 2 million pairs: 270 s, refused
@@ -277,7 +283,30 @@ def pictures() -> dict[str, bytes]:
         "one-dpi.jpg": saved(Image.new("RGB", (300, 200), "blue"), "JPEG", dpi=(1, 1)),
         "strip-1x60000.png": saved(Image.new("L", (1, 60_000), 128), "PNG", optimize=True),
         "good.pdf": saved(Image.new("RGB", (100, 50), "green"), "PDF"),
+        **hostile_pdfs(saved(Image.new("RGB", (100, 50), "green"), "PDF")),
+        "photo {1}.png": saved(Image.new("RGB", (60, 40), "orange"), "PNG"),
     }
+
+
+def hostile_pdfs(good: bytes) -> dict[str, bytes]:
+    import re
+    from io import BytesIO
+
+    import pikepdf
+
+    def boxed(key: str, box: list[float]) -> bytes:
+        with pikepdf.open(BytesIO(good)) as pdf:
+            pdf.pages[0][key] = pikepdf.Array(box)
+            out = BytesIO()
+            pdf.save(out, deterministic_id=True)
+        return out.getvalue()
+
+    start = re.search(rb"startxref\s+(\d+)", good)
+    broken = good[:start.start()] + b"startxref\n" + str(int(start.group(1)) + 7).encode() + \
+        b"\n%%EOF\n"
+    return {"pdf-page-10-metres.pdf": boxed("/MediaBox", [0, 0, 28346, 100]),
+            "pdf-crop-speck.pdf": boxed("/CropBox", [0, 0, 0.01, 0.01]),
+            "pdf-broken-xref.pdf": broken}
 
 
 def main() -> None:

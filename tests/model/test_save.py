@@ -240,3 +240,32 @@ def test_a_new_file_gets_the_usual_permissions_not_mkstemps_0600(tmp_path):
     finally:
         os.umask(old)
     assert path.stat().st_mode & 0o777 == 0o644
+
+
+def test_a_key_added_and_a_first_region_keep_the_files_blank_lines(tmp_path):
+    """The editor joined an item to a group and made the page's first region: the save wrote
+    `group = "g"` after the blank line that ends the item's table, and the new
+    `[[pages.regions]]` table jammed against the next `[[pages]]` (user walk 5)."""
+    from floatpage.model.document import Region
+
+    path = tmp_path / "card.toml"
+    path.write_text(HAND_WRITTEN + "\n[[pages]]\nid = \"back\"\nsize = \"5x8in\"\n")
+    project = load_project(path)
+    project.pages[0].items[0].group = "g"
+    project.pages[0].regions.append(Region("top", 0.0, 0.0, 100.0, 100.0))
+    save_project(project)
+    text = path.read_text()
+    assert 'color = "#ff8800"\ngroup = "g"\n\n[[pages.regions]]\n' in text, text
+    assert "h = 100.0\n\n[[pages]]\nid = \"back\"" in text, text
+    assert load_project(path).pages[0].region("top").w == 100.0
+    path.write_text(HAND_WRITTEN + '\ngroup = "g"\n[[pages]]\nid = "back"\nsize = "5x8in"\n')
+    project = load_project(path)  # as an older save left it: the group after the blank line
+    project.pages[0].regions.append(Region("top", 0.0, 0.0, 100.0, 100.0))
+    save_project(project)
+    assert "h = 100.0\n\n[[pages]]\nid = \"back\"" in path.read_text(), path.read_text()
+    path.write_text(HAND_WRITTEN)  # the file's only page: the region after a blank line
+    project = load_project(path)
+    project.pages[0].regions.append(Region("top", 0.0, 0.0, 100.0, 100.0))
+    save_project(project)
+    text = path.read_text()
+    assert 'color = "#ff8800"\n\n[[pages.regions]]\n' in text and text.endswith("h = 100.0\n")

@@ -591,7 +591,8 @@ async def test_a_project_whose_picture_is_gone_opens_and_says_what_to_do(project
     async with editor(project_path) as (app, pilot):
         shown = [n for n in app._notifications if n.title == "Pictures not found"]
         assert shown and 'item "photo": picture file "pictures/photo.png" is missing' \
-            in shown[0].message and "delete these items (Del)" in shown[0].message
+            in shown[0].message and "delete these items (Del)" in shown[0].message \
+            and "give each its new path (Tab to it, Enter: Picture file)" in shown[0].message
         text = "\n".join(screen_of(app).preview.text_lines())
         assert "missing" in text and "photo.png" in text, text
         screen_of(app).selected_id = "photo"

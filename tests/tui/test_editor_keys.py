@@ -591,3 +591,17 @@ async def test_a_dialog_error_wraps_instead_of_being_cut_at_the_dialog_edge(proj
         shown = "".join(error.render_line(y).text for y in range(error.size.height))
         assert "#1f77b4" in shown, shown
         assert error.region.right <= error.parent.content_region.right
+
+
+async def test_the_picture_dialog_names_where_it_looked(project_path):
+    """A typed path to nothing said "no file at pics/x.jpg": now the full path, and what to
+    do (user walk 5)."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("p", "tab")
+        await type_text(pilot, "pics/x.jpg")
+        await pilot.press("enter")
+        error = str(app.screen.query_one("#picture-error").render())
+        assert str(project_path.parent / "pics" / "x.jpg") in error
+        assert "not found" in error and "pick a file in the tree" in error
+        await pilot.press("ctrl+a", "ctrl+k", "enter")
+        assert "type a path" in str(app.screen.query_one("#picture-error").render())

@@ -32,3 +32,23 @@ async def test_the_preview_draws_cjk_and_hebrew_readably(tmp_path):
         assert "日本" in text and "こんにちは" in text and "?" not in text
         assert "םולש" in text
         assert all(strip.cell_length == preview.size.width for strip in preview.strips())
+
+
+def test_a_right_to_left_line_cut_short_keeps_its_beginning():
+    """The "…" of a line cut short goes where the line ends: at the left of a Hebrew line,
+    whose first word, at the right, is kept (user walk 5: it was cut off instead)."""
+    from floatpage.tui.page_painter import cut_short
+    line = wrap_cells("שלום עולם יפה מאוד", 9)[0]
+    assert line == "םלוע םולש"
+    assert cut_short(line, 6, True) == "…םולש"
+    assert cut_short("Hello world", 6) == "Hello…"
+
+
+async def test_the_preview_cuts_a_hebrew_text_at_its_left(tmp_path):
+    path = tmp_path / "card.toml"
+    save_project(Project(pages=[Page(id="p", items=[
+        TextItem(id="he", x=105.0, y=100.0, w=40.0, h=9.0,
+                 text="שלום עולם יפה מאוד וגם עוד מילים רבות מאוד")])]), path)
+    async with editor(path) as (app, pilot):
+        rows = [row for row in app.editor.preview.text_lines() if "םולש" in row]
+        assert rows and rows[0].strip().startswith("…") and rows[0].strip().endswith("םולש")

@@ -1,6 +1,6 @@
 """`render --print`: the real PDF has TrimBox and BleedBox where the page is, the background
-and `bleed = true` items reach into the bleed, other items do not, and crop marks stand
-outside the bleed.  Read back with pdfplumber and with pixels from pdftoppm."""
+and every block or picture that meets the page's edge reach into the bleed, other items do
+not, and crop marks stand outside the bleed.  Read back with pdfplumber and with pixels from pdftoppm."""
 
 from __future__ import annotations
 
@@ -27,12 +27,16 @@ def printed(tmp_path_factory):
     folder = tmp_path_factory.mktemp("print")
     Image.new("RGB", (200, 100), (250, 200, 0)).save(folder / "sun.png")
     Image.new("RGB", (100, 100), (120, 60, 200)).save(folder / "moon.png")
+    tall = Image.new("RGB", (100, 300), (0, 160, 0))  # green, its top quarter red
+    tall.paste((200, 0, 0), (0, 0, 100, 75))
+    tall.save(folder / "tall.png")
     page = Page(id="p", size="custom", width_mm=W, height_mm=H, background=Background(color="#ff0000"),
                 items=[BlockItem(id="left", x=10.0, y=30.0, w=20.0, h=20.0, color="#0000ff", bleed=True),
                        BlockItem(id="right", x=90.0, y=30.0, w=20.0, h=20.0, color="#00ff00"),
                        BlockItem(id="band", x=50.0, y=100.0, w=100.0, h=10.0, color="#ffff00",
                                  decorative=True, z=-1),
                        PictureItem(id="moon", x=90.0, y=70.0, w=20.0, h=20.0, path="moon.png"),
+                       PictureItem(id="tall", x=5.0, y=70.0, w=10.0, h=30.0, path="tall.png"),
                        PictureItem(id="sun", x=50.0, y=130.0, w=40.0, h=20.0, path="sun.png",
                                    bleed=True)])
     path = folder / "card.toml"
@@ -68,10 +72,9 @@ def test_the_pdf_says_where_to_trim_and_how_far_the_bleed_goes(printed):
 
 def test_the_background_and_bleed_items_reach_into_the_bleed_and_no_further(printed):
     _, sheet = printed
-    assert pixel(sheet, -1.5, 70.0) == pytest.approx((255, 0, 0), abs=8)  # background in the bleed
-    assert pixel(sheet, -4.5, 70.0) == pytest.approx((255, 255, 255), abs=8)  # white beyond it
+    assert pixel(sheet, -1.5, 47.0) == pytest.approx((255, 0, 0), abs=8)  # background in the bleed
+    assert pixel(sheet, -4.5, 47.0) == pytest.approx((255, 255, 255), abs=8)  # white beyond it
     assert pixel(sheet, -1.5, 30.0) == pytest.approx((0, 0, 255), abs=8)  # the bleed block
-    assert pixel(sheet, 101.5, 70.0) == pytest.approx((255, 0, 0), abs=8)  # an unmarked picture
     assert pixel(sheet, 50.0, 141.5) == pytest.approx((250, 200, 0), abs=8)  # the bleed picture
     assert pixel(sheet, 50.0, 131.0) == pytest.approx((250, 200, 0), abs=8)
     assert pixel(sheet, 30.0, 30.0) == pytest.approx((255, 0, 0), abs=8)  # the page is unchanged
@@ -91,6 +94,27 @@ def test_a_block_that_meets_the_page_edge_bleeds_marked_or_not(printed):
     assert pixel(sheet, -4.5, 100.0) == pytest.approx((255, 255, 255), abs=8)  # and no further
     assert pixel(sheet, 50.0, 93.5) == pytest.approx((255, 0, 0), abs=8)  # its height is kept
     assert pixel(sheet, 50.0, 106.5) == pytest.approx((255, 0, 0), abs=8)
+
+
+def test_an_unmarked_picture_that_meets_the_page_edge_bleeds_with_more_of_itself(printed):
+    """A picture flush with the edge and not marked `bleed` reaches into the bleed too
+    (stopping at the trim, a cut a hair outside it showed a sliver of paper).  It is scaled
+    with its proportions kept and clipped to its frame grown into the bleed: its other edges
+    stay where the layout put them, and the picture is not stretched to the new frame.  The
+    tall picture (10 x 30 mm, its top quarter red) meets the left edge: 13 mm wide in print,
+    so 39 mm tall centred on its own middle, its red ending at 70 - 19.5 + 9.75 = 60.25 mm
+    (stretched to 13 x 30 mm it would end at 62.5)."""
+    _, sheet = printed
+    assert pixel(sheet, 101.5, 70.0) == pytest.approx((120, 60, 200), abs=8)  # the moon, right
+    assert pixel(sheet, 50.0, 70.0) == pytest.approx((255, 0, 0), abs=8)
+    assert pixel(sheet, 90.0, 58.5) == pytest.approx((255, 0, 0), abs=8)  # its top edge stays
+    assert pixel(sheet, -1.5, 75.0) == pytest.approx((0, 160, 0), abs=8)  # the tall one, left
+    assert pixel(sheet, -4.5, 75.0) == pytest.approx((255, 255, 255), abs=8)  # and no further
+    assert pixel(sheet, 10.6, 75.0) == pytest.approx((255, 0, 0), abs=8)  # its right edge stays
+    assert pixel(sheet, 5.0, 54.4) == pytest.approx((255, 0, 0), abs=8)  # so do top and bottom
+    assert pixel(sheet, 5.0, 85.6) == pytest.approx((255, 0, 0), abs=8)
+    assert pixel(sheet, 5.0, 59.5) == pytest.approx((200, 0, 0), abs=8)  # red, cut at 60.25
+    assert pixel(sheet, 5.0, 61.2) == pytest.approx((0, 160, 0), abs=8)  # green: not stretched
 
 
 def test_crop_marks_stand_outside_the_bleed_at_every_corner(printed):

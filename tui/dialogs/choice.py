@@ -7,15 +7,16 @@ from typing import Generic, TypeVar
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
-from textual.screen import ModalScreen
 from textual.widgets import Label, OptionList
 from textual.widgets.option_list import Option
+
+from floatpage.tui.dialogs.base import Dialog, Hint
 
 
 Value = TypeVar("Value")
 
 
-class ChoiceDialog(ModalScreen[Value | None], Generic[Value]):
+class ChoiceDialog(Dialog[Value | None], Generic[Value]):
     """A title, an optional message and a list; Enter picks, Esc cancels (dismisses None).
 
     A choice whose value is None ("Keep editing") answers as Esc does."""
@@ -30,14 +31,15 @@ class ChoiceDialog(ModalScreen[Value | None], Generic[Value]):
         self.choices = choices
         self.highlighted_value = highlighted
 
-    def compose(self) -> ComposeResult:
+    def compose_dialog(self) -> ComposeResult:
         with Vertical(classes="dialog"):
-            yield Label(self.title_text, classes="dialog-title", markup=False)
-            if self.message:
-                yield Label(self.message, classes="dialog-message", markup=False)
+            with Vertical(classes="dialog-head"):
+                yield Label(self.title_text, classes="dialog-title", markup=False)
+                if self.message:
+                    yield Label(self.message, classes="dialog-message", markup=False)
             yield OptionList(*[Option(label, id=str(index))
                                for index, (label, _) in enumerate(self.choices)])
-            yield Label("Enter chooses · Esc cancels", classes="dialog-hint")
+            yield Hint("Enter chooses · Esc cancels", "Esc cancels", classes="dialog-foot")
 
     def on_mount(self) -> None:
         options = self.query_one(OptionList)

@@ -12,8 +12,9 @@ from typing import Any, Callable, Generic, Literal, TypeVar
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical, VerticalScroll
-from textual.screen import ModalScreen
 from textual.widgets import Button, Checkbox, Input, Label, Select, TextArea
+
+from floatpage.tui.dialogs.base import Dialog, Hint
 
 FieldKind = Literal["line", "text", "choice", "bool"]
 
@@ -29,16 +30,26 @@ class Field:
     choices: tuple[tuple[str, Any], ...] = ()
 
 
+class FieldError(ValueError):
+    """A parser's complaint about one field: the form shows it and puts the cursor there (a
+    wrong width was reported while the cursor stayed in the height field)."""
+
+    def __init__(self, field: str, message: str):
+        super().__init__(message)
+        self.field = field
+
+
 Answer = TypeVar("Answer")
 Parser = Callable[[dict[str, Any]], Answer]
 
 
-class FormDialog(ModalScreen[Answer | None], Generic[Answer]):
+class FormDialog(Dialog[Answer | None], Generic[Answer]):
     """Fields, an error line and OK / Cancel. Enter in a one-line field or Ctrl+S applies.
 
     It dismisses with what the parser made of the fields (its type is the parser's), or None.
 
-    Compact widgets and a scrolling field list keep the buttons on screen at 80 x 24.
+    Compact widgets and a scrolling field list keep the buttons on screen at 80 x 24; the
+    list takes the height the terminal has (see `Dialog`).
     """
 
     BINDINGS = [Binding("escape", "cancel", "Cancel"), Binding("ctrl+s", "apply", "Apply")]
@@ -50,24 +61,27 @@ class FormDialog(ModalScreen[Answer | None], Generic[Answer]):
         self.fields = fields
         self.parse = parse
 
-    def compose(self) -> ComposeResult:
+    def compose_dialog(self) -> ComposeResult:
         with Vertical(classes="dialog form"):
-            yield Label(self.title_text, classes="dialog-title", markup=False)
+            yield Label(self.title_text, classes="dialog-title dialog-head", markup=False)
             with VerticalScroll(classes="form-fields"):
                 for field in self.fields:
                     yield from self._field(field)
-            yield Label("", id="form-error", classes="dialog-error", markup=False)
-            multi_line = any(field.kind == "text" for field in self.fields)
-            yield Label("Tab moves · " + ("Ctrl+S" if multi_line else "Enter or Ctrl+S")
-                        + " applies · Esc cancels", classes="dialog-hint")
-            with Horizontal(classes="dialog-buttons"):
-                yield Button("OK", variant="primary", id="ok", compact=True)
-                yield Button("Cancel", id="cancel", compact=True)
+            with Vertical(classes="dialog-foot"):
+                yield Label("", id="form-error", classes="dialog-error", markup=False)
+                multi_line = any(field.kind == "text" for field in self.fields)
+                apply = "Ctrl+S" if multi_line else "Enter"
+                yield Hint("Tab moves · " + ("Ctrl+S" if multi_line else "Enter or Ctrl+S")
+                           + " applies · Esc cancels", f"{apply} applies · Esc cancels",
+                           "Esc cancels")
+                with Horizontal(classes="dialog-buttons"):
+                    yield Button("OK", variant="primary", id="ok", compact=True)
+                    yield Button("Cancel", id="cancel", compact=True)
 
     def _field(self, field: Field) -> ComposeResult:
         widget_id = f"field-{field.name}"
         if field.kind == "bool":
-            yield Checkbox(field.label, value=bool(field.value), id=widget_id)
+            yield Checkbox(field.label, value=bool(field.value), id=widget_id, compact=True)
             return
         yield Label(field.label, classes="field-label", markup=False)  # may hold a path
         if field.kind == "line":
@@ -102,6 +116,9 @@ class FormDialog(ModalScreen[Answer | None], Generic[Answer]):
             result = self.parse(self.values())
         except ValueError as error:
             self.query_one("#form-error", Label).update(str(error))
+            if isinstance(error, FieldError):
+                for widget in self.query(f"#field-{error.field}"):
+                    widget.focus()
             return
         self.dismiss(result)
 

@@ -8,9 +8,9 @@ from rich.text import Text
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical, VerticalScroll
-from textual.screen import ModalScreen
 from textual.widgets import Label, Static
 
+from floatpage.tui.dialogs.base import Dialog, Hint
 from floatpage.tui.keymap import COMMANDS, key_label
 
 MOUSE = (("click", "Select an item (or nothing, on empty paper)"),
@@ -58,19 +58,19 @@ def help_table() -> Table:
     return table
 
 
-class HelpScreen(ModalScreen[None]):
+class HelpScreen(Dialog[None]):
     """Scrollable list of keys; Esc, q or ? closes it."""
 
     BINDINGS = [Binding("escape,q,question_mark,f1", "close", "Close")]
 
-    def compose(self) -> ComposeResult:
+    def compose_dialog(self) -> ComposeResult:
         with Vertical(classes="dialog help"):
-            yield Label("floatpage keys", classes="dialog-title")
+            yield Label("floatpage keys", classes="dialog-title dialog-head")
             with VerticalScroll():
                 yield Static(Group(help_table(), Text(
                     "\nCtrl+P opens the command palette: every command above, by name.")),
                     id="help-text")
-            yield Label("Esc closes · arrows scroll", classes="dialog-hint")
+            yield Hint("Esc closes · arrows scroll", "Esc closes", classes="dialog-foot")
 
     def action_close(self) -> None:
         self.dismiss(None)

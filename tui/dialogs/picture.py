@@ -8,11 +8,11 @@ from typing import Iterable
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
-from textual.screen import ModalScreen
 from textual.widgets import DirectoryTree, Input, Label
 
 from floatpage.model.key_specs import PICTURE_SUFFIXES
 from floatpage.model.picture_files import read_header
+from floatpage.tui.dialogs.base import Dialog, Hint
 
 
 
@@ -24,7 +24,7 @@ class PictureTree(DirectoryTree):
                 and (path.is_dir() or path.suffix.lower() in PICTURE_SUFFIXES)]
 
 
-class PictureDialog(ModalScreen[Path | None]):
+class PictureDialog(Dialog[Path | None]):
     """Dismisses with the chosen file's path, or None."""
 
     BINDINGS = [Binding("escape", "cancel", "Cancel")]
@@ -35,14 +35,16 @@ class PictureDialog(ModalScreen[Path | None]):
         self.folder = folder
         self.title_text = title
 
-    def compose(self) -> ComposeResult:
+    def compose_dialog(self) -> ComposeResult:
         with Vertical(classes="dialog picture"):
-            yield Label(self.title_text, classes="dialog-title")
+            yield Label(self.title_text, classes="dialog-title dialog-head", markup=False)
             yield PictureTree(self.folder, id="picture-tree")
-            yield Label("…or type a path (relative to the project folder):", classes="field-label")
-            yield Input(placeholder="photos/sunset.jpg", id="picture-path")
-            yield Label("", id="picture-error", classes="dialog-error", markup=False)
-            yield Label("Enter chooses · Tab moves · Esc cancels", classes="dialog-hint")
+            with Vertical(classes="dialog-foot"):
+                yield Label("…or type a path (relative to the project folder):",
+                            classes="field-label")
+                yield Input(placeholder="photos/sunset.jpg", id="picture-path")
+                yield Label("", id="picture-error", classes="dialog-error", markup=False)
+                yield Hint("Enter chooses · Tab moves · Esc cancels", "Esc cancels")
 
     def on_mount(self) -> None:
         self.query_one(Input).cursor_blink = getattr(self.app, "cursor_blink", True)
@@ -56,8 +58,15 @@ class PictureDialog(ModalScreen[Path | None]):
         event.stop()
         typed = event.value.strip()
         path = (self.folder / Path(typed).expanduser()) if typed else None
-        if path is None or not path.is_file():
-            self.query_one("#picture-error", Label).update(f"no file at {typed or '(empty)'}")
+        if path is None:
+            self.query_one("#picture-error", Label).update(
+                "type a path, e.g. pictures/photo.jpg, or pick a file in the tree above")
+            return
+        if not path.is_file():  # where it looked, in full, and what to do
+            header = read_header(path)
+            self.query_one("#picture-error", Label).update(
+                f"{path.absolute()} {header.problem}: {header.hint}, or pick a file in the "
+                "tree above")
             return
         if path.suffix.lower() not in PICTURE_SUFFIXES:
             self.query_one("#picture-error", Label).update(

@@ -60,3 +60,30 @@ def test_insert_text_dialog(project_path, snap_compare):
     OK / Cancel buttons."""
     assert snap_compare(frozen_app(project_path), press=["t", "H", "e", "l", "l", "o"],
                         terminal_size=(100, 34))
+
+
+def test_insert_dialog_at_40x12(project_path, snap_compare):
+    """The Insert dialog on a 40 x 12 terminal: no padding and no top or bottom border, the
+    title 'Insert', all five choices (Text box highlighted, Picture…, Colour block, Calendar
+    month, Background…) with no frame around the list, and 'Enter chooses · Esc cancels' on
+    the line under them; the page's top bar above and the footer below still show."""
+    assert snap_compare(frozen_app(project_path), press=["i"], terminal_size=(40, 12))
+
+
+def test_edit_form_at_20x6(project_path, snap_compare):
+    """The title's edit form on a 20 x 6 terminal: 'Edit title (text)', the 'Text' label, one
+    row of 'Happy…' with the cursor on its H (the field scrolls; a scroll bar at the right),
+    'Esc cancels' alone as the hint, and the OK and Cancel buttons on the last row."""
+    async def run_before(pilot) -> None:
+        pilot.app.editor.selected_id = "title"
+        await pilot.pause()
+        await pilot.press("enter")
+        await pilot.pause()
+
+    assert snap_compare(frozen_app(project_path), run_before=run_before, terminal_size=(20, 6))
+
+
+def test_dialog_below_20x6(project_path, snap_compare):
+    """The Insert dialog on an 18 x 5 terminal: in its place, on red, 'Terminal too small:
+    make it 20 × 6 or more (now 18 × 5). Esc cancels.', wrapped over the width."""
+    assert snap_compare(frozen_app(project_path), press=["i"], terminal_size=(18, 5))

@@ -1,0 +1,166 @@
+"""Regions made, changed and removed in the editor (`R`).
+
+The editor drew regions and let an item join one (`Enter`), but a region itself could only be
+written in the project file: a user who wanted "photos in the top two-thirds" had to leave the
+editor for a text editor.  `R` opens a form for the selected item's region, or for a new one
+around the selected item (or the page's top two-thirds, with nothing selected); the answer is
+checked by the loader's rules (inside the page, its own name, every item in it fits) before
+it becomes one undoable edit.
+"""
+
+from __future__ import annotations
+
+import itertools
+from typing import Any
+
+from floatpage.model.document import Region
+from floatpage.tui.dialogs.form import Field, FieldError
+from floatpage.tui.item_forms import checked, number
+
+AROUND_MM = 10.0  # a new region around the selected item leaves it this much room each side
+
+
+def free_region_id(page) -> str:
+    taken = {region.id for region in page.regions}
+    return next(f"region-{n}" for n in itertools.count(1) if f"region-{n}" not in taken)
+
+
+def proposed_region(page, item) -> Region:
+    """The region the form offers: the item's own, else one around the item, else the page's
+    top two-thirds (the README's example)."""
+    if item is not None and item.region:
+        return page.region(item.region)
+    if item is None:
+        return Region(free_region_id(page), 0.0, 0.0, page.width_mm,
+                      round(page.height_mm * 2 / 3, 2))
+    left = max(0.0, item.x - item.w / 2 - AROUND_MM)
+    top = max(0.0, item.y - item.h / 2 - AROUND_MM)
+    right = min(page.width_mm, item.x + item.w / 2 + AROUND_MM)
+    bottom = min(page.height_mm, item.y + item.h / 2 + AROUND_MM)
+    return Region(free_region_id(page), round(left, 2), round(top, 2),
+                  round(right - left, 2), round(bottom - top, 2))
+
+
+def region_fields(region: Region, item, *, new: bool) -> list[Field]:
+    name = "Region name" if new else "Region name (empty removes it; its items go free)"
+    fields = [Field("id", name, "line", region.id),
+              Field("left", "Left edge, from the page's left (mm)", "line", f"{region.left:g}"),
+              Field("top", "Top edge, from the page's top (mm)", "line", f"{region.top:g}"),
+              Field("w", "Width (mm)", "line", f"{region.w:g}"),
+              Field("h", "Height (mm)", "line", f"{region.h:g}")]
+    if item is not None:
+        fields.append(Field("confine", f"Keep {item.id} inside it", "bool",
+                            item.region in ("", region.id)))
+    return fields
+
+
+def parse_region(values: dict[str, Any]) -> dict[str, Any]:
+    """The typed region: None for an empty name (remove it), else a Region, each number read
+    and checked by the model's own field checks; and whether to confine the item."""
+    name = str(values["id"]).strip()
+    confine = bool(values.get("confine", False))
+    if not name:
+        return {"region": None, "confine": False}
+    try:
+        checked(Region, "id", name, "the region name")
+    except ValueError as error:
+        raise FieldError("id", str(error)) from None
+    numbers = {}
+    for key, words in (("left", "the left edge"), ("top", "the top edge"), ("w", "the width"),
+                       ("h", "the height")):
+        try:
+            numbers[key] = number(str(values[key]).strip(), words, Region, key)
+        except ValueError as error:
+            raise FieldError(key, str(error)) from None
+    return {"region": Region(name, **numbers), "confine": confine}
+
+
+def members_of(page, old_id: str | None, item, confine: bool) -> list:
+    """The items the region will hold: those of the region it replaces, and ``item`` if it is
+    to keep inside."""
+    members = [other for other in page.items if old_id and other.region == old_id
+               and other is not item]
+    return members + [item] if item is not None and confine else members
+
+
+def region_parser(page, old_id: str | None, item):
+    """`parse_region`, then the loader's rules (`refuse_region`) as the form's error line, so
+    a region too large for the page or too small for its items keeps the form open."""
+    from floatpage.tui.session import EditError
+
+    def parse(values: dict[str, Any]) -> dict[str, Any]:
+        answer = parse_region(values)
+        if answer["region"] is None and old_id is None:
+            raise ValueError("give the region a name, e.g. photos")
+        if answer["region"] is not None:
+            try:
+                refuse_region(page, old_id, answer["region"],
+                              members_of(page, old_id, item, answer["confine"]))
+            except EditError as error:
+                raise ValueError(str(error)) from None
+        return answer
+    return parse
+
+
+def put_region(session, old_id: str | None, answer: dict[str, Any], item_id: str | None) -> str:
+    """Make, change (``old_id``) or remove (no name) a region of the session's page, as one
+    undoable edit; with ``item_id``, confine that item to it or let it go.  Raises EditError,
+    with the loader's reasons, for a region the project file could not hold.  Returns what
+    happened, in words."""
+    from floatpage.tui.session import EditError
+
+    page = session.page
+    new: Region | None = answer["region"]
+    item = page.item(item_id) if item_id else None
+    session.sync_positions()
+    if new is None:
+        if old_id is None:
+            raise EditError("give the region a name, e.g. photos")
+        session.checkpoint(f"remove region {old_id}")
+        freed = [other for other in page.items if other.region == old_id]
+        for other in freed:
+            other.region = ""
+        page.regions[:] = [region for region in page.regions if region.id != old_id]
+        session.rebuild_engine(sync=False)
+        return f'removed region "{old_id}"' + (f"; {len(freed)} item(s) in it go free"
+                                               if freed else "")
+    members = members_of(page, old_id, item, answer["confine"])
+    refuse_region(page, old_id, new, members)
+    session.checkpoint(f"region {new.id}")
+    if old_id is None:
+        page.regions.append(new)
+    else:
+        page.regions[[region.id for region in page.regions].index(old_id)] = new
+    for other in page.items:
+        if old_id and other.region == old_id:
+            other.region = new.id
+    if item is not None:
+        item.region = new.id if answer["confine"] else ("" if item.region == new.id
+                                                         else item.region)
+    for member in members:  # put inside at once, as a drag keeps it inside
+        member.x = min(max(member.x, new.left + member.w / 2), new.left + new.w - member.w / 2)
+        member.y = min(max(member.y, new.top + member.h / 2), new.top + new.h - member.h / 2)
+    session.rebuild_engine(sync=False)
+    verb = "made" if old_id is None else "changed"
+    return (f'{verb} region "{new.id}" ({new.w:g} × {new.h:g} mm)'
+            + (f'; "{item.id}" keeps inside it' if item is not None and answer["confine"]
+               else ""))
+
+
+def refuse_region(page, old_id: str | None, new: Region, members: list) -> None:
+    """EditError for what the loader would refuse (model.project_file): a region reaching past
+    the page, a name another region has, an item larger than its region."""
+    from floatpage.tui.session import EditError
+
+    left, top, right, bottom = new.box
+    if left < 0 or top < 0 or right > page.width_mm + 1e-9 or bottom > page.height_mm + 1e-9:
+        raise EditError(f"the region reaches outside the page ({left:g}-{right:g} mm across, "
+                        f"{top:g}-{bottom:g} mm down, on a page of {page.width_mm:g} x "
+                        f"{page.height_mm:g} mm): keep left + width and top + height within it")
+    if any(region.id == new.id and region.id != old_id for region in page.regions):
+        raise EditError(f'this page has a region "{new.id}" already: choose another name')
+    for member in members:
+        if member.w > new.w + 1e-9 or member.h > new.h + 1e-9:
+            raise EditError(f'"{member.id}" is {member.w:.1f} x {member.h:.1f} mm, larger than '
+                            f"the region ({new.w:g} x {new.h:g} mm): make the region larger "
+                            "or the item smaller")
