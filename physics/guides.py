@@ -49,6 +49,11 @@ REFRESH_STEPS = 64  # steps between two searches for each item's nearest guide
 PAGE = -1  # owner of the page's own guide lines
 NOBODY = -2  # owner of nearest_guides' sentinels
 LOOKS = np.arange(-2, 3)  # nearest_guides looks two places either side of a query
+# nearest_guides' sentinels, two below the sorted values and three above: their values, their
+# owner, the index they stand for
+BELOW, ABOVE = np.full(2, -np.inf), np.full(3, np.inf)
+NOBODY_BELOW, NOBODY_ABOVE = np.full(2, NOBODY), np.full(3, NOBODY)
+NONE_BELOW, NONE_ABOVE = np.full(2, -1), np.full(3, -1)
 LOW, CENTRE, HIGH = 0, 1, 2  # an item's three features on one axis
 
 
@@ -78,7 +83,10 @@ def region_edges(regions: np.ndarray | None, axis: int) -> np.ndarray:
     own items, guides for everyone (a region's edge is a line the page's design drew)."""
     if regions is None or not len(regions):
         return np.zeros(0)
-    boxes = regions[~np.isnan(regions[:, 0])]
+    confined = ~np.isnan(regions[:, 0])
+    if not confined.any():  # no region: np.unique's answer, without its sort (four calls a
+        return np.zeros(0)  # snap's set-up, page_lines, a tenth of it on an 8-item page)
+    boxes = regions[confined]
     return np.unique(np.concatenate([boxes[:, axis], boxes[:, axis + 2]]))
 
 
@@ -99,9 +107,11 @@ def nearest_guides(values: np.ndarray, owners: np.ndarray, queries: np.ndarray,
     # need no clipping to the array; they are never nearer than anything, so the answer is
     # the clipped look's.  (np.clip was two fifths of a refresh; the five looks are one
     # (queries, 5) array, where a loop over them took a third longer.)
-    ordered = np.concatenate([[-np.inf] * 2, values[order], [np.inf] * 3])
-    ordered_owners = np.concatenate([[NOBODY] * 2, owners[order], [NOBODY] * 3])
-    order = np.concatenate([[-1] * 2, order, [-1] * 3])
+    # (The sentinels are arrays made once: lists here were converted on every call, four
+    # calls a refresh.)
+    ordered = np.concatenate([BELOW, values[order], ABOVE])
+    ordered_owners = np.concatenate([NOBODY_BELOW, owners[order], NOBODY_ABOVE])
+    order = np.concatenate([NONE_BELOW, order, NONE_ABOVE])
     looks = np.searchsorted(ordered, queries)[:, None] + LOOKS  # (queries, 5)
     distance = np.where(ordered_owners[looks] != query_owners[:, None],
                         ordered[looks] - queries[:, None], np.inf)
@@ -132,8 +142,12 @@ class GuidePulls:
         # A run that tests a saved layout (saved: it starts cold) holds what the snap left on
         # a line even after the save's rounding moved it a little further.
         self.holds_within = ON_LINE_MM + (SAVED_SLACK_MM if saved else 0.0)
-        self.on_line = np.zeros(0, dtype=int)  # flat slots on their line at the last pull
-        self.holding: np.ndarray | None = None  # flat slots, from on_line when first needed
+        # |distance| of each chosen pull to its line at the last pull (None before the first):
+        # the slots on their line, and the groups to hold, are read off it only when a hold
+        # needs them (hold_on_lines), not at every pull of the spreading
+        self.apart: np.ndarray | None = None
+        self.apart_slots = np.zeros(0, dtype=int)  # the flat slots those distances are of
+        self.holding: np.ndarray | None = None  # flat slots to hold, from apart when needed
         self.guides = np.flatnonzero(active)  # rows whose features are guides
         self.pulled = np.flatnonzero(pulled & active)  # rows the force moves
         self.page, self.margin_mm, self.regions = page, margin_mm, regions
@@ -161,6 +175,11 @@ class GuidePulls:
                 np.concatenate([guides, [PAGE]]),  # centre owners
                 np.concatenate([rows, rows]),  # who asks, for the low edges then the high
                 halves[rows, axis], halves[guides, axis])
+            edge_rows, edge_sides, centre_rows = self.fixed[axis][2:5]
+            # the owners and offsets of the edge lines then the centre lines, as refresh pools
+            # them: one gather each picks the chosen lines'
+            self.fixed[axis] += (np.concatenate([edge_rows, centre_rows]),
+                                 np.concatenate([edge_sides, np.zeros(len(centre_rows))]))
         return self.fixed[axis]
 
     def refresh(self, centres: np.ndarray) -> None:
@@ -170,11 +189,14 @@ class GuidePulls:
         own, partner, factor, offset = [], [], [], []
         for axis in (0, 1):
             (edges_page, centres_page, edge_rows, edge_sides, centre_rows, askers, my_halves,
-             their_halves) = self.fixed_parts(axis)
+             their_halves, line_rows, line_sides) = self.fixed_parts(axis)
             mine, theirs = centres[rows, axis], centres[guides, axis]
+            # Every line in one array, the edge lines then the centre lines (two views), so
+            # that the chosen lines are one gather, not a choice between two per column.
+            lines = np.concatenate([theirs - their_halves, theirs + their_halves, edges_page,
+                                    theirs, centres_page])
+            edge_pool, centre_pool = lines[:len(edge_rows)], lines[len(edge_rows):]
             # Edges: both of a pulled item's edges against every guide edge and margin line.
-            edge_pool = np.concatenate([theirs - their_halves, theirs + their_halves,
-                                        edges_page])
             found_e, dist_e = nearest_guides(edge_pool, edge_rows,
                                              np.concatenate([mine - my_halves,
                                                              mine + my_halves]),
@@ -184,14 +206,12 @@ class GuidePulls:
             found_e = np.where(low_better, found_e[:count], found_e[count:])
             dist_e = np.where(low_better, dist_e[:count], dist_e[count:])
             own_side_e = np.where(low_better, -my_halves, my_halves)
-            centre_pool = np.concatenate([theirs, centres_page])
             found_c, dist_c = nearest_guides(centre_pool, centre_rows, mine, rows, self.reach)
             use_edge = np.abs(dist_e) <= np.abs(dist_c)
             found = np.where(use_edge, found_e, found_c)
             keep = found >= 0
-            pool = np.where(use_edge, edge_pool[found_e], centre_pool[found_c])[keep]
-            guide_row = np.where(use_edge, edge_rows[found_e], centre_rows[found_c])[keep]
-            guide_side = np.where(use_edge, edge_sides[found_e], 0.0)[keep]
+            chosen = np.where(use_edge, found_e, found_c + len(edge_rows))[keep]  # into lines
+            pool, guide_row, guide_side = lines[chosen], line_rows[chosen], line_sides[chosen]
             on_page = guide_row == PAGE
             own.append(rows[keep] * 2 + axis)
             partner.append(np.where(on_page, rows[keep], guide_row) * 2 + axis)
@@ -210,7 +230,7 @@ class GuidePulls:
         self.steps += 1
         if self.steps % PULL_EVERY == 0 or self.refreshed_at is None:
             self.pull(acc, centres, heat)
-        if heat < HOLD_HEAT and len(self.on_line):
+        if heat < HOLD_HEAT and self.apart is not None:
             self.hold_on_lines(acc)
 
     def pull(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
@@ -222,12 +242,14 @@ class GuidePulls:
             return
         flat = centres.ravel()
         distance = self.factor * flat[self.partner] + self.offset - flat[self.own]
-        pull = distance * np.maximum(1.0 - np.abs(distance) / self.reach, 0.0)
+        apart = np.abs(distance)
+        pull = distance * np.maximum(1.0 - apart / self.reach, 0.0)
         share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT))
         acc.ravel()[self.own] += PULL_EVERY * self.k * share * pull
-        # Which groups to hold is worked out only on a cold page (hold_on_lines): while the
-        # page spreads it was a dozen NumPy calls a pull for nothing.
-        self.on_line, self.holding = self.own[np.abs(distance) <= self.holds_within], None
+        # Which groups to hold is worked out only on a cold page (hold_on_lines), from the
+        # distances kept here: while the page spreads it was NumPy calls a pull for nothing
+        # (a dozen, then the three that picked the slots on their line).
+        self.apart, self.apart_slots, self.holding = apart, self.own, None
 
     def hold_on_lines(self, acc: np.ndarray) -> None:
         """Static friction at a line: a group with a feature on its guide keeps its place on
@@ -237,7 +259,8 @@ class GuidePulls:
             # the flat slots (root * 2 + axis) to hold, one entry per root and axis: both axes
             # in one pass, where a pass per axis was twice the NumPy calls in every step of a
             # probe (4.9 % of the settle on the 25-item page of benchmarks/guide_cost.py)
-            rows, axes = self.on_line // 2, self.on_line % 2
+            on_line = self.apart_slots[self.apart <= self.holds_within]
+            rows, axes = on_line // 2, on_line % 2
             self.holding = np.flatnonzero(np.bincount(self.roots[rows] * 2 + axes,
                                                       minlength=acc.size))
         if len(self.holding) == 0:

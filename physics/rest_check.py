@@ -76,15 +76,15 @@ class RestCheck:
         # the page's own guide lines per axis, (edges, centres): guides.page_lines
         self.page_lines = lines or [(np.zeros(0), np.zeros(0))] * 2
         self.active_rows = np.flatnonzero(active)
+        self.group_rows = group_members(roots, active)
         self.lines = LineHold(bodies.centres, self.halves, self.active_rows, roots,
-                              group_members(roots, active), self.page_lines)
+                              self.group_rows, self.page_lines)
         count = bodies.count
         ends = np.concatenate([i, j])
         order = np.argsort(ends, kind="stable")
         split = np.searchsorted(ends[order], np.arange(count + 1))
         pair_ids = np.concatenate([np.arange(len(i)), np.arange(len(j))])[order]
         self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
-        self.group_rows = group_members(roots, active)
         self.grouped = bool((roots != np.arange(count)).any())
         # what the force sum (rest_check_kernel.rest_net) reads, as tables: per pair, its ends, its
         # reach, its blocked axes and its ends' shares; per row, its rest box and its anchor

@@ -95,3 +95,52 @@ def test_a_saved_layout_is_held_on_its_lines_after_the_saves_rounding():
         pulls.add_to(acc, centres, HOLD_HEAT / 2)
         # held: nothing of the push is left; not held: the push, less the pull's few hundredths
         assert (abs(acc[1, 0]) < 0.1 * pulls.hold) == held, saved
+
+
+def plain_nearest_lines(centres, halves, pulled, page, margin_mm, reach, axis):
+    """Per pulled row on ``axis``: the distance from its features to the nearest line it may
+    be pulled onto (an edge to another row's edge or a margin line, its centre to another
+    row's centre or the page's middle), within ``reach``, or inf; by a search of every pair."""
+    extent = page[axis]
+    best = {}
+    for row in np.flatnonzero(pulled):
+        others = [other for other in range(len(centres)) if other != row]
+        edges = [centres[o, axis] + side * halves[o, axis] for o in others for side in (-1, 1)]
+        edges += [margin_mm, extent - margin_mm]
+        middles = [centres[o, axis] for o in others] + [extent / 2]
+        mine = centres[row, axis]
+        gaps = [abs(line - (mine + side * halves[row, axis])) for line in edges
+                for side in (-1, 1)] + [abs(line - mine) for line in middles]
+        nearest = min(gaps)
+        best[row] = nearest if nearest <= reach else np.inf
+    return best
+
+
+@settings(max_examples=60, deadline=None, derandomize=True, database=None)
+@given(st.data())
+def test_a_refresh_pulls_each_item_towards_its_nearest_line(data):
+    """Each pulled row's pull on an axis starts at the distance from its features to the
+    nearest line it may be pulled onto (a plain search of every line), and a row with no line
+    within the snap range is not pulled.  The refresh picks the chosen lines with one gather
+    from every line pooled, edges then centres: a wrong offset into the pool pulls towards
+    another line."""
+    count = data.draw(st.integers(2, 9))
+    grid = st.integers(0, 300).map(lambda k: 30.0 + k * 0.5)  # ties and shared lines come up
+    centres = np.array([[data.draw(grid), data.draw(grid)] for _ in range(count)])
+    sizes = np.array([[data.draw(st.integers(4, 40)) * 1.0, data.draw(st.integers(4, 40)) * 1.0]
+                      for _ in range(count)])
+    pulled = np.array(data.draw(st.lists(st.booleans(), min_size=count, max_size=count)))
+    page, margin = (210.0, 297.0), 10.0
+    pulls = GuidePulls(centres, sizes, np.ones(count, bool), pulled, page, margin, 1.0)
+    pulls.refresh(centres)
+    flat = centres.ravel()
+    distance = pulls.factor * flat[pulls.partner] + pulls.offset - flat[pulls.own]
+    for axis in (0, 1):
+        expected = plain_nearest_lines(centres, sizes / 2, pulled, page, margin, pulls.reach,
+                                       axis)
+        on_axis = pulls.own % 2 == axis
+        found = dict(zip((pulls.own[on_axis] // 2).tolist(), np.abs(distance[on_axis])))
+        assert sorted(found) == sorted(row for row, gap in expected.items()
+                                       if np.isfinite(gap))
+        for row, gap in found.items():
+            assert abs(gap - expected[row]) < 1e-9, (axis, row)
