@@ -556,6 +556,15 @@ def main(argv: Sequence[str] | None = None) -> int:
         if signal.getsignal(stop) is signal.SIG_DFL:
             signal.signal(stop, stop_on_terminate)
     try:
+        os.getcwd()
+    except FileNotFoundError:
+        # The shell's folder was deleted (or moved) under it: every relative path, the lock
+        # beside the project among them, would fail as an internal error.
+        print("floatpage: the current folder no longer exists (it was deleted or moved while "
+              "this shell was in it); cd to a folder that exists and run the command again",
+              file=sys.stderr)
+        return EXIT_USER_ERROR
+    try:
         return args.run(args)
     except FloatpageError as error:
         # Line by line: a message may list several problems, each on its own line, and each

@@ -688,3 +688,18 @@ def test_check_of_a_10000_item_file_stays_under_a_gigabyte(tmp_path):
     assert done.returncode == 0, done.stderr
     assert "valid project" in done.stdout
     assert peak_kb < 1024 * 1024, f"{peak_kb / 1024:.0f} MB"
+
+
+def test_a_deleted_current_folder_is_a_clear_error_not_an_internal_one(tmp_path):
+    """A shell whose folder was deleted under it (a build folder cleaned by another job):
+    `floatpage settle card.toml` failed as an internal error on the lock's path."""
+    gone = tmp_path / "gone"
+    gone.mkdir()
+    card(tmp_path)
+    script = (f"cd {gone} && rmdir {gone} && "
+              f"exec {sys.executable} -m floatpage.cli.main settle card.toml")
+    result = subprocess.run(["sh", "-c", script], capture_output=True, text=True, timeout=120,
+                            stdin=subprocess.DEVNULL, env={**os.environ, "PYTHONSAFEPATH": "1"})
+    assert result.returncode == 1, result.stderr
+    assert "current folder no longer exists" in result.stderr
+    assert "internal error" not in result.stderr
