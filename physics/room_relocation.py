@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from floatpage.physics.arrangements import OutOfBudget
 from floatpage.physics.finalize import (
     MARGIN_GIVES_WAY, MAX_ITERATIONS, ROUNDING_MM, STALL_ITERATIONS, pair_clearances,
     project_within,
@@ -21,7 +20,7 @@ from floatpage.physics.page_limits import (
 from floatpage.physics.relocation import (
     MAX_ITEMS as RELOCATE_MAX_ITEMS, placed_anew, relocate_jammed,
 )
-from floatpage.physics.unit_arrangements import search_of, unit_arrangement, widest_bracket
+from floatpage.physics.unit_arrangements import search_of, widest_bracket
 
 RELOCATED_RUN_STEPS = 20_000  # the gentle run from items set down anew (_relocate_jammed)
 
@@ -70,18 +69,17 @@ class RoomRelocation:
         if search is None:
             return False
         obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
-        widest = _kept_gap(widest_bracket(search.walls, *obstacles, gutter))
-        if widest is None:
+        decided = widest_bracket(search.walls, *obstacles, gutter)
+        if decided is None:
             return False
-        walls = search.walls
-        if widest < 0:  # the margin gives way before overlap does
-            page_widest = _kept_gap(widest_bracket(search.page_walls, *obstacles, gutter))
-            if page_widest is not None and page_widest > widest + WIDEST_GAP_SLACK_MM:
-                widest, walls = page_widest, search.page_walls
-        try:
-            spots = unit_arrangement(walls, *obstacles, widest, centre=True)
-        except OutOfBudget:
-            return False
+        if decided.low < 0:  # the margin gives way before overlap does
+            on_page = widest_bracket(search.page_walls, *obstacles, gutter)
+            if on_page is not None and on_page.low > decided.low + WIDEST_GAP_SLACK_MM:
+                decided = on_page
+        # where the search ran out of its budget on the way to the widest gap, the layout it
+        # found is still one the units can be set down in (seed 51 p1: 18.0 mm into each
+        # other where the pass left 18.8 mm)
+        widest, spots = decided.low, decided.layout
         if spots is None or widest <= self._closest_gap() + WIDEST_GAP_SLACK_MM:
             return False
         for unit, spot in zip(search.units, spots):
@@ -227,10 +225,3 @@ class RoomRelocation:
         bodies.centres[:] = widest
         return False
 
-
-def _kept_gap(bracket) -> float | None:
-    """The widest gap a layout was found for (unit_arrangements.widest_bracket), None where the
-    search could not tell whether the gutter fits: where it ran out of its budget on the way
-    to the widest gap, that layout is still one the units can be set down in (seed 51 p1:
-    18.0 mm into each other where the pass left 18.8 mm)."""
-    return None if bracket is None else bracket.low
