@@ -22,15 +22,26 @@ async def type_into(app, pilot, name: str, value: str) -> None:
     await pilot.pause()
 
 
+async def region_form(app, pilot, selected: str | None = None) -> None:
+    """R on the page, with ``selected`` the selected item first."""
+    if selected is not None:
+        screen_of(app).selected_id = selected
+    await pilot.press("R")
+    await pilot.pause()
+
+
+async def submit(pilot) -> None:
+    await pilot.press("enter")
+    await pilot.pause()
+
+
 async def test_a_new_region_with_nothing_selected_is_the_top_two_thirds(project_path):
     async with editor(project_path) as (app, pilot):
         screen_of(app).selected_id = None
-        await pilot.press("R")
-        await pilot.pause()
+        await region_form(app, pilot)
         assert app.screen.id == "region-dialog"
         assert not app.screen.query(Checkbox)  # no item to keep inside it
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         page = app.session.page
         assert [(r.id, r.left, r.top, r.w, r.h) for r in page.regions] == \
             [("region-1", 0.0, 0.0, 148.0, 140.0)]
@@ -38,12 +49,9 @@ async def test_a_new_region_with_nothing_selected_is_the_top_two_thirds(project_
 
 async def test_a_region_around_the_selected_photo_keeps_it_inside_and_is_saved(project_path):
     async with editor(project_path) as (app, pilot):
-        screen_of(app).selected_id = "photo"
-        await pilot.press("R")
-        await pilot.pause()
+        await region_form(app, pilot, "photo")
         await type_into(app, pilot, "id", "photos")
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         assert app.screen is screen_of(app)
         region = app.session.page.region("photos")
         photo = item(app, "photo")
@@ -59,48 +67,37 @@ async def test_a_region_around_the_selected_photo_keeps_it_inside_and_is_saved(p
 
 async def test_a_region_too_small_or_past_the_page_keeps_the_form_open(project_path):
     async with editor(project_path) as (app, pilot):
-        screen_of(app).selected_id = "photo"
-        await pilot.press("R")
-        await pilot.pause()
+        await region_form(app, pilot, "photo")
         await type_into(app, pilot, "w", "20")
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         assert app.screen.id == "region-dialog"
         assert '"photo" is 60.0 x 45.0 mm, larger than the region' in form_error(app)
         await type_into(app, pilot, "w", "200")
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         assert "reaches outside the page" in form_error(app)
         await type_into(app, pilot, "w", "abc")
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         assert 'the width must be a number (not "abc")' in form_error(app)
         assert app.session.page.regions == [] and item(app, "photo").region == ""
 
 
 async def test_a_region_is_renamed_resized_removed_and_brought_back(project_path):
     async with editor(project_path) as (app, pilot):
-        screen_of(app).selected_id = "photo"
-        await pilot.press("R")
-        await pilot.pause()
+        await region_form(app, pilot, "photo")
         await type_into(app, pilot, "id", "photos")
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         await pilot.press("R")  # the photo's own region, to change
         await pilot.pause()
         assert app.screen.query_one("#field-id", Input).value == "photos"
         await type_into(app, pilot, "id", "pictures")
         await type_into(app, pilot, "h", "100")
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         page = app.session.page
         assert [r.id for r in page.regions] == ["pictures"] and page.regions[0].h == 100.0
         assert item(app, "photo").region == "pictures"
-        await pilot.press("R")
-        await pilot.pause()
+        await region_form(app, pilot)
         await type_into(app, pilot, "id", "")  # an empty name removes it
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         assert app.session.page.regions == [] and item(app, "photo").region == ""
         await pilot.press("ctrl+z")
         await pilot.pause()
@@ -111,14 +108,9 @@ async def test_a_region_is_renamed_resized_removed_and_brought_back(project_path
 async def test_two_regions_cannot_share_a_name(project_path):
     async with editor(project_path) as (app, pilot):
         screen_of(app).selected_id = None
-        await pilot.press("R")
-        await pilot.pause()
-        await pilot.press("enter")
-        await pilot.pause()
-        screen_of(app).selected_id = "block"
-        await pilot.press("R")
-        await pilot.pause()
+        await region_form(app, pilot)
+        await submit(pilot)
+        await region_form(app, pilot, "block")
         await type_into(app, pilot, "id", "region-1")
-        await pilot.press("enter")
-        await pilot.pause()
+        await submit(pilot)
         assert 'a region "region-1" already' in form_error(app)
