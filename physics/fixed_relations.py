@@ -37,9 +37,8 @@ def held_relations(units, obstacle_centres: np.ndarray, obstacle_halves: np.ndar
             if u == v:
                 continue
             reach = units.halves[i] + units.halves[j]
-            apart = centres[j] - centres[i]  # (2,)
-            axis = int(np.argmax(np.abs(apart) - reach))
-            if apart[axis] >= 0:  # j after i
+            axis, after = _side(centres[j] - centres[i], reach)
+            if after:  # j after i
                 relations.append(("edge", axis, u, v, float(
                     units.offsets[i, axis] - units.offsets[j, axis] + reach[axis])))
             else:
@@ -48,9 +47,8 @@ def held_relations(units, obstacle_centres: np.ndarray, obstacle_halves: np.ndar
         for p in range(len(obstacle_centres)):
             u = int(units.owner[i])
             reach = units.halves[i] + obstacle_halves[p]
-            apart = centres[i] - obstacle_centres[p]
-            axis = int(np.argmax(np.abs(apart) - reach))
-            if apart[axis] >= 0:
+            axis, after = _side(centres[i] - obstacle_centres[p], reach)
+            if after:
                 relations.append(("lower", axis, u, float(
                     obstacle_centres[p, axis] + reach[axis] - units.offsets[i, axis])))
             else:
@@ -59,9 +57,16 @@ def held_relations(units, obstacle_centres: np.ndarray, obstacle_halves: np.ndar
     return relations
 
 
+def _side(apart: np.ndarray, reach: np.ndarray) -> tuple[int, bool]:
+    """The axis on which two boxes ``apart`` (centre to centre, (2,)) with half sizes summing to
+    ``reach`` stand furthest apart, and whether the second stands after the first on it."""
+    axis = int(np.argmax(np.abs(apart) - reach))
+    return axis, bool(apart[axis] >= 0)
+
+
 def relation_layout(units, relations: list[tuple], gap: float) -> np.ndarray | None:
     """Root positions (u, 2) midway between the least and the greatest the relations allow at
-    ``gap`` (a layout spread over its room, as unit_arrangements' ``centre``), or None where
+    ``gap`` (a layout spread over its room, not packed into a corner), or None where
     they allow none."""
     count = len(units.lowest)
     least = np.empty((count, 2))
@@ -79,8 +84,11 @@ def relation_layout(units, relations: list[tuple], gap: float) -> np.ndarray | N
                 lows[relation[2]] = max(lows[relation[2]], relation[3] + gap)
             else:
                 ups[relation[2]] = min(ups[relation[2]], relation[3] - gap)
-        if not (_longest(lows, edges, count) and _longest_back(ups, edges, count)):
+        falls = [-up for up in ups]
+        if not (_longest(lows, edges, count)
+                and _longest(falls, [(second, first, c) for first, second, c in edges], count)):
             return None
+        ups = [-fall for fall in falls]
         if any(low > up + EPSILON for low, up in zip(lows, ups)):
             return None
         least[:, axis], greatest[:, axis] = lows, np.maximum(ups, lows)
@@ -90,25 +98,13 @@ def relation_layout(units, relations: list[tuple], gap: float) -> np.ndarray | N
 def _longest(lows: list[float], edges: list[tuple], count: int) -> bool:
     """Raise ``lows`` along every edge (first, second, c): x_second >= x_first + c, until none
     moves; False where they still move after ``count`` rounds (a cycle that pushes a unit past
-    itself)."""
+    itself).  The greatest positions are the same push on the negated upper bounds along the
+    reversed edges (x_first <= x_second - c is -x_first >= -x_second + c)."""
     for _ in range(count + 1):
         moved = False
         for first, second, c in edges:
             if lows[first] + c > lows[second] + 1e-12:
                 lows[second] = lows[first] + c
-                moved = True
-        if not moved:
-            return True
-    return False
-
-
-def _longest_back(ups: list[float], edges: list[tuple], count: int) -> bool:
-    """Lower ``ups`` back along every edge: x_first <= x_second - c; as _longest."""
-    for _ in range(count + 1):
-        moved = False
-        for first, second, c in edges:
-            if ups[second] - c < ups[first] - 1e-12:
-                ups[first] = ups[second] - c
                 moved = True
         if not moved:
             return True

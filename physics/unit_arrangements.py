@@ -279,19 +279,11 @@ def arranges(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.nda
     return unit_arrangement(units, obstacle_centres, obstacle_halves, gap) is not None
 
 
-def widest_gap(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
-               high: float) -> float | None:
-    """The widest gap, up to ``high``, that the units keep (negative: the least overlap), to
-    GAP_PRECISION_MM; None where a search runs out of budget."""
-    found = widest_bracket(units, obstacle_centres, obstacle_halves, high)
-    return found.low if found is not None and found.exact else None
-
-
 class Bracket(NamedTuple):
     """What the search tells of the widest gap: the units keep ``low``, in ``layout`` (root
     centres, (u, 2), spread over the room its relations leave), and no layout keeps ``high``;
     ``exact`` where no search on the way ran out of budget, so that ``low`` is the widest gap
-    to GAP_PRECISION_MM, as widest_gap gives it."""
+    to GAP_PRECISION_MM."""
     low: float
     high: float
     exact: bool
@@ -311,7 +303,7 @@ def widest_bracket(units: Units, obstacle_centres: np.ndarray, obstacle_halves: 
     units keep 1.63 mm, not 2; this asks five questions, 1.1 s).  A question that runs out of
     budget ends the climb with what is proved: on a page of nine members around two hard
     anchors (fresh_projects seed 51, p1) the gutter was ruled out at once, a layout found 18.0
-    mm into each other, and the search at 9.0 mm ran out: widest_gap said nothing, `check`
+    mm into each other, and the search at 9.0 mm ran out: the search said nothing, `check`
     sent the page back to settle, and the settle kept 18.8 mm."""
     obstacles = obstacle_centres, obstacle_halves
 
