@@ -87,10 +87,9 @@ def side_cause(snapper: _Snapper, roots: list[int], axis: int, delta: float) -> 
     others[members] = False
     ordered = np.sort((table[others, THEIRS_COLUMNS][None]
                        - table[members, MINE_COLUMNS][:, None]).ravel())
-    shifts, scores, _, _, _ = scored_candidates(ordered, snapper.ranges)
+    shifts, scores, _, _, now = scored_candidates(ordered, snapper.ranges)
     shifts, scores = np.array(shifts), np.array(scores)
     resolving = (np.abs(delta - shifts) <= SNAP_ALIGNED_MM) | (np.abs(delta - shifts) >= NEAR_MM)
-    now = int(scores[0])
     better = shifts[resolving & (scores < now)]
     if not len(better):
         return "no gain, trade" if (resolving & (scores == now)).any() else "no gain"
