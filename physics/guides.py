@@ -35,6 +35,7 @@ from __future__ import annotations
 import numpy as np
 
 from floatpage.physics.bodies import Bodies
+from floatpage.physics.guide_pull_kernel import chosen_pulls
 from floatpage.physics.params import page_scale
 
 SNAP_MM = 4.0  # snap range on an A4 page; smaller pages scale it down with their linear size
@@ -156,71 +157,34 @@ class GuidePulls:
         self.steps = 0
         self.own = np.zeros(0, dtype=int)
         self.refreshed_at: np.ndarray | None = None
-        self.fixed: list[tuple[np.ndarray, ...] | None] = [None, None]  # per axis: fixed_parts
+        self.fixed: list[tuple[np.ndarray, np.ndarray] | None] = [None, None]  # page_lines
 
-    def fixed_parts(self, axis: int) -> tuple[np.ndarray, ...]:
-        """What a refresh on ``axis`` needs that no motion changes, worked out on the first
-        refresh and kept: the page's lines, whose each pooled line is and its offset from its
-        owner's centre, the pulled rows' half sizes.  Rebuilt every refresh, these were about
-        a third of its NumPy calls (a refresh is most of what the pull costs: 1-7 % of a settle
-        with guides, benchmarks/guide_cost.py)."""
+    def page_lines(self, axis: int) -> tuple[np.ndarray, np.ndarray]:
+        """The page's own lines on ``axis`` (page_lines), worked out on the first refresh and
+        kept: no motion changes them."""
         if self.fixed[axis] is None:
-            rows, guides, halves = self.pulled, self.guides, self.halves
-            edges_page, centres_page = page_lines(*self.page, self.margin_mm, axis, self.regions)
-            self.fixed[axis] = (
-                edges_page, centres_page,
-                np.concatenate([guides, guides, np.full(len(edges_page), PAGE)]),  # edge owners
-                np.concatenate([-halves[guides, axis], halves[guides, axis],
-                                np.zeros(len(edges_page))]),  # edge offsets from the centre
-                np.concatenate([guides, [PAGE]]),  # centre owners
-                np.concatenate([rows, rows]),  # who asks, for the low edges then the high
-                halves[rows, axis], halves[guides, axis])
-            edge_rows, edge_sides, centre_rows = self.fixed[axis][2:5]
-            # the owners and offsets of the edge lines then the centre lines, as refresh pools
-            # them: one gather each picks the chosen lines'
-            self.fixed[axis] += (np.concatenate([edge_rows, centre_rows]),
-                                 np.concatenate([edge_sides, np.zeros(len(centre_rows))]))
+            self.fixed[axis] = page_lines(*self.page, self.margin_mm, axis, self.regions)
         return self.fixed[axis]
 
     def refresh(self, centres: np.ndarray) -> None:
-        """Choose, per pulled item and axis, the feature to pull and the line to pull it to."""
+        """Choose, per pulled item and axis, the feature to pull and the line to pull it to:
+        the nearest line of another owner within the snap range to one of its features (an
+        edge to the guides' edges and the margin lines, its centre to their centres and the
+        page's middle; nearest_guides defines it), the edge first on a tie, then the low edge.
+
+        Compiled (guide_pull_kernel.chosen_pulls, one call for both axes): as NumPy the
+        search and the choices were some eighty calls, about 0.25 ms a refresh and two to
+        seven refreshes a settle, most of what the pull costs (benchmarks/guide_cost_parts.py);
+        tests/physics/test_guide_lookups.py holds it to that NumPy, bit for bit."""
         self.refreshed_at = centres.copy()
-        rows, guides = self.pulled, self.guides
-        own, partner, factor, offset = [], [], [], []
-        for axis in (0, 1):
-            (edges_page, centres_page, edge_rows, edge_sides, centre_rows, askers, my_halves,
-             their_halves, line_rows, line_sides) = self.fixed_parts(axis)
-            mine, theirs = centres[rows, axis], centres[guides, axis]
-            # Every line in one array, the edge lines then the centre lines (two views), so
-            # that the chosen lines are one gather, not a choice between two per column.
-            lines = np.concatenate([theirs - their_halves, theirs + their_halves, edges_page,
-                                    theirs, centres_page])
-            edge_pool, centre_pool = lines[:len(edge_rows)], lines[len(edge_rows):]
-            # Edges: both of a pulled item's edges against every guide edge and margin line.
-            found_e, dist_e = nearest_guides(edge_pool, edge_rows,
-                                             np.concatenate([mine - my_halves,
-                                                             mine + my_halves]),
-                                             askers, self.reach)
-            count = len(rows)
-            low_better = np.abs(dist_e[:count]) <= np.abs(dist_e[count:])
-            found_e = np.where(low_better, found_e[:count], found_e[count:])
-            dist_e = np.where(low_better, dist_e[:count], dist_e[count:])
-            own_side_e = np.where(low_better, -my_halves, my_halves)
-            found_c, dist_c = nearest_guides(centre_pool, centre_rows, mine, rows, self.reach)
-            use_edge = np.abs(dist_e) <= np.abs(dist_c)
-            found = np.where(use_edge, found_e, found_c)
-            keep = found >= 0
-            chosen = np.where(use_edge, found_e, found_c + len(edge_rows))[keep]  # into lines
-            pool, guide_row, guide_side = lines[chosen], line_rows[chosen], line_sides[chosen]
-            on_page = guide_row == PAGE
-            own.append(rows[keep] * 2 + axis)
-            partner.append(np.where(on_page, rows[keep], guide_row) * 2 + axis)
-            factor.append(np.where(on_page, 0.0, 1.0))
-            # line = factor * partner coordinate + guide offset; feature = own coordinate + side
-            offset.append(np.where(on_page, pool, guide_side)
-                          - np.where(use_edge, own_side_e, 0.0)[keep])
-        self.own, self.partner = np.concatenate(own), np.concatenate(partner)
-        self.factor, self.offset = np.concatenate(factor), np.concatenate(offset)
+        room = 2 * len(self.pulled)
+        own, partner = np.empty(room, dtype=np.int64), np.empty(room, dtype=np.int64)
+        factor, offset = np.empty(room), np.empty(room)
+        kept = chosen_pulls(np.ascontiguousarray(centres, dtype=float), self.halves,
+                            self.pulled, self.guides, *self.page_lines(0), *self.page_lines(1),
+                            self.reach, own, partner, factor, offset)
+        self.own, self.partner = own[:kept], partner[:kept]
+        self.factor, self.offset = factor[:kept], offset[:kept]
 
     def add_to(self, acc: np.ndarray, centres: np.ndarray, heat: float) -> None:
         """The pull (every ``PULL_EVERY``-th step), then, on a cold page, the hold.  The hold
