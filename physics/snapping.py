@@ -42,6 +42,7 @@ from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members
 from floatpage.physics.snap_fit_kernel import fitting_shifts
 from floatpage.physics.snap_scoring_kernel import line_of as find_line, score_moves
+from floatpage.physics.snap_sweep_kernel import Sweep
 from floatpage.physics.snap_memo import AxisMemo
 from floatpage.physics.snap_scoring import (
     ALIGNED_MM, MAX_CANDIDATES, MAX_TRIES, NO_SHIFTS, relevant_distance, scoring_ranges, trues,
@@ -92,7 +93,8 @@ def snap_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float,
 
 
 def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance_mm: float,
-                   margin_mm: float, strength: float, rest: RestCheck | None = None) -> int:
+                   margin_mm: float, strength: float, rest: RestCheck | None = None,
+                   compiled: bool = True) -> int:
     """Snap free items onto their guide lines in place (see the module doc); returns the number
     of moves made.  ``clearance_mm`` is the gap every pair must keep (the gutter plus the
     rounding slack), ``margin_mm`` the page's print-safe margin; strength 0 does nothing.
@@ -111,21 +113,30 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
     if strength <= 0:
         return 0
     snapper = _Snapper(bodies, (page_w_mm, page_h_mm), clearance_mm, margin_mm, rest)
+    if compiled:  # the sweeps and the memo in C (snap_sweep_kernel): the same moves
+        sweep = snapper.compiled()
+        improve, try_lesser = sweep.improve, sweep.try_lesser
+    else:  # _Snapper's own Python, the definition the compiled sweeps are held to
+        def improve(rows: list[int], axis: int) -> list[int]:
+            return [root for row in rows for root in snapper.improve(row, axis)]
+
+        def try_lesser(rows: list[int], axis: int) -> list[int]:
+            return [root for row in rows for root in snapper.try_lesser(row, axis)]
     moves = 0
-    todo = [snapper.movers, snapper.movers]
+    movers = snapper.movers.tolist()
+    todo = [movers, movers]
     for _ in range(MAX_SWEEPS):
         moved_any = False
         for axis in (0, 1):
-            moved = [root for row in todo[axis] for root in snapper.improve(int(row), axis)]
-            todo[axis] = snapper.near(moved, axis)
+            moved = improve(todo[axis], axis)
+            todo[axis] = snapper.near(moved, axis).tolist()
             moves += len(moved)
             moved_any = moved_any or bool(moved)
         if not moved_any:
-            lesser = [[root for row in snapper.movers
-                       for root in snapper.try_lesser(int(row), axis)] for axis in (0, 1)]
+            lesser = [try_lesser(movers, axis) for axis in (0, 1)]
             if not lesser[0] and not lesser[1]:
                 break
-            todo = [snapper.near(lesser[axis], axis) for axis in (0, 1)]
+            todo = [snapper.near(lesser[axis], axis).tolist() for axis in (0, 1)]
             moves += len(lesser[0]) + len(lesser[1])
     return moves
 
@@ -321,17 +332,45 @@ class _Snapper:
         for shift in self.fits(members, axis, moves.shifts):
             if abs(shift) <= NUDGE_MM or self.rest is None \
                     or self.rest.keeps_rest(members, axis, shift):
-                for root in moves.roots:
-                    self.moved_from[root] = self.mine(root, axis)
                 before = self.lines[axis][members]
-                self.bodies.centres[members, axis] += shift
-                for tables in self.tables.values():
-                    tables[axis][members] += shift
+                self.apply(moves.roots, members, axis, shift)
                 self.memo.moved(axis, before, self.lines[axis][members])
-                if self.rest is not None:
-                    self.rest.moved(members, (axis,))
                 return True
         return False
+
+    def apply(self, roots: list[int], members: np.ndarray, axis: int, shift: float) -> None:
+        """Move the rigid body ``members`` (the groups of ``roots``) by ``shift`` along
+        ``axis``: where each group was (near), the centres, every table, the rest check's
+        forces kept for the page as it was.  (The memo is the caller's: attempt's, or the
+        compiled sweep's own.)"""
+        for root in roots:
+            self.moved_from[root] = self.mine(root, axis)
+        self.bodies.centres[members, axis] += shift
+        for tables in self.tables.values():
+            tables[axis][members] += shift
+        if self.rest is not None:
+            self.rest.moved(members, (axis,))
+
+    def compiled(self) -> Sweep:
+        """This page's sweeps in C (snap_sweep_kernel.Sweep), reading what this snapper
+        worked out; it holds this snapper's apply, so keep it only as long as the snap runs
+        (the snapper holds no reference to it: no cycle)."""
+        count = self.bodies.count
+        members = [self.members.get(row) for row in range(count)]
+        too_large = bytes(self.too_large[row][axis] if row in self.too_large else False
+                          for row in range(count) for axis in (0, 1))
+        bleeds = bytes(self.bleeds.get(row, False) for row in range(count))
+        return Sweep(count, members, too_large, bleeds, self.kind_tables(False),
+                     self.kind_tables(True), self.item_tables, self.roots, self.mover_mask,
+                     self.ranges, ALIGNED_MM, score_moves, find_line, fitting_shifts,
+                     self.rest.keeps_rest if self.rest is not None else None, self.apply,
+                     np.concatenate, (self.bodies.centres, self.halves, self.lowest,
+                                      self.highest, self.item_tables, self.fit_limits),
+                     MAX_CANDIDATES, MAX_TRIES, EVERY_MOVE, NUDGE_MM)
+
+    def kind_tables(self, bleed: bool) -> tuple[np.ndarray, np.ndarray] | None:
+        found = self.tables.get(bleed)
+        return None if found is None else tuple(found)
 
     def fits(self, members: np.ndarray, axis: int, shifts: tuple[float, ...]) -> list[float]:
         """The ``shifts`` (in their order) by which the rigid body ``members`` may move along

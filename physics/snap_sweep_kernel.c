@@ -1,0 +1,732 @@
+/* The alignment snap's sweeps (physics.snapping._Snapper: improve, try_lesser, options,
+   line_of, attempt and the memo, physics.snap_memo.AxisMemo), compiled.
+
+   With the scoring, the line, the fit test and the rest check's sums compiled (the other
+   *_kernel.c), what was left of a snap on the crowded pages was Python around them: the memo's
+   recalls, a body's options, the choice between its move and its line's, the tries: some two
+   microseconds of interpreter a call, tens of thousands of calls a snap, two thirds of its time
+   on the 50- and 60-item pages of benchmarks/guide_cost.py.  Here the same decisions in the
+   same order: the same kernels are called with the same arguments (through their Python entry
+   points), the memo keeps and recalls what AxisMemo did (a span is stale once a move along its
+   axis sweeps an item across it, ends included), a line stuck since the last move is not tried
+   again, the first fitting move that keeps the page at rest is made.  What a move changes
+   (the centres, the tables, the rest check's kept forces, where the groups were) is still
+   snapping's own Python (_Snapper.apply), called once per move, and so is the rest check
+   beyond NUDGE_MM (RestCheck.keeps_rest).  tests/physics/test_snap_sweep.py holds the whole to
+   _Snapper's Python methods, move for move; benchmarks/snap_identity.py to main's snaps. */
+
+#include "snap_kernel_support.h"
+
+/* one body's candidate moves (snapping.Moves), every reference owned */
+typedef struct {
+    PyObject *roots;   /* list of ints: the groups moved together */
+    PyObject *members; /* int64 array of their rows (None where no move is tried) */
+    PyObject *shifts;  /* tuple of floats, best first */
+    double gain;
+    int missing, lined_up;
+} Moves;
+
+typedef struct {
+    Py_ssize_t since; /* moves along the axis already checked against the span; -1: nothing */
+    double low, high;
+} Span;
+
+typedef struct {
+    PyObject_HEAD
+    Py_ssize_t count;
+    PyObject *members;       /* list per row: int64 array (a mover's group) or None */
+    PyObject *root_lists;    /* list per row: [row], made once */
+    char *too_large;         /* row * 2 + axis */
+    char *bleeds;            /* per row */
+    PyObject *tables[2][2];  /* [bleed][axis], NULL where no mover needs that kind */
+    PyObject *item_tables;   /* (x, y): what reads the rows alone */
+    PyObject *roots, *mover_mask, *ranges, *aligned;
+    PyObject *score_moves, *find_line, *fitting_shifts, *keeps_rest, *apply, *concatenate;
+    PyObject *fit_args;      /* centres, halves, lowest, highest, item tables, fit limits */
+    Py_ssize_t candidates, max_tries, every_move, tries;
+    double nudge;
+    int memo_on;             /* 0 while try_lesser scores afresh (a throwaway memo) */
+    /* the memo, per axis: the swept spans of the moved rows, in move order */
+    double *swept_low[2], *swept_high[2];
+    Py_ssize_t swept_count[2], swept_room[2];
+    Span *alone_span[2];     /* per row: a body of one group */
+    Moves *alone_value[2];
+    Span *line_span[2];      /* per row: its line (line_of) */
+    PyObject **line_value[2];
+    PyObject *lines_known[2]; /* dict: sorted roots -> [since, low, high, roots, members,
+                                 shifts, gain, missing, lined_up] */
+    PyObject *stuck[2];      /* set of sorted roots: lines whose move failed since the last */
+} Sweep;
+
+static void moves_clear(Moves *moves)
+{
+    Py_CLEAR(moves->roots);
+    Py_CLEAR(moves->members);
+    Py_CLEAR(moves->shifts);
+}
+
+/* AxisMemo.recall's test: no move along the axis since the span was kept swept across it */
+static int still_valid(Sweep *self, int axis, Span *span)
+{
+    if (span->since < 0)
+        return 0;
+    const double *lows = self->swept_low[axis], *highs = self->swept_high[axis];
+    for (Py_ssize_t k = span->since; k < self->swept_count[axis]; k++)
+        if (highs[k] >= span->low && lows[k] <= span->high) {
+            span->since = -1;
+            return 0;
+        }
+    span->since = self->swept_count[axis];
+    return 1;
+}
+
+static int swept(Sweep *self, int axis, double low, double high)
+{
+    if (self->swept_count[axis] == self->swept_room[axis]) {
+        Py_ssize_t room = self->swept_room[axis] ? 2 * self->swept_room[axis] : 64;
+        double *lows = PyMem_Realloc(self->swept_low[axis], room * sizeof(double));
+        if (lows == NULL)
+            return -1;
+        self->swept_low[axis] = lows;
+        double *highs = PyMem_Realloc(self->swept_high[axis], room * sizeof(double));
+        if (highs == NULL)
+            return -1;
+        self->swept_high[axis] = highs;
+        self->swept_room[axis] = room;
+    }
+    self->swept_low[axis][self->swept_count[axis]] = low;
+    self->swept_high[axis][self->swept_count[axis]] = high;
+    self->swept_count[axis]++;
+    return 0;
+}
+
+/* score_moves on ``table``: fills ``out``'s shifts, gain, flags; returns the span read */
+static int scored(Sweep *self, PyObject *table, PyObject *members, Moves *out, Span *span)
+{
+    PyObject *tries = PyLong_FromSsize_t(self->tries);
+    PyObject *candidates = PyLong_FromSsize_t(self->candidates);
+    PyObject *result = NULL;
+    if (tries != NULL && candidates != NULL)
+        result = PyObject_CallFunctionObjArgs(self->score_moves, table, members, self->ranges,
+                                              candidates, tries, NULL);
+    Py_XDECREF(tries);
+    Py_XDECREF(candidates);
+    if (result == NULL)
+        return -1;
+    if (!PyTuple_Check(result) || PyTuple_GET_SIZE(result) != 6) {
+        Py_DECREF(result);
+        PyErr_SetString(PyExc_TypeError, "score_moves: a tuple of six");
+        return -1;
+    }
+    out->shifts = Py_NewRef(PyTuple_GET_ITEM(result, 0));
+    out->gain = PyFloat_AsDouble(PyTuple_GET_ITEM(result, 1));
+    out->missing = PyObject_IsTrue(PyTuple_GET_ITEM(result, 2));
+    out->lined_up = PyObject_IsTrue(PyTuple_GET_ITEM(result, 3));
+    span->low = PyFloat_AsDouble(PyTuple_GET_ITEM(result, 4));
+    span->high = PyFloat_AsDouble(PyTuple_GET_ITEM(result, 5));
+    Py_DECREF(result);
+    if (PyErr_Occurred() || out->missing < 0 || out->lined_up < 0 || !PyTuple_Check(out->shifts))
+        return PyErr_Occurred() ? -1 : (PyErr_SetString(PyExc_TypeError, "shifts"), -1);
+    return 0;
+}
+
+/* _Snapper.options([root], axis) */
+static int options_alone(Sweep *self, Py_ssize_t root, int axis, Moves *out)
+{
+    memset(out, 0, sizeof(Moves));
+    out->roots = Py_NewRef(PyList_GET_ITEM(self->root_lists, root));
+    out->members = Py_NewRef(PyList_GET_ITEM(self->members, root));
+    if (self->too_large[root * 2 + axis]) {
+        out->shifts = PyTuple_New(0);
+        return out->shifts == NULL ? -1 : 0;
+    }
+    Span *span = &self->alone_span[axis][root];
+    Moves *known = &self->alone_value[axis][root];
+    if (self->memo_on && still_valid(self, axis, span)) {
+        out->shifts = Py_NewRef(known->shifts);
+        out->gain = known->gain;
+        out->missing = known->missing;
+        out->lined_up = known->lined_up;
+        return 0;
+    }
+    PyObject *table = self->tables[self->bleeds[root] ? 1 : 0][axis];
+    Span read;
+    if (table == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "no table of this kind");
+        return -1;
+    }
+    if (scored(self, table, out->members, out, &read) < 0)
+        return -1;
+    if (self->memo_on) {
+        Py_XSETREF(known->shifts, Py_NewRef(out->shifts));
+        known->gain = out->gain;
+        known->missing = out->missing;
+        known->lined_up = out->lined_up;
+        span->low = read.low;
+        span->high = read.high;
+        span->since = self->swept_count[axis];
+    }
+    return 0;
+}
+
+static PyObject *sorted_key(PyObject *roots)
+{
+    PyObject *copy = PyList_GetSlice(roots, 0, PyList_GET_SIZE(roots));
+    if (copy == NULL)
+        return NULL;
+    if (PyList_Sort(copy) < 0) {
+        Py_DECREF(copy);
+        return NULL;
+    }
+    PyObject *key = PyList_AsTuple(copy);
+    Py_DECREF(copy);
+    return key;
+}
+
+static PyObject *members_of(Sweep *self, PyObject *roots)
+{
+    Py_ssize_t n = PyList_GET_SIZE(roots);
+    PyObject *parts = PyList_New(n);
+    if (parts == NULL)
+        return NULL;
+    for (Py_ssize_t k = 0; k < n; k++) {
+        Py_ssize_t root = PyLong_AsSsize_t(PyList_GET_ITEM(roots, k));
+        if (root < 0 || root >= self->count) {
+            Py_DECREF(parts);
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_IndexError, "a root outside the page");
+            return NULL;
+        }
+        PyList_SET_ITEM(parts, k, Py_NewRef(PyList_GET_ITEM(self->members, root)));
+    }
+    PyObject *members = PyObject_CallOneArg(self->concatenate, parts);
+    Py_DECREF(parts);
+    return members;
+}
+
+/* _Snapper.options(roots, axis) for a line of several groups (``key``: the roots sorted) */
+static int options_line(Sweep *self, PyObject *roots, PyObject *key, int axis, Moves *out)
+{
+    memset(out, 0, sizeof(Moves));
+    Py_ssize_t n = PyList_GET_SIZE(roots);
+    int all_bleed = 1, any_large = 0;
+    for (Py_ssize_t k = 0; k < n; k++) {
+        Py_ssize_t root = PyLong_AsSsize_t(PyList_GET_ITEM(roots, k));
+        if (root < 0 || root >= self->count) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_IndexError, "a root outside the page");
+            return -1;
+        }
+        any_large |= self->too_large[root * 2 + axis];
+        all_bleed &= self->bleeds[root] != 0;
+    }
+    out->roots = Py_NewRef(roots);
+    if (any_large) { /* no move to make (its members are never read) */
+        out->members = Py_NewRef(Py_None);
+        out->shifts = PyTuple_New(0);
+        return out->shifts == NULL ? -1 : 0;
+    }
+    PyObject *entry = NULL;
+    if (self->memo_on) {
+        entry = PyDict_GetItemWithError(self->lines_known[axis], key); /* borrowed */
+        if (entry == NULL && PyErr_Occurred())
+            return -1;
+    }
+    if (entry != NULL) {
+        Span span = {PyLong_AsSsize_t(PyList_GET_ITEM(entry, 0)),
+                     PyFloat_AS_DOUBLE(PyList_GET_ITEM(entry, 1)),
+                     PyFloat_AS_DOUBLE(PyList_GET_ITEM(entry, 2))};
+        if (still_valid(self, axis, &span)) {
+            PyObject *since = PyLong_FromSsize_t(span.since);
+            if (since == NULL)
+                return -1;
+            PyList_SetItem(entry, 0, since);
+            out->shifts = Py_NewRef(PyList_GET_ITEM(entry, 5));
+            out->gain = PyFloat_AS_DOUBLE(PyList_GET_ITEM(entry, 6));
+            out->missing = PyList_GET_ITEM(entry, 7) == Py_True;
+            out->lined_up = PyList_GET_ITEM(entry, 8) == Py_True;
+            int same = PyObject_RichCompareBool(PyList_GET_ITEM(entry, 3), roots, Py_EQ);
+            if (same < 0)
+                return -1;
+            if (same) {
+                Py_SETREF(out->roots, Py_NewRef(PyList_GET_ITEM(entry, 3)));
+                out->members = Py_NewRef(PyList_GET_ITEM(entry, 4));
+            } else { /* the same groups named in another order: their rows in that order */
+                out->members = members_of(self, roots);
+                if (out->members == NULL)
+                    return -1;
+            }
+            return 0;
+        }
+        if (PyDict_DelItem(self->lines_known[axis], key) < 0)
+            return -1;
+    }
+    out->members = members_of(self, roots);
+    if (out->members == NULL)
+        return -1;
+    PyObject *table = self->tables[all_bleed][axis];
+    Span read;
+    if (table == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "no table of this kind");
+        return -1;
+    }
+    if (scored(self, table, out->members, out, &read) < 0)
+        return -1;
+    if (self->memo_on) {
+        PyObject *kept = Py_BuildValue("[ndd OOO d OO]", self->swept_count[axis], read.low,
+                                       read.high, out->roots, out->members, out->shifts,
+                                       out->gain, out->missing ? Py_True : Py_False,
+                                       out->lined_up ? Py_True : Py_False);
+        if (kept == NULL)
+            return -1;
+        int failed = PyDict_SetItem(self->lines_known[axis], key, kept);
+        Py_DECREF(kept);
+        if (failed < 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* _Snapper.line_of(row, axis): a new reference to the list of roots */
+static PyObject *line_of(Sweep *self, Py_ssize_t row, int axis)
+{
+    Span *span = &self->line_span[axis][row];
+    PyObject **known = &self->line_value[axis][row];
+    if (self->memo_on && still_valid(self, axis, span))
+        return Py_NewRef(*known);
+    PyObject *result = PyObject_CallFunction(
+        self->find_line, "OOnnOOO", PyTuple_GET_ITEM(self->item_tables, axis),
+        PyList_GET_ITEM(self->members, row), row, self->count, self->roots, self->mover_mask,
+        self->aligned);
+    if (result == NULL)
+        return NULL;
+    PyObject *line;
+    double low, high;
+    if (!PyArg_ParseTuple(result, "O!dd", &PyList_Type, &line, &low, &high)) {
+        Py_DECREF(result);
+        return NULL;
+    }
+    Py_INCREF(line);
+    Py_DECREF(result);
+    if (self->memo_on) {
+        Py_XSETREF(*known, Py_NewRef(line));
+        span->low = low;
+        span->high = high;
+        span->since = self->swept_count[axis];
+    }
+    return line;
+}
+
+/* _Snapper.attempt: make the first of the moves that fits and keeps the page at rest */
+static int attempt(Sweep *self, Moves *moves, PyObject *shifts, int axis)
+{
+    if (PyTuple_GET_SIZE(shifts) == 0)
+        return 0;
+    PyObject *fitting = PyObject_CallFunction(
+        self->fitting_shifts, "OiOOOOOOO", moves->members, axis, shifts,
+        PyTuple_GET_ITEM(self->fit_args, 0), PyTuple_GET_ITEM(self->fit_args, 1),
+        PyTuple_GET_ITEM(self->fit_args, 2), PyTuple_GET_ITEM(self->fit_args, 3),
+        PyTuple_GET_ITEM(self->fit_args, 4), PyTuple_GET_ITEM(self->fit_args, 5));
+    if (fitting == NULL)
+        return -1;
+    if (!PyList_Check(fitting)) {
+        Py_DECREF(fitting);
+        PyErr_SetString(PyExc_TypeError, "fitting_shifts: a list");
+        return -1;
+    }
+    int made = 0;
+    for (Py_ssize_t k = 0; k < PyList_GET_SIZE(fitting) && !made; k++) {
+        PyObject *shift = PyList_GET_ITEM(fitting, k);
+        double value = PyFloat_AsDouble(shift);
+        if (value == -1.0 && PyErr_Occurred())
+            goto failed;
+        int keeps = fabs(value) <= self->nudge || self->keeps_rest == Py_None;
+        if (!keeps) {
+            PyObject *answer = PyObject_CallFunction(self->keeps_rest, "OiO", moves->members,
+                                                     axis, shift);
+            if (answer == NULL)
+                goto failed;
+            keeps = PyObject_IsTrue(answer);
+            Py_DECREF(answer);
+            if (keeps < 0)
+                goto failed;
+        }
+        if (!keeps)
+            continue;
+        /* the move: AxisMemo.moved reads each member's low and high edge before and after */
+        Py_buffer rows_view, table_view;
+        PyObject *table = PyTuple_GET_ITEM(self->item_tables, axis);
+        if (read_rows(moves->members, &rows_view, self->count) < 0)
+            goto failed;
+        Py_ssize_t n = rows_view.shape[0];
+        double *before = PyMem_Malloc((2 * n + 1) * sizeof(double));
+        if (before == NULL) {
+            PyBuffer_Release(&rows_view);
+            PyErr_NoMemory();
+            goto failed;
+        }
+        const int64_t *rows = rows_view.buf;
+        if (read_doubles(table, &table_view, 2, "item table") < 0) {
+            PyMem_Free(before);
+            PyBuffer_Release(&rows_view);
+            goto failed;
+        }
+        const double *cells = table_view.buf;
+        for (Py_ssize_t m = 0; m < n; m++) {
+            before[2 * m] = cells[rows[m] * COLUMNS + LOW_EDGE];
+            before[2 * m + 1] = cells[rows[m] * COLUMNS + HIGH_EDGE];
+        }
+        PyObject *applied = PyObject_CallFunction(self->apply, "OOiO", moves->roots,
+                                                  moves->members, axis, shift);
+        int bad = applied == NULL;
+        Py_XDECREF(applied);
+        for (Py_ssize_t m = 0; m < n && !bad; m++) {
+            /* np.minimum / np.maximum: a NaN on either side is the answer */
+            double low_before = before[2 * m], high_before = before[2 * m + 1];
+            double low_after = cells[rows[m] * COLUMNS + LOW_EDGE];
+            double high_after = cells[rows[m] * COLUMNS + HIGH_EDGE];
+            double low = isnan(low_before) || isnan(low_after) ? NAN
+                : (low_after < low_before ? low_after : low_before);
+            double high = isnan(high_before) || isnan(high_after) ? NAN
+                : (high_after > high_before ? high_after : high_before);
+            bad = swept(self, axis, low, high) < 0;
+        }
+        PyBuffer_Release(&table_view);
+        PyBuffer_Release(&rows_view);
+        PyMem_Free(before);
+        if (bad)
+            goto failed;
+        made = 1;
+    }
+    Py_DECREF(fitting);
+    return made;
+failed:
+    Py_DECREF(fitting);
+    return -1;
+}
+
+static int unstick(Sweep *self)
+{
+    return PySet_Clear(self->stuck[0]) < 0 || PySet_Clear(self->stuck[1]) < 0 ? -1 : 0;
+}
+
+/* _Snapper.improve: a new reference to the roots moved (an empty list if none) */
+static PyObject *improve(Sweep *self, Py_ssize_t row, int axis)
+{
+    Moves alone, together;
+    memset(&together, 0, sizeof(Moves));
+    PyObject *line = NULL, *line_key = NULL, *result = NULL;
+    int have_together = 0;
+    if (options_alone(self, row, axis, &alone) < 0)
+        goto done;
+    /* a group on no near miss gains nothing from its line's move, and one on no line has none */
+    if (alone.missing && alone.lined_up) {
+        line = line_of(self, row, axis);
+        if (line == NULL)
+            goto done;
+        line_key = sorted_key(line);
+        if (line_key == NULL)
+            goto done;
+        if (PyList_GET_SIZE(line) > 1) {
+            int stuck = PySet_Contains(self->stuck[axis], line_key);
+            if (stuck < 0)
+                goto done;
+            if (!stuck) {
+                if (options_line(self, line, line_key, axis, &together) < 0)
+                    goto done;
+                have_together = 1;
+            }
+        }
+    }
+    Moves *choices[2] = {&alone, NULL};
+    if (have_together) {
+        if (together.gain > alone.gain) {
+            choices[0] = &together;
+            choices[1] = &alone;
+        } else
+            choices[1] = &together;
+    }
+    for (int k = 0; k < 2 && choices[k] != NULL; k++) {
+        int made = attempt(self, choices[k], choices[k]->shifts, axis);
+        if (made < 0)
+            goto done;
+        if (made) {
+            if (unstick(self) < 0)
+                goto done;
+            result = Py_NewRef(choices[k]->roots);
+            goto done;
+        }
+        if (PyList_GET_SIZE(choices[k]->roots) > 1 && PySet_Add(self->stuck[axis], line_key) < 0)
+            goto done;
+    }
+    result = PyList_New(0);
+done:
+    moves_clear(&alone);
+    moves_clear(&together);
+    Py_XDECREF(line);
+    Py_XDECREF(line_key);
+    return result;
+}
+
+/* _Snapper.try_lesser */
+static PyObject *try_lesser(Sweep *self, Py_ssize_t row, int axis)
+{
+    Moves first, every;
+    memset(&every, 0, sizeof(Moves));
+    PyObject *result = NULL, *rest = NULL;
+    if (options_alone(self, row, axis, &first) < 0)
+        goto done;
+    if (PyTuple_GET_SIZE(first.shifts) < self->max_tries) {
+        result = PyList_New(0);
+        goto done;
+    }
+    /* every move, scored afresh (a throwaway memo: the kept one holds the cut lists) */
+    self->memo_on = 0;
+    self->tries = self->every_move;
+    int failed = options_alone(self, row, axis, &every) < 0;
+    self->memo_on = 1;
+    self->tries = self->max_tries;
+    if (failed)
+        goto done;
+    rest = PyTuple_GetSlice(every.shifts, self->max_tries, PyTuple_GET_SIZE(every.shifts));
+    if (rest == NULL)
+        goto done;
+    int made = attempt(self, &every, rest, axis);
+    if (made < 0)
+        goto done;
+    if (made) {
+        if (unstick(self) < 0)
+            goto done;
+        result = Py_NewRef(every.roots);
+    } else
+        result = PyList_New(0);
+done:
+    moves_clear(&first);
+    moves_clear(&every);
+    Py_XDECREF(rest);
+    return result;
+}
+
+/* the sweeps' loops over rows: [root for row in rows for root in step(row, axis)] */
+static PyObject *over_rows(Sweep *self, PyObject *args,
+                           PyObject *(*step)(Sweep *, Py_ssize_t, int))
+{
+    PyObject *rows;
+    int axis;
+    if (!PyArg_ParseTuple(args, "O!i", &PyList_Type, &rows, &axis))
+        return NULL;
+    if (axis != 0 && axis != 1) {
+        PyErr_SetString(PyExc_ValueError, "axis: 0 or 1");
+        return NULL;
+    }
+    PyObject *moved = PyList_New(0);
+    if (moved == NULL)
+        return NULL;
+    for (Py_ssize_t k = 0; k < PyList_GET_SIZE(rows); k++) {
+        Py_ssize_t row = PyLong_AsSsize_t(PyList_GET_ITEM(rows, k));
+        if (row == -1 && PyErr_Occurred())
+            goto failed;
+        if (row < 0 || row >= self->count
+                || PyList_GET_ITEM(self->members, row) == Py_None) {
+            PyErr_SetString(PyExc_IndexError, "rows: movers of the page");
+            goto failed;
+        }
+        PyObject *roots = step(self, row, axis);
+        if (roots == NULL)
+            goto failed;
+        Py_ssize_t end = PyList_GET_SIZE(moved);
+        int bad = PyList_SetSlice(moved, end, end, roots) < 0;
+        Py_DECREF(roots);
+        if (bad)
+            goto failed;
+    }
+    return moved;
+failed:
+    Py_DECREF(moved);
+    return NULL;
+}
+
+static PyObject *sweep_improve(Sweep *self, PyObject *args)
+{
+    return over_rows(self, args, improve);
+}
+
+static PyObject *sweep_lesser(Sweep *self, PyObject *args)
+{
+    return over_rows(self, args, try_lesser);
+}
+
+static void sweep_dealloc(Sweep *self)
+{
+    for (int axis = 0; axis < 2; axis++) {
+        for (Py_ssize_t row = 0; row < self->count; row++) {
+            if (self->alone_value[axis] != NULL)
+                moves_clear(&self->alone_value[axis][row]);
+            if (self->line_value[axis] != NULL)
+                Py_CLEAR(self->line_value[axis][row]);
+        }
+        PyMem_Free(self->alone_value[axis]);
+        PyMem_Free(self->alone_span[axis]);
+        PyMem_Free(self->line_value[axis]);
+        PyMem_Free(self->line_span[axis]);
+        PyMem_Free(self->swept_low[axis]);
+        PyMem_Free(self->swept_high[axis]);
+        Py_CLEAR(self->lines_known[axis]);
+        Py_CLEAR(self->stuck[axis]);
+        for (int bleed = 0; bleed < 2; bleed++)
+            Py_CLEAR(self->tables[bleed][axis]);
+    }
+    PyMem_Free(self->too_large);
+    PyMem_Free(self->bleeds);
+    Py_CLEAR(self->members);
+    Py_CLEAR(self->root_lists);
+    Py_CLEAR(self->item_tables);
+    Py_CLEAR(self->roots);
+    Py_CLEAR(self->mover_mask);
+    Py_CLEAR(self->ranges);
+    Py_CLEAR(self->aligned);
+    Py_CLEAR(self->score_moves);
+    Py_CLEAR(self->find_line);
+    Py_CLEAR(self->fitting_shifts);
+    Py_CLEAR(self->keeps_rest);
+    Py_CLEAR(self->apply);
+    Py_CLEAR(self->concatenate);
+    Py_CLEAR(self->fit_args);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static int take_tables(PyObject *pair, PyObject **tables)
+{
+    if (pair == Py_None)
+        return 0;
+    if (!PyTuple_Check(pair) || PyTuple_GET_SIZE(pair) != 2) {
+        PyErr_SetString(PyExc_TypeError, "tables: (x, y) or None");
+        return -1;
+    }
+    tables[0] = Py_NewRef(PyTuple_GET_ITEM(pair, 0));
+    tables[1] = Py_NewRef(PyTuple_GET_ITEM(pair, 1));
+    return 0;
+}
+
+static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
+{
+    Py_ssize_t count, candidates, max_tries, every_move;
+    PyObject *members, *too_large, *bleeds, *plain, *bleeding, *item_tables, *roots, *mover_mask,
+        *ranges, *aligned, *score, *find, *fits, *keeps_rest, *apply, *concatenate, *fit_args;
+    double nudge;
+    if (!PyArg_ParseTuple(args, "nO!SSOOO!OOOO!OOOOOOO!nnnd:Sweep", &count, &PyList_Type,
+                          &members, &too_large, &bleeds, &plain, &bleeding, &PyTuple_Type,
+                          &item_tables, &roots, &mover_mask, &ranges, &PyFloat_Type, &aligned,
+                          &score, &find, &fits, &keeps_rest, &apply, &concatenate,
+                          &PyTuple_Type, &fit_args, &candidates, &max_tries, &every_move,
+                          &nudge))
+        return NULL;
+    if (count < 0 || PyList_GET_SIZE(members) != count || PyBytes_GET_SIZE(too_large) != 2 * count
+            || PyBytes_GET_SIZE(bleeds) != count || PyTuple_GET_SIZE(item_tables) != 2
+            || PyTuple_GET_SIZE(fit_args) != 6) {
+        PyErr_SetString(PyExc_ValueError, "Sweep: one entry per row (two per row of too_large)");
+        return NULL;
+    }
+    Sweep *self = (Sweep *)type->tp_alloc(type, 0);
+    if (self == NULL)
+        return NULL;
+    self->count = count;
+    self->members = Py_NewRef(members);
+    self->item_tables = Py_NewRef(item_tables);
+    self->roots = Py_NewRef(roots);
+    self->mover_mask = Py_NewRef(mover_mask);
+    self->ranges = Py_NewRef(ranges);
+    self->aligned = Py_NewRef(aligned);
+    self->score_moves = Py_NewRef(score);
+    self->find_line = Py_NewRef(find);
+    self->fitting_shifts = Py_NewRef(fits);
+    self->keeps_rest = Py_NewRef(keeps_rest);
+    self->apply = Py_NewRef(apply);
+    self->concatenate = Py_NewRef(concatenate);
+    self->fit_args = Py_NewRef(fit_args);
+    self->candidates = candidates;
+    self->max_tries = self->tries = max_tries;
+    self->every_move = every_move;
+    self->nudge = nudge;
+    self->memo_on = 1;
+    if (take_tables(plain, self->tables[0]) < 0 || take_tables(bleeding, self->tables[1]) < 0)
+        goto failed;
+    self->too_large = PyMem_Malloc(2 * count + 1);
+    self->bleeds = PyMem_Malloc(count + 1);
+    self->root_lists = PyList_New(count);
+    if (self->too_large == NULL || self->bleeds == NULL || self->root_lists == NULL)
+        goto no_memory;
+    memcpy(self->too_large, PyBytes_AS_STRING(too_large), 2 * count);
+    memcpy(self->bleeds, PyBytes_AS_STRING(bleeds), count);
+    for (Py_ssize_t row = 0; row < count; row++) {
+        PyObject *list = Py_BuildValue("[n]", row);
+        if (list == NULL)
+            goto failed;
+        PyList_SET_ITEM(self->root_lists, row, list);
+    }
+    for (int axis = 0; axis < 2; axis++) {
+        self->alone_span[axis] = PyMem_Malloc((count + 1) * sizeof(Span));
+        self->alone_value[axis] = PyMem_Calloc(count + 1, sizeof(Moves));
+        self->line_span[axis] = PyMem_Malloc((count + 1) * sizeof(Span));
+        self->line_value[axis] = PyMem_Calloc(count + 1, sizeof(PyObject *));
+        self->lines_known[axis] = PyDict_New();
+        self->stuck[axis] = PySet_New(NULL);
+        if (self->alone_span[axis] == NULL || self->alone_value[axis] == NULL
+                || self->line_span[axis] == NULL || self->line_value[axis] == NULL)
+            goto no_memory;
+        if (self->lines_known[axis] == NULL || self->stuck[axis] == NULL)
+            goto failed;
+        for (Py_ssize_t row = 0; row < count; row++)
+            self->alone_span[axis][row].since = self->line_span[axis][row].since = -1;
+    }
+    return (PyObject *)self;
+no_memory:
+    PyErr_NoMemory();
+failed:
+    Py_DECREF(self);
+    return NULL;
+}
+
+static PyMethodDef sweep_methods[] = {
+    {"improve", (PyCFunction)sweep_improve, METH_VARARGS,
+     "improve(rows, axis) -> roots moved: _Snapper.improve of each row in turn, the roots of "
+     "every move made, in order"},
+    {"try_lesser", (PyCFunction)sweep_lesser, METH_VARARGS,
+     "try_lesser(rows, axis) -> roots moved: _Snapper.try_lesser of each row in turn"},
+    {NULL, NULL, 0, NULL},
+};
+
+static PyTypeObject SweepType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "floatpage.physics.snap_sweep_kernel.Sweep",
+    .tp_basicsize = sizeof(Sweep),
+    .tp_dealloc = (destructor)sweep_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "Sweep(count, members, too_large, bleeds, tables, bleed_tables, item_tables, "
+              "roots, mover_mask, ranges, aligned, score_moves, line_of, fitting_shifts, "
+              "keeps_rest, apply, concatenate, fit_args, candidates, max_tries, every_move, "
+              "nudge): one page's snap sweeps with their memo (physics.snapping._Snapper."
+              "compiled builds it).  Holds no reference back to a Sweep: apply and keeps_rest "
+              "are the snapper's and the rest check's own methods.",
+    .tp_methods = sweep_methods,
+    .tp_new = sweep_new,
+};
+
+static struct PyModuleDef module_def = {
+    PyModuleDef_HEAD_INIT, "snap_sweep_kernel",
+    "The alignment snap's sweeps and memo, compiled (physics.snapping).", -1, NULL,
+};
+
+PyMODINIT_FUNC PyInit_snap_sweep_kernel(void)
+{
+    if (PyType_Ready(&SweepType) < 0)
+        return NULL;
+    PyObject *module = PyModule_Create(&module_def);
+    if (module == NULL)
+        return NULL;
+    if (PyModule_AddObjectRef(module, "Sweep", (PyObject *)&SweepType) < 0) {
+        Py_DECREF(module);
+        return NULL;
+    }
+    return module;
+}
