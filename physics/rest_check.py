@@ -103,6 +103,18 @@ class RestCheck:
         self.reach_of: dict[bytes, tuple[np.ndarray, list[int], list[int]]] = {}
         self.before: dict[int, tuple[np.ndarray | None, float]] = {}  # per group: as_it_is
 
+    def compiled_parts(self) -> tuple:
+        """What the compiled sweeps' rest check (snap_sweep_kernel: keeps_rest, as_it_is,
+        group_sums and unheld, the same decisions on the same floats) reads of this one: the
+        pairs a body reaches (reached_by, kept here), the force sums (rest_net), the lines'
+        hold (LineHold.held), the rows per group and the pairs per row as lists, the limit and
+        the hold.  Its kept pushes of the page as it is are its own, forgotten at every move
+        as ``moved`` forgets these."""
+        return (self.reached_by, rest_net, (self.bodies.centres, self.pair_ends, self.pair_table,
+                                            self.row_table, self.forces),
+                self.lines.held, as_rows, NO_ROWS, self.root_list, self.group_row_lists,
+                self.pair_lists_of, self.grouped, float(self.limit), float(self.hold))
+
     def net(self, rows: list[int], pairs: list[int], members: np.ndarray = NO_ROWS,
             axis: int = 0, shift: float = 0.0) -> list[tuple[float, float]]:
         """Net acceleration of each of ``rows`` (``pairs`` must hold every pair that touches
@@ -219,6 +231,11 @@ class RestCheck:
         summed = np.zeros((self.bodies.count, 2))
         np.add.at(summed, self.roots[rows], per_row)
         return summed[groups]
+
+
+def as_rows(ids: list[int]) -> np.ndarray:
+    """Group ids as the int64 array LineHold.held keys its kept rows by."""
+    return np.array(ids, dtype=np.int64)
 
 
 def group_members(roots: np.ndarray, active: np.ndarray) -> list[np.ndarray]:

@@ -363,7 +363,7 @@ class _Snapper:
         return Sweep(count, members, too_large, bleeds, self.kind_tables(False),
                      self.kind_tables(True), self.item_tables, self.roots, self.mover_mask,
                      self.ranges, ALIGNED_MM, score_moves, find_line, fitting_shifts,
-                     self.rest.keeps_rest if self.rest is not None else None, self.apply,
+                     self.rest.compiled_parts() if self.rest is not None else None, self.apply,
                      np.concatenate, (self.bodies.centres, self.halves, self.lowest,
                                       self.highest, self.item_tables, self.fit_limits),
                      MAX_CANDIDATES, MAX_TRIES, EVERY_MOVE, NUDGE_MM)
