@@ -31,7 +31,8 @@ from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
 from floatpage.physics.line_hold import LineHold
-from floatpage.physics.rest_check_kernel import rest_net
+from floatpage.physics.guides import ON_LINE_MM
+from floatpage.physics.rest_check_kernel import held_on_lines, rest_net
 from floatpage.physics.stillness import PROBE_HEAT
 
 REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
@@ -110,10 +111,15 @@ class RestCheck:
         hold (LineHold.held), the rows per group and the pairs per row as lists, the limit and
         the hold.  Its kept pushes of the page as it is are its own, forgotten at every move
         as ``moved`` forgets these."""
+        lines = self.lines
         return (self.reached_by, rest_net, (self.bodies.centres, self.pair_ends, self.pair_table,
                                             self.row_table, self.forces),
-                self.lines.held, as_rows, NO_ROWS, self.root_list, self.group_row_lists,
-                self.pair_lists_of, self.grouped, float(self.limit), float(self.hold))
+                held_on_lines, (lines.centres, lines.halves, lines.active_rows, lines.roots,
+                                *(tuple(pair) for pair in lines.page_lines), ON_LINE_MM),
+                NO_ROWS, np.zeros(self.bodies.count, dtype=np.int64),
+                np.zeros(self.bodies.count, dtype=np.int64), self.root_list,
+                self.group_row_lists, self.pair_lists_of, self.grouped, float(self.limit),
+                float(self.hold))
 
     def net(self, rows: list[int], pairs: list[int], members: np.ndarray = NO_ROWS,
             axis: int = 0, shift: float = 0.0) -> list[tuple[float, float]]:
@@ -231,11 +237,6 @@ class RestCheck:
         summed = np.zeros((self.bodies.count, 2))
         np.add.at(summed, self.roots[rows], per_row)
         return summed[groups]
-
-
-def as_rows(ids: list[int]) -> np.ndarray:
-    """Group ids as the int64 array LineHold.held keys its kept rows by."""
-    return np.array(ids, dtype=np.int64)
 
 
 def group_members(roots: np.ndarray, active: np.ndarray) -> list[np.ndarray]:

@@ -68,8 +68,18 @@ def scoring_ranges(reach: float, farthest: float, window: float,
     near it, and the distance past which none is read (relevant_distance, unless given)."""
     if relevant is None:
         relevant = relevant_distance(farthest)
-    return np.concatenate([distance_bounds(reach, farthest), WINDOW_ENDS,
-                           [ESCAPE_MM, window, relevant]])
+    key = (reach, farthest, window, relevant)
+    found = _RANGES.get(key)
+    if found is None:  # a page size's ranges, worked out once (first_where's float walks)
+        found = np.concatenate([distance_bounds(reach, farthest), WINDOW_ENDS,
+                                [ESCAPE_MM, window, relevant]])
+        found.flags.writeable = False  # kept and shared: the kernels only read it
+        if len(_RANGES) < 64:
+            _RANGES[key] = found
+    return found
+
+
+_RANGES: dict[tuple[float, float, float, float], np.ndarray] = {}
 
 
 def relevant_distance(farthest: float) -> float:

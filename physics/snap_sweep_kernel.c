@@ -59,7 +59,8 @@ typedef struct {
     /* the rest check (RestCheck.keeps_rest), when the snap has one */
     int has_rest, grouped;
     double limit, hold;
-    PyObject *reached_by, *rest_net, *net_args, *held, *as_rows, *no_rows;
+    PyObject *reached_by, *rest_net, *net_args, *held_on_lines, *hold_args, *no_rows, *zero;
+    PyObject *scratch_rows, *scratch_owner; /* int64, one per row: held_of's rows, owners */
     PyObject *root_list, *group_rows, *pairs_of;
     char *before_known, *before_held; /* per group: RestCheck.as_it_is's, until a move */
     double *before_push;
@@ -403,48 +404,67 @@ static inline double unheld(Sweep *self, const double *acc, const char *held)
     return larger(size[0], size[1]);
 }
 
-/* LineHold.held(groups, axis, members, shift) into ``out`` (one flag per group) */
+/* LineHold.held(groups, axis, members, shift) into ``out`` (one flag per group): its rows and
+   their owners (LineHold.others) written into kept int64 arrays, then held_on_lines called
+   with the arguments LineHold.held gives it */
 static int held_of(Sweep *self, const Py_ssize_t *groups, Py_ssize_t count, int axis,
                    PyObject *members, PyObject *shift, char *out)
 {
-    PyObject *list = PyList_New(count);
-    if (list == NULL)
+    Py_buffer rows_view, owner_view;
+    if (PyObject_GetBuffer(self->scratch_rows, &rows_view, PyBUF_C_CONTIGUOUS | PyBUF_WRITABLE) < 0)
         return -1;
+    if (PyObject_GetBuffer(self->scratch_owner, &owner_view,
+                           PyBUF_C_CONTIGUOUS | PyBUF_WRITABLE) < 0) {
+        PyBuffer_Release(&rows_view);
+        return -1;
+    }
+    int64_t *rows = rows_view.buf, *owner = owner_view.buf;
+    Py_ssize_t room = rows_view.len / 8, n = 0;
+    int status = -1;
     for (Py_ssize_t g = 0; g < count; g++) {
-        PyObject *id = PyLong_FromSsize_t(groups[g]);
-        if (id == NULL) {
-            Py_DECREF(list);
-            return -1;
+        PyObject *group_rows = PyList_GET_ITEM(self->group_rows, groups[g]);
+        for (Py_ssize_t k = 0; k < PyList_GET_SIZE(group_rows) && n < room; k++) {
+            rows[n] = PyLong_AsSsize_t(PyList_GET_ITEM(group_rows, k));
+            owner[n++] = g;
         }
-        PyList_SET_ITEM(list, g, id);
     }
-    PyObject *array = PyObject_CallOneArg(self->as_rows, list);
-    Py_DECREF(list);
-    if (array == NULL)
-        return -1;
-    PyObject *axis_object = PyLong_FromLong(axis);
-    PyObject *result = axis_object == NULL ? NULL : PyObject_CallFunctionObjArgs(
-        self->held, array, axis_object, members, shift, NULL);
-    Py_DECREF(array);
-    Py_XDECREF(axis_object);
-    if (result == NULL)
-        return -1;
-    Py_buffer view;
-    if (PyObject_GetBuffer(result, &view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0) {
-        Py_DECREF(result);
-        return -1;
+    PyBuffer_Release(&rows_view);
+    PyBuffer_Release(&owner_view);
+    PyObject *rows_now = PySequence_GetSlice(self->scratch_rows, 0, n);
+    PyObject *owner_now = PySequence_GetSlice(self->scratch_owner, 0, n);
+    PyObject *groups_now = PyLong_FromSsize_t(count);
+    PyObject *axis_now = PyLong_FromLong(axis);
+    PyObject *result = NULL;
+    if (rows_now != NULL && owner_now != NULL && groups_now != NULL && axis_now != NULL
+            && !PyErr_Occurred()) {
+        PyObject *parts = self->hold_args;
+        PyObject *lines = PyTuple_GET_ITEM(parts, 4 + axis);
+        PyObject *args[13] = {rows_now, owner_now, groups_now, PyTuple_GET_ITEM(parts, 0),
+                              PyTuple_GET_ITEM(parts, 1), PyTuple_GET_ITEM(parts, 2),
+                              PyTuple_GET_ITEM(parts, 3), PyTuple_GET_ITEM(lines, 0),
+                              PyTuple_GET_ITEM(lines, 1), axis_now, members, shift,
+                              PyTuple_GET_ITEM(parts, 6)};
+        result = PyObject_Vectorcall(self->held_on_lines, args, 13, NULL);
     }
-    int right = view.ndim == 1 && view.itemsize == 1 && view.shape[0] == count;
-    if (right)
-        for (Py_ssize_t g = 0; g < count; g++)
-            out[g] = ((const char *)view.buf)[g] != 0;
-    PyBuffer_Release(&view);
-    Py_DECREF(result);
-    if (!right) {
-        PyErr_SetString(PyExc_TypeError, "held: one bool per group");
-        return -1;
+    if (result != NULL) {
+        if (!PyList_Check(result) || PyList_GET_SIZE(result) != count)
+            PyErr_SetString(PyExc_TypeError, "held_on_lines: one flag per group");
+        else {
+            status = 0;
+            for (Py_ssize_t g = 0; g < count && status == 0; g++) {
+                int flag = PyObject_IsTrue(PyList_GET_ITEM(result, g));
+                if (flag < 0)
+                    status = -1;
+                out[g] = (char)flag;
+            }
+        }
     }
-    return 0;
+    Py_XDECREF(result);
+    Py_XDECREF(rows_now);
+    Py_XDECREF(owner_now);
+    Py_XDECREF(groups_now);
+    Py_XDECREF(axis_now);
+    return status;
 }
 
 /* RestCheck.as_it_is for the groups not known since the last move: worked out together (one
@@ -471,7 +491,8 @@ static int as_it_is(Sweep *self, const Py_ssize_t *groups, Py_ssize_t count)
     char *axis_held = held + 2 * count + 2; /* room for one axis at a time */
     if (self->hold > 0)
         for (int axis = 0; axis < 2; axis++) {
-            if (held_of(self, missing, missing_count, axis, Py_None, NULL, axis_held) < 0)
+            if (held_of(self, missing, missing_count, axis, self->no_rows, self->zero,
+                        axis_held) < 0)
                 goto done;
             for (Py_ssize_t g = 0; g < missing_count; g++)
                 held[2 * g + axis] = axis_held[g];
@@ -893,9 +914,12 @@ static void sweep_dealloc(Sweep *self)
     Py_CLEAR(self->reached_by);
     Py_CLEAR(self->rest_net);
     Py_CLEAR(self->net_args);
-    Py_CLEAR(self->held);
-    Py_CLEAR(self->as_rows);
+    Py_CLEAR(self->held_on_lines);
+    Py_CLEAR(self->hold_args);
     Py_CLEAR(self->no_rows);
+    Py_CLEAR(self->zero);
+    Py_CLEAR(self->scratch_rows);
+    Py_CLEAR(self->scratch_owner);
     Py_CLEAR(self->root_list);
     Py_CLEAR(self->group_rows);
     Py_CLEAR(self->pairs_of);
@@ -972,15 +996,17 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     memcpy(self->too_large, PyBytes_AS_STRING(too_large), 2 * count);
     memcpy(self->bleeds, PyBytes_AS_STRING(bleeds), count);
     if (keeps_rest != Py_None) { /* the rest check's parts (snapping._Snapper.compiled) */
-        PyObject *reached_by, *rest_net, *net_args, *held, *as_rows, *no_rows, *root_list,
-            *group_rows, *pairs_of;
+        PyObject *reached_by, *rest_net, *net_args, *held_on_lines, *hold_args, *no_rows,
+            *root_list, *group_rows, *pairs_of, *scratch_rows, *scratch_owner;
         int grouped;
-        if (!PyArg_ParseTuple(keeps_rest, "OOO!OOOO!O!O!pdd:rest", &reached_by, &rest_net,
-                              &PyTuple_Type, &net_args, &held, &as_rows, &no_rows,
+        if (!PyArg_ParseTuple(keeps_rest, "OOO!OO!OOOO!O!O!pdd:rest", &reached_by, &rest_net,
+                              &PyTuple_Type, &net_args, &held_on_lines, &PyTuple_Type,
+                              &hold_args, &no_rows, &scratch_rows, &scratch_owner,
                               &PyList_Type, &root_list, &PyList_Type, &group_rows,
                               &PyList_Type, &pairs_of, &grouped, &self->limit, &self->hold))
             goto failed;
-        if (PyTuple_GET_SIZE(net_args) != 5 || PyList_GET_SIZE(root_list) != count
+        if (PyTuple_GET_SIZE(net_args) != 5 || PyTuple_GET_SIZE(hold_args) != 7
+                || PyList_GET_SIZE(root_list) != count
                 || PyList_GET_SIZE(group_rows) != count || PyList_GET_SIZE(pairs_of) != count) {
             PyErr_SetString(PyExc_ValueError, "rest: five net arguments, lists per row");
             goto failed;
@@ -990,9 +1016,14 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
         self->reached_by = Py_NewRef(reached_by);
         self->rest_net = Py_NewRef(rest_net);
         self->net_args = Py_NewRef(net_args);
-        self->held = Py_NewRef(held);
-        self->as_rows = Py_NewRef(as_rows);
+        self->held_on_lines = Py_NewRef(held_on_lines);
+        self->hold_args = Py_NewRef(hold_args);
         self->no_rows = Py_NewRef(no_rows);
+        self->scratch_rows = Py_NewRef(scratch_rows);
+        self->scratch_owner = Py_NewRef(scratch_owner);
+        self->zero = PyFloat_FromDouble(0.0);
+        if (self->zero == NULL)
+            goto failed;
         self->root_list = Py_NewRef(root_list);
         self->group_rows = Py_NewRef(group_rows);
         self->pairs_of = Py_NewRef(pairs_of);
