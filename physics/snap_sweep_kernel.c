@@ -9,11 +9,12 @@
    same order: the same kernels are called with the same arguments (through their Python entry
    points), the memo keeps and recalls what AxisMemo did (a span is stale once a move along its
    axis sweeps an item across it, ends included), a line stuck since the last move is not tried
-   again, the first fitting move that keeps the page at rest is made.  What a move changes
-   (the centres, the tables, the rest check's kept forces, where the groups were) is still
-   snapping's own Python (_Snapper.apply), called once per move, and so is the rest check
-   beyond NUDGE_MM (RestCheck.keeps_rest).  tests/physics/test_snap_sweep.py holds the whole to
-   _Snapper's Python methods, move for move; benchmarks/snap_identity.py to main's snaps. */
+   again, the first fitting move that keeps the page at rest is made, as _Snapper.apply makes
+   it.  The rest check (RestCheck.keeps_rest, as_it_is) is here too, its force sums and the
+   lines' hold the compiled ones it called (rest_net, held_on_lines), the pairs a body reaches
+   RestCheck's own (reached_by, kept there).  tests/physics/test_snap_sweep.py holds the whole
+   to _Snapper's and RestCheck's Python methods (snap_to_guides(compiled=False)), move for
+   move; benchmarks/snap_identity.py to main's snaps. */
 
 #include "snap_kernel_support.h"
 
@@ -41,9 +42,12 @@ typedef struct {
     PyObject *tables[2][2];  /* [bleed][axis], NULL where no mover needs that kind */
     PyObject *item_tables;   /* (x, y): what reads the rows alone */
     PyObject *roots, *mover_mask, *ranges, *aligned;
-    PyObject *score_moves, *find_line, *fitting_shifts, *keeps_rest, *apply, *concatenate;
+    PyObject *score_moves, *find_line, *fitting_shifts, *keeps_rest, *concatenate;
+    PyObject *moved_from, *centres, *rest_before; /* what a move changes besides the tables */
     PyObject *fit_args;      /* centres, halves, lowest, highest, item tables, fit limits */
     Py_ssize_t candidates, max_tries, every_move, tries;
+    PyObject *candidates_object, *max_tries_object, *every_move_object; /* the same, made once */
+    PyObject *line_members; /* dict: a line's roots (in its order) -> their rows, made once */
     double nudge;
     int memo_on;             /* 0 while try_lesser scores afresh (a throwaway memo) */
     /* the memo, per axis: the swept spans of the moved rows, in move order */
@@ -111,14 +115,10 @@ static int swept(Sweep *self, int axis, double low, double high)
 /* score_moves on ``table``: fills ``out``'s shifts, gain, flags; returns the span read */
 static int scored(Sweep *self, PyObject *table, PyObject *members, Moves *out, Span *span)
 {
-    PyObject *tries = PyLong_FromSsize_t(self->tries);
-    PyObject *candidates = PyLong_FromSsize_t(self->candidates);
-    PyObject *result = NULL;
-    if (tries != NULL && candidates != NULL)
-        result = PyObject_CallFunctionObjArgs(self->score_moves, table, members, self->ranges,
-                                              candidates, tries, NULL);
-    Py_XDECREF(tries);
-    Py_XDECREF(candidates);
+    PyObject *args[5] = {table, members, self->ranges, self->candidates_object,
+                         self->tries == self->max_tries ? self->max_tries_object
+                                                        : self->every_move_object};
+    PyObject *result = PyObject_Vectorcall(self->score_moves, args, 5, NULL);
     if (result == NULL)
         return -1;
     if (!PyTuple_Check(result) || PyTuple_GET_SIZE(result) != 6) {
@@ -193,13 +193,26 @@ static PyObject *sorted_key(PyObject *roots)
 
 static PyObject *members_of(Sweep *self, PyObject *roots)
 {
+    /* np.concatenate of the groups' rows, kept per line (the same lines come back from the
+       memo again and again; nothing writes into a body's rows) */
+    PyObject *key = PyList_AsTuple(roots);
+    if (key == NULL)
+        return NULL;
+    PyObject *known = PyDict_GetItemWithError(self->line_members, key);
+    if (known != NULL || PyErr_Occurred()) {
+        Py_DECREF(key);
+        return known != NULL ? Py_NewRef(known) : NULL;
+    }
     Py_ssize_t n = PyList_GET_SIZE(roots);
     PyObject *parts = PyList_New(n);
-    if (parts == NULL)
+    if (parts == NULL) {
+        Py_DECREF(key);
         return NULL;
+    }
     for (Py_ssize_t k = 0; k < n; k++) {
         Py_ssize_t root = PyLong_AsSsize_t(PyList_GET_ITEM(roots, k));
         if (root < 0 || root >= self->count) {
+            Py_DECREF(key);
             Py_DECREF(parts);
             if (!PyErr_Occurred())
                 PyErr_SetString(PyExc_IndexError, "a root outside the page");
@@ -209,6 +222,9 @@ static PyObject *members_of(Sweep *self, PyObject *roots)
     }
     PyObject *members = PyObject_CallOneArg(self->concatenate, parts);
     Py_DECREF(parts);
+    if (members != NULL && PyDict_SetItem(self->line_members, key, members) < 0)
+        Py_CLEAR(members);
+    Py_DECREF(key);
     return members;
 }
 
@@ -642,6 +658,80 @@ done:
     return status;
 }
 
+/* _Snapper.apply: where each group was (moved_from: its members' features before the move,
+   as floats in mine's order), then the centres and every table moved, each cell x + shift as
+   NumPy's in-place add; the rest check's kept forces of the page as it was forgotten */
+static int apply_move(Sweep *self, Moves *moves, const int64_t *rows, Py_ssize_t n, int axis,
+                      double shift)
+{
+    PyObject *item_table = PyTuple_GET_ITEM(self->item_tables, axis);
+    Py_buffer view;
+    if (read_doubles(item_table, &view, 2, "item table") < 0)
+        return -1;
+    const double *cells = view.buf;
+    for (Py_ssize_t k = 0; k < PyList_GET_SIZE(moves->roots); k++) {
+        PyObject *root = PyList_GET_ITEM(moves->roots, k);
+        Py_ssize_t index = PyLong_AsSsize_t(root);
+        Py_buffer members;
+        if (index < 0 || index >= self->count
+                || read_rows(PyList_GET_ITEM(self->members, index), &members, self->count) < 0) {
+            PyBuffer_Release(&view);
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_IndexError, "a root outside the page");
+            return -1;
+        }
+        const int64_t *own = members.buf;
+        PyObject *spot = PyList_New(3 * members.shape[0]);
+        for (Py_ssize_t m = 0; spot != NULL && m < members.shape[0]; m++)
+            for (int feature = 0; feature < 3; feature++) {
+                PyObject *value = PyFloat_FromDouble(cells[own[m] * COLUMNS + feature]);
+                if (value == NULL) {
+                    Py_CLEAR(spot);
+                    break;
+                }
+                PyList_SET_ITEM(spot, 3 * m + feature, value);
+            }
+        PyBuffer_Release(&members);
+        int failed = spot == NULL || PyDict_SetItem(self->moved_from, root, spot) < 0;
+        Py_XDECREF(spot);
+        if (failed) {
+            PyBuffer_Release(&view);
+            return -1;
+        }
+    }
+    PyBuffer_Release(&view);
+    Py_buffer centres;
+    if (PyObject_GetBuffer(self->centres, &centres,
+                           PyBUF_C_CONTIGUOUS | PyBUF_FORMAT | PyBUF_WRITABLE) < 0)
+        return -1;
+    if (centres.ndim != 2 || centres.shape[1] != 2 || centres.itemsize != 8
+            || centres.shape[0] < self->count) {
+        PyBuffer_Release(&centres);
+        PyErr_SetString(PyExc_TypeError, "centres: (rows, 2) float64");
+        return -1;
+    }
+    double *at = centres.buf;
+    for (Py_ssize_t m = 0; m < n; m++)
+        at[2 * rows[m] + axis] += shift;
+    PyBuffer_Release(&centres);
+    for (int bleed = 0; bleed < 2; bleed++) {
+        PyObject *table = self->tables[bleed][axis];
+        if (table == NULL)
+            continue;
+        Py_buffer cells_view;
+        if (PyObject_GetBuffer(table, &cells_view,
+                               PyBUF_C_CONTIGUOUS | PyBUF_FORMAT | PyBUF_WRITABLE) < 0)
+            return -1;
+        double *row_cells = cells_view.buf;
+        for (Py_ssize_t m = 0; m < n; m++)
+            for (int column = 0; column < COLUMNS; column++)
+                row_cells[rows[m] * COLUMNS + column] += shift;
+        PyBuffer_Release(&cells_view);
+    }
+    PyDict_Clear(self->rest_before);
+    return 0;
+}
+
 /* _Snapper.attempt: make the first of the moves that fits and keeps the page at rest */
 static int attempt(Sweep *self, Moves *moves, PyObject *shifts, int axis)
 {
@@ -696,10 +786,7 @@ static int attempt(Sweep *self, Moves *moves, PyObject *shifts, int axis)
             before[2 * m] = cells[rows[m] * COLUMNS + LOW_EDGE];
             before[2 * m + 1] = cells[rows[m] * COLUMNS + HIGH_EDGE];
         }
-        PyObject *applied = PyObject_CallFunction(self->apply, "OOiO", moves->roots,
-                                                  moves->members, axis, shift);
-        int bad = applied == NULL;
-        Py_XDECREF(applied);
+        int bad = apply_move(self, moves, rows, n, axis, value) < 0;
         for (Py_ssize_t m = 0; m < n && !bad; m++) {
             /* np.minimum / np.maximum: a NaN on either side is the answer */
             double low_before = before[2 * m], high_before = before[2 * m + 1];
@@ -926,7 +1013,13 @@ static void sweep_dealloc(Sweep *self)
     PyMem_Free(self->before_known);
     PyMem_Free(self->before_held);
     PyMem_Free(self->before_push);
-    Py_CLEAR(self->apply);
+    Py_CLEAR(self->candidates_object);
+    Py_CLEAR(self->max_tries_object);
+    Py_CLEAR(self->every_move_object);
+    Py_CLEAR(self->line_members);
+    Py_CLEAR(self->moved_from);
+    Py_CLEAR(self->centres);
+    Py_CLEAR(self->rest_before);
     Py_CLEAR(self->concatenate);
     Py_CLEAR(self->fit_args);
     Py_TYPE(self)->tp_free((PyObject *)self);
@@ -978,7 +1071,16 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     self->find_line = Py_NewRef(find);
     self->fitting_shifts = Py_NewRef(fits);
     self->keeps_rest = Py_NewRef(keeps_rest);
-    self->apply = Py_NewRef(apply);
+    if (!PyTuple_Check(apply) || PyTuple_GET_SIZE(apply) != 3
+            || !PyDict_Check(PyTuple_GET_ITEM(apply, 0))
+            || !PyDict_Check(PyTuple_GET_ITEM(apply, 2))) {
+        PyErr_SetString(PyExc_TypeError, "moved: (moved_from, centres, the rest's kept forces)");
+        Py_DECREF(self);
+        return NULL;
+    }
+    self->moved_from = Py_NewRef(PyTuple_GET_ITEM(apply, 0));
+    self->centres = Py_NewRef(PyTuple_GET_ITEM(apply, 1));
+    self->rest_before = Py_NewRef(PyTuple_GET_ITEM(apply, 2));
     self->concatenate = Py_NewRef(concatenate);
     self->fit_args = Py_NewRef(fit_args);
     self->candidates = candidates;
@@ -986,6 +1088,13 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     self->every_move = every_move;
     self->nudge = nudge;
     self->memo_on = 1;
+    self->candidates_object = PyLong_FromSsize_t(candidates);
+    self->max_tries_object = PyLong_FromSsize_t(max_tries);
+    self->every_move_object = PyLong_FromSsize_t(every_move);
+    self->line_members = PyDict_New();
+    if (self->candidates_object == NULL || self->max_tries_object == NULL
+            || self->every_move_object == NULL || self->line_members == NULL)
+        goto failed;
     if (take_tables(plain, self->tables[0]) < 0 || take_tables(bleeding, self->tables[1]) < 0)
         goto failed;
     self->too_large = PyMem_Malloc(2 * count + 1);

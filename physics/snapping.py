@@ -202,7 +202,8 @@ class _Snapper:
         self.lines = [table[:count, FEATURES] for table in kept]
         self.lows = [table[:count, LOWS_COLUMN] for table in kept]
         self.highs = [table[:count, HIGHS_COLUMN] for table in kept]
-        self.moved_from: dict[int, np.ndarray] = {}
+        # per group moved: its features (mine) before its last move, as floats (near)
+        self.moved_from: dict[int, list[float]] = {}
         # Lines (roots, axis) whose move as one failed since the last move on the page: each of
         # their groups would try the same move of the same line again, to the same end.
         self.stuck_lines: set[tuple[tuple[int, ...], int]] = set()
@@ -219,8 +220,8 @@ class _Snapper:
         if not moved:
             return np.zeros(0, dtype=int)
         lines = self.lines[axis]
-        spots = [spot.tolist() for row in moved
-                 for spot in (self.moved_from[row], self.mine(row, axis))]
+        spots = [spot for row in moved
+                 for spot in (self.moved_from[row], self.mine(row, axis).tolist())]
         lows = np.array([min(spot) - self.window for spot in spots])
         highs = np.array([max(spot) + self.window for spot in spots])
         # every spot at once (a row is touched if it reaches into any): (n, spots) @ Trues
@@ -346,7 +347,7 @@ class _Snapper:
         forces kept for the page as it was.  (The memo is the caller's: attempt's, or the
         compiled sweep's own.)"""
         for root in roots:
-            self.moved_from[root] = self.mine(root, axis)
+            self.moved_from[root] = self.mine(root, axis).tolist()
         self.bodies.centres[members, axis] += shift
         for tables in self.tables.values():
             tables[axis][members] += shift
@@ -355,8 +356,8 @@ class _Snapper:
 
     def compiled(self) -> Sweep:
         """This page's sweeps in C (snap_sweep_kernel.Sweep), reading what this snapper
-        worked out; it holds this snapper's apply, so keep it only as long as the snap runs
-        (the snapper holds no reference to it: no cycle)."""
+        worked out and making its moves as apply does (moved_from, the centres and every
+        table, the rest check's kept forces forgotten)."""
         count = self.bodies.count
         members = [self.members.get(row) for row in range(count)]
         too_large = bytes(self.too_large[row][axis] if row in self.too_large else False
@@ -365,7 +366,9 @@ class _Snapper:
         return Sweep(count, members, too_large, bleeds, self.kind_tables(False),
                      self.kind_tables(True), self.item_tables, self.roots, self.mover_mask,
                      self.ranges, ALIGNED_MM, score_moves, find_line, fitting_shifts,
-                     self.rest.compiled_parts() if self.rest is not None else None, self.apply,
+                     self.rest.compiled_parts() if self.rest is not None else None,
+                     (self.moved_from, self.bodies.centres, self.rest.before
+                      if self.rest is not None else {}),
                      np.concatenate, (self.bodies.centres, self.halves, self.lowest,
                                       self.highest, self.item_tables, self.fit_limits),
                      MAX_CANDIDATES, MAX_TRIES, EVERY_MOVE, NUDGE_MM)
