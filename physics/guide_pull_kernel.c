@@ -260,15 +260,188 @@ done:
     return result;
 }
 
+/* np.maximum of two floats: a NaN on either side is the answer */
+static inline double larger(double a, double b)
+{
+    return isnan(a) || isnan(b) ? NAN : (b > a ? b : a);
+}
+
+static int read_flat(PyObject *object, Py_buffer *view, int writable, const char *name)
+{
+    int flags = PyBUF_C_CONTIGUOUS | PyBUF_FORMAT | (writable ? PyBUF_WRITABLE : 0);
+    if (PyObject_GetBuffer(object, view, flags) < 0)
+        return -1;
+    if (view->itemsize != 8 || view->format == NULL || strcmp(view->format, "d") != 0) {
+        PyErr_Format(PyExc_TypeError, "%s: a C-contiguous float64 array", name);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    return 0;
+}
+
+static int read_slots(PyObject *object, Py_buffer *view, Py_ssize_t limit, const char *name)
+{
+    if (PyObject_GetBuffer(object, view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        return -1;
+    const char *format = view->format ? view->format : "B";
+    int right = view->ndim == 1 && view->itemsize == 8 && strchr("lqn", format[0]) != NULL
+        && format[1] == '\0';
+    for (Py_ssize_t k = 0; right && k < view->shape[0]; k++)
+        right = ((const int64_t *)view->buf)[k] >= 0 && ((const int64_t *)view->buf)[k] < limit;
+    if (!right) {
+        PyErr_Format(PyExc_ValueError, "%s: an int64 array of slots within the page", name);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    return 0;
+}
+
+PyDoc_STRVAR(pull_doc,
+"pull(acc, centres, own, partner, factor, offset, reach, scale, apart) -> None\n\n"
+"GuidePulls.pull's arithmetic, per chosen pull k (flat slots of ``acc`` and ``centres``):\n"
+"distance = factor * centres[partner] + offset - centres[own], apart[k] = |distance|, and\n"
+"acc[own] += scale * distance * max(1 - apart / reach, 0), ``scale`` the pull's PULL_EVERY *\n"
+"k * share worked out by the caller; the same operations in the same order as the NumPy, on\n"
+"the same floats (about ten NumPy calls every fourth step of a cooling page).");
+
+static PyObject *pull(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 9) {
+        PyErr_SetString(PyExc_TypeError, "pull(acc, centres, own, partner, factor, offset, "
+                        "reach, scale, apart)");
+        return NULL;
+    }
+    double reach = PyFloat_AsDouble(args[6]), scale = PyFloat_AsDouble(args[7]);
+    if (PyErr_Occurred())
+        return NULL;
+    Py_buffer views[7];
+    int held = 0;
+    PyObject *result = NULL;
+    if (read_flat(args[0], &views[held], 1, "acc") < 0)
+        goto done;
+    held++;
+    if (read_flat(args[1], &views[held], 0, "centres") < 0)
+        goto done;
+    held++;
+    Py_ssize_t slots = views[0].len / 8;
+    if (views[1].len != views[0].len) {
+        PyErr_SetString(PyExc_ValueError, "acc and centres: one shape");
+        goto done;
+    }
+    if (read_slots(args[2], &views[held], slots, "own") < 0)
+        goto done;
+    held++;
+    if (read_slots(args[3], &views[held], slots, "partner") < 0)
+        goto done;
+    held++;
+    Py_ssize_t count = views[2].shape[0];
+    if (read_flat(args[4], &views[held], 0, "factor") < 0)
+        goto done;
+    held++;
+    if (read_flat(args[5], &views[held], 0, "offset") < 0)
+        goto done;
+    held++;
+    if (read_flat(args[8], &views[held], 1, "apart") < 0)
+        goto done;
+    held++;
+    if (views[3].shape[0] != count || views[4].len / 8 != count || views[5].len / 8 != count
+            || views[6].len / 8 != count) {
+        PyErr_SetString(PyExc_ValueError, "own, partner, factor, offset, apart: one per pull");
+        goto done;
+    }
+    double *acc = views[0].buf, *apart = views[6].buf;
+    const double *flat = views[1].buf, *factor = views[4].buf, *offset = views[5].buf;
+    const int64_t *own = views[2].buf, *partner = views[3].buf;
+    for (Py_ssize_t k = 0; k < count; k++) {
+        double distance = factor[k] * flat[partner[k]] + offset[k] - flat[own[k]];
+        apart[k] = fabs(distance);
+        double pulled = distance * larger(1.0 - apart[k] / reach, 0.0);
+        acc[own[k]] += scale * pulled;
+    }
+    result = Py_NewRef(Py_None);
+done:
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    return result;
+}
+
+PyDoc_STRVAR(hold_doc,
+"hold(acc, holding, flat_roots, hold) -> None\n\n"
+"GuidePulls.hold_on_lines' arithmetic: for each flat slot of ``holding``, the total push on\n"
+"it (``acc`` at the slot, or with ``flat_roots`` the sum of every slot of its group, in\n"
+"slot order from 0.0 as np.bincount sums), kept = sign(total) * max(|total| - hold, 0), and\n"
+"acc[slot] += kept - total; every total worked out before any slot changes, as the NumPy's.\n"
+"Asked every step of a cold page (the probes, the end of the cooling).");
+
+static PyObject *hold(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 4) {
+        PyErr_SetString(PyExc_TypeError, "hold(acc, holding, flat_roots, hold)");
+        return NULL;
+    }
+    double strength = PyFloat_AsDouble(args[3]);
+    if (PyErr_Occurred())
+        return NULL;
+    Py_buffer views[3];
+    int held = 0;
+    PyObject *result = NULL;
+    double *totals = NULL;
+    if (read_flat(args[0], &views[held], 1, "acc") < 0)
+        goto done;
+    held++;
+    Py_ssize_t slots = views[0].len / 8;
+    if (read_slots(args[1], &views[held], slots, "holding") < 0)
+        goto done;
+    held++;
+    int grouped = args[2] != Py_None;
+    if (grouped) {
+        if (read_slots(args[2], &views[held], slots, "flat_roots") < 0)
+            goto done;
+        held++;
+        if (views[2].shape[0] != slots) {
+            PyErr_SetString(PyExc_ValueError, "flat_roots: one per slot");
+            goto done;
+        }
+    }
+    double *acc = views[0].buf;
+    const int64_t *holding = views[1].buf;
+    Py_ssize_t count = views[1].shape[0];
+    totals = PyMem_Calloc((grouped ? slots : count) + 1, sizeof(double));
+    if (totals == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (grouped) { /* np.bincount(flat_roots, acc, size): per slot, summed in slot order */
+        const int64_t *roots = views[2].buf;
+        for (Py_ssize_t k = 0; k < slots; k++)
+            totals[roots[k]] += acc[k];
+    }
+    for (Py_ssize_t k = 0; k < count; k++) {
+        double total = grouped ? totals[holding[k]] : acc[holding[k]];
+        double sign = isnan(total) ? NAN : (total > 0) - (total < 0);
+        double kept = sign * larger(fabs(total) - strength, 0.0);
+        acc[holding[k]] += kept - total;
+    }
+    result = Py_NewRef(Py_None);
+done:
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    PyMem_Free(totals);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"chosen_pulls", (PyCFunction)(void (*)(void))chosen_pulls, METH_FASTCALL,
      chosen_pulls_doc},
+    {"pull", (PyCFunction)(void (*)(void))pull, METH_FASTCALL, pull_doc},
+    {"hold", (PyCFunction)(void (*)(void))hold, METH_FASTCALL, hold_doc},
     {NULL, NULL, 0, NULL},
 };
 
 static struct PyModuleDef module_def = {
     PyModuleDef_HEAD_INIT, "guide_pull_kernel",
-    "The guide force's refresh, compiled (physics.guides.GuidePulls.refresh).", -1, methods,
+    "The guide force's refresh, pull and hold, compiled (physics.guides.GuidePulls).", -1,
+    methods,
 };
 
 PyMODINIT_FUNC PyInit_guide_pull_kernel(void)

@@ -35,7 +35,7 @@ from __future__ import annotations
 import numpy as np
 
 from floatpage.physics.bodies import Bodies
-from floatpage.physics.guide_pull_kernel import chosen_pulls
+from floatpage.physics.guide_pull_kernel import chosen_pulls, hold as hold_slots, pull as pull_slots
 from floatpage.physics.params import page_scale
 
 SNAP_MM = 4.0  # snap range on an A4 page; smaller pages scale it down with their linear size
@@ -204,12 +204,13 @@ class GuidePulls:
             self.refresh(centres)
         if len(self.own) == 0:
             return
-        flat = centres.ravel()
-        distance = self.factor * flat[self.partner] + self.offset - flat[self.own]
-        apart = np.abs(distance)
-        pull = distance * np.maximum(1.0 - apart / self.reach, 0.0)
         share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT))
-        acc.ravel()[self.own] += PULL_EVERY * self.k * share * pull
+        apart = np.empty(len(self.own))
+        # compiled (guide_pull_kernel.pull): distance = factor * partner + offset - own, then
+        # acc[own] += PULL_EVERY * k * share * distance * max(1 - |distance| / reach, 0), the
+        # NumPy's operations in its order (ten calls every fourth step of a cooling page)
+        pull_slots(acc, centres, self.own, self.partner, self.factor, self.offset, self.reach,
+                   PULL_EVERY * self.k * share, apart)
         # Which groups to hold is worked out only on a cold page (hold_on_lines), from the
         # distances kept here: while the page spreads it was NumPy calls a pull for nothing
         # (a dozen, then the three that picked the slots on their line).
@@ -229,13 +230,10 @@ class GuidePulls:
                                                       minlength=acc.size))
         if len(self.holding) == 0:
             return
-        flat = acc.ravel()
-        if self.grouped:
-            totals = np.bincount(self.flat_roots, flat, acc.size)[self.holding]
-        else:
-            totals = flat[self.holding]
-        kept = np.sign(totals) * np.maximum(np.abs(totals) - self.hold, 0.0)
-        flat[self.holding] += kept - totals
+        # compiled (guide_pull_kernel.hold): per held slot its total push (its group's, summed
+        # as np.bincount sums), kept = sign(total) * max(|total| - hold, 0), acc += kept -
+        # total; the NumPy's arithmetic, asked every step of a cold page
+        hold_slots(acc, self.holding, self.flat_roots if self.grouped else None, self.hold)
 
 
 def guide_pulls(bodies: Bodies, roots: np.ndarray, page: tuple[float, float],

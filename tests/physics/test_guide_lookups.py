@@ -222,3 +222,65 @@ def test_the_compiled_refresh_chooses_what_the_numpy_one_did(data):
         got = getattr(pulls, name)
         assert got.dtype == want.dtype, name
         assert got.tobytes() == want.tobytes(), name
+
+
+def numpy_pull(acc, centres, own, partner, factor, offset, reach, scale):
+    """GuidePulls.pull's arithmetic as NumPy (before guide_pull_kernel.pull): returns apart."""
+    flat = centres.ravel()
+    distance = factor * flat[partner] + offset - flat[own]
+    apart = np.abs(distance)
+    acc.ravel()[own] += scale * (distance * np.maximum(1.0 - apart / reach, 0.0))
+    return apart
+
+
+def numpy_hold(acc, holding, flat_roots, strength):
+    """GuidePulls.hold_on_lines' arithmetic as NumPy (before guide_pull_kernel.hold)."""
+    flat = acc.ravel()
+    if flat_roots is not None:
+        totals = np.bincount(flat_roots, flat, acc.size)[holding]
+    else:
+        totals = flat[holding]
+    kept = np.sign(totals) * np.maximum(np.abs(totals) - strength, 0.0)
+    flat[holding] += kept - totals
+
+
+@settings(max_examples=300, deadline=None, derandomize=True, database=None)
+@given(st.data())
+def test_the_compiled_pull_and_hold_are_the_numpys(data):
+    """guide_pull_kernel.pull and .hold against the NumPy they replaced, bit for bit: random
+    pages and pulls (zero pushes, pushes exactly at the hold, distances at and past the reach,
+    page lines with a zero factor), groups of several rows or none.  A mutation (the sum
+    of the offset and the partner's coordinate taken in another order, a group's total read
+    from its root's slot alone, the distance kept a rounding off) fails it."""
+    from floatpage.physics.guide_pull_kernel import hold, pull
+
+    rng = np.random.default_rng(data.draw(st.integers(0, 2**32 - 1)))
+    count = data.draw(st.integers(1, 25))
+    centres = rng.uniform(0, 300, (count, 2))
+    pulls = data.draw(st.integers(0, 2 * count))
+    own = rng.choice(2 * count, size=pulls, replace=False).astype(np.int64)
+    partner = rng.integers(0, 2 * count, pulls).astype(np.int64)
+    factor = rng.choice([0.0, 1.0], pulls)
+    offset = (rng.choice([0.0, 2.5, -4.0, 3.999], pulls)
+              + np.where(factor == 0, centres.ravel()[own], 0))
+    reach = 4.0
+    scale = data.draw(st.sampled_from([0.12, 0.03 * 4 * 0.37, 1.0]))
+    pushes = rng.choice([0.0, -0.0, 1.0, -2.0, 2.0], (count, 2)) * rng.uniform(0, 2, (count, 2))
+    expected, got = pushes.copy(), pushes.copy()
+    want_apart = numpy_pull(expected, centres, own, partner, factor, offset, reach, scale)
+    apart = np.empty(pulls)
+    pull(got, centres, own, partner, factor, offset, reach, scale, apart)
+    assert got.tobytes() == expected.tobytes() and apart.tobytes() == want_apart.tobytes()
+    # the hold: slots unique and sorted (np.flatnonzero of a count), totals exactly at it too
+    strength = 2.0
+    roots = np.arange(count)
+    if data.draw(st.booleans()):
+        roots = np.minimum(roots, rng.integers(0, count, count))  # followers of lower rows
+        roots = roots[roots]
+    flat_roots = (roots[:, None] * 2 + np.arange(2)).ravel().astype(np.int64)
+    holding = np.flatnonzero(rng.random(2 * count) < 0.5).astype(np.int64)
+    grouped = bool((roots != np.arange(count)).any())
+    expected, got = pushes.copy(), pushes.copy()
+    numpy_hold(expected, holding, flat_roots if grouped else None, strength)
+    hold(got, holding, flat_roots if grouped else None, strength)
+    assert got.tobytes() == expected.tobytes()
