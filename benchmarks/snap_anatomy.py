@@ -29,6 +29,10 @@ per item the snap leaves (physics.alignment), summed over the inputs:
 
 None of them is the snap: they show what the line moves cost and what they buy.
 
+--units, --variants and --census wrap or replace _Snapper's Python methods, so they run the
+Python sweeps (snap_to_guides(compiled=False), the definition the compiled sweeps of
+physics/snap_sweep_kernel.c are held to); --variants' "main, compiled" is the snap as shipped.
+
 --census counts, on the same inputs, the scorings (options worked out, not recalled) of a
 group alone and of a line: the first of each (groups, axis), and of the later ones, those that
 found the very answer the last one did (the same moves, gain and flags; "none" if no move
@@ -40,6 +44,7 @@ from __future__ import annotations
 
 import argparse
 import copy
+import functools
 import time
 from collections import defaultdict
 from contextlib import contextmanager
@@ -129,11 +134,13 @@ def units_timed(seconds: dict[str, float], counts: dict[str, int]):
     snapping._Snapper.options = timed_options
     snapping._Snapper.attempt = timed_attempt
     snapping._Snapper.line_of = timed_line_of
+    snapping.snap_to_guides = PYTHON_SWEEPS  # the sweeps that call these methods
     try:
         yield
     finally:
         snapping._Snapper.options, snapping._Snapper.attempt, snapping._Snapper.line_of = (
             options, attempt, line_of)
+        snapping.snap_to_guides = MAIN_SWEEPS
 
 
 def units_table(captured) -> None:
@@ -156,6 +163,7 @@ def units_table(captured) -> None:
 
 MAIN_IMPROVE = snapping._Snapper.improve
 MAIN_SWEEPS = snapping.snap_to_guides
+PYTHON_SWEEPS = functools.partial(MAIN_SWEEPS, compiled=False)  # _Snapper's own methods
 
 
 def alone_only(self, row: int, axis: int) -> list[int]:
@@ -223,9 +231,10 @@ def lines_last(bodies, page_w_mm, page_h_mm, clearance_mm, margin_mm, strength, 
 
 
 VARIANTS = {
-    "main": (MAIN_IMPROVE, MAIN_SWEEPS),
-    "no lines": (alone_only, MAIN_SWEEPS),
-    "alone first": (alone_first, MAIN_SWEEPS),
+    "main, compiled": (MAIN_IMPROVE, MAIN_SWEEPS),
+    "main": (MAIN_IMPROVE, PYTHON_SWEEPS),
+    "no lines": (alone_only, PYTHON_SWEEPS),
+    "alone first": (alone_first, PYTHON_SWEEPS),
     "lines last": (lines_last_step, lines_last),
 }
 
@@ -282,12 +291,14 @@ def census_table(captured) -> None:
         return found
 
     snapping.score_moves, snapping._Snapper.options = scoring, counted
+    snapping.snap_to_guides = PYTHON_SWEEPS  # the sweeps that call options
     try:
         for _, (bodies, *args) in captured:
             snapping.snap_page(copy.deepcopy(bodies), *args)
             last.clear()  # one snap at a time: its snapper's id() is the key's first part
     finally:
         snapping.score_moves, snapping._Snapper.options = real_scoring, options
+        snapping.snap_to_guides = MAIN_SWEEPS
     print("| scoring of | first | same, none | same, moves | another |")
     print("|---|---|---|---|---|")
     for kind in ("a group alone", "a line"):

@@ -6,6 +6,7 @@ being a fixed point."""
 from __future__ import annotations
 
 import copy
+import functools
 import tempfile
 from pathlib import Path
 from unittest import mock
@@ -17,7 +18,7 @@ from hypothesis import strategies as st
 from floatpage.model import load_project, save_project
 from floatpage.model.document import BlockItem, ItemAnchor, Page, PhysicsSettings, PointAnchor, Project
 from floatpage.model.layout import AT_REST_MM, settle_project
-from floatpage.physics import Engine, Params, snap_memo
+from floatpage.physics import Engine, Params, snap_memo, snapping
 from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.finalize import ROUNDING_MM, remove_overlaps
@@ -377,11 +378,14 @@ def test_a_snapped_page_is_at_rest_for_the_gentle_run_that_probes_it():
 # ----- what the snap remembers between its tries (physics.snap_memo) -------------------------
 
 def snapped_twice(bodies, page, params):
-    """The page snapped as shipped, and snapped by a snap whose memo never recalls."""
+    """The page snapped as shipped (the compiled sweeps, their memo in C), and snapped by the
+    Python sweeps with a memo that never recalls."""
     remembering = copy.deepcopy(bodies)
     moves = snap_page(remembering, *page, params)
     forgetting = copy.deepcopy(bodies)
-    with mock.patch.object(snap_memo.AxisMemo, "recall", lambda self, key, axis: None):
+    python_sweeps = functools.partial(snapping.snap_to_guides, compiled=False)
+    with mock.patch.object(snap_memo.AxisMemo, "recall", lambda self, key, axis: None), \
+            mock.patch.object(snapping, "snap_to_guides", python_sweeps):
         fresh_moves = snap_page(forgetting, *page, params)
     return moves, remembering.centres, fresh_moves, forgetting.centres
 

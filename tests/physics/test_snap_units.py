@@ -94,7 +94,10 @@ def test_the_lines_hold_what_a_plain_search_holds():
         lines = rest.lines
         lines.__class__, lines.compared, lines.held_some = CheckedHold, 0, 0
         rest.__class__ = CheckedRest
-        moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest)
+        # the Python sweeps, which ask LineHold (the compiled ones ask held_on_lines directly
+        # and are held to these move for move: test_snap_sweep.py)
+        moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest,
+                               compiled=False)
         assert moves > 20 and lines.compared > 1000 and lines.held_some > 100, (
             count, moves, lines.compared, lines.held_some)
 
@@ -134,7 +137,8 @@ def test_the_lines_hold_on_pages_with_followers():
         lines = rest.lines
         lines.__class__, lines.compared, lines.held_some = CheckedHold, 0, 0
         rest.__class__ = CheckedRest
-        moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest)
+        moves = snap_to_guides(bodies, *page, clearance, margin, params.guides, rest,
+                               compiled=False)  # the sweeps that ask LineHold, as above
         assert moves > 5 and lines.compared > 50, (seed, moves, lines.compared)
         grouped += bool((lines.roots != np.arange(len(lines.roots))).any())
     assert grouped == 3
