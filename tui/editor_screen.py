@@ -141,6 +141,8 @@ class EditorScreen(Screen):
         self._quality_key: bytes | None = None  # what the figures were measured on, at rest
         self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
         self.room_searches = 0  # searches for room running in threads (`room_worker`)
+        self._held_notices: list[tuple[str, dict, float | None]] = []  # while a dialog is open
+        self._shown_notice: tuple[str, dict, float] | None = None  # the toast last shown
 
     def compose(self) -> ComposeResult:
         yield PageBar(id="page-bar")
@@ -414,9 +416,40 @@ class EditorScreen(Screen):
         """Notifications quote file names, ids and errors: plain text, never Rich markup.
 
         Each replaces the one before: they used to pile up over the preview and the status
-        line for seconds (defect 3), and the newest is the one that answers the last key."""
+        line for seconds (defect 3), and the newest is the one that answers the last key.
+        While a dialog is open, one is held until it closes: Textual draws toasts on the top
+        screen, where they covered the dialog's fields (a finished export over the form being
+        typed in; on a short terminal the dialog is the whole screen; user-walk-6)."""
+        kwargs["markup"] = markup
+        if self.is_mounted and self.app.screen_stack[-1] is not self:
+            self._held_notices.append((message, kwargs, None))
+            return
         self.app.clear_notifications()
-        super().notify(message, markup=markup, **kwargs)
+        self._shown_notice = (message, kwargs, time.monotonic())
+        super().notify(message, **kwargs)
+
+    def on_screen_suspend(self) -> None:
+        """A dialog opens over the editor: the toast showing goes with the editor, to come
+        back for the rest of its time when the dialog closes (`on_screen_resume`)."""
+        shown, self._shown_notice = self._shown_notice, None
+        if shown is None:
+            return
+        message, kwargs, at = shown
+        left = kwargs.get("timeout", self.app.NOTIFICATION_TIMEOUT) - (time.monotonic() - at)
+        if left > 0.5:
+            self._held_notices.insert(0, (message, kwargs, left))
+        self.app.clear_notifications()
+
+    def on_screen_resume(self) -> None:
+        """The dialog closed: the held notices show now, in the order they came."""
+        held, self._held_notices = self._held_notices, []
+        for number, (message, kwargs, left) in enumerate(held):
+            if number == 0:
+                self.app.clear_notifications()
+            if left is not None:
+                kwargs = {**kwargs, "timeout": left}
+            self._shown_notice = (message, kwargs, time.monotonic())
+            super().notify(message, **kwargs)
 
     def after_edit(self, *, keep_note: bool = False) -> None:
         """Show what an edit, a selection or a release did: the footer's item commands follow

@@ -1,0 +1,86 @@
+"""Defects a demanding user met over SSH (user-walk-6), each driven through the real app with
+Pilot: labels that hid a text's row or a region's name, toasts over dialogs, and a status line
+that said the gaps were narrow without saying why."""
+
+from __future__ import annotations
+
+import re
+
+from floatpage.model import save_project
+from floatpage.model.document import Page, Project, Region, TextItem
+from floatpage.tui.app import make_app
+
+from editor_helpers import editor, preview_text, screen_of
+
+WORDS = ["alpha", "bravo", "charlie", "delta", "echo", "foxtrot", "golf", "hotel", "india",
+         "juliet", "kilo", "lima", "mike", "november", "oscar", "papa"]
+
+
+def words_shown(app) -> list[str]:
+    text = preview_text(app)
+    return [word for word in WORDS if re.search(rf"\b{word}\b", text)]
+
+
+async def test_the_selected_items_id_hides_no_row_of_its_text(tmp_path):
+    """The id went on the box's first row and pushed the text a row down, so a text that filled
+    its box lost its last shown line the moment it was selected."""
+    path = tmp_path / "t.toml"
+    save_project(Project(pages=[Page(id="p", size="A5", width_mm=148.0, height_mm=210.0, items=[
+        TextItem(id="words", x=74.0, y=105.0, w=60.0, h=60.0, text="\n".join(WORDS))])]), path)
+    async with editor(path) as (app, pilot):
+        before = words_shown(app)
+        assert 3 <= len(before) < len(WORDS)  # the box is full: every row holds a word
+        await pilot.press("tab")
+        await pilot.pause()
+        assert screen_of(app).selected_id == "words"
+        assert "words" in preview_text(app)  # the id is shown...
+        assert words_shown(app) == before  # ...and every row of text still is
+
+
+async def test_a_regions_name_stays_readable_under_the_labels_of_its_items(tmp_path):
+    """The region's name was written first, inside its corner, where the items confined to
+    it sit: their labels (`n`, or the selected one's) and bodies covered it."""
+    path = tmp_path / "r.toml"
+    save_project(Project(pages=[Page(
+        id="p", size="A5", width_mm=148.0, height_mm=210.0,
+        regions=[Region("photos", 10.0, 10.0, 128.0, 120.0)],
+        items=[TextItem(id="corner", x=40.0, y=27.0, w=56.0, h=30.0, text="x", region="photos"),
+               TextItem(id="other", x=105.0, y=27.0, w=56.0, h=30.0, text="y",
+                        region="photos")])]), path)
+    async with editor(path) as (app, pilot):
+        assert "photos" in preview_text(app)
+        for keys in (["n"], ["tab"], ["n"]):  # every label, every label and the selected,
+            await pilot.press(*keys)         # then the selected one's alone
+            await pilot.pause()
+            shown = preview_text(app)
+            assert "photos" in shown, shown
+            assert "corner" in shown and "other" in shown or not screen_of(app).labels
+        assert screen_of(app).selected_id == "corner" and "corner" in preview_text(app)
+
+
+def toasts(app) -> list[str]:
+    """The toasts the top screen shows, by their text."""
+    return [str(toast.render()) for toast in app.screen.query("Toast")]
+
+
+async def test_a_toast_never_covers_an_open_dialog(project_path):
+    """Textual draws toasts on the top screen: "saved …" and an export's answer came over
+    the form being typed in (at 80x24 the form is the whole screen)."""
+    app = make_app(project_path, autostart=False)
+    async with app.run_test(size=(80, 24), notifications=True) as pilot:  # toasts drawn
+        screen = screen_of(app)
+        await pilot.press("ctrl+s")
+        await pilot.pause(0.2)
+        assert any("saved" in toast for toast in toasts(app))
+        await pilot.press("tab", "enter")  # the title's form
+        await pilot.pause(0.2)
+        assert app.screen is not screen and app.screen.query("Input")
+        assert toasts(app) == []  # the toast left with the editor
+        screen.notify("PDF written to card.pdf", title="PDF exported", timeout=8)  # as an
+        await pilot.pause(0.2)                                # export's worker does
+        assert toasts(app) == []
+        await pilot.press("escape")
+        await pilot.pause(0.2)
+        assert app.screen is screen
+        shown = " ".join(toasts(app))
+        assert "saved" in shown and "PDF written to card.pdf" in shown  # held, not lost
