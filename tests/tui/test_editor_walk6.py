@@ -5,9 +5,11 @@ that said the gaps were narrow without saying why."""
 from __future__ import annotations
 
 import re
+import subprocess
+import sys
 
 from floatpage.model import save_project
-from floatpage.model.document import Page, Project, Region, TextItem
+from floatpage.model.document import BlockItem, Page, Project, Region, TextItem
 from floatpage.tui.app import make_app
 
 from editor_helpers import editor, preview_text, screen_of
@@ -84,3 +86,47 @@ async def test_a_toast_never_covers_an_open_dialog(project_path):
         assert app.screen is screen
         shown = " ".join(toasts(app))
         assert "saved" in shown and "PDF written to card.pdf" in shown  # held, not lost
+
+
+def crowded_page(path):
+    """25 blocks on an A5 page, each grown by the 3 mm gutter 96% of the room inside the
+    margins: no layout keeps the gutter, and `check` says so."""
+    save_project(Project(pages=[Page(id="p", size="A5", width_mm=148.0, height_mm=210.0, items=[
+        BlockItem(id=f"b{i}", x=20.0 + 25 * (i % 5), y=20.0 + 25 * (i // 5), w=27.0, h=35.0,
+                  color="#3366aa") for i in range(25)])]), path)
+    subprocess.run([sys.executable, "-m", "floatpage.cli.main", "settle", str(path)],
+                   capture_output=True)
+    return path
+
+
+def status(app) -> str:
+    return str(screen_of(app).query_one("#status").render())
+
+
+async def until(pilot, condition, seconds: float = 20.0) -> None:
+    for _ in range(int(seconds / 0.1)):
+        if condition():
+            return
+        await pilot.pause(0.1)
+
+
+async def test_the_status_line_says_what_gave_way_and_why_as_check_does(tmp_path):
+    """"some gaps narrow" said neither which guarantee gave way nor why; `check` did."""
+    path = crowded_page(tmp_path / "full.toml")
+    check = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "check", str(path)],
+                           capture_output=True, text=True).stdout
+    assert "gutter may not fit" in check and "96%" in check
+    async with editor(path, size=(100, 34)) as (app, pilot):
+        await until(pilot, lambda: "too full" in status(app))
+        first, second = status(app).splitlines()[:2]
+        assert "some gaps narrow" not in second
+        assert re.search(r"gutter \d\.\d of 3 mm: page too full \(96% of the room\)", second)
+        assert "v details" in second and len(second) <= 100 - 2
+        await pilot.press("v")  # the details view: check's own sentence, whole
+        await pilot.pause()
+        shown = " ".join(status(app).split())
+        reason = next(line for line in check.splitlines() if "gutter may not fit" in line)
+        assert " ".join(reason.split()) in shown
+        await pilot.press("v")
+        await pilot.pause()
+        assert len(status(app).splitlines()) == 2  # and back to two lines
