@@ -296,26 +296,34 @@ class PagePainter:
         canvas.write(col0, row, text[:width], fg, bg, bold=True, end_col=col0 + width)
 
     def _frame_label(self, canvas: CellCanvas, item, box, kept_clear) -> None:
-        """The selected item's id on its frame's top line (the row above its first full row),
-        or its bottom line, so that it covers none of the item: inside the box it hid the
-        first row of a text's words (user-walk-6).  It keeps clear of the region names and
-        the group's label (``kept_clear``: (row, column, end column, text)); only where
-        neither line is free, or on the canvas, does it go inside, as `n`'s labels do."""
-        col0, row0, col1, _ = self._cells(box)
+        """The selected item's id on the row above the rows its text may use (its frame's top
+        line) or the row below them, so that it covers none of the item: inside the box it
+        hid the first row of a text's words (user-walk-6).  Of those, the first that covers
+        no other item's words, region name or group label (``kept_clear``: (row, column, end
+        column, text)); else the first clear of those names; only where neither row is on
+        the canvas does it go inside, as `n`'s labels do."""
+        col0, _, col1, _ = self._cells(box)
+        _, first, _, end = self._text_area(box, below_label=False)
         text = printable(("~" if item.decorative else "") + item.id)
         width = max(col1 - col0, 1)
         text = text[:width]
         span = text_cells(text)
-        for row in (row0 - 1, box[3] // 2):
+        places = []
+        for row in (first - 1, end):
             if not 0 <= row < canvas.rows:
                 continue
             col = max(col0, 0)
-            for taken_row, start, end, _ in sorted(kept_clear, key=lambda place: place[1]):
-                if taken_row == row and start < col + span and col < end:
-                    col = end + 1  # after the name, if the label still fits above the box
-            if col + span <= max(col0 + width, col0 + span) and col + span <= canvas.cols:
-                canvas.write(col, row, text, BLACK, SELECTION, bold=True, end_col=col + span)
-                return
+            for taken_row, start, stop, _ in sorted(kept_clear, key=lambda place: place[1]):
+                if taken_row == row and start < col + span and col < stop:
+                    col = stop + 1  # after the name, if the label still fits above the box
+            if col + span <= col0 + width and col + span <= canvas.cols:
+                places.append((any(canvas.glyph_at(c, row) is not None and
+                                   canvas.glyph_at(c, row).char.strip()
+                                   for c in range(col, col + span)), row, col))
+        if places:
+            _, row, col = min(places, key=lambda place: place[0])  # the first free of words
+            canvas.write(col, row, text, BLACK, SELECTION, bold=True, end_col=col + span)
+            return
         self._label(canvas, item, box, BLACK, SELECTION)
 
     def _text_area(self, box, below_label: bool) -> tuple[int, int, int, int]:

@@ -4,7 +4,10 @@ that said the gaps were narrow without saying why."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import re
+import shutil
 import subprocess
 import sys
 
@@ -14,6 +17,7 @@ from floatpage.tui.app import make_app
 
 from editor_helpers import editor, preview_text, screen_of
 
+ROOT = Path(__file__).resolve().parents[2]
 WORDS = ["alpha", "bravo", "charlie", "delta", "echo", "foxtrot", "golf", "hotel", "india",
          "juliet", "kilo", "lima", "mike", "november", "oscar", "papa"]
 
@@ -130,3 +134,19 @@ async def test_the_status_line_says_what_gave_way_and_why_as_check_does(tmp_path
         await pilot.press("v")
         await pilot.pause()
         assert len(status(app).splitlines()) == 2  # and back to two lines
+
+
+async def test_a_thin_captions_id_covers_neither_its_words_nor_its_neighbours(tmp_path):
+    """The flyer's subtitle at 80x24 is a box less than two cells tall: its words take the row
+    holding its top, and its id went on that very row ("shop-subtitlethis…")."""
+    folder = tmp_path / "shop-flyer"
+    shutil.copytree(ROOT / "sample_projects" / "shop-flyer", folder)
+    async with editor(folder / "shop-flyer.toml", size=(80, 24)) as (app, pilot):
+        before = preview_text(app)
+        assert "Fresh offers" in before and "The Corner Shop" in before
+        app.session.select("shop-subtitle")
+        screen_of(app).after_edit()
+        await pilot.pause()
+        shown = preview_text(app)
+        assert "shop-subtitle" in shown
+        assert "Fresh offers" in shown and "The Corner Shop" in shown
