@@ -261,7 +261,7 @@ class PagePainter:
                            MISSING_PICTURE)
             else:
                 canvas.blit(x0, y0, image)
-            if view.labels:
+            if view.labels and item.id != view.selected_id:  # its id is on its frame
                 self._label(canvas, item, box, WHITE, BLACK)
             return
         under = tuple(int(v) for v in canvas.pixels[
@@ -270,7 +270,7 @@ class PagePainter:
         if isinstance(item, BlockItem):
             fill = mix(under, hex_to_rgb(item.color, MISSING_PICTURE), item.opacity)
             canvas.fill(*box, fill)
-            if view.labels:
+            if view.labels and item.id != view.selected_id:
                 self._label(canvas, item, box, readable_on(fill), fill)
             return
         # Text is printed straight on the page, so its box is only a faint tint of what lies
@@ -278,8 +278,9 @@ class PagePainter:
         ink = hex_to_rgb(getattr(item, "color", None))
         fill = mix(under, ink, TEXT_TINT)
         canvas.fill(*box, fill)
-        labelled = view.labels  # the selected one's id is on its frame (_frame_label)
-        if view.labels:
+        # the selected one's id is on its frame (_frame_label), not over its first row
+        labelled = view.labels and item.id != view.selected_id
+        if labelled:
             self._label(canvas, item, box, mix(readable_on(fill), fill, 0.45), fill)
         if isinstance(item, TextItem):
             self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold,

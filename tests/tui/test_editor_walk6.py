@@ -150,3 +150,30 @@ async def test_a_thin_captions_id_covers_neither_its_words_nor_its_neighbours(tm
         shown = preview_text(app)
         assert "shop-subtitle" in shown
         assert "Fresh offers" in shown and "The Corner Shop" in shown
+
+
+async def test_with_every_id_shown_the_selected_one_is_shown_once(project_path):
+    """With `n`, the selected picture showed its id twice: on its frame and over its top."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("n")
+        app.session.select("photo")
+        screen_of(app).after_edit()
+        await pilot.pause()
+        assert len(re.findall(r"\bphoto\b", preview_text(app))) == 1
+        assert re.search(r"\bblock\b", preview_text(app))  # the others keep theirs
+
+
+async def test_a_new_regions_size_is_said_to_a_tenth_of_a_mm(tmp_path):
+    """"made region "region-1" (127 × 135.47 mm)": two thirds of a 5x8 in card's height."""
+    path = tmp_path / "c.toml"
+    save_project(Project(pages=[Page(id="p", size="5x8in", width_mm=127.0, height_mm=203.2,
+                                     items=[TextItem(id="t", x=60.0, y=170.0, w=50.0, h=20.0,
+                                                     text="Hi")])]), path)
+    async with editor(path) as (app, pilot):
+        await pilot.press("R")
+        await pilot.pause()
+        await pilot.press("enter")
+        await pilot.pause()
+        said = [notification.message for notification in app._notifications]
+        assert app.session.page.regions and any("made region" in m for m in said), said
+        assert any('"region-1" (127 × 135.5 mm)' in m for m in said), said
