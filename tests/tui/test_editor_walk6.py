@@ -177,3 +177,12 @@ async def test_a_new_regions_size_is_said_to_a_tenth_of_a_mm(tmp_path):
         said = [notification.message for notification in app._notifications]
         assert app.session.page.regions and any("made region" in m for m in said), said
         assert any('"region-1" (127 × 135.5 mm)' in m for m in said), said
+
+
+async def test_at_60_columns_the_status_line_keeps_the_why(tmp_path):
+    """At 60 columns the reason was cut at "(96% of t…"; the parts a user can spare go first."""
+    path = crowded_page(tmp_path / "full.toml")
+    async with editor(path, size=(60, 20)) as (app, pilot):
+        await until(pilot, lambda: "too full" in status(app))
+        second = status(app).splitlines()[1]
+        assert "page too full (96% of the room)" in second and "…" not in second
