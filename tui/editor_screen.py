@@ -425,7 +425,8 @@ class EditorScreen(Screen):
         parts.append((2, 2, ((f"page {session.page_index + 1}/{len(session.project.pages)} ",
                               False), (page.id, True))))
         parts.append((5, 3, ((f"{page.size} {page.orientation}", False),)))
-        parts.append((4, 4, ((f"{len(page.items)} items", False),)))
+        count = len(page.items)  # "1 items" on a new blank page
+        parts.append((4, 4, ((f"{count} item{'' if count == 1 else 's'}", False),)))
         if selected:
             parts.append((1, 5, ((selected.id, True),
                                  (f" ({describe_item(selected, page)})", False))))

@@ -187,3 +187,12 @@ async def test_at_60_columns_the_status_line_keeps_the_why(tmp_path):
         second = status(app).splitlines()[1]
         assert "page too full (96% of the room)" in second
         assert len(second) <= 60 - 2  # the line fits: nothing of it is cut with "…"
+
+
+async def test_the_top_bar_counts_one_item_in_the_singular(tmp_path):
+    path = tmp_path / "one.toml"
+    save_project(Project(pages=[Page(id="p", size="A5", width_mm=148.0, height_mm=210.0, items=[
+        TextItem(id="t", x=74.0, y=105.0, w=60.0, h=20.0, text="Hi")])]), path)
+    async with editor(path) as (app, pilot):
+        bar = "".join(text for text, _ in screen_of(app).page_bar_runs())
+        assert "1 item" in bar and "1 items" not in bar
