@@ -301,8 +301,9 @@ class PagePainter:
         line) or the row below them, so that it covers none of the item: inside the box it
         hid the first row of a text's words (user-walk-6).  Of those, the first that covers
         no other item's words, region name or group label (``kept_clear``: (row, column, end
-        column, text)); else the first clear of those names; only where neither row is on
-        the canvas does it go inside, as `n`'s labels do."""
+        column, text)), or else its own first row where no words are (a picture's top: over
+        the caption below it, the album's label hid the caption); else the first clear of
+        those names; only where none is, inside, as `n`'s labels go."""
         col0, _, col1, _ = self._cells(box)
         _, first, _, end = self._text_area(box, below_label=False)
         text = printable(("~" if item.decorative else "") + item.id)
@@ -310,7 +311,7 @@ class PagePainter:
         text = text[:width]
         span = text_cells(text)
         places = []
-        for row in (first - 1, end):
+        for row in (first - 1, end, first):  # inside last: over a picture's top, not words
             if not 0 <= row < canvas.rows:
                 continue
             col = max(col0, 0)

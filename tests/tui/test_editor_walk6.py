@@ -196,3 +196,23 @@ async def test_the_top_bar_counts_one_item_in_the_singular(tmp_path):
     async with editor(path) as (app, pilot):
         bar = "".join(text for text, _ in screen_of(app).page_bar_runs())
         assert "1 item" in bar and "1 items" not in bar
+
+
+async def test_a_pictures_id_beside_a_region_name_hides_no_caption(tmp_path):
+    """A region made around the album's first photo puts its name on the row above the photo;
+    the photo's id then went below it, over its caption's words, where the photo's own top
+    row (no words there) was free."""
+    folder = tmp_path / "photo-album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    async with editor(folder / "photo-album.toml", size=(80, 24)) as (app, pilot):
+        app.session.select("p1-photo-1")
+        screen_of(app).after_edit()
+        await pilot.press("R")
+        await pilot.pause()
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.session.page.regions and app.session.selected_id == "p1-photo-1"
+        shown = preview_text(app)
+        assert "region-1" in shown and "p1-photo-1" in shown
+        words = app.session.page.item("p1-photo-1-caption").text.split()[0][:4]
+        assert words in shown, (words, shown)
