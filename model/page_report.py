@@ -122,7 +122,7 @@ def _short(quality, why: str) -> str:
     """What gave way, the last of the gutter, the margin and overlap to give way first, and
     ``why``; empty when nothing did."""
     if quality.overlap_count:
-        gave = "overlap"
+        gave = f"{quality.overlap_count} overlap{'s' if quality.overlap_count != 1 else ''}"
     elif quality.in_margin:
         gave = f"margin ({len(quality.in_margin)} in it)"
     elif np.isfinite(quality.min_gap_mm) and quality.min_gap_mm < quality.gutter_mm - GAP_TOLERANCE_MM:

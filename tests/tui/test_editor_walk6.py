@@ -12,7 +12,7 @@ import subprocess
 import sys
 
 from floatpage.model import save_project
-from floatpage.model.document import BlockItem, Page, Project, Region, TextItem
+from floatpage.model.document import BlockItem, Page, PointAnchor, Project, Region, TextItem
 from floatpage.tui.app import make_app
 
 from editor_helpers import editor, preview_text, screen_of
@@ -216,3 +216,17 @@ async def test_a_pictures_id_beside_a_region_name_hides_no_caption(tmp_path):
         assert "region-1" in shown and "p1-photo-1" in shown
         words = app.session.page.item("p1-photo-1-caption").text.split()[0][:4]
         assert words in shown, (words, shown)
+
+
+async def test_two_pinned_items_on_each_other_are_named_on_the_status_line(tmp_path):
+    """Overlap, the last guarantee to give way, with its count and the items that force it."""
+    path = tmp_path / "pinned.toml"
+    save_project(Project(pages=[Page(id="p", size="A5", width_mm=148.0, height_mm=210.0, items=[
+        TextItem(id="left", x=60.0, y=100.0, w=50.0, h=30.0, text="a",
+                 anchor=PointAnchor(x=60.0, y=100.0, hard=True)),
+        TextItem(id="right", x=80.0, y=100.0, w=50.0, h=30.0, text="b",
+                 anchor=PointAnchor(x=80.0, y=100.0, hard=True))])]), path)
+    async with editor(path) as (app, pilot):
+        await until(pilot, lambda: "meet" in status(app))
+        second = status(app).splitlines()[1]
+        assert second.startswith('1 overlap: pinned "left" and "right" meet'), second
