@@ -116,13 +116,19 @@ def left_out_photos(folder: Path) -> list[tuple[Path, str]]:
     return left
 
 
-def copy_beside(sources: list[Path], project_dir: Path) -> list[Picture]:
+def copy_beside(sources: list[Path], project_dir: Path,
+                made: list[Path] | None = None) -> list[Picture]:
     """Copy each source into project_dir/pictures/ and describe it; one Picture per source.
 
     A file already there with the same content is reused; a different file with the same name
-    gets a numbered name (photo-2.jpg), so nothing the user has is overwritten.
+    gets a numbered name (photo-2.jpg), so nothing the user has is overwritten.  Each folder
+    and file this call creates is appended to ``made`` before it is written, so a `new` that
+    fails later (or is interrupted mid-copy) can take back exactly those (starters.create).
     """
     target_dir = project_dir / PICTURES_DIR
+    made = [] if made is None else made
+    if not os.path.lexists(target_dir):  # a file named `pictures` is the user's: never made
+        made.append(target_dir)
     target_dir.mkdir(parents=True, exist_ok=True)
     placed: dict[Path, Picture] = {}
     pictures = []
@@ -131,6 +137,7 @@ def copy_beside(sources: list[Path], project_dir: Path) -> list[Picture]:
         if source.resolve() not in placed:
             target = free_name(source, target_dir)
             if not target.exists():
+                made.append(target)
                 shutil.copyfile(source, target)
             size = displayed_size(target)
             if size is None:
@@ -155,8 +162,13 @@ def free_name(source: Path, target_dir: Path) -> Path:
         suffix = ".jpg"
     for n in range(1, 10_000):
         candidate = target_dir / (f"{stem}{suffix}" if n == 1 else f"{stem}-{n}{suffix}")
-        if not candidate.exists() or candidate.resolve() == source.resolve():
+        if not os.path.lexists(candidate):
             return candidate
-        if filecmp.cmp(candidate, source, shallow=False):
+        # A symlink there is the user's: one that leads nowhere took the copy through it, out
+        # of the project (and a failed `new` then deleted the link); only a regular file that
+        # holds this very picture is reused.
+        if candidate.is_symlink() or not candidate.is_file():
+            continue
+        if candidate.resolve() == source.resolve() or filecmp.cmp(candidate, source, shallow=False):
             return candidate
     raise FloatpageError(f"{target_dir}: too many pictures named {stem}")
