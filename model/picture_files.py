@@ -161,6 +161,21 @@ def decode_warning(path: Path) -> str:
     return ""
 
 
+def names_a_field(text: str) -> bool:
+    """Whether `text` holds a merge placeholder (`{column}`; `{{` and `}}` are braces)."""
+    return MERGE_FIELD.search(text.replace("{{", "").replace("}}", "")) is not None
+
+
+def fields_are_whole_names(relative: str) -> bool:
+    """Whether a field is a whole part of the path, as a template names a picture by a
+    column (`pictures/{photo}`, `{folder}/{id}.jpg`), not inside a file's name (`photo {1}.png`)."""
+    for part in relative.replace("\\", "/").split("/"):
+        stem = part.rsplit(".", 1)[0] if "." in part.lstrip(".") else part
+        if names_a_field(part) and MERGE_FIELD.fullmatch(stem.strip()):
+            return True
+    return False
+
+
 def is_merge_placeholder(relative: str, folder: Path | None = None) -> bool:
     """A template's picture path that a data column fills (`pictures/{photo}`). Given the
     project's ``folder``, a file that is there by that very name is a picture, not a

@@ -161,6 +161,37 @@ def test_a_picture_whose_file_name_has_braces_is_a_picture_not_a_merge_field(tmp
     assert len([line for line in listed.splitlines() if " image " in line]) == 2, listed
 
 
+@pytest.mark.parametrize("command", ["check", "render", "settle"])
+def test_a_deleted_picture_whose_name_has_braces_is_named_as_missing(tmp_path, command):
+    """`photo {1}.png`, deleted: `check` passed it as a merge field and `render` called the
+    project a merge template; each now names the missing file, and the file is left alone."""
+    path = card(tmp_path)
+    path.write_text(path.read_text() + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\n'
+                    'x = 100.0\ny = 170.0\nw = 30.0\nh = 20.0\npath = "pictures/photo {1}.png"\n')
+    before = listing(tmp_path)
+    result = run(command, str(path), *(["-o", str(tmp_path / "card.pdf")] if command == "render"
+                                       else []))
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert 'item "photo": picture file "pictures/photo {1}.png" not found' in result.stderr, \
+        result.stderr
+    assert "fix the path or copy the file there" in result.stderr
+    assert "internal error" not in result.stderr
+    after = listing(tmp_path)
+    after.pop(".card.toml.lock", None)  # settle's lock, kept by design (model.project_lock)
+    assert after == before
+
+
+def test_a_template_that_names_a_column_in_a_picture_name_still_checks(tmp_path):
+    """The other side of the rule: where a text names a data column, `product-{id}.png` is
+    that column's picture, filled by `floatpage merge`, and `check` passes the template."""
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace('text = "Hello"', 'text = "Hello {name}"')
+                    + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\nx = 100.0\n'
+                      'y = 170.0\nw = 30.0\nh = 20.0\npath = "pictures/product-{id}.png"\n')
+    result = run("check", str(path))
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
 CORPUS_PICTURES = ROOT / "tests" / "fuzz" / "corpus" / "pictures"
 
 
