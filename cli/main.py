@@ -347,7 +347,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
-    from floatpage.cli.page_report import page_report, settle_may_help, what_settle_fixes
+    from floatpage.cli.page_report import page_report, settle_may_help, tiny_items, what_settle_fixes
     from floatpage.model.layout import engine_for_page
 
     print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
@@ -363,7 +363,8 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.typeset import text_fit_warnings
     from floatpage.typeset.render import faint_text_notes, picture_warnings, resolution_notes
 
-    for warning in text_fit_warnings(project) + picture_warnings(project):
+    tiny = [warning for page in project.pages for warning in tiny_items(page)]
+    for warning in tiny + text_fit_warnings(project) + picture_warnings(project):
         print(f"warning: {printable(warning)}")
         issues += 1
     # notes, not problems: --strict still passes

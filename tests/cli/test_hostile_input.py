@@ -355,3 +355,27 @@ def test_a_png_cut_short_that_must_be_converted_names_its_item(tmp_path):
         "not be converted (image file is truncated")
     assert "export it again, or use another picture" in result.stderr
     assert not (tmp_path / "card.pdf").exists()
+
+
+def test_check_warns_of_a_text_picture_or_calendar_under_a_millimetre(tmp_path):
+    """A 0.4 mm picture and a 0.5 mm calendar passed `check` without a word; a 0.3 mm block,
+    a rule, is no problem."""
+    from PIL import Image
+
+    (tmp_path / "pictures").mkdir()
+    Image.new("RGB", (300, 200), "red").save(tmp_path / "pictures" / "red.png")
+    path = card(tmp_path)
+    path.write_text(path.read_text() + "".join(
+        f'\n[[pages.items]]\nid = "{name}"\nkind = "{kind}"\nx = {x}\ny = 180.0\nw = {w}\n'
+        f"h = {h}\n{extra}\n"
+        for name, kind, x, w, h, extra in [
+            ("speck", "picture", 20.0, 0.4, 30.0, 'path = "pictures/red.png"'),
+            ("month", "calendar", 60.0, 0.5, 0.5, "year = 2027\nmonth = 3"),
+            ("rule", "block", 100.0, 40.0, 0.3, 'color = "#000000"')]))
+    result = run("check", "--strict", str(path))
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert 'warning: item "speck" on page "front": its box is 0.4 × 30 mm, under 1 mm wide, ' \
+           "too small for a picture to be seen or printed" in result.stdout, result.stdout
+    assert 'warning: item "month" on page "front": its box is 0.5 × 0.5 mm' in result.stdout
+    assert not [line for line in result.stdout.splitlines()
+                if line.startswith('warning: item "rule"')], result.stdout
