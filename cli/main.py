@@ -361,14 +361,17 @@ def cmd_check(args: argparse.Namespace) -> int:
         if settle_may_help(lines):
             settle_lines += lines
     from floatpage.typeset import text_fit_warnings
-    from floatpage.typeset.render import faint_text_notes, picture_warnings, resolution_notes
+    from floatpage.typeset.render import (
+        document_fits, faint_text_notes, picture_warnings, resolution_notes,
+    )
 
     tiny = [warning for page in project.pages for warning in tiny_items(page)]
-    for warning in tiny + text_fit_warnings(project) + picture_warnings(project):
+    fits = document_fits(project)  # each text fitted once, for the warnings and the notes
+    for warning in tiny + text_fit_warnings(project, fits) + picture_warnings(project):
         print(f"warning: {printable(warning)}")
         issues += 1
     # notes, not problems: --strict still passes
-    for note in resolution_notes(project) + faint_text_notes(project):
+    for note in resolution_notes(project) + faint_text_notes(project, fits):
         print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
