@@ -379,3 +379,33 @@ def test_check_warns_of_a_text_picture_or_calendar_under_a_millimetre(tmp_path):
     assert 'warning: item "month" on page "front": its box is 0.5 × 0.5 mm' in result.stdout
     assert not [line for line in result.stdout.splitlines()
                 if line.startswith('warning: item "rule"')], result.stdout
+
+
+@pytest.mark.parametrize("cut", ["half", "end chunk"])
+def test_a_png_cut_short_prints_what_it_has_with_a_warning_naming_it(tmp_path, cut):
+    """LuaTeX stopped at the page's end with "(writepng): reading chunk type failed", tied to
+    no item ("line 37 of the .tex"), where a JPEG cut short prints with a warning."""
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    pixels = np.random.default_rng(5).integers(0, 256, (120, 160, 3), dtype=np.uint8)
+    buffer = io.BytesIO()
+    Image.fromarray(pixels).save(buffer, "PNG")
+    data = buffer.getvalue()
+    (tmp_path / "cut.png").write_bytes(data[:len(data) // 2] if cut == "half" else data[:-12])
+    path = card(tmp_path)
+    path.write_text(path.read_text() + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\n'
+                    'x = 100.0\ny = 170.0\nw = 30.0\nh = 20.0\npath = "cut.png"\n')
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "render", str(path),
+                             "--no-settle", "-o", str(tmp_path / "card.pdf")],
+                            capture_output=True, text=True, timeout=300, stdin=subprocess.DEVNULL,
+                            env={**os.environ, "FLOATPAGE_CACHE_DIR": str(tmp_path / "cache")})
+    assert result.returncode == 0, result.stderr
+    assert 'warning: item "photo" on page "front": picture "cut.png": its pixels do not ' \
+           "decode cleanly" in result.stderr, result.stderr
+    listed = subprocess.run(["pdfimages", "-list", str(tmp_path / "card.pdf")],
+                            capture_output=True, text=True, check=True).stdout
+    assert [line.split()[3:5] for line in listed.splitlines() if " image " in line] == \
+        [["160", "120"]], listed
