@@ -75,6 +75,17 @@ def displayed_size(path: Path) -> tuple[int, int] | None:
         return None
 
 
+# The longest side of a photo a starter places, in shorts sides: a photo of 1 x 100,000 pixels
+# became a box 0.0 mm tall, and `new album` saved a project its own loader refused ("h must
+# be greater than 0").  A panorama of 20:1 is still 9 mm tall across an A4 page.
+MOST_ELONGATED = 20.0
+
+
+def usable_shape(size: tuple[int, int] | None) -> bool:
+    """Whether a picture of ``size`` pixels (None: unreadable) can be a starter's photo."""
+    return size is not None and max(size) <= MOST_ELONGATED * min(size)
+
+
 def find_photos(folder: Path) -> list[Path]:
     """The readable pictures directly inside `folder`, in name order; raise if there are none."""
     folder = Path(folder).expanduser()
@@ -85,10 +96,10 @@ def find_photos(folder: Path) -> list[Path]:
     candidates = sorted(p for p in folder.iterdir()
                         if p.is_file() and not p.name.startswith(".")
                         and p.suffix.lower() in ACCEPTED_SUFFIXES)
-    readable = [p for p in candidates if displayed_size(p) is not None]
+    readable = [p for p in candidates if usable_shape(displayed_size(p))]
     if not readable:
-        found = f"{len(candidates)} picture file(s) but none could be read" if candidates \
-            else "no picture files"
+        found = f"{len(candidates)} picture file(s) but none could be read or used" \
+            if candidates else "no picture files"
         raise FloatpageError(f"--photos {folder}: {found} (floatpage accepts {accepted_formats()})")
     return readable
 
@@ -108,9 +119,14 @@ def left_out_photos(folder: Path) -> list[tuple[Path, str]]:
         if not path.is_file() or path.name.startswith("."):
             continue
         suffix = path.suffix.lower()
-        if suffix in ACCEPTED_SUFFIXES and displayed_size(path) is None:
+        size = displayed_size(path) if suffix in ACCEPTED_SUFFIXES else None
+        if suffix in ACCEPTED_SUFFIXES and size is None:
             left.append((path, "it cannot be read as a picture (damaged, or not what its name "
                                "says)"))
+        elif suffix in ACCEPTED_SUFFIXES and not usable_shape(size):
+            left.append((path, f"it is {size[0]} × {size[1]} pixels, its long side more "
+                               f"than {MOST_ELONGATED:g} times its short one: too thin a strip "
+                               "to lay out (crop it)"))
         elif suffix in OTHER_PICTURE_SUFFIXES:
             left.append((path, f"floatpage reads {accepted_formats()}; convert it to JPG or PNG"))
     return left

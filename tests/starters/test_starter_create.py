@@ -240,3 +240,26 @@ def test_a_name_too_long_to_save_is_refused_before_anything_is_written(tmp_path,
     assert f"the file name is {length + 5} bytes long" in result.stderr, result.stderr
     assert "choose a shorter name" in result.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_photo_too_thin_to_lay_out_is_left_out_with_a_word(tmp_path):
+    """A photo of 1 x 100,000 pixels became a box 0.0 mm tall: `new album` saved a project
+    its own loader refused ("h" must be greater than 0)."""
+    from PIL import Image
+
+    photos = tmp_path / "photos"
+    photos.mkdir()
+    Image.new("L", (1, 30_000), 128).save(photos / "strip.png")
+    Image.new("RGB", (30_000, 1), "red").save(photos / "line.jpg")
+    Image.new("RGB", (300, 200), "blue").save(photos / "fine.png")
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "album",
+                             str(tmp_path / "album.toml"), "--photos", str(photos)],
+                            capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
+    assert result.returncode == 0, result.stderr
+    for name, size in (("line.jpg", "30000 × 1"), ("strip.png", "1 × 30000")):
+        assert f"note: {photos / name} was left out: it is {size} pixels, its long side more " \
+               "than 20 times its short one" in result.stderr, result.stderr
+    project = load_project(tmp_path / "album.toml")
+    used = [item.path for page in project.pages for item in page.items
+            if isinstance(item, PictureItem)]
+    assert used == ["pictures/fine.png"]
