@@ -409,3 +409,19 @@ def test_a_png_cut_short_prints_what_it_has_with_a_warning_naming_it(tmp_path, c
                             capture_output=True, text=True, check=True).stdout
     assert [line.split()[3:5] for line in listed.splitlines() if " image " in line] == \
         [["160", "120"]], listed
+
+
+def test_a_photo_under_floatpages_pixel_limit_draws_no_python_warning(tmp_path):
+    """9,999 x 9,999 pixels is within floatpage's 100 megapixels, but over Pillow's 89.5: check
+    and new printed "/.../PIL/Image.py:3593: DecompressionBombWarning: ... DOS attack"."""
+    from PIL import Image
+
+    (tmp_path / "photos").mkdir()
+    Image.new("1", (9_999, 9_999), 1).save(tmp_path / "photos" / "big.png")
+    created = run("new", "album", str(tmp_path / "album" / "album.toml"), "--photos",
+                  str(tmp_path / "photos"))
+    assert created.returncode == 0, created.stderr
+    checked = run("check", str(tmp_path / "album" / "album.toml"))
+    assert checked.returncode == 0, checked.stderr
+    for result in (created, checked):
+        assert "Warning" not in result.stderr and "Image.py" not in result.stderr, result.stderr
