@@ -18,6 +18,7 @@ from PIL import Image, UnidentifiedImageError
 
 from floatpage.model.errors import FloatpageError
 from floatpage.model.key_specs import PICTURE_SUFFIXES
+from floatpage.model.picture_files import is_outside
 
 PICTURES_DIR = "pictures"
 # What the typesetter reads, but PDFs: a starter measures its photos' pixels.
@@ -143,6 +144,13 @@ def copy_beside(sources: list[Path], project_dir: Path,
     """
     target_dir = project_dir / PICTURES_DIR
     made = [] if made is None else made
+    if target_dir.is_symlink() and is_outside(target_dir, project_dir):
+        # the copies went through the link, and the project saved named pictures its own
+        # loader then refused as "outside the project folder"
+        raise FloatpageError(f"{target_dir}: is a symbolic link to {os.readlink(target_dir)}, "
+                             "outside the project's folder, and a new project keeps its "
+                             "pictures inside it; remove the link, or create the project in "
+                             "another folder")
     if not os.path.lexists(target_dir):  # a file named `pictures` is the user's: never made
         made.append(target_dir)
     target_dir.mkdir(parents=True, exist_ok=True)

@@ -263,3 +263,19 @@ def test_a_photo_too_thin_to_lay_out_is_left_out_with_a_word(tmp_path):
     used = [item.path for page in project.pages for item in page.items
             if isinstance(item, PictureItem)]
     assert used == ["pictures/fine.png"]
+
+
+def test_a_pictures_link_out_of_the_folder_is_refused_before_anything_is_copied(tmp_path):
+    """`pictures` a symlink to ../elsewhere: `new card` copied the pictures through it, and
+    the project it saved failed its own check ("outside the project folder")."""
+    (tmp_path / "elsewhere").mkdir()
+    (tmp_path / "project").mkdir()
+    (tmp_path / "project" / "pictures").symlink_to("../elsewhere")
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "card",
+                             str(tmp_path / "project" / "card.toml")], capture_output=True,
+                            text=True, timeout=120, stdin=subprocess.DEVNULL)
+    assert result.returncode == 1, result.stderr
+    assert f"{tmp_path / 'project' / 'pictures'}: is a symbolic link to ../elsewhere, outside " \
+           "the project's folder" in result.stderr, result.stderr
+    assert list((tmp_path / "elsewhere").iterdir()) == []
+    assert [path.name for path in (tmp_path / "project").iterdir()] == ["pictures"]
