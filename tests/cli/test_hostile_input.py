@@ -425,3 +425,29 @@ def test_a_photo_under_floatpages_pixel_limit_draws_no_python_warning(tmp_path):
     assert checked.returncode == 0, checked.stderr
     for result in (created, checked):
         assert "Warning" not in result.stderr and "Image.py" not in result.stderr, result.stderr
+
+
+def test_a_png_libpng_refuses_is_named_with_what_to_do_not_internal_error(tmp_path):
+    """A PNG with a chunk of a made-up critical kind reads well to Pillow, and LuaTeX stopped
+    with "(readpng): internal error" and no advice."""
+    import io
+    import struct
+    import zlib
+
+    from PIL import Image
+
+    buffer = io.BytesIO()
+    Image.new("RGB", (60, 40), "red").save(buffer, "PNG")
+    whole, chunk = buffer.getvalue(), b"QQQQ" + b"made up"
+    (tmp_path / "odd.png").write_bytes(whole[:33] + struct.pack(">I", 7) + chunk
+                                       + struct.pack(">I", zlib.crc32(chunk)) + whole[33:])
+    path = card(tmp_path)
+    path.write_text(path.read_text() + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\n'
+                    'x = 100.0\ny = 170.0\nw = 30.0\nh = 20.0\npath = "odd.png"\n')
+    result = run("render", str(path), "--no-settle", "-o", str(tmp_path / "card.pdf"))
+    assert result.returncode == 1, result.stderr
+    assert 'item "photo" on page "front" (picture file "odd.png"): ' in result.stderr
+    assert "the PNG could not be read; the file is damaged or of a kind LuaTeX does not " \
+           "read: open it and save it again as PNG or JPEG" in result.stderr, result.stderr
+    assert "internal error" not in result.stderr
+    assert not (tmp_path / "card.pdf").exists()
