@@ -347,7 +347,9 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
-    from floatpage.model.page_report import page_report, settle_may_help, what_settle_fixes
+    from floatpage.model.page_report import (
+        page_report, settle_may_help, tiny_items, what_settle_fixes,
+    )
     from floatpage.model.layout import engine_for_page
 
     print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
@@ -361,13 +363,17 @@ def cmd_check(args: argparse.Namespace) -> int:
         if settle_may_help(lines):
             settle_lines += lines
     from floatpage.typeset import text_fit_warnings
-    from floatpage.typeset.render import faint_text_notes, picture_warnings, resolution_notes
+    from floatpage.typeset.render import (
+        document_fits, faint_text_notes, picture_warnings, resolution_notes,
+    )
 
-    for warning in text_fit_warnings(project) + picture_warnings(project):
+    tiny = [warning for page in project.pages for warning in tiny_items(page)]
+    fits = document_fits(project)  # each text fitted once, for the warnings and the notes
+    for warning in tiny + text_fit_warnings(project, fits) + picture_warnings(project):
         print(f"warning: {printable(warning)}")
         issues += 1
     # notes, not problems: --strict still passes
-    for note in resolution_notes(project) + faint_text_notes(project):
+    for note in resolution_notes(project) + faint_text_notes(project, fits):
         print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")

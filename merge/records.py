@@ -72,7 +72,7 @@ class DataFile:
             if not header:
                 raise FloatpageError(f"{self.path}: the file is empty; its first line must name "
                                      "the columns")
-            columns = [name.strip() for name in header]
+            columns = header_names(header)
         else:
             first = next(self.records(), None)
             if first is None or first.problem:
@@ -113,7 +113,7 @@ class DataFile:
     def csv_records(self) -> Iterator[Record]:
         with self.open() as handle:
             reader = csv.reader(handle, delimiter=self.delimiter, strict=True)
-            header = [name.strip() for name in next(reader, [])]
+            header = header_names(next(reader, []))
             number = 0
             for row, line, problem in self.rows(reader):
                 if not problem and not any(cell.strip() for cell in row):
@@ -159,7 +159,9 @@ class DataFile:
                 number += 1
                 record = Record(number, line_number)
                 try:
-                    data = json.loads(line)
+                    # a BOM at a line's start: files joined with `cat`, each saved with
+                    # one, failed every record after the first file ("Unexpected UTF-8 BOM")
+                    data = json.loads(line.lstrip(BOM))
                 except (json.JSONDecodeError, RecursionError) as error:
                     record.problem = f"not valid JSON ({getattr(error, 'msg', 'too deep')})"
                     yield self.padded(record)
@@ -194,6 +196,19 @@ class DataFile:
         for name in getattr(self, "columns", ()):
             record.values.setdefault(name, "")
         return record
+
+
+BOM = "\ufeff"
+
+
+def header_names(header: list[str]) -> list[str]:
+    """The column names of a CSV header row, spaces trimmed; a second byte-order mark before
+    the first (a tool that adds one to a file that had one) is no part of its name: merge
+    said the file had no column 'id' but '\ufeffid'."""
+    names = [name.strip() for name in header]
+    if names:
+        names[0] = names[0].lstrip(BOM).strip()
+    return names
 
 
 def is_text(value: str) -> bool:

@@ -34,7 +34,8 @@ class FieldUse:
 class MergeTemplate:
     def __init__(self, path: Path, *, allow_outside_files: bool = False):
         self.path = Path(path)
-        self.project = load_project(self.path, allow_outside_files=allow_outside_files)
+        self.project = load_project(self.path, allow_outside_files=allow_outside_files,
+                                    merge_template=True)
         if not self.project.pages:
             raise FloatpageError(f"{self.path}: the template has no pages; add a [[pages]] table")
         self.allow_outside = allow_outside_files or self.project.allow_outside_files

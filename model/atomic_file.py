@@ -156,7 +156,16 @@ SAVE_HINTS = {errno.ENOSPC: "the disk is full; free some space and save again: t
                             "unchanged",
               errno.EDQUOT: "your disk quota is used up; free some space and save again: the "
                             "file is unchanged",
-              errno.EROFS: "the folder is on a read-only file system; save to a writable folder"}
+              errno.EROFS: "the folder is on a read-only file system; save to a writable folder",
+              # a 240-byte name is a file, but not its temporary beside it (".NAME.PID.HEX"
+              # plus the suffix): "check that the folder exists and is writable" misled
+              errno.ENAMETOOLONG: "the file name is too long to save beside it safely; "
+                                  "give the file a name of at most LONGEST_SAVED_NAME bytes"}
+# The longest file name a save can keep its temporary and its .bak beside (255, most file
+# systems' NAME_MAX, less temporary_name's additions).
+LONGEST_SAVED_NAME = 255 - len(f"..{2 ** 22}.{'0' * 8}{TEMPORARY_SUFFIX}.bak")
+SAVE_HINTS[errno.ENAMETOOLONG] = SAVE_HINTS[errno.ENAMETOOLONG].replace(
+    "LONGEST_SAVED_NAME", str(LONGEST_SAVED_NAME))
 
 
 def atomic_write(path: Path, data: bytes, *, backup: bool = True) -> None:

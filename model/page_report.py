@@ -25,6 +25,25 @@ AXIS_WORDS = (("wide", "across"), ("tall", "down"))
 SETTLE = "run `floatpage settle`"  # the advice for a miss a settle may fix (and only for one)
 
 
+TINY_MM = 1.0  # a side shorter than this: a box no one sees, nor prints legibly
+KIND_WORDS = {"text": "a text", "picture": "a picture", "calendar": "a calendar"}
+
+
+def tiny_items(page) -> list[str]:
+    """Warnings for the texts, pictures and calendars with a side under TINY_MM, each naming
+    the item and the page: a 0.4 mm picture or calendar (a slip of the mouse, a typo of 0.5
+    for 50) passed `check` without a word.  Blocks are left out: a 0.3 mm block is a rule."""
+    found = []
+    for item in page.items:
+        if item.kind in KIND_WORDS and min(item.w, item.h) < TINY_MM:
+            found.append(f'item "{item.id}" on page "{page.id}": its box is {item.w:g} × '
+                         f"{item.h:g} mm, under {TINY_MM:g} mm "
+                         f"{'wide' if item.w <= item.h else 'tall'}, too small for "
+                         f"{KIND_WORDS[item.kind]} to be seen or printed (enlarge the box, "
+                         "or remove the item)")
+    return found
+
+
 def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     """The lines `check` prints for ``page`` (settled or not, as it lies in the file) and the
     number of layout problems it counts for ``--strict``.  Only the misses no reason explains

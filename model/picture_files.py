@@ -21,6 +21,14 @@ FORMATS = ("PNG", "JPEG", "WEBP", "GIF", "BMP", "TIFF")
 FORMAT_WORDS = "PNG, JPEG, PDF, WebP, GIF, BMP or TIFF"
 
 
+# Pillow warns above its 89.5-megapixel limit, as a Python warning with its own source path
+# ("/.../PIL/Image.py:3593: DecompressionBombWarning: ... could be decompression bomb DOS
+# attack"), which check, render and new printed for a 9,999 x 9,999 photo that floatpage's
+# own limit, MAX_PIXELS, allows: every header is held to MAX_PIXELS before any decoding, so
+# the warning says nothing the user can act on.
+warnings.filterwarnings("ignore", message=r"Image size \(\d+ pixels\) exceeds limit",
+                        category=RuntimeWarning)
+
 MERGE_FIELD = re.compile(r"\{[^{}]+\}")
 # A PDF picture's sides, in PDF units (1/72 in): 14,400 is PDF's own largest page (5.08 m;
 # TeX stops at 16,322), and below one unit the scale to the item's size overflows TeX.
@@ -159,6 +167,21 @@ def decode_warning(path: Path) -> str:
     except (OSError, ValueError, SyntaxError, Image.DecompressionBombError) as error:
         return f"its pixels do not decode cleanly ({error}); it may print grey or cut off"
     return ""
+
+
+def names_a_field(text: str) -> bool:
+    """Whether `text` holds a merge placeholder (`{column}`; `{{` and `}}` are braces)."""
+    return MERGE_FIELD.search(text.replace("{{", "").replace("}}", "")) is not None
+
+
+def fields_are_whole_names(relative: str) -> bool:
+    """Whether a field is a whole part of the path, as a template names a picture by a
+    column (`pictures/{photo}`, `{folder}/{id}.jpg`), not inside a file's name (`photo {1}.png`)."""
+    for part in relative.replace("\\", "/").split("/"):
+        stem = part.rsplit(".", 1)[0] if "." in part.lstrip(".") else part
+        if names_a_field(part) and MERGE_FIELD.fullmatch(stem.strip()):
+            return True
+    return False
 
 
 def is_merge_placeholder(relative: str, folder: Path | None = None) -> bool:

@@ -23,7 +23,9 @@ from floatpage.model.document import (
 )
 from floatpage.model.errors import Problem, ProjectFileError
 from floatpage.model.locate import LineFinder
-from floatpage.model.picture_files import is_merge_placeholder, is_outside, read_header
+from floatpage.model.picture_files import (
+    fields_are_whole_names, is_merge_placeholder, is_outside, names_a_field, read_header,
+)
 from floatpage.model.page_sizes import CUSTOM, PAGE_SIZES_MM, canonical_size_name, page_dimensions
 from floatpage.model.schema import (
     BACKGROUND_KEYS, COMMON_ITEM_KEYS, FILES_KEYS, ITEM_ANCHOR_KEYS, KIND_KEYS, PAGE_KEYS, PHYSICS_KEYS,
@@ -46,7 +48,7 @@ def reach(page_mm: float) -> tuple[float, float]:
 
 
 def load_project(path: str | Path, *, allow_outside_files: bool = False,
-                 missing_pictures_ok: bool = False) -> Project:
+                 missing_pictures_ok: bool = False, merge_template: bool | None = None) -> Project:
     """Parse and validate a project file; raise ProjectFileError naming every problem.
 
     Pictures must lie inside the project's folder unless ``allow_outside_files`` (the CLI's
@@ -57,7 +59,11 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False,
     ``project.missing_pictures``: the editor refused to open it at all, leaving the user to
     mend the file by hand, where it now has a field for the path.
     A merge template may name a picture by a placeholder (``pictures/{photo}``): that path
-    is checked per record, once filled, by `floatpage merge`."""
+    is checked per record, once filled, by `floatpage merge`.  Whether the project is one is
+    ``merge_template`` (True from `floatpage merge`), else whether any text names a data column
+    (`texts_name_fields`) or the field is a whole file or folder name (`pictures/{photo}`,
+    `{id}.jpg`): a picture `photo {1}.png` deleted from a project whose texts name none is a
+    missing picture, which `check` passed and `render` called a merge template."""
     path = Path(path)
     text = read_text(path)
     try:
@@ -67,7 +73,9 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False,
     except RecursionError:
         raise too_deep(path) from None
     reader = _Reader(path, text, allow_outside=allow_outside_files,
-                     missing_pictures_ok=missing_pictures_ok)
+                     missing_pictures_ok=missing_pictures_ok,
+                     merge_template=texts_name_fields(data) if merge_template is None
+                     else merge_template)
     reader.had_bom = starts_with_bom(path)
     project = reader.project(data)
     if reader.problems:
@@ -77,6 +85,18 @@ def load_project(path: str | Path, *, allow_outside_files: bool = False,
     project.utf8_bom = reader.had_bom
     project.crlf = "\r\n" in text[:text.find("\n") + 1]  # as its first line ends
     return project
+
+
+def texts_name_fields(data: dict) -> bool:
+    """Whether any text item of the parsed file names a data column (`{first_name}`)."""
+    pages = data.get("pages")
+    for page in pages if isinstance(pages, list) else ():
+        items = page.get("items") if isinstance(page, dict) else None
+        for item in items if isinstance(items, list) else ():
+            text = item.get("text") if isinstance(item, dict) else None
+            if isinstance(text, str) and names_a_field(text):
+                return True
+    return False
 
 
 def starts_with_bom(path: Path) -> bool:
@@ -152,8 +172,9 @@ class _Reader:
     """Walks parsed TOML against the schema, building the model and collecting problems."""
 
     def __init__(self, path: Path, text: str, *, allow_outside: bool = False,
-                 missing_pictures_ok: bool = False):
+                 missing_pictures_ok: bool = False, merge_template: bool = False):
         self.path = path
+        self.merge_template = merge_template
         self.allow_outside = allow_outside
         self.missing_pictures_ok = missing_pictures_ok
         self.missing_pictures: list[str] = []
@@ -373,10 +394,18 @@ class _Reader:
         return Background(color=values.get("color"), picture=values.get("picture"))
 
     def check_picture(self, relative: str, where: str, line: int | None) -> None:
-        if is_merge_placeholder(relative, self.path.parent):
+        braces = is_merge_placeholder(relative, self.path.parent)
+        if braces and (self.merge_template or fields_are_whole_names(relative)):
             return
         picture = self.path.parent / relative
         header = read_header(picture)
+        if braces and header.problem == "not found" and not self.missing_pictures_ok:
+            self.add(line, where, f'picture file "{relative}" not found',
+                     f"paths are relative to {folder_words(self.path)}; fix the path or copy "
+                     "the file there; or, if its braces name a data column, this is a merge "
+                     "template: make its documents with `floatpage merge TEMPLATE DATA -o "
+                     "OUTDIR`")
+            return
         if header.problem and self.missing_pictures_ok:
             problem = "is missing" if header.problem == "not found" else header.problem
             self.missing_pictures.append(f'{where}: picture file "{relative}" {problem}')

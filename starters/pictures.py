@@ -18,6 +18,7 @@ from PIL import Image, UnidentifiedImageError
 
 from floatpage.model.errors import FloatpageError
 from floatpage.model.key_specs import PICTURE_SUFFIXES
+from floatpage.model.picture_files import is_outside
 
 PICTURES_DIR = "pictures"
 # What the typesetter reads, but PDFs: a starter measures its photos' pixels.
@@ -75,6 +76,17 @@ def displayed_size(path: Path) -> tuple[int, int] | None:
         return None
 
 
+# The longest side of a photo a starter places, in shorts sides: a photo of 1 x 100,000 pixels
+# became a box 0.0 mm tall, and `new album` saved a project its own loader refused ("h must
+# be greater than 0").  A panorama of 20:1 is still 9 mm tall across an A4 page.
+MOST_ELONGATED = 20.0
+
+
+def usable_shape(size: tuple[int, int] | None) -> bool:
+    """Whether a picture of ``size`` pixels (None: unreadable) can be a starter's photo."""
+    return size is not None and max(size) <= MOST_ELONGATED * min(size)
+
+
 def find_photos(folder: Path) -> list[Path]:
     """The readable pictures directly inside `folder`, in name order; raise if there are none."""
     folder = Path(folder).expanduser()
@@ -85,10 +97,10 @@ def find_photos(folder: Path) -> list[Path]:
     candidates = sorted(p for p in folder.iterdir()
                         if p.is_file() and not p.name.startswith(".")
                         and p.suffix.lower() in ACCEPTED_SUFFIXES)
-    readable = [p for p in candidates if displayed_size(p) is not None]
+    readable = [p for p in candidates if usable_shape(displayed_size(p))]
     if not readable:
-        found = f"{len(candidates)} picture file(s) but none could be read" if candidates \
-            else "no picture files"
+        found = f"{len(candidates)} picture file(s) but none could be read or used" \
+            if candidates else "no picture files"
         raise FloatpageError(f"--photos {folder}: {found} (floatpage accepts {accepted_formats()})")
     return readable
 
@@ -108,21 +120,39 @@ def left_out_photos(folder: Path) -> list[tuple[Path, str]]:
         if not path.is_file() or path.name.startswith("."):
             continue
         suffix = path.suffix.lower()
-        if suffix in ACCEPTED_SUFFIXES and displayed_size(path) is None:
+        size = displayed_size(path) if suffix in ACCEPTED_SUFFIXES else None
+        if suffix in ACCEPTED_SUFFIXES and size is None:
             left.append((path, "it cannot be read as a picture (damaged, or not what its name "
                                "says)"))
+        elif suffix in ACCEPTED_SUFFIXES and not usable_shape(size):
+            left.append((path, f"it is {size[0]} × {size[1]} pixels, its long side more "
+                               f"than {MOST_ELONGATED:g} times its short one: too thin a strip "
+                               "to lay out (crop it)"))
         elif suffix in OTHER_PICTURE_SUFFIXES:
             left.append((path, f"floatpage reads {accepted_formats()}; convert it to JPG or PNG"))
     return left
 
 
-def copy_beside(sources: list[Path], project_dir: Path) -> list[Picture]:
+def copy_beside(sources: list[Path], project_dir: Path,
+                made: list[Path] | None = None) -> list[Picture]:
     """Copy each source into project_dir/pictures/ and describe it; one Picture per source.
 
     A file already there with the same content is reused; a different file with the same name
-    gets a numbered name (photo-2.jpg), so nothing the user has is overwritten.
+    gets a numbered name (photo-2.jpg), so nothing the user has is overwritten.  Each folder
+    and file this call creates is appended to ``made`` before it is written, so a `new` that
+    fails later (or is interrupted mid-copy) can take back exactly those (starters.create).
     """
     target_dir = project_dir / PICTURES_DIR
+    made = [] if made is None else made
+    if target_dir.is_symlink() and is_outside(target_dir, project_dir):
+        # the copies went through the link, and the project saved named pictures its own
+        # loader then refused as "outside the project folder"
+        raise FloatpageError(f"{target_dir}: is a symbolic link to {os.readlink(target_dir)}, "
+                             "outside the project's folder, and a new project keeps its "
+                             "pictures inside it; remove the link, or create the project in "
+                             "another folder")
+    if not os.path.lexists(target_dir):  # a file named `pictures` is the user's: never made
+        made.append(target_dir)
     target_dir.mkdir(parents=True, exist_ok=True)
     placed: dict[Path, Picture] = {}
     pictures = []
@@ -131,6 +161,7 @@ def copy_beside(sources: list[Path], project_dir: Path) -> list[Picture]:
         if source.resolve() not in placed:
             target = free_name(source, target_dir)
             if not target.exists():
+                made.append(target)
                 shutil.copyfile(source, target)
             size = displayed_size(target)
             if size is None:
@@ -155,8 +186,13 @@ def free_name(source: Path, target_dir: Path) -> Path:
         suffix = ".jpg"
     for n in range(1, 10_000):
         candidate = target_dir / (f"{stem}{suffix}" if n == 1 else f"{stem}-{n}{suffix}")
-        if not candidate.exists() or candidate.resolve() == source.resolve():
+        if not os.path.lexists(candidate):
             return candidate
-        if filecmp.cmp(candidate, source, shallow=False):
+        # A symlink there is the user's: one that leads nowhere took the copy through it, out
+        # of the project (and a failed `new` then deleted the link); only a regular file that
+        # holds this very picture is reused.
+        if candidate.is_symlink() or not candidate.is_file():
+            continue
+        if candidate.resolve() == source.resolve() or filecmp.cmp(candidate, source, shallow=False):
             return candidate
     raise FloatpageError(f"{target_dir}: too many pictures named {stem}")

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -92,6 +93,13 @@ def outcome(name, argv, cwd, protect=(), forbid=(), expect=(0, 1), expect_text=(
             nan_check=(), stdin=subprocess.DEVNULL):
     before = snapshot(protect)
     forbid_before = {str(f): os.path.lexists(f) for f in forbid}
+    nan_before = {}
+    for f in nan_check:
+        try:
+            t = Path(f).read_text(errors="replace").lower()
+            nan_before[f] = bool(re.search(r"=\s*[-+]?(nan|inf)\b", t))
+        except OSError:
+            nan_before[f] = False
     rc, out, err, secs = run(argv, cwd, timeout, stdin)
     flags = []
     if rc == "timeout":
@@ -111,6 +119,8 @@ def outcome(name, argv, cwd, protect=(), forbid=(), expect=(0, 1), expect_text=(
         if os.path.lexists(f) and not forbid_before[str(f)]:
             flags.append(f"created {f}")
     for f in nan_check:
+        if f in nan_before and nan_before[f]:
+            continue  # the input held inf or nan itself: refused, not written
         try:
             t = Path(f).read_text(errors="replace").lower()
             if "nan" in t.replace("nanum", "") and ("= nan" in t or "=nan" in t) or "= inf" in t:
@@ -898,6 +908,445 @@ def extra_cases():
     res.append(outcome("merge jsonl: key left out, lone surrogate, no object, 5000-digit int", ["merge", o, d / "m" / "odd.jsonl", "-o", d / "m" / "oj", "-q", "--name", "{id}"], d / "m", expect=(0, 3)))
     for addr in ("ftp://x", "host", "tcp://h:port"):
         res.append(outcome(f"merge --dask {addr}", ["merge", o, c, "-o", d / "m" / "od", "-q", "--dask", addr], d / "m", timeout=90))
+    return res
+
+
+# ---------------------------------------------------------------- sixteenth session (hostile-2)
+
+def leftovers(folder: Path) -> list[str]:
+    """Temporaries and half-written files a run must not leave: *.floatpage-tmp*, *.part, build
+    folders, empty PDFs."""
+    found = []
+    for path in Path(folder).rglob("*"):
+        name = path.name
+        if "floatpage-tmp" in name or name.endswith((".part", ".tmp")) or \
+                (path.is_file() and path.suffix == ".pdf" and path.stat().st_size == 0):
+            found.append(str(path.relative_to(folder)))
+    return found
+
+
+def whole_pdf(path: Path) -> bool:
+    """Whether a PDF opens and ends (a killed writer leaves a cut one)."""
+    try:
+        import pikepdf
+
+        with pikepdf.open(path) as pdf:
+            return len(pdf.pages) > 0
+    except Exception:
+        return False
+
+
+S16_TOMLS = {
+    "bidi override in text": BASE + item("a", 'text = "price \u202e0.99$\u202c ok \u2066x\u2069"', kind="text", w=80),
+    "bidi isolate unclosed in id": BASE + item("a\u2067b"),
+    "C1 CSI in id": BASE + item("a\\u009b31mred"),
+    "ESC sequence in text": BASE + item("a", 'text = "\\u001b]0;pwned\\u0007 \\u001b[2J"', kind="text", w=80),
+    "ESC in title": BASE.replace('title = "T"', 'title = "\\u001b[31mT"') + item("a"),
+    "NUL in text escape": BASE + item("a", 'text = "a\\u0000b"', kind="text", w=80),
+    "NUL in picture path": BASE + item("a", 'path = "pictures/x.png\\u0000"', kind="picture"),
+    "surrogate escape in text": BASE + item("a", 'text = "\\ud800"', kind="text", w=80),
+    "surrogate pair escapes": BASE + item("a", 'text = "\\ud83d\\ude00"', kind="text", w=80),
+    "10 MB text": BASE + item("a", 'text = "' + "lorem ipsum " * 870_000 + '"', kind="text", w=120, h=150),
+    "10 MB id": BASE + item("i" * 10_000_000),
+    "10 MB title": BASE.replace('title = "T"', 'title = "' + "T" * 10_000_000 + '"') + item("a"),
+    "1 MB font name": BASE + item("a", 'text = "x"\nfont = "' + "f" * 1_000_000 + '"', kind="text"),
+    "x = 5e-324": BASE + item("a", x=5e-324, y=5e-324),
+    "w = 5e-324": BASE + item("a", w=5e-324, h=20.0),
+    "x = -0.0": BASE + item("a", x=-0.0),
+    "w = 1.7976931348623157e308": BASE + item("a", w=1.7976931348623157e308),
+    "x = -1.7976931348623157e308": BASE + item("a", x=-1.7976931348623157e308),
+    "x = inf": BASE + item("a", x="inf"),
+    "x = -nan": BASE + item("a", x="-nan"),
+    "size_pt 1e-300": BASE + item("a", 'text = "x"\nsize_pt = 1e-300', kind="text"),
+    "size_pt 1e300": BASE + item("a", 'text = "x"\nsize_pt = 1e300', kind="text"),
+    "size_pt 5e-324": BASE + item("a", 'text = "x"\nsize_pt = 5e-324', kind="text"),
+    "opacity 1e-320": BASE + item("a", "opacity = 1e-320"),
+    "z = 2**63-1": BASE + item("a", "z = 9223372036854775807") + item("b", "z = -9223372036854775808", x=80),
+    "custom page 1e-300": BASE.replace('size = "A5"', 'size = "custom"\nwidth_mm = 1e-300\nheight_mm = 1e-300') + item("a", x=0, y=0, w=1e-300, h=1e-300),
+    "custom page 5 m": BASE.replace('size = "A5"', 'size = "custom"\nwidth_mm = 5000.0\nheight_mm = 5000.0') + item("a", x=2500, y=2500, w=4000, h=4000),
+    "gutter 5e-324": BASE.replace("[[pages]]", "[physics]\ngutter_mm = 5e-324\n\n[[pages]]") + item("a") + item("b", x=80),
+    "margin -0.0": BASE.replace("[[pages]]", "[physics]\nmargin_mm = -0.0\n\n[[pages]]") + item("a") + item("b", x=80),
+    "anchor dx 5e-324": BASE + item("a") + item("b", 'anchor = {to = "a", dx = 5e-324, dy = -0.0}', x=80),
+    "nesting 500 arrays in z": BASE + item("a", "z = " + "[" * 500 + "]" * 500),
+    "nesting 300 inline tables": BASE + item("a", "anchor = " + "{a = " * 300 + "1" + "}" * 300),
+    "nesting 5000 arrays": BASE + item("a", "z = " + "[" * 5000 + "]" * 5000),
+    "duplicate key in item": BASE + item("a", "x = 3.0"),
+    "duplicate table [physics]": "[physics]\ngutter_mm = 3.0\n[physics]\ngutter_mm = 4.0\n" + BASE,
+    "duplicate item ids on one page": BASE + item("a") + item("a", x=80),
+    "duplicate page ids": BASE + item("a") + '\n[[pages]]\nid = "p"\nsize = "A5"\n' + item("b"),
+    "anchor to duplicated id": BASE + item("a") + item("a", x=80) + item("b", 'anchor = {to = "a", dx = 5.0}', x=120),
+    "duplicate region and group ids": BASE + '\n[[pages.regions]]\nid = "g"\nleft = 0.0\ntop = 0.0\nw = 80.0\nh = 80.0\n' + item("a", 'group = "g"\nregion = "g"') + item("b", 'group = "g"\nregion = "g"', x=60),
+    "id differs by NFC/NFD": BASE + item("caf\u00e9") + item("cafe\u0301", x=80),
+    "id differs by case": BASE + item("A") + item("a", x=80),
+    "id whitespace only": BASE + item(" \\t "),
+    "id empty": BASE + item(""),
+    "text only NUL": BASE + item("a", 'text = "\\u0000\\u0000"', kind="text"),
+    "text U+FFFE/U+FFFF": BASE + item("a", 'text = "\\uFFFE\\uFFFF\\U0010FFFF"', kind="text", w=80),
+    "text 50k lines": BASE + item("a", 'text = "' + "a\\n" * 50_000 + '"', kind="text", w=80, h=100),
+    "text 5000 zalgo marks on one letter": BASE + item("a", 'text = "a' + "\u0300\u0301\u0302\u0303" * 1250 + '"', kind="text", w=80),
+    "text tag characters (emoji flags)": BASE + item("a", 'text = "\U0001F3F4\U000E0067\U000E0062\U000E0065\U000E006E\U000E0067\U000E007F"', kind="text", w=80),
+    "role 1 MB": BASE + item("a", 'text = "x"\nrole = "' + "r" * 1_000_000 + '"', kind="text"),
+    "colour short hex": BASE + item("a", 'color = "#fff"'),
+    "colour 8-digit hex": BASE + item("a", 'color = "#ff000080"'),
+    "colour named": BASE + item("a", 'color = "red"'),
+    "colour with NUL": BASE + item("a", 'color = "#ff0000\\u0000"'),
+}
+
+
+def s16_pictures(pics: Path) -> dict[str, str]:
+    """Pictures the fifteenth probe did not try; name -> file name in pics."""
+    import io
+    import struct
+    import zlib
+
+    from PIL import Image
+    import numpy as np
+
+    made = {}
+    rng = np.random.default_rng(3)
+    photo = Image.fromarray(rng.integers(0, 256, (300, 400, 3), dtype=np.uint8))
+
+    def save(name, data):
+        (pics / name).write_bytes(data)
+        made[name] = name
+
+    def encoded(img, fmt, **kw):
+        buf = io.BytesIO()
+        img.save(buf, fmt, **kw)
+        return buf.getvalue()
+
+    png, jpg = encoded(photo, "PNG"), encoded(photo, "JPEG", quality=90)
+    save("trunc-half.png", png[: len(png) // 2])
+    save("trunc-noiend.png", png[:-12])
+    save("trunc-header.png", png[:40])
+    save("trunc-half.jpg", jpg[: len(jpg) // 2])
+    save("trunc-noeoi.jpg", jpg[:-2])
+    save("trunc-sos.jpg", jpg[: jpg.find(b"\xff\xda") + 20])
+    frames = [Image.new("RGB", (120, 80), c) for c in ("red", "green", "blue")]
+    save("animated.gif", encoded(frames[0], "GIF", save_all=True, append_images=frames[1:], loop=0, duration=100))
+    save("animated.png", encoded(frames[0], "PNG", save_all=True, append_images=frames[1:], duration=100))
+    save("animated.webp", encoded(frames[0], "WEBP", save_all=True, append_images=frames[1:], duration=100))
+    save("multipage.tiff", encoded(frames[0], "TIFF", save_all=True, append_images=frames[1:]))
+    cmyk = photo.convert("CMYK")
+    save("cmyk-adobe.jpg", encoded(cmyk, "JPEG", quality=90))
+    save("cmyk.tiff", encoded(cmyk, "TIFF"))
+    rgb16 = np.zeros((80, 120, 3), dtype=">u2")
+    rgb16[..., 0] = 65535
+
+    def png16(array):
+        h, w = array.shape[:2]
+        raw = b"".join(b"\x00" + row.tobytes() for row in array.reshape(h, -1))
+        def chunk(kind, data):
+            return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+        return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 16, 2, 0, 0, 0))
+                + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+    save("rgb16.png", png16(rgb16))
+    save("gray16.png", encoded(Image.fromarray(np.full((80, 120), 40000, dtype=np.uint16)), "PNG"))
+    save("one-by-100000.png", encoded(Image.new("L", (1, 100_000), 128), "PNG"))
+    save("100000-by-1.jpg", encoded(Image.new("RGB", (60_000, 1), "red"), "JPEG"))
+    save("one-pixel.png", encoded(Image.new("RGB", (1, 1), "red"), "PNG"))
+    save("huge-9999x9999.png", encoded(Image.new("1", (9999, 9999), 1), "PNG"))
+    save("over-100mpx.png", encoded(Image.new("1", (10_001, 10_001), 1), "PNG"))
+
+    def pdf(mediabox=b"0 0 200 100", extra=b"", count=b"1"):
+        return (b"%PDF-1.4\n1 0 obj<</Type/Catalog/Pages 2 0 R>>endobj\n"
+                b"2 0 obj<</Type/Pages/Kids[3 0 R]/Count " + count + b">>endobj\n"
+                b"3 0 obj<</Type/Page/Parent 2 0 R/MediaBox[" + mediabox + b"]" + extra + b">>endobj\n"
+                b"trailer<</Root 1 0 R>>\n%%EOF\n")
+    save("pdf-15000pt.pdf", pdf(b"0 0 15000 15000"))
+    save("pdf-negative-box.pdf", pdf(b"100 100 0 0"))
+    save("pdf-rotated-90.pdf", pdf(extra=b"/Rotate 90"))
+    save("pdf-rotate-45.pdf", pdf(extra=b"/Rotate 45"))
+    save("pdf-no-pages.pdf", pdf(count=b"0").replace(b"/Kids[3 0 R]", b"/Kids[]"))
+    good = encoded(Image.new("RGB", (100, 50), "green"), "PDF")
+    save("pdf-truncated.pdf", good[: len(good) // 2])
+    save("pdf-no-eof.pdf", good[: good.rfind(b"%%EOF")])
+    save("pdf-mediabox-nan.pdf", pdf(b"0 0 nan 100"))
+    save("pdf-text-only-header.pdf", b"%PDF-1.7\n")
+    try:
+        import pikepdf
+
+        with pikepdf.open(io.BytesIO(good)) as src:
+            buf = io.BytesIO()
+            src.save(buf, encryption=pikepdf.Encryption(owner="o", user="u"))
+            save("pdf-encrypted.pdf", buf.getvalue())
+    except Exception:
+        pass
+    return made
+
+
+S16_MERGE_HEADER = "id,first_name,surname,product,price,photo,note,valid_until"
+S16_ROW = "1001,Priya,Doe,Earl Grey,€2.40 a kilo,bottle.png,,31 May"
+
+
+@case
+def sixteenth_toml():
+    d = fresh("s16toml")
+    pics = d / "pictures"
+    pics.mkdir()
+    shutil.copy(next((SAMPLES / "greeting-card/pictures").iterdir()), pics / "x.png")
+    res = []
+    for name, text in S16_TOMLS.items():
+        f = d / (f"t{len(res):03d}.toml")
+        f.write_bytes(text.encode("utf-8", errors="surrogatepass"))
+        for cmd in ("check", "settle", "render"):
+            before = f.read_bytes()
+            argv = [cmd, f] if cmd == "check" else [cmd, "-q", f]
+            r = outcome(f"s16 toml {name}: {cmd}", argv, d, nan_check=[f], timeout=180)
+            res.append(r)
+            if cmd == "settle":
+                f.write_bytes(before)
+    return res
+
+
+@case
+def sixteenth_pictures():
+    d = fresh("s16pics")
+    pics = d / "pictures"
+    pics.mkdir()
+    res = []
+    for name in s16_pictures(pics):
+        f = d / "p.toml"
+        f.write_text(BASE + item("a", f'path = "pictures/{name}"', kind="picture", w=60, h=40)
+                     + item("b", 'text = "t"', kind="text", x=90, y=150))
+        for cmd in ("check", "render"):
+            out = d / "p.pdf"
+            out.unlink(missing_ok=True)
+            r = outcome(f"s16 picture {name}: {cmd}", [cmd, f] + (["-q", "--no-settle", "-o", out] if cmd == "render" else []),
+                        d, timeout=180)
+            if cmd == "render" and r["rc"] != 0 and out.exists():
+                r["flags"].append("failed render left a PDF")
+            if cmd == "render" and r["rc"] == 0 and not whole_pdf(out):
+                r["flags"].append("render said ok, PDF not whole")
+            res.append(r)
+        f.write_text(BASE.replace('size = "A5"', f'size = "A5"\nbackground = {{picture = "pictures/{name}"}}')
+                     + item("b", 'text = "t"', kind="text"))
+        res.append(outcome(f"s16 background {name}: render", ["render", f, "-q", "--no-settle", "-o", d / "bg.pdf"], d, timeout=180))
+    # the same pictures as photos for `new album`
+    res.append(outcome("s16 new album from the odd pictures", ["new", "album", d / "al" / "al.toml", "--photos", pics],
+                       d, timeout=180))
+    r = outcome("s16 check the album made from them", ["check", d / "al" / "al.toml"], d, timeout=180)
+    res.append(r)
+    return res
+
+
+@case
+def sixteenth_merge_data():
+    import csv as _csv
+
+    d = fresh("s16merge")
+    o, c = offer(d)
+    res = []
+    rows = list(_csv.reader(open(c, encoding="utf-8")))
+    header, first = rows[0], rows[1]
+
+    def merge(label, data, extra=(), expect=(0, 1, 3), timeout=300, check_report=True):
+        out = d / ("out-" + str(len(res)))
+        r = outcome(f"s16 merge {label}", ["merge", o, data, "-o", out, "-q", "--workers", "1", *extra], d,
+                    expect=expect, timeout=timeout, protect=[o, c])
+        left = leftovers(out) if out.exists() else []
+        if left:
+            r["flags"].append(f"left {left[:3]}")
+        for pdf in out.glob("*.pdf") if out.exists() else []:
+            if not whole_pdf(pdf):
+                r["flags"].append(f"cut PDF {pdf.name}")
+                break
+        report = out / "report.csv"
+        if check_report and report.exists():
+            for line in list(_csv.reader(open(report, encoding="utf-8", newline="")))[1:]:
+                if any(cell and cell[0] in "=+@-\t\r" and cell != "-" for cell in line):
+                    r["flags"].append(f"formula cell in report {line}")
+                    break
+        res.append(r)
+        return r
+
+    def write(name, raw: bytes) -> Path:
+        f = d / name
+        f.write_bytes(raw)
+        return f
+
+    lines = [",".join(header), S16_ROW, S16_ROW.replace("1001", "1002")]
+    merge("csv BOM + mixed newlines", write("mixed.csv", ("\ufeff" + lines[0] + "\r\n" + lines[1] + "\n" + lines[2] + "\r").encode()))
+    merge("csv CR only", write("cr.csv", ("\r".join(lines) + "\r").encode()))
+    merge("csv BOM twice", write("bom2.csv", ("\ufeff\ufeff" + "\n".join(lines) + "\n").encode()))
+    merge("csv UTF-16 BOM", write("u16bom.csv", ("\n".join(lines) + "\n").encode("utf-16-le").join([b"\xff\xfe", b""])))
+    merge("csv UTF-8 BOM header has spaces", write("spaces.csv", ("\ufeff" + " , ".join(header) + "\n" + S16_ROW + "\n").encode()))
+    merge("jsonl with BOM", write("bom.jsonl", ("\ufeff" + json.dumps(dict(zip(header, first))) + "\n").encode()))
+    merge("jsonl CRLF + blank lines", write("crlf.jsonl", ("\r\n" + json.dumps(dict(zip(header, first))) + "\r\n\r\n").encode()))
+    merge("jsonl BOM on line 2", write("bom2.jsonl", (json.dumps(dict(zip(header, first))) + "\n\ufeff" + json.dumps(dict(zip(header, first))).replace("1001", "1002") + "\n").encode()))
+    merge("jsonl U+2028 inside value", write("ls.jsonl", (json.dumps(dict(zip(header, first)), ensure_ascii=False).replace("Priya", "Pri\u2028ya") + "\n").encode()))
+    inj = ["=1+1", "+cmd|' /C calc'!A0", "-2+3", "@SUM(A1)", "\t=1", "\r=1", "=HYPERLINK(\"x\")"]
+    f = d / "inj.csv"
+    with open(f, "w", newline="", encoding="utf-8") as h:
+        w = _csv.writer(h)
+        w.writerow(header)
+        for k, v in enumerate(inj):
+            row = list(first)
+            row[0] = v
+            row[5] = v + ".png"  # missing photo: report names it
+            w.writerow(row)
+    merge("formula injection in ids and photos", f, extra=["--name", "rec-{first_name}-" + "{surname}"])
+    merge("formula injection as --name", f, extra=["--name", "{id}"])
+    big = d / "big.csv"
+    with open(big, "w", newline="", encoding="utf-8") as h:
+        w = _csv.writer(h)
+        w.writerow(header)
+        for k in range(100_000):
+            row = list(first)
+            row[0] = str(k)
+            row[5] = "missing.png"
+            w.writerow(row)
+    merge("100k rows, all failing (missing photo)", big, timeout=900)
+    noc = d / "noc.csv"
+    noc.write_text(",".join(h for h in header if h != "photo") + "\n" + ",".join(v for h, v in zip(header, first) if h != "photo") + "\n")
+    merge("missing column photo", noc, expect=(1,))
+    part = d / "part.jsonl"
+    part.write_text(json.dumps(dict(zip(header, first))) + "\n" + json.dumps({k: v for k, v in zip(header, first) if k != "product"}) + "\n")
+    merge("jsonl record missing a column", part)
+    return res
+
+
+@case
+def sixteenth_cli():
+    d = fresh("s16cli")
+    p = card(d)
+    res = []
+    os.mkfifo(d / "pipe.tex")
+    (d / "out").mkdir()
+    for label, argv, prot in [
+        ("render -o a folder", ["render", "-q", p, "-o", d / "out"], [p]),
+        ("render --tex to a FIFO", ["render", "-q", p, "--tex", d / "pipe.tex", "-o", d / "x.pdf"], [p]),
+        ("render -o the project itself, --print", ["render", "-q", p, "--print", "-o", p], [p]),
+        ("render --print --fragment", ["render", "-q", p, "--print", "--fragment", d / "f.tex", "-o", d / "f.pdf"], [p]),
+        ("render --print --bleed 20", ["render", "-q", p, "--print", "--bleed", "20", "-o", d / "b20.pdf"], [p]),
+        ("render --print --bleed 20.0001", ["render", "-q", p, "--print", "--bleed", "20.0001", "-o", d / "b21.pdf"], [p]),
+        ("render --bleed without --print", ["render", "-q", p, "--bleed", "3", "-o", d / "nb.pdf"], [p]),
+        ("render -o /dev/stdout", ["render", "-q", p, "-o", "/dev/stdout"], [p]),
+        ("render -o to /proc", ["render", "-q", p, "-o", "/proc/x.pdf"], [p]),
+        ("render -o a .bak of the project", ["render", "-q", p, "-o", str(p) + ".bak"], [p]),
+        ("check -o", ["check", p, "-o", d / "c.pdf"], [p]),
+        ("settle --print", ["settle", p, "--print"], []),
+        ("render --no-settle --print -j 2", ["render", "-q", p, "--no-settle", "--print", "-j", "2", "-o", d / "j.pdf"], [p]),
+    ]:
+        res.append(outcome(f"s16 {label}", argv, d, protect=prot, timeout=180))
+    for kind in ("blank", "calendar", "card", "album", "flyer"):
+        t = d / kind / f"{kind}.toml"
+        res.append(outcome(f"s16 new {kind}", ["new", kind, t], d, timeout=180))
+        out = d / kind / f"{kind}-print.pdf"
+        r = outcome(f"s16 render --print {kind}", ["render", "-q", t, "--print", "-o", out], d, timeout=400, protect=[t])
+        if r["rc"] == 0:
+            try:
+                import pikepdf
+
+                with pikepdf.open(out) as pdf:
+                    for number, page in enumerate(pdf.pages, 1):
+                        if "/TrimBox" not in page.obj or "/BleedBox" not in page.obj:
+                            r["flags"].append(f"page {number} lacks TrimBox/BleedBox")
+                            break
+            except Exception as error:
+                r["flags"].append(f"PDF unreadable: {error}")
+        res.append(r)
+    return res
+
+
+def interrupt(label, argv, cwd, after_s, sig, protect=(), watch=None, when_exists=None):
+    """Start a command, send ``sig`` after ``after_s`` seconds (or as soon as ``when_exists``
+    appears), then look for what it left.  SIGINT is reset to its default in the child: a
+    probe started in the background (`cmd &`) hands its children SIGINT ignored, as shells do,
+    and Python then keeps ignoring it."""
+    import signal as _signal
+
+    env = {**os.environ, "FLOATPAGE_CACHE_DIR": str(ROOT / "cache")}
+    before = snapshot(protect)
+    start = time.time()
+    proc = subprocess.Popen([FP, *map(str, argv)], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            stdin=subprocess.DEVNULL, env=env,
+                            preexec_fn=lambda: _signal.signal(_signal.SIGINT, _signal.SIG_DFL))
+    if when_exists is not None:
+        while not os.path.lexists(when_exists) and proc.poll() is None and time.time() - start < 30:
+            time.sleep(0.002)
+    else:
+        time.sleep(after_s)
+    proc.send_signal(getattr(_signal, sig))
+    try:
+        out, err = proc.communicate(timeout=120)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, err = proc.communicate()
+        err += b"\n(TIMEOUT after the signal)"
+    err = err.decode(errors="replace")
+    flags = []
+    if "Traceback" in err or "internal error" in err:
+        flags.append("traceback/internal error")
+    if proc.returncode not in (0, 1, 3, 130, -2, -15, 143):
+        flags.append(f"exit {proc.returncode}")
+    if "TIMEOUT" in err:
+        flags.append("did not stop")
+    after = snapshot(protect)
+    for k in before:
+        if before[k] != after[k]:
+            flags.append(f"changed {k}")
+    if watch is not None and Path(watch).exists():
+        left = leftovers(watch)
+        if left:
+            flags.append(f"left {left[:3]}")
+        for pdf in Path(watch).rglob("*.pdf"):
+            if not whole_pdf(pdf):
+                flags.append(f"cut PDF {pdf.name}")
+                break
+    r = {"case": label, "rc": proc.returncode, "secs": round(time.time() - start, 1), "flags": flags,
+         "msg": " | ".join(err.strip().splitlines()[:2])[:300]}
+    print(f"{'FLAG' if flags else 'ok  '} {label[:70]:70} rc={proc.returncode} {r['secs']}s {';'.join(flags)} :: {r['msg'][:200]}", flush=True)
+    return r
+
+
+@case
+def sixteenth_interrupts():
+    d = fresh("s16int")
+    res = []
+    cal = d / "cal" / "calendar.toml"
+    cal.parent.mkdir()
+    shutil.copytree(SAMPLES / "calendar-2027", cal.parent, dirs_exist_ok=True)
+    cal = cal.parent / "calendar-2027.toml"
+    perturb_cal = cal.read_text()
+    for sig in ("SIGINT", "SIGTERM"):
+        for after in (0.8, 2.5, 6.0):
+            out = d / "cal" / f"r-{sig}-{after}.pdf"
+            r = interrupt(f"s16 {sig} render calendar after {after}s", ["render", "-q", cal, "-o", out], d, after, sig,
+                          protect=[cal], watch=d / "cal")
+            if out.exists() and not whole_pdf(out):
+                r["flags"].append("half-written PDF at -o")
+            res.append(r)
+        r = interrupt(f"s16 {sig} settle calendar after 1.0s", ["settle", "-q", cal], d, 1.0, sig, watch=d / "cal")
+        try:
+            from floatpage.model import load_project
+            load_project(cal)
+        except Exception as error:
+            r["flags"].append(f"project unreadable after: {error}")
+        cal.write_text(perturb_cal)
+        res.append(r)
+    o, c = offer(d / "m")
+    for sig in ("SIGINT", "SIGTERM"):
+        for after in (1.5, 5.0, 12.0):
+            out = d / "m" / f"out-{sig}-{after}"
+            r = interrupt(f"s16 {sig} merge after {after}s", ["merge", o, c, "-o", out, "-q", "--workers", "2", "--combined"],
+                          d / "m", after, sig, protect=[o, c], watch=out)
+            res.append(r)
+            # a second run must finish what the first left, and agree with itself
+            res.append(outcome(f"s16 merge again after {sig} at {after}s", ["merge", o, c, "-o", out, "-q", "--workers", "2", "--combined"],
+                               d / "m", expect=(0, 3), timeout=600, protect=[o, c]))
+    album_photos = d / "photos"
+    album_photos.mkdir()
+    from PIL import Image
+    for k in range(30):
+        Image.new("RGB", (300 + k, 200), (k * 8, 90, 60)).save(album_photos / f"p{k:02d}.png")
+    for sig in ("SIGINT", "SIGTERM"):
+        target = d / f"new-{sig}" / "album.toml"
+        r = interrupt(f"s16 {sig} new album once its pictures/ appears", ["new", "album", target, "--photos", album_photos], d,
+                      0.0, sig, when_exists=target.parent / "pictures" / "p29.png")
+        if r["rc"] != 0 and target.parent.exists() and any(target.parent.iterdir()):
+            r["flags"].append(f"interrupted new left {sorted(p.name for p in target.parent.iterdir())[:4]}")
+        res.append(r)
     return res
 
 

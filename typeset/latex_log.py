@@ -65,5 +65,18 @@ def errors_with_items(log: str, tex: str, labels: list[str]) -> list[LogError]:
             marker = marker_at(tex, line)
             if marker is not None and marker < len(labels):
                 item = labels[marker]
-        out.append(LogError(line, message, item))
+        out.append(LogError(line, plain_words(message), item))
     return out
+
+
+PNG_READER = re.compile(r"\((?:read|write)png\)")
+
+
+def plain_words(message: str) -> str:
+    """LuaTeX's own words, with what to do where they leave the user lost: a PNG that libpng
+    refuses (a chunk of a kind it does not know) read "(readpng): internal error"."""
+    if PNG_READER.search(message):
+        message = message.replace("internal error", "the PNG could not be read")
+        message += ("; the file is damaged or of a kind LuaTeX does not read: open it and "
+                    "save it again as PNG or JPEG")
+    return message

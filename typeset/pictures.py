@@ -24,7 +24,7 @@ from pathlib import Path
 
 from PIL import Image, ImageOps, UnidentifiedImageError
 
-from floatpage.model.picture_files import pdf_damage
+from floatpage.model.picture_files import decode_warning, pdf_damage
 from floatpage.model.save import atomic_write
 from floatpage.typeset.errors import RenderError
 
@@ -186,8 +186,16 @@ def materialize(plan: PicturePlan) -> Path:
     if plan.cache_path.exists():
         return plan.cache_path
     plan.cache_path.parent.mkdir(parents=True, exist_ok=True)
-    if plan.action == "copy":
+    if plan.action == "copy" and not (plan.cache_path.suffix == ".png"
+                                      and decode_warning(plan.source)):
         atomic_write(plan.cache_path, plan.source.read_bytes(), backup=False)
+        return plan.cache_path
+    if plan.action == "copy":
+        # A PNG cut short (or without its end chunk) stopped LuaTeX at the page's end with
+        # "(writepng): reading chunk type failed", tied to no item; written again from the
+        # rows it has, it prints as a cut-short JPEG does, and render warns of it by name
+        # (render.picture_warnings), as it does of the JPEG.
+        write_png_again(plan)
         return plan.cache_path
     if plan.action == "mend":
         import pikepdf
@@ -216,3 +224,24 @@ def materialize(plan: PicturePlan) -> Path:
         image.save(out, "PNG")
     atomic_write(plan.cache_path, out.getvalue(), backup=False)
     return plan.cache_path
+
+
+def write_png_again(plan: PicturePlan) -> None:
+    """Write the PNG ``plan.source`` again from what Pillow can read of it (a file cut short
+    keeps its first rows; the rest is left blank); OSError if not even that."""
+    from PIL import ImageFile
+
+    before = ImageFile.LOAD_TRUNCATED_IMAGES
+    ImageFile.LOAD_TRUNCATED_IMAGES = True
+    try:
+        with Image.open(plan.source) as opened:
+            opened.load()
+            image = opened.copy()
+    finally:
+        ImageFile.LOAD_TRUNCATED_IMAGES = before
+    if image.mode not in ("1", "L", "LA", "RGB", "RGBA", "I;16"):
+        image = image.convert("RGBA" if "A" in image.mode or "transparency" in image.info
+                              else "RGB")
+    out = BytesIO()
+    image.save(out, "PNG")
+    atomic_write(plan.cache_path, out.getvalue(), backup=False)

@@ -155,8 +155,31 @@ def framed_picture(item_id: str, label: str, frame: Rect, plan: PicturePlan) -> 
                          frame.top_mm + (h - drawn_h) / 2, drawn_w, drawn_h, plan, clip=frame)
 
 
-def place_calendar(item: CalendarItem, label: str, warnings: list[str]) -> PlacedCalendar:
-    layout = layout_calendar(item)
+@dataclass
+class DocumentFits:
+    """Every text of a document fitted (``roles``) and every calendar laid out, once, for
+    the passes that read one unchanged project: `floatpage check` fitted each text and laid
+    out each calendar twice, for its fit warnings (text_warnings) and again for its contrast
+    notes (place_document).  Keyed by id() of the item, as RoleFits: the project must not
+    change while they are used."""
+
+    roles: RoleFits
+    calendars: dict[int, object] = field(default_factory=dict)
+
+    @classmethod
+    def of(cls, project: Project) -> "DocumentFits":
+        return cls(RoleFits.of(project))
+
+    def calendar(self, item: CalendarItem):
+        found = self.calendars.get(id(item))
+        if found is None:
+            found = self.calendars[id(item)] = layout_calendar(item)
+        return found
+
+
+def place_calendar(item: CalendarItem, label: str, warnings: list[str],
+                   fits: DocumentFits | None = None) -> PlacedCalendar:
+    layout = fits.calendar(item) if fits is not None else layout_calendar(item)
     if layout.missing:
         warnings.append(missing_glyph_warning(label, layout.groups[0].face, list(layout.missing)))
     return PlacedCalendar(item.id, label, rect_of(item), item.color, layout.groups, layout.rules,
@@ -202,10 +225,11 @@ def paint_order(index: int, item) -> tuple[int, bool, int]:
     return (item.z, isinstance(item, (TextItem, CalendarItem)), index)
 
 
-def place_document(project: Project) -> PlacedDocument:
+def place_document(project: Project, fits: DocumentFits | None = None) -> PlacedDocument:
+    """The document as it will print; ``fits``, if given, are this project's own (DocumentFits)."""
     warnings: list[str] = []
     pages = []
-    roles = RoleFits.of(project)
+    roles = fits.roles if fits is not None else RoleFits.of(project)
     for page in project.pages:
         placed_page = PlacedPage(page.id, page.width_mm, page.height_mm,
                                  background=place_background(project, page))
@@ -226,7 +250,7 @@ def place_document(project: Project) -> PlacedDocument:
                 made = PlacedBlock(item.id, label, rect_of(item), item.color,
                                    min(1.0, max(0.0, float(item.opacity))))
             elif isinstance(item, CalendarItem):
-                made = place_calendar(item, label, warnings)
+                made = place_calendar(item, label, warnings, fits)
             else:
                 raise TypeError(f"unknown item kind {type(item).__name__}")
             if made is not None:
@@ -258,16 +282,16 @@ def place_document(project: Project) -> PlacedDocument:
                          list(colors), list(pictures.values()), warnings, labels, picture_dir)
 
 
-def text_warnings(project: Project) -> list[str]:
+def text_warnings(project: Project, fits: DocumentFits | None = None) -> list[str]:
     """Fit warnings for texts and calendars only (no picture files are read)."""
     warnings: list[str] = []
-    roles = RoleFits.of(project)
+    roles = fits.roles if fits is not None else RoleFits.of(project)
     for page in project.pages:
         for item in page.items:
             if isinstance(item, TextItem):
                 place_text(item, item_label(item, page), warnings, roles)
             elif isinstance(item, CalendarItem):
-                place_calendar(item, item_label(item, page), warnings)
+                place_calendar(item, item_label(item, page), warnings, fits)
     return warnings
 
 

@@ -27,8 +27,8 @@ from floatpage.typeset.print_marks import for_print
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FontNotFoundError
 from floatpage.typeset.pictures import cache_dir
-from floatpage.typeset.placed import (PlacedDocument, materialize_pictures, place_document,
-                                      text_warnings)
+from floatpage.typeset.placed import (DocumentFits, PlacedDocument, materialize_pictures,
+                                      place_document, text_warnings)
 from floatpage.typeset.templates import make_environment
 
 
@@ -42,9 +42,9 @@ class RenderReport:
     notes: list[str] = field(default_factory=list)  # said, not wrong: faint text (contrast)
 
 
-def placed_document(project: Project) -> PlacedDocument:
+def placed_document(project: Project, fits: DocumentFits | None = None) -> PlacedDocument:
     try:
-        return place_document(project)
+        return place_document(project, fits)
     except FontNotFoundError as error:
         raise RenderError(str(error)) from None
 
@@ -72,19 +72,28 @@ def render_tex(project: Project, *, fragment: bool = False) -> str:
     return tex_from_placed(placed_document(project), fragment=fragment)
 
 
-def text_fit_warnings(project: Project) -> list[str]:
-    """For `floatpage check`: texts too long for their box, glyphs a font lacks; each names its item."""
+def document_fits(project: Project) -> DocumentFits:
+    """Every text fitted and calendar laid out once, for the two passes of `floatpage check`
+    below; a missing font is a RenderError, as text_fit_warnings said it before."""
     try:
-        return text_warnings(project)
+        return DocumentFits.of(project)
     except FontNotFoundError as error:
         raise RenderError(str(error)) from None
 
 
-def faint_text_notes(project: Project) -> list[str]:
+def text_fit_warnings(project: Project, fits: DocumentFits | None = None) -> list[str]:
+    """For `floatpage check`: texts too long for their box, glyphs a font lacks; each names its item."""
+    try:
+        return text_warnings(project, fits)
+    except FontNotFoundError as error:
+        raise RenderError(str(error)) from None
+
+
+def faint_text_notes(project: Project, fits: DocumentFits | None = None) -> list[str]:
     """For `floatpage check`: texts too faint against what lies behind them
     (typeset.contrast); none for a merge template, whose pictures are not known yet."""
     try:
-        return contrast_notes(placed_document(project))
+        return contrast_notes(placed_document(project, fits))
     except RenderError:
         return []
 

@@ -161,6 +161,37 @@ def test_a_picture_whose_file_name_has_braces_is_a_picture_not_a_merge_field(tmp
     assert len([line for line in listed.splitlines() if " image " in line]) == 2, listed
 
 
+@pytest.mark.parametrize("command", ["check", "render", "settle"])
+def test_a_deleted_picture_whose_name_has_braces_is_named_as_missing(tmp_path, command):
+    """`photo {1}.png`, deleted: `check` passed it as a merge field and `render` called the
+    project a merge template; each now names the missing file, and the file is left alone."""
+    path = card(tmp_path)
+    path.write_text(path.read_text() + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\n'
+                    'x = 100.0\ny = 170.0\nw = 30.0\nh = 20.0\npath = "pictures/photo {1}.png"\n')
+    before = listing(tmp_path)
+    result = run(command, str(path), *(["-o", str(tmp_path / "card.pdf")] if command == "render"
+                                       else []))
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert 'item "photo": picture file "pictures/photo {1}.png" not found' in result.stderr, \
+        result.stderr
+    assert "fix the path or copy the file there" in result.stderr
+    assert "internal error" not in result.stderr
+    after = listing(tmp_path)
+    after.pop(".card.toml.lock", None)  # settle's lock, kept by design (model.project_lock)
+    assert after == before
+
+
+def test_a_template_that_names_a_column_in_a_picture_name_still_checks(tmp_path):
+    """The other side of the rule: where a text names a data column, `product-{id}.png` is
+    that column's picture, filled by `floatpage merge`, and `check` passes the template."""
+    path = card(tmp_path)
+    path.write_text(path.read_text().replace('text = "Hello"', 'text = "Hello {name}"')
+                    + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\nx = 100.0\n'
+                      'y = 170.0\nw = 30.0\nh = 20.0\npath = "pictures/product-{id}.png"\n')
+    result = run("check", str(path))
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
 CORPUS_PICTURES = ROOT / "tests" / "fuzz" / "corpus" / "pictures"
 
 
@@ -323,4 +354,100 @@ def test_a_png_cut_short_that_must_be_converted_names_its_item(tmp_path):
         'floatpage: item "photo" on page "front" (picture file "short.png"): the picture could '
         "not be converted (image file is truncated")
     assert "export it again, or use another picture" in result.stderr
+    assert not (tmp_path / "card.pdf").exists()
+
+
+def test_check_warns_of_a_text_picture_or_calendar_under_a_millimetre(tmp_path):
+    """A 0.4 mm picture and a 0.5 mm calendar passed `check` without a word; a 0.3 mm block,
+    a rule, is no problem."""
+    from PIL import Image
+
+    (tmp_path / "pictures").mkdir()
+    Image.new("RGB", (300, 200), "red").save(tmp_path / "pictures" / "red.png")
+    path = card(tmp_path)
+    path.write_text(path.read_text() + "".join(
+        f'\n[[pages.items]]\nid = "{name}"\nkind = "{kind}"\nx = {x}\ny = 180.0\nw = {w}\n'
+        f"h = {h}\n{extra}\n"
+        for name, kind, x, w, h, extra in [
+            ("speck", "picture", 20.0, 0.4, 30.0, 'path = "pictures/red.png"'),
+            ("month", "calendar", 60.0, 0.5, 0.5, "year = 2027\nmonth = 3"),
+            ("rule", "block", 100.0, 40.0, 0.3, 'color = "#000000"')]))
+    result = run("check", "--strict", str(path))
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert 'warning: item "speck" on page "front": its box is 0.4 × 30 mm, under 1 mm wide, ' \
+           "too small for a picture to be seen or printed" in result.stdout, result.stdout
+    assert 'warning: item "month" on page "front": its box is 0.5 × 0.5 mm' in result.stdout
+    assert not [line for line in result.stdout.splitlines()
+                if line.startswith('warning: item "rule"')], result.stdout
+
+
+@pytest.mark.parametrize("cut", ["half", "end chunk"])
+def test_a_png_cut_short_prints_what_it_has_with_a_warning_naming_it(tmp_path, cut):
+    """LuaTeX stopped at the page's end with "(writepng): reading chunk type failed", tied to
+    no item ("line 37 of the .tex"), where a JPEG cut short prints with a warning."""
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    pixels = np.random.default_rng(5).integers(0, 256, (120, 160, 3), dtype=np.uint8)
+    buffer = io.BytesIO()
+    Image.fromarray(pixels).save(buffer, "PNG")
+    data = buffer.getvalue()
+    (tmp_path / "cut.png").write_bytes(data[:len(data) // 2] if cut == "half" else data[:-12])
+    path = card(tmp_path)
+    path.write_text(path.read_text() + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\n'
+                    'x = 100.0\ny = 170.0\nw = 30.0\nh = 20.0\npath = "cut.png"\n')
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "render", str(path),
+                             "--no-settle", "-o", str(tmp_path / "card.pdf")],
+                            capture_output=True, text=True, timeout=300, stdin=subprocess.DEVNULL,
+                            env={**os.environ, "FLOATPAGE_CACHE_DIR": str(tmp_path / "cache")})
+    assert result.returncode == 0, result.stderr
+    assert 'warning: item "photo" on page "front": picture "cut.png": its pixels do not ' \
+           "decode cleanly" in result.stderr, result.stderr
+    listed = subprocess.run(["pdfimages", "-list", str(tmp_path / "card.pdf")],
+                            capture_output=True, text=True, check=True).stdout
+    assert [line.split()[3:5] for line in listed.splitlines() if " image " in line] == \
+        [["160", "120"]], listed
+
+
+def test_a_photo_under_floatpages_pixel_limit_draws_no_python_warning(tmp_path):
+    """9,999 x 9,999 pixels is within floatpage's 100 megapixels, but over Pillow's 89.5: check
+    and new printed "/.../PIL/Image.py:3593: DecompressionBombWarning: ... DOS attack"."""
+    from PIL import Image
+
+    (tmp_path / "photos").mkdir()
+    Image.new("1", (9_999, 9_999), 1).save(tmp_path / "photos" / "big.png")
+    created = run("new", "album", str(tmp_path / "album" / "album.toml"), "--photos",
+                  str(tmp_path / "photos"))
+    assert created.returncode == 0, created.stderr
+    checked = run("check", str(tmp_path / "album" / "album.toml"))
+    assert checked.returncode == 0, checked.stderr
+    for result in (created, checked):
+        assert "Warning" not in result.stderr and "Image.py" not in result.stderr, result.stderr
+
+
+def test_a_png_libpng_refuses_is_named_with_what_to_do_not_internal_error(tmp_path):
+    """A PNG with a chunk of a made-up critical kind reads well to Pillow, and LuaTeX stopped
+    with "(readpng): internal error" and no advice."""
+    import io
+    import struct
+    import zlib
+
+    from PIL import Image
+
+    buffer = io.BytesIO()
+    Image.new("RGB", (60, 40), "red").save(buffer, "PNG")
+    whole, chunk = buffer.getvalue(), b"QQQQ" + b"made up"
+    (tmp_path / "odd.png").write_bytes(whole[:33] + struct.pack(">I", 7) + chunk
+                                       + struct.pack(">I", zlib.crc32(chunk)) + whole[33:])
+    path = card(tmp_path)
+    path.write_text(path.read_text() + '\n[[pages.items]]\nid = "photo"\nkind = "picture"\n'
+                    'x = 100.0\ny = 170.0\nw = 30.0\nh = 20.0\npath = "odd.png"\n')
+    result = run("render", str(path), "--no-settle", "-o", str(tmp_path / "card.pdf"))
+    assert result.returncode == 1, result.stderr
+    assert 'item "photo" on page "front" (picture file "odd.png"): ' in result.stderr
+    assert "the PNG could not be read; the file is damaged or of a kind LuaTeX does not " \
+           "read: open it and save it again as PNG or JPEG" in result.stderr, result.stderr
+    assert "internal error" not in result.stderr
     assert not (tmp_path / "card.pdf").exists()

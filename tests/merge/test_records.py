@@ -22,6 +22,23 @@ def test_a_byte_order_mark_is_not_part_of_the_first_column(tmp_path):
     assert data(tmp_path, "\ufeffid,x\n1,2\n").columns == ["id", "x"]
 
 
+def test_a_second_byte_order_mark_is_not_part_of_the_first_column_either(tmp_path):
+    """A tool that adds a BOM to a file that had one: merge said the file had no column 'id',
+    only '\ufeffid'."""
+    source = data(tmp_path, "\ufeff\ufeffid,x\n1,2\n")
+    assert source.columns == ["id", "x"]
+    assert [record.values for record in source.records()] == [{"id": "1", "x": "2"}]
+
+
+def test_json_lines_joined_from_files_with_a_bom_each_read_every_record(tmp_path):
+    """`cat a.jsonl b.jsonl`, each saved with a BOM: every record after the first file failed
+    with "not valid JSON (Unexpected UTF-8 BOM)"."""
+    source = data(tmp_path, '\ufeff{"id": 1}\n\ufeff{"id": 2}\n', name="data.jsonl")
+    assert source.columns == ["id"]
+    assert [(record.values, record.problem) for record in source.records()] == [
+        ({"id": "1"}, ""), ({"id": "2"}, "")]
+
+
 def test_a_row_with_too_many_fields_fails_alone(tmp_path):
     first, second = data(tmp_path, "a,b\n1,2,3\n4,5\n").records()
     assert "3 fields" in first.problem and not second.problem

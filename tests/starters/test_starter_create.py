@@ -175,3 +175,107 @@ def test_each_starter_renders_its_pages(created):
         for page, plumber_page in zip(rendered.project.pages, rendered.plumber.pages):
             [panel] = [i for i in page.items if isinstance(i, CalendarItem)]
             check_month(day_marks(plumber_page, panel), 2028, panel.month, "sunday")
+
+
+def new_under_a_file_size_limit(argv: list[str], limit_bytes: int) -> subprocess.CompletedProcess:
+    """`floatpage new ...` in a process that may write no file larger than ``limit_bytes``
+    (RLIMIT_FSIZE: a write past it fails with EFBIG, as a full disk fails with ENOSPC)."""
+    import resource
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit_bytes, limit_bytes))
+
+    return subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", *argv],
+                          capture_output=True, text=True, timeout=120, preexec_fn=limit,
+                          stdin=subprocess.DEVNULL)
+
+
+def noisy_photos(folder: Path, sizes: list[int]) -> None:
+    """PNGs of random pixels (they do not compress), ``size`` pixels square each."""
+    import numpy as np
+    from PIL import Image
+
+    folder.mkdir()
+    rng = np.random.default_rng(7)
+    for number, size in enumerate(sizes):
+        pixels = rng.integers(0, 256, (size, size, 3), dtype=np.uint8)
+        Image.fromarray(pixels).save(folder / f"photo-{number}.png")
+
+
+def test_a_new_album_that_fails_while_copying_its_photos_leaves_nothing(tmp_path):
+    """The fourth photo cannot be written (as on a full disk): the three copied before it
+    and the folder they went to stayed behind, and the next try named them photo-0-2.png."""
+    noisy_photos(tmp_path / "photos", [40, 40, 40, 400, 40])
+    result = new_under_a_file_size_limit(
+        ["album", str(tmp_path / "out" / "album.toml"), "--photos", str(tmp_path / "photos")],
+        100_000)
+    assert result.returncode == 1, result.stderr
+    assert "cannot create the project there" in result.stderr, result.stderr
+    assert "photo-3.png" in result.stderr, result.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_new_album_that_cannot_be_saved_leaves_only_what_was_there(tmp_path):
+    """The photos copied, the project file not written: the copies went, the user's own
+    picture in the same pictures/ folder stays, and so does the folder."""
+    noisy_photos(tmp_path / "photos", [20, 20])
+    (tmp_path / "pictures").mkdir()
+    (tmp_path / "pictures" / "mine.png").write_bytes(b"my own")
+    result = new_under_a_file_size_limit(
+        ["album", str(tmp_path / "album.toml"), "--photos", str(tmp_path / "photos")], 1_500)
+    assert result.returncode == 1, result.stderr
+    assert "album.toml: could not save" in result.stderr, result.stderr
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["photos", "pictures"]
+    assert [path.name for path in (tmp_path / "pictures").iterdir()] == ["mine.png"]
+
+
+@pytest.mark.parametrize("length", [240, 251])
+def test_a_name_too_long_to_save_is_refused_before_anything_is_written(tmp_path, length):
+    """251 bytes + ".toml" ended in "internal error: OSError: File name too long"; 240 copied
+    the pictures, then failed to save, its temporary's name being longer still."""
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "card",
+                             str(tmp_path / ("n" * length + ".toml"))], capture_output=True,
+                            text=True, timeout=120, stdin=subprocess.DEVNULL)
+    assert result.returncode == 1, result.stderr
+    assert f"the file name is {length + 5} bytes long" in result.stderr, result.stderr
+    assert "choose a shorter name" in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_photo_too_thin_to_lay_out_is_left_out_with_a_word(tmp_path):
+    """A photo of 1 x 100,000 pixels became a box 0.0 mm tall: `new album` saved a project
+    its own loader refused ("h" must be greater than 0)."""
+    from PIL import Image
+
+    photos = tmp_path / "photos"
+    photos.mkdir()
+    Image.new("L", (1, 30_000), 128).save(photos / "strip.png")
+    Image.new("RGB", (30_000, 1), "red").save(photos / "line.jpg")
+    Image.new("RGB", (300, 200), "blue").save(photos / "fine.png")
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "album",
+                             str(tmp_path / "album.toml"), "--photos", str(photos)],
+                            capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
+    assert result.returncode == 0, result.stderr
+    for name, size in (("line.jpg", "30000 × 1"), ("strip.png", "1 × 30000")):
+        assert f"note: {photos / name} was left out: it is {size} pixels, its long side more " \
+               "than 20 times its short one" in result.stderr, result.stderr
+    project = load_project(tmp_path / "album.toml")
+    used = [item.path for page in project.pages for item in page.items
+            if isinstance(item, PictureItem)]
+    assert used == ["pictures/fine.png"]
+
+
+def test_a_pictures_link_out_of_the_folder_is_refused_before_anything_is_copied(tmp_path):
+    """`pictures` a symlink to ../elsewhere: `new card` copied the pictures through it, and
+    the project it saved failed its own check ("outside the project folder")."""
+    (tmp_path / "elsewhere").mkdir()
+    (tmp_path / "project").mkdir()
+    (tmp_path / "project" / "pictures").symlink_to("../elsewhere")
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "new", "card",
+                             str(tmp_path / "project" / "card.toml")], capture_output=True,
+                            text=True, timeout=120, stdin=subprocess.DEVNULL)
+    assert result.returncode == 1, result.stderr
+    assert f"{tmp_path / 'project' / 'pictures'}: is a symbolic link to ../elsewhere, outside " \
+           "the project's folder" in result.stderr, result.stderr
+    assert list((tmp_path / "elsewhere").iterdir()) == []
+    assert [path.name for path in (tmp_path / "project").iterdir()] == ["pictures"]

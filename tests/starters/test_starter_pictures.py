@@ -97,6 +97,22 @@ def test_photos_already_in_the_pictures_folder_stay_put(tmp_path):
     assert sorted(p.name for p in (tmp_path / "pictures").iterdir()) == ["x.png"]
 
 
+def test_a_symlink_in_the_pictures_folder_is_never_written_through(tmp_path):
+    """pictures/x.png, a link to a file not made yet elsewhere: the copy went through the
+    link and landed outside the project (and the project named the link)."""
+    (tmp_path / "in").mkdir()
+    (tmp_path / "elsewhere").mkdir()
+    source = picture(tmp_path / "in" / "x.png")
+    project_dir = tmp_path / "project"
+    (project_dir / "pictures").mkdir(parents=True)
+    (project_dir / "pictures" / "x.png").symlink_to(tmp_path / "elsewhere" / "x.png")
+    [copied] = copy_beside([source], project_dir)
+    assert copied.path == "pictures/x-2.png"
+    assert (project_dir / copied.path).read_bytes() == source.read_bytes()
+    assert not (project_dir / copied.path).is_symlink()
+    assert list((tmp_path / "elsewhere").iterdir()) == []
+
+
 def test_bundled_pictures_are_small_and_mixed():
     files = sorted(bundled_dir().iterdir())
     shapes = {displayed_size(f)[0] > displayed_size(f)[1] for f in files}
