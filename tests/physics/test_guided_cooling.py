@@ -70,7 +70,7 @@ def test_quiet_counts_pulls_that_bring_no_feature_within_a_nudge_of_its_line():
 
 def test_a_roomy_seeded_page_cools_for_fewer_steps_and_settles_as_cleanly():
     from seeded_scenes import load, mixed_scene
-    # benchmarks/guide_cost.py's "random 8 items": 265 steps on the fixed schedule, 235 now
+    # benchmarks/guide_cost.py's "random 8 items": 265 steps on the fixed schedule, 243 now
     scene = mixed_scene(8, 0.3, seed=100, page_w_mm=127.0, page_h_mm=203.2)
     engines = []
     for quiet in (QUIET_PULLS, math.inf):
