@@ -11,8 +11,8 @@ did: Engine.settle calls (the full run and the probes), fast-mode steps.
 ``--before`` also settles each page with guides on the way the guided cooling ended before the
 sixteenth session (on its fixed schedule alone: fast_mode.QUIET_PULLS infinite), in the same
 run, alternating with the others: its on/off, steps and near misses beside today's.  Near
-misses turn on a hair: moving every free item by 1 micrometre before the final pass changes
-the 50-item page's 1.90 to 2.06.  ``--jitter K`` adds K more settles of each page (guides on,
+misses turn on a hair: moving every free item by a normal 1 micrometre before the final pass
+changed the 50-item page's 1.90 to 2.06 (one seed of two).  ``--jitter K`` adds K more settles of each page (guides on,
 and with --before on the fixed schedule too), each moving every free item by a normal
 0.01 mm (seeds 1..K) before its final pass, and prints the near misses averaged over them and
 the plain settle: a change of the layouts is better or worse where these averages say so.
