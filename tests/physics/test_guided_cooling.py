@@ -4,7 +4,6 @@ nothing left for the snap, not only on the fixed schedule (at least 55 steps at 
 
 from __future__ import annotations
 
-import copy
 import math
 from unittest import mock
 
@@ -14,10 +13,12 @@ from floatpage.model.layout import AT_REST_MM
 from floatpage.physics import Engine, Params, fast_mode
 from floatpage.physics.guides import GUIDE_HEAT, HOLD_HEAT, QUIET_PULLS, GuidePulls
 from floatpage.physics.stillness import PROBE_HEAT
+from seeded_scenes import load, mixed_scene
 
 A4 = (210.0, 297.0)
 # the fixed schedule's shortest guided cooling: GUIDE_HEAT / 2 down to HOLD_HEAT, 2 % a step
 SCHEDULE_STEPS = math.ceil(math.log(HOLD_HEAT / (GUIDE_HEAT / 2)) / math.log(1 - 0.02))
+PULL_STEPS_TO_QUIET = (QUIET_PULLS + 1) * 4  # a pull every 4th step (guides.PULL_EVERY)
 
 
 def page_with(x_mm: float, y_mm: float) -> Engine:
@@ -31,22 +32,17 @@ def test_a_page_whose_pull_has_nothing_to_do_stops_cooling_after_a_few_pulls():
     # Still at once, the page cools onto its guides: on the fixed schedule for at least 55
     # steps, though nothing moves; now the cooling ends once QUIET_PULLS pulls changed nothing.
     # A box centred on the page: its centre on both middle lines, every pull zero.
-    for x, y in ((105.0, 148.5),):
-        quick, scheduled = page_with(x, y), page_with(x, y)
-        report = quick.settle()
-        with mock.patch.object(fast_mode, "QUIET_PULLS", math.inf):
-            fixed_steps = scheduled.settle().steps
-        assert fixed_steps >= SCHEDULE_STEPS
-        assert report.settled and report.steps <= PULL_STEPS_TO_QUIET + 2 < SCHEDULE_STEPS
-        # the same page, and at rest: the gentle run that probes a settled page moves nothing
-        assert np.abs(quick.bodies.centres - scheduled.bodies.centres).max() < 1e-9
-        assert quick.bodies.centres.tolist() == [[x, y]]
-        quick.reheat(PROBE_HEAT)
-        quick.settle(finalize=False)
-        assert quick.bodies.centres.tolist() == [[x, y]]
-
-
-PULL_STEPS_TO_QUIET = (QUIET_PULLS + 1) * 4  # a pull every 4th step (guides.PULL_EVERY)
+    quick, scheduled = page_with(105.0, 148.5), page_with(105.0, 148.5)
+    report = quick.settle()
+    with mock.patch.object(fast_mode, "QUIET_PULLS", math.inf):
+        fixed_steps = scheduled.settle().steps
+    assert fixed_steps >= SCHEDULE_STEPS
+    assert report.settled and report.steps <= PULL_STEPS_TO_QUIET + 2 < SCHEDULE_STEPS
+    # the same page, and at rest: the gentle run that probes a settled page moves nothing
+    assert quick.bodies.centres.tolist() == scheduled.bodies.centres.tolist() == [[105.0, 148.5]]
+    quick.reheat(PROBE_HEAT)
+    quick.settle(finalize=False)
+    assert quick.bodies.centres.tolist() == [[105.0, 148.5]]
 
 
 def test_quiet_counts_pulls_that_bring_no_feature_within_a_nudge_of_its_line():
@@ -69,7 +65,6 @@ def test_quiet_counts_pulls_that_bring_no_feature_within_a_nudge_of_its_line():
 
 
 def test_a_roomy_seeded_page_cools_for_fewer_steps_and_settles_as_cleanly():
-    from seeded_scenes import load, mixed_scene
     # benchmarks/guide_cost.py's "random 8 items": 265 steps on the fixed schedule, 243 now
     scene = mixed_scene(8, 0.3, seed=100, page_w_mm=127.0, page_h_mm=203.2)
     engines = []
