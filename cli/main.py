@@ -347,7 +347,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
-    from floatpage.cli.page_report import page_report, settle_may_help, what_settle_fixes
+    from floatpage.model.page_report import page_report, settle_may_help, what_settle_fixes
     from floatpage.model.layout import engine_for_page
 
     print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")

@@ -30,7 +30,8 @@ from rich.cells import cell_len
 from floatpage.model.atomic_file import read_only
 from floatpage.model.document import Background, ItemAnchor, PointAnchor
 from floatpage.model.errors import FloatpageError, printable
-from floatpage.model.layout import copy_of
+from floatpage.model.layout import copy_of, engine_for_page
+from floatpage.model.page_report import page_reasons
 from floatpage.tui import item_forms, region_edits
 from floatpage.tui.dialogs import ChoiceDialog, FormDialog, HelpScreen, PictureDialog
 from floatpage.tui.direct_paint import draws_none_of, stale_lines_hidden
@@ -77,16 +78,28 @@ ALWAYS_IN_FOOTER = frozenset({"help", "save", "export_pdf", "quit"})
 PALETTE_CELLS = 13  # the footer's "^p palette" at its right end
 
 
-def quality_in_words(quality) -> str:
-    """"2 overlaps · 1 off the page", or "no overlaps · gaps kept" when all is well."""
+def quality_in_words(quality, reason: str = "") -> str:
+    """"2 overlaps · 1 off the page", or "no overlaps · gaps kept" when all is well.  Where a
+    guarantee gave way, ``reason`` says which and why, as `check` does (model.page_reasons:
+    "gutter 1.5 of 3 mm: page too full (96% of the room)"); "some gaps narrow" said neither
+    (user-walk-6).  Until the reason is known (it is found in a thread), the gap in mm."""
     words = []
     overlaps, off = quality.overlap_count, len(quality.off_page)
-    words.append(f"{overlaps} overlap{'s' if overlaps != 1 else ''}" if overlaps else "no overlaps")
+    if reason and not overlaps:
+        words.append("no overlaps")
+    elif not reason:
+        words.append(f"{overlaps} overlap{'s' if overlaps != 1 else ''}" if overlaps
+                     else "no overlaps")
+    if reason:
+        words.append(reason)
     if off:
         words.append(f"{off} off the page")
-    if not overlaps and not math.isinf(quality.min_gap_mm):
+    if not reason and quality.in_margin:
+        words.append(f"{len(quality.in_margin)} in the margin")
+    if not reason and not overlaps and not math.isinf(quality.min_gap_mm):
         kept = quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM
-        words.append("gaps kept" if kept else "some gaps narrow")
+        words.append("gaps kept" if kept else
+                     f"gap {max(quality.min_gap_mm, 0.0):.1f} of {quality.gutter_mm:g} mm")
     return " · ".join(words) + " · v details"
 
 
@@ -137,10 +150,13 @@ class EditorScreen(Screen):
         self.details = False  # `v`: the status line shows its numbers
         self.note = ""  # what the last release did, on the status line until the next key
         self.labels = False  # `n`: every item's id on the preview, not only the selected one's
+        self.reasons: list[str] = []  # `check`'s lines on why a guarantee gave way (`v` shows them)
         self._quality_at = float("-inf")
         self._quality_key: bytes | None = None  # what the figures were measured on, at rest
         self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
         self.room_searches = 0  # searches for room running in threads (`room_worker`)
+        self._held_notices: list[tuple[str, dict, float | None]] = []  # while a dialog is open
+        self._shown_notice: tuple[str, dict, float] | None = None  # the toast last shown
 
     def compose(self) -> ComposeResult:
         yield PageBar(id="page-bar")
@@ -339,7 +355,8 @@ class EditorScreen(Screen):
                     state=self.state_word(), energy=engine.kinetic_energy, fps=self.meter.fps,
                     held=self.meter.held, steps_per_s=self.meter.steps_per_s, quality=summary,
                     frame_ms=1000 * self.meter.last_frame_s, quality_words=words,
-                    details=self.details, alignment=alignment, note=self.note))
+                    details=self.details, alignment=alignment, note=self.note,
+                    reasons=tuple(self.reasons)))
             bar = self.query_one(PageBar)
             if bar.show(self.page_bar_runs(), refresh=False) \
                     and not preview.direct.paint_lines(bar):  # an unchanged bar costs no bytes
@@ -359,8 +376,29 @@ class EditorScreen(Screen):
             self._quality = (quality.summary(), quality_in_words(quality),
                              engine.alignment().short())
             self._quality_key = key
+            self.reasons = []
+            if key is not None and not quality.ok:  # why, as `check` says it: off this thread
+                self.session.sync_positions()       # (its search for room can take seconds)
+                self.reasons_worker(key, copy_of(self.session.page), quality)
         self._quality_at = now
         return self._quality
+
+    @work(thread=True, group="reasons", exclusive=True)
+    def reasons_worker(self, key: bytes, page, quality) -> None:
+        """`check`'s reasons (model.page_reasons) for a still page, on a copy of it."""
+        physics = self.session.project.physics
+        lines, _, short = page_reasons(page, engine_for_page(page, physics), physics.gutter_mm)
+        self.app.call_from_thread(self.adopt_reasons, key, quality, lines[2:], short)
+
+    def adopt_reasons(self, key: bytes, quality, lines: list[str], short: str) -> None:
+        """Show the reasons found, if the page is still the one they were found for: the
+        short one on the status line, all of `check`'s lines in the details view (`v`)."""
+        if key != self._quality_key:
+            return
+        summary, _, alignment = self._quality
+        self._quality = (summary, quality_in_words(quality, short), alignment)
+        self.reasons = [line.strip() for line in lines]
+        self.redraw()
 
     def action_toggle_labels(self) -> None:
         self.labels = not self.labels
@@ -387,7 +425,8 @@ class EditorScreen(Screen):
         parts.append((2, 2, ((f"page {session.page_index + 1}/{len(session.project.pages)} ",
                               False), (page.id, True))))
         parts.append((5, 3, ((f"{page.size} {page.orientation}", False),)))
-        parts.append((4, 4, ((f"{len(page.items)} items", False),)))
+        count = len(page.items)  # "1 items" on a new blank page
+        parts.append((4, 4, ((f"{count} item{'' if count == 1 else 's'}", False),)))
         if selected:
             parts.append((1, 5, ((selected.id, True),
                                  (f" ({describe_item(selected, page)})", False))))
@@ -414,9 +453,40 @@ class EditorScreen(Screen):
         """Notifications quote file names, ids and errors: plain text, never Rich markup.
 
         Each replaces the one before: they used to pile up over the preview and the status
-        line for seconds (defect 3), and the newest is the one that answers the last key."""
+        line for seconds (defect 3), and the newest is the one that answers the last key.
+        While a dialog is open, one is held until it closes: Textual draws toasts on the top
+        screen, where they covered the dialog's fields (a finished export over the form being
+        typed in; on a short terminal the dialog is the whole screen; user-walk-6)."""
+        kwargs["markup"] = markup
+        if self.is_mounted and self.app.screen_stack[-1] is not self:
+            self._held_notices.append((message, kwargs, None))
+            return
         self.app.clear_notifications()
-        super().notify(message, markup=markup, **kwargs)
+        self._shown_notice = (message, kwargs, time.monotonic())
+        super().notify(message, **kwargs)
+
+    def on_screen_suspend(self) -> None:
+        """A dialog opens over the editor: the toast showing goes with the editor, to come
+        back for the rest of its time when the dialog closes (`on_screen_resume`)."""
+        shown, self._shown_notice = self._shown_notice, None
+        if shown is None:
+            return
+        message, kwargs, at = shown
+        left = kwargs.get("timeout", self.app.NOTIFICATION_TIMEOUT) - (time.monotonic() - at)
+        if left > 0.5:
+            self._held_notices.insert(0, (message, kwargs, left))
+        self.app.clear_notifications()
+
+    def on_screen_resume(self) -> None:
+        """The dialog closed: the held notices show now, in the order they came."""
+        held, self._held_notices = self._held_notices, []
+        for number, (message, kwargs, left) in enumerate(held):
+            if number == 0:
+                self.app.clear_notifications()
+            if left is not None:
+                kwargs = {**kwargs, "timeout": left}
+            self._shown_notice = (message, kwargs, time.monotonic())
+            super().notify(message, **kwargs)
 
     def after_edit(self, *, keep_note: bool = False) -> None:
         """Show what an edit, a selection or a release did: the footer's item commands follow

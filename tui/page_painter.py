@@ -98,6 +98,11 @@ def printable(text: str) -> str:
     return "".join(graphemes(text))
 
 
+def text_cells(text: str) -> int:
+    """How many cells ``text`` takes (cell_text.width is one grapheme's)."""
+    return sum(cell_width(grapheme) for grapheme in graphemes(text))
+
+
 @lru_cache(maxsize=1024)
 def wrapped(text: str, width: int) -> tuple[str, ...]:
     """Greedy line breaks of a paragraph by cells, in visual order (cached: texts rarely
@@ -145,7 +150,7 @@ class PagePainter:
         p = self.projection
         canvas = CellCanvas(p.cols, p.rows, SURROUND)
         self._background(canvas, view)
-        self._regions(canvas, view)
+        names = self._regions(canvas, view)
         # as the PDF prints them (typeset.placed.paint_order): at one z, words over pictures
         items = sorted(view.page.items, key=lambda item: (
             not item.decorative, item.z, item.kind in ("text", "calendar")))
@@ -166,12 +171,15 @@ class PagePainter:
                      max(b[2] for b in members), max(b[3] for b in members))
             self._dashed_frame(canvas, (frame[0] - 2, frame[1] - 2, frame[2] + 2, frame[3] + 2),
                                GROUP)
-            col0, row = frame[0] - 1, (frame[1] - 2) // 2
-            canvas.write(max(col0, 0), row, printable(f"group {selected.group}"), BLACK, GROUP,
-                         bold=True)
+            col0, row = max(frame[0] - 1, 0), (frame[1] - 2) // 2
+            text = printable(f"group {selected.group}")
+            canvas.write(col0, row, text, BLACK, GROUP, bold=True)
+            names.append((row, col0, col0 + text_cells(text), ""))  # kept clear for the label
         if selected is not None:
             canvas.outline(*boxes[selected.id], SELECTION)
-            self._label(canvas, selected, boxes[selected.id], BLACK, SELECTION)
+            self._frame_label(canvas, selected, boxes[selected.id], names)
+        for row, col, end, text in names:  # last: no item, label or link hides a name
+            canvas.write(col, row, text, REGION, PAPER, bold=True, end_col=end)
         return canvas
 
     # -- geometry ----------------------------------------------------------------------------
@@ -207,17 +215,25 @@ class PagePainter:
         elif background.color:
             canvas.fill(*box, hex_to_rgb(background.color, PAPER))
 
-    def _regions(self, canvas: CellCanvas, view: PageView) -> None:
-        """Each region as a dashed green frame with its name in its top-left corner, under the
-        items: the walls of the items confined to it."""
+    def _regions(self, canvas: CellCanvas, view: PageView) -> list[tuple[int, int, int, str]]:
+        """Each region as a dashed green frame, under the items: the walls of the items
+        confined to it.  Its name goes on the frame's top line, as a titled border, and is
+        written last of all (``paint``): drawn inside and first, it hid under the items and
+        labels at the region's top, the very items confined to it (user-walk-6).  Returns
+        the names' places, (row, first column, end column, text)."""
+        names = []
         for region in view.page.regions:
             left, top, right, bottom = region.box
             x0, y0 = self.projection.to_pixels(left, top)
             x1, y1 = self.projection.to_pixels(right, bottom)
             box = (int(x0), int(y0), max(int(x1) - 1, int(x0)), max(int(y1) - 1, int(y0)))
             self._dashed_frame(canvas, box, mix(PAPER, REGION, 0.7), step=GUIDE_DASH)
-            canvas.write(box[0] + 1, box[1] // 2 + 1, printable(region.id), REGION, None,
-                         end_col=box[2])
+            text = printable(region.id)
+            col = max(box[0] + 1, 0)
+            end = min(box[2], col + text_cells(text))
+            if end > col:
+                names.append((max(box[1] // 2, 0), col, end, text))
+        return names
 
     @staticmethod
     def _dashed_frame(canvas: CellCanvas, box, colour: RGB, step: int = 2) -> None:
@@ -245,7 +261,7 @@ class PagePainter:
                            MISSING_PICTURE)
             else:
                 canvas.blit(x0, y0, image)
-            if view.labels:
+            if view.labels and item.id != view.selected_id:  # its id is on its frame
                 self._label(canvas, item, box, WHITE, BLACK)
             return
         under = tuple(int(v) for v in canvas.pixels[
@@ -254,7 +270,7 @@ class PagePainter:
         if isinstance(item, BlockItem):
             fill = mix(under, hex_to_rgb(item.color, MISSING_PICTURE), item.opacity)
             canvas.fill(*box, fill)
-            if view.labels:
+            if view.labels and item.id != view.selected_id:
                 self._label(canvas, item, box, readable_on(fill), fill)
             return
         # Text is printed straight on the page, so its box is only a faint tint of what lies
@@ -262,8 +278,9 @@ class PagePainter:
         ink = hex_to_rgb(getattr(item, "color", None))
         fill = mix(under, ink, TEXT_TINT)
         canvas.fill(*box, fill)
-        labelled = view.labels or item.id == view.selected_id
-        if view.labels:
+        # the selected one's id is on its frame (_frame_label), not over its first row
+        labelled = view.labels and item.id != view.selected_id
+        if labelled:
             self._label(canvas, item, box, mix(readable_on(fill), fill, 0.45), fill)
         if isinstance(item, TextItem):
             self._body(canvas, box, item.text.split("\n"), ink, fill, bold=item.bold,
@@ -278,6 +295,38 @@ class PagePainter:
         text = printable(("~" if item.decorative else "") + item.id)
         width = max(col1 - col0, 1)
         canvas.write(col0, row, text[:width], fg, bg, bold=True, end_col=col0 + width)
+
+    def _frame_label(self, canvas: CellCanvas, item, box, kept_clear) -> None:
+        """The selected item's id on the row above the rows its text may use (its frame's top
+        line) or the row below them, so that it covers none of the item: inside the box it
+        hid the first row of a text's words (user-walk-6).  Of those, the first that covers
+        no other item's words, region name or group label (``kept_clear``: (row, column, end
+        column, text)), or else its own first row where no words are (a picture's top: over
+        the caption below it, the album's label hid the caption); else the first clear of
+        those names; only where none is, inside, as `n`'s labels go."""
+        col0, _, col1, _ = self._cells(box)
+        _, first, _, end = self._text_area(box, below_label=False)
+        text = printable(("~" if item.decorative else "") + item.id)
+        width = max(col1 - col0, 1)
+        text = text[:width]
+        span = text_cells(text)
+        places = []
+        for row in (first - 1, end, first):  # inside last: over a picture's top, not words
+            if not 0 <= row < canvas.rows:
+                continue
+            col = max(col0, 0)
+            for taken_row, start, stop, _ in sorted(kept_clear, key=lambda place: place[1]):
+                if taken_row == row and start < col + span and col < stop:
+                    col = stop + 1  # after the name, if the label still fits above the box
+            if col + span <= col0 + width and col + span <= canvas.cols:
+                places.append((any(canvas.glyph_at(c, row) is not None and
+                                   canvas.glyph_at(c, row).char.strip()
+                                   for c in range(col, col + span)), row, col))
+        if places:
+            _, row, col = min(places, key=lambda place: place[0])  # the first free of words
+            canvas.write(col, row, text, BLACK, SELECTION, bold=True, end_col=col + span)
+            return
+        self._label(canvas, item, box, BLACK, SELECTION)
 
     def _text_area(self, box, below_label: bool) -> tuple[int, int, int, int]:
         """The cells a box's text may use, (col0, first row, col1, end row): its full cells,

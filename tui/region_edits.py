@@ -142,7 +142,9 @@ def put_region(session, old_id: str | None, answer: dict[str, Any], item_id: str
         member.y = min(max(member.y, new.top + member.h / 2), new.top + new.h - member.h / 2)
     session.rebuild_engine(sync=False)
     verb = "made" if old_id is None else "changed"
-    return (f'{verb} region "{new.id}" ({new.w:g} × {new.h:g} mm)'
+    # to a tenth of a mm, as the preview can show: "127 × 135.47 mm" (two thirds of a 5x8 in
+    # card) gave a precision nobody asked for, beside a whole number (user-walk-6)
+    return (f'{verb} region "{new.id}" ({round(new.w, 1):g} × {round(new.h, 1):g} mm)'
             + (f'; "{item.id}" keeps inside it' if item is not None and answer["confine"]
                else ""))
 

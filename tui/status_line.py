@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass
 
 from textual.widgets import Static
@@ -22,6 +23,7 @@ class Status:
     held: int = 0  # frames held back in the last second: the link could not take them
     alignment: str = ""  # near misses, edge lines, share aligned (physics.alignment.short)
     note: str = ""  # what the last release did ("photo anchored where you put it"), until a key
+    reasons: tuple[str, ...] = ()  # `check`'s lines on why a guarantee gave way, for `v`
 
 
 STATE_WORDS = {"settling": "settling…", "settled": "still", "paused": "paused · Space resumes"}
@@ -47,13 +49,53 @@ def status_text(status: Status) -> str:
     return f"{words}{note} · energy {status.energy:.2e} · {rate}\n{status.quality}{alignment}"
 
 
+REASON_ROWS = 8  # at most this many rows of `check`'s reasons in the details view
+
+
+def reason_rows(reasons: tuple[str, ...], width: int) -> list[str]:
+    """`check`'s reasons, wrapped to ``width``, at most REASON_ROWS rows (the last one says
+    `floatpage check` has the rest): the status line had only the short one, and the full
+    text was in `check` alone (user-walk-6)."""
+    rows = [row for reason in reasons
+            for row in textwrap.wrap(reason, max(width, 20), subsequent_indent="  ")]
+    if len(rows) > REASON_ROWS:
+        rows = rows[:REASON_ROWS - 1] + ["… the rest: floatpage check"]
+    return rows
+
+
+DROPPED_FIRST = ("v details", "no overlaps", "gaps kept")  # what a narrow line goes without
+
+
+def fitted(line: str, width: int) -> str:
+    """``line`` without the parts a user can spare, in DROPPED_FIRST's order, until it fits
+    ``width``: at 60 columns "no overlaps · gutter 1.5 of 3 mm: page too full (96% of t…"
+    lost the why, the one part that said something (user-walk-6)."""
+    parts = line.split(" · ")
+    for spare in DROPPED_FIRST:
+        if len(" · ".join(parts)) <= width:
+            break
+        if spare in parts and len(parts) > 1:
+            parts.remove(spare)
+    return " · ".join(parts)
+
+
 class StatusLine(Static):
-    """Shows a Status; the `-settled` / `-paused` classes colour it (see app.tcss)."""
+    """Shows a Status; the `-settled` / `-paused` classes colour it (see app.tcss).  Two
+    lines, and in the details view (`v`) as many more as `check`'s reasons take."""
 
     def show(self, status: Status) -> None:
         text = status_text(status)
+        if self.size.width:
+            text = "\n".join(fitted(line, self.size.width - 2) for line in text.split("\n"))
+        extra = reason_rows(status.reasons, self.size.width - 2) if status.details else []
+        if extra:
+            text += "\n" + "\n".join(extra)
         if text != getattr(self, "_shown", None):  # an unchanged line costs no bytes
             self._shown = text
+            rows = 2 + len(extra)
+            if rows != getattr(self, "_rows", 2):  # only the details view changes the height
+                self._rows = rows
+                self.styles.height = rows
             self.update(text, layout=False)  # two fixed lines: no layout pass, which cost ms
         if status.state != getattr(self, "_state", None):  # a class change restyles: ~1 ms,
             self._state = status.state                     # so one change, and only on a change

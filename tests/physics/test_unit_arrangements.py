@@ -301,7 +301,7 @@ def test_a_page_whose_widest_gap_the_search_could_not_finish_is_named_and_kept(t
     gutter = project.physics.gutter_mm
     limits, (limit,) = unit_limit(engine, page, gutter)
     assert limit.proved and 4.4 < limit.widest_gap_mm < 4.6
-    from floatpage.cli.page_report import _no_arrangement_sentence
+    from floatpage.model.page_report import _no_arrangement_sentence
     sentence = _no_arrangement_sentence(limit, lambda row: page.items[row].id, gutter)
     assert "the widest gap they can all keep is 4.5 mm" in sentence
     path = tmp_path / "units-budget-2.toml"
@@ -379,7 +379,7 @@ def test_six_units_beside_a_hard_anchor_are_named_and_set_down_at_their_widest_g
 def test_a_widest_gap_not_proved_is_told_as_such():
     """Where the search stopped part way, check names the layout found and the gap ruled out,
     and does not call the first the widest."""
-    from floatpage.cli.page_report import _no_arrangement_sentence
+    from floatpage.model.page_report import _no_arrangement_sentence
     limit = NoArrangement((0, 1, 2), (100.0, 150.0), 1.2, True, (3,), units=True,
                           proved=False, at_most_mm=3.0)
     sentence = _no_arrangement_sentence(limit, lambda row: f'"item{row}"', 4.0)

@@ -18,6 +18,7 @@ from floatpage.physics.page_limits import (
     page_limits, too_large, unexplained_pairs,
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER, room_covers, rooms_of
+from floatpage.physics.quality import GAP_TOLERANCE_MM
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -28,6 +29,16 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     """The lines `check` prints for ``page`` (settled or not, as it lies in the file) and the
     number of layout problems it counts for ``--strict``.  Only the misses no reason explains
     carry the advice SETTLE (``settle_may_help``)."""
+    lines, problems, _ = page_reasons(page, engine, gutter_mm)
+    return lines, problems
+
+
+def page_reasons(page, engine, gutter_mm: float) -> tuple[list[str], int, str]:
+    """``page_report``'s lines and count, and the same reason in a few words for the
+    editor's status line: which guarantee gave way (the gutter, then the margin, then
+    overlap) and why, e.g. "gutter 1.2 of 3 mm: page too full (94 % of the room)".  The
+    editor said "some gaps narrow" and left the why to `check` (user-walk-6).  Empty
+    when nothing gave way."""
     quality = engine.quality()
     bodies = engine.bodies
     lines = [f"page {page.id}: {quality.summary()}",
@@ -44,6 +55,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     problems += sum(isinstance(limit, TooLarge) and not set(limit.rows) & counted
                     for limit in limits)
     oversized = {row for limit in limits if isinstance(limit, TooLarge) for row in limit.rows}
+    why = _short_why(limits, name)
     for k in quality.outside_region:
         item = page.items[k]
         if k in oversized:  # named below, with what to do: settle cannot
@@ -74,17 +86,20 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                       len(overlapping))
         packed, room = _tightest_room(page, engine, 0.0)
         if packed > GUTTER_FITS_COVER:
+            why = why or f"page too full ({packed:.0%} of {_short_room(room)})"
             lines.append(
                 f"  overlapping: {pairs}; the items may not fit on page {page.id} at all: "
                 f"even without the gutter they need {packed:.0%} of {room}, more than the {GUTTER_FITS_COVER:.0%} rectangles of mixed shapes "
                 "seldom pack tighter than; make items smaller, or move some to another page")
         else:
+            why = why or "anchors box them in, or r (reheat) parts them"
             lines.append(f"  overlapping: {pairs}; {SETTLE}; if they still "
                          "overlap after it, hard anchors or anchored groups box them in: move "
                          "an anchor, make items smaller, or move some to another page")
     elif loose:
         need, room = _tightest_room(page, engine, gutter_mm)
         if need > GUTTER_FITS_COVER:
+            why = why or f"page too full ({need:.0%} of {_short_room(room)})"
             lines.append(
                 f"  note: the {gutter_mm:g} mm gutter may not fit on page {page.id}: its "
                 f"items, each grown by the gutter, need {need:.0%} of {room}, more than the {GUTTER_FITS_COVER:.0%} up to which settle promises "
@@ -92,6 +107,7 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                 f"widest gap it finds; make items smaller, move some to another page or lower "
                 f"gutter_mm or margin_mm to keep it")
         else:
+            why = why or "it fits: r (reheat) may mend it"
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
                 f"need {need:.0%} of {room}) but is not kept: {SETTLE}; "
@@ -99,7 +115,50 @@ def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
                 f"order its items lie in jam it: move an anchored item or nudge items apart, "
                 f"and settle again")
             problems += 1
-    return lines, problems
+    return lines, problems, _short(quality, why or "r (reheat) may mend it")
+
+
+def _short(quality, why: str) -> str:
+    """What gave way, the last of the gutter, the margin and overlap to give way first, and
+    ``why``; empty when nothing did."""
+    if quality.overlap_count:
+        gave = f"{quality.overlap_count} overlap{'s' if quality.overlap_count != 1 else ''}"
+    elif quality.in_margin:
+        gave = f"margin ({len(quality.in_margin)} in it)"
+    elif np.isfinite(quality.min_gap_mm) and quality.min_gap_mm < quality.gutter_mm - GAP_TOLERANCE_MM:
+        gave = f"gutter {max(quality.min_gap_mm, 0.0):.1f} of {quality.gutter_mm:g} mm"
+    elif quality.off_page or quality.outside_region:
+        gave = "walls"
+    else:
+        return ""
+    return f"{gave}: {why}"
+
+
+def _short_room(room: str) -> str:
+    """``_tightest_room``'s name for the room, in a few words."""
+    return "the room" if room.startswith("the room inside") else "its region"
+
+
+def _short_why(limits: list[Limit], name) -> str:
+    """The first reason `check` gives (``_explain``'s order), in a few words."""
+    for limit in binding(limits):
+        rows = getattr(limit, "rows", None) or (getattr(limit, "row", 0),)
+        first = name(rows[0])
+        if isinstance(limit, PinnedClash):
+            return f"pinned {first} and {name(rows[1])} meet"
+        if isinstance(limit, PinnedOutside):
+            return f"{first} is pinned there"
+        if isinstance(limit, TooLarge):
+            return f"{first} too large for its room"
+        if isinstance(limit, Crossing):
+            return f"{first} and {name(rows[1])} too big to part"
+        if isinstance(limit, (Stack, PinnedStack)):
+            return f"{len(rows)} items too big to stand side by side"
+        if isinstance(limit, NoRoom):
+            return f"no room for {first} by the pinned items"
+        if isinstance(limit, NoArrangement):
+            return "no arrangement keeps it"
+    return ""
 
 
 def _past_lead_region(limit: Limit, page) -> bool:
