@@ -6,6 +6,16 @@ did: Engine.settle calls (the full run and the probes), fast-mode steps.
 
     .venv/bin/python benchmarks/guide_cost.py --repeats 3
     .venv/bin/python benchmarks/guide_cost.py --seeds 7     # plus seven fresh seeded pages
+    .venv/bin/python benchmarks/guide_cost.py --before --jitter 6   # and the fixed schedule
+
+``--before`` also settles each page with guides on the way the guided cooling ended before the
+sixteenth session (on its fixed schedule alone: fast_mode.QUIET_PULLS infinite), in the same
+run, alternating with the others: its on/off, steps and near misses beside today's.  Near
+misses turn on a hair: moving every free item by a normal 1 micrometre before the final pass
+changed the 50-item page's 1.90 to 2.06 (one seed of two).  ``--jitter K`` adds K more settles of each page (guides on,
+and with --before on the fixed schedule too), each moving every free item by a normal
+0.01 mm (seeds 1..K) before its final pass, and prints the near misses averaged over them and
+the plain settle: a change of the layouts is better or worse where these averages say so.
 
 "on/off" is the settle with guides over the settle without; "less snap" leaves the snap's time
 out of the settle with guides (what the rest of the guides costs: the pull, the hold, the
@@ -31,6 +41,7 @@ from dataclasses import replace
 import numpy as np
 
 import floatpage.physics.engine as engine_module
+import floatpage.physics.fast_mode as fast_mode
 from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics.alignment import measure_alignment
 from alignment import benchmark_scenes, random_scenes, scene_project
@@ -73,13 +84,43 @@ class Tally:
 
 
 TALLY = Tally()
+QUIET_PULLS = fast_mode.QUIET_PULLS
 
 
-def settle_once(project, guides: float) -> tuple[float, float, int, int, float, bool]:
+class Jitter:
+    """Moves every free item by a normal ``mm`` (seeded) before the first final pass of a
+    settle (Engine.finalize): the near misses' sensitivity to a hair of difference."""
+
+    def __init__(self) -> None:
+        self.mm, self.seed, self.done = 0.0, 0, True
+
+    def install(self) -> None:
+        finalize, jitter = engine_module.Engine.finalize, self
+
+        def jittered(engine, *args, **kwargs):
+            if not jitter.done:
+                jitter.done = True
+                bodies = engine.bodies
+                free = bodies.free
+                noise = np.random.default_rng(jitter.seed).normal(0.0, jitter.mm, (free.sum(), 2))
+                bodies.centres[free] += noise
+            return finalize(engine, *args, **kwargs)
+        engine_module.Engine.finalize = jittered
+
+
+JITTER = Jitter()
+
+
+def settle_once(project, guides: float, fixed_schedule: bool = False, jitter_seed: int = 0,
+                ) -> tuple[float, float, int, int, float, bool]:
     """CPU seconds, of them in the snap, Engine.settle calls, steps; near misses per item and
-    whether the page keeps zero overlap, the gutter and the margin, as settled."""
+    whether the page keeps zero overlap, the gutter and the margin, as settled.
+    ``fixed_schedule``: the guided cooling ends on its schedule alone (as before the sixteenth
+    session); ``jitter_seed`` > 0: jittered before the final pass (Jitter)."""
     trial = copy.deepcopy(project)
     trial.physics = replace(trial.physics, guides=guides)
+    fast_mode.QUIET_PULLS = np.inf if fixed_schedule else QUIET_PULLS
+    JITTER.mm, JITTER.seed, JITTER.done = 0.01, jitter_seed, jitter_seed <= 0
     TALLY.snap_s, TALLY.settles, TALLY.steps = 0.0, 0, 0
     start = time.process_time()
     settle_project(trial)
@@ -139,6 +180,10 @@ def main() -> None:
     parser.add_argument("--guides", type=float, default=1.0)
     parser.add_argument("--times", type=int, default=1)
     parser.add_argument("--free-snap", action="store_true")
+    parser.add_argument("--before", action="store_true",
+                        help="also settle with the guided cooling on its fixed schedule")
+    parser.add_argument("--jitter", type=int, default=0,
+                        help="near misses averaged over this many jittered settles too")
     args = parser.parse_args()
     if args.free_snap:
         free_snap()
@@ -146,34 +191,69 @@ def main() -> None:
         settle_only(args.settle, args.guides, args.times)
         return
     TALLY.install()
+    JITTER.install()
     scenes = [s for s in benchmark_scenes(True) if s.coverage <= 0.6] + random_scenes()
     scenes += fresh_scenes(args.seeds, args.first_seed)
+    before = ("| before on/off | steps before | near misses before → now "
+              + ("| jittered before → now " if args.jitter else "")) if args.before else ""
+    jittered = "| jittered " if args.jitter and not args.before else ""
     print("| scene | off s | on s | on/off | snap s | on less snap / off "
-          "| settles off → on | steps off → on | near misses/item off → on | ok |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
-    ratios, rests, misses = [], [], []
+          f"| settles off → on | steps off → on | near misses/item off → on {before}{jittered}| ok |")
+    print("|---" * (10 + (3 + bool(args.jitter) if args.before else bool(args.jitter))) + "|")
+    ratios, rests, misses, old_ratios, old_misses = [], [], [], [], []
+    jitter_now, jitter_before = [], []
     for scene in scenes:
         if args.only not in scene.name:
             continue
         project = scene_project(scene)
-        best_off = best_on = None
+        best_off = best_on = best_old = None
         for _ in range(args.repeats):
             off = settle_once(project, 0.0)
             on = settle_once(project, 1.0)
             best_off = off if best_off is None or off[0] < best_off[0] else best_off
             best_on = on if best_on is None or on[0] < best_on[0] else best_on
+            if args.before:
+                old = settle_once(project, 1.0, fixed_schedule=True)
+                best_old = old if best_old is None or old[0] < best_old[0] else best_old
         ratio, rest = best_on[0] / best_off[0], (best_on[0] - best_on[1]) / best_off[0]
         ratios.append(ratio)
         rests.append(rest)
         misses.append(best_on[4])
-        ok = "yes" if best_on[5] else "NO"
+        ok = "yes" if best_on[5] and (best_old is None or best_old[5]) else "NO"
+        extra = ""
+        if args.jitter:
+            jitter_now.append(np.mean([best_on[4]] + [settle_once(project, 1.0, jitter_seed=k)[4]
+                                                      for k in range(1, args.jitter + 1)]))
+        if args.before:
+            old_ratios.append(best_old[0] / best_off[0])
+            old_misses.append(best_old[4])
+            extra = (f"| {old_ratios[-1]:.2f} | {best_old[3]} | {best_old[4]:.2f} → "
+                     f"{best_on[4]:.2f} ")
+            if args.jitter:
+                jitter_before.append(np.mean(
+                    [best_old[4]] + [settle_once(project, 1.0, True, k)[4]
+                                     for k in range(1, args.jitter + 1)]))
+                extra += f"| {jitter_before[-1]:.2f} → {jitter_now[-1]:.2f} "
+        elif args.jitter:
+            extra = f"| {jitter_now[-1]:.2f} "
         print(f"| {scene.name} | {best_off[0]:.3f} | {best_on[0]:.3f} | {ratio:.2f} | "
               f"{best_on[1]:.3f} | {rest:.2f} | {best_off[2]} → {best_on[2]} | "
-              f"{best_off[3]} → {best_on[3]} | {best_off[4]:.2f} → {best_on[4]:.2f} | {ok} |",
+              f"{best_off[3]} → {best_on[3]} | {best_off[4]:.2f} → {best_on[4]:.2f} {extra}| {ok} |",
               flush=True)
     print(f"\non/off: median {np.median(ratios):.2f}, worst {max(ratios):.2f}; "
           f"less snap: median {np.median(rests):.2f}, worst {max(rests):.2f}; "
           f"near misses/item with guides, summed: {sum(misses):.2f}")
+    if args.before:
+        worse = sum(now > then + 1e-9 for now, then in zip(misses, old_misses))
+        better = sum(now < then - 1e-9 for now, then in zip(misses, old_misses))
+        print(f"before (fixed schedule): on/off median {np.median(old_ratios):.2f}, worst "
+              f"{max(old_ratios):.2f}; near misses summed {sum(old_misses):.2f} → "
+              f"{sum(misses):.2f}; pages worse {worse}, better {better}")
+    if args.jitter:
+        line = f"jittered near misses (plain settle and {args.jitter} jittered), summed: "
+        if args.before:
+            line += f"{sum(jitter_before):.2f} → "
+        print(line + f"{sum(jitter_now):.2f}")
 
 
 if __name__ == "__main__":

@@ -19,7 +19,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
-from floatpage.physics.guides import GUIDE_HEAT, HOLD_HEAT, guide_pulls
+from floatpage.physics.guides import GUIDE_HEAT, HOLD_HEAT, QUIET_PULLS, GuidePulls, guide_pulls
 from floatpage.physics.geometry import (
     ROOMY_COVER, as_insets, clamp_to_page, group_bounds, grown_cover, lines_up, squared_norms,
 )
@@ -131,6 +131,12 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     # more to wait for).  From 0.9 GUIDE_HEAT, where the pull is a fifth of its strength, that
     # took at least 83 steps; from the half, at least 49, with the same near misses on every
     # page of benchmarks/alignment.py --quick (the snap lines up what the pull leaves).
+    # The cooling also ends once QUIET_PULLS pulls in a row have brought no feature within a
+    # nudge of its line nor taken one out (guides.GuidePulls.quiet), on a page as still as
+    # the schedule's end asks: what is left is the pull creeping in features that stay near
+    # misses when it ends anyway, and the snap does the rest (docs/benchmarks.md, sixteenth
+    # session, "cooling": up to 30 steps fewer; near misses, averaged over jittered settles,
+    # the same).
     cover = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm)
     roomy = cover <= ROOMY_COVER
     aligns = lines_up(cover, int(active.sum()))
@@ -142,6 +148,7 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
                          inverse_mass, gap, skin, near, far, align=aligns,
                          saved=heat < HOLD_HEAT and not spread_out)
     contacts = forces[0]
+    guide = forces[-1] if isinstance(forces[-1], GuidePulls) else None
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))
         for force in forces:
@@ -175,8 +182,17 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
         if top_speed < still_speed:
             if heat <= settled_below:
                 return done, heat, True, spread_out
+            if (spread_out and guide is not None and guide.quiet >= QUIET_PULLS
+                    and top_speed * heat < still_speed * HOLD_HEAT):
+                # the pull has nothing left for the snap, and the page is as still as at the
+                # schedule's end: a speed is heat times the forces left, so this is still
+                # below HOLD_HEAT (only still at its own heat, two pages of guide_cost.py needed
+                # one and two more probes)
+                return done, heat, True, spread_out
             if not spread_out and gives_up is not None and gives_up():
                 return done, heat, True, spread_out
+            if not spread_out and guide is not None:
+                guide.start_quiet_count()
             heat = min(heat, guided_heat)  # spread out and still: on to where the guides pull
             keep = min(keep, 1.0 - GUIDED_COOLING)
             spread_out = True
