@@ -228,6 +228,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.model import load_project
     from floatpage.model.layout import settle_project
     from floatpage.typeset import render_pdf
+    from floatpage.typeset.render import check_pdf_output
 
     for option, name in (("-o", args.output), ("--tex", args.tex), ("--fragment", args.fragment)):
         refuse_folder_name(option, name, Path(args.path).stem)
@@ -236,6 +237,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     for option, name in (("--tex", args.tex), ("--fragment", args.fragment)):
         refuse_not_tex(option, name, args.path)
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
+    check_pdf_output(project, out, args.tex, args.fragment)  # before a settle of seconds
     with progress_line(args.quiet) as show:
         if not args.no_settle:
             show("settling the layout…")

@@ -12,7 +12,9 @@ import stat
 from pathlib import Path
 from typing import Iterable
 
-from floatpage.model.atomic_file import held_by_system, owner_of, read_only
+from floatpage.model.atomic_file import (
+    SAVE_HINT, SAVE_HINTS, held_by_system, owner_of, read_only, real_target, temporary_name,
+)
 from floatpage.model.document import Project
 from floatpage.model.project_lock import lock_path_for
 from floatpage.typeset.errors import RenderError
@@ -109,4 +111,23 @@ def check_outputs(outputs: Iterable[Path | None], inputs: Iterable[Path],
                                   f"it (it belongs to {owner_of(output)}); name another file")
             raise RenderError(f"{output}: will not write there, because the file is read-only; "
                               "make it writable (`chmod u+w`) or name another file")
+        refuse_unwritable_folder(output)
         chosen.append(output)
+
+
+def refuse_unwritable_folder(output: Path) -> None:
+    """Make and remove, beside ``output``, the temporary a save makes there (atomic_write): a
+    folder that takes no new file (`-o /proc/x.pdf`, a read-only mount, a full disk's quota)
+    failed only once the whole document had been typeset, seconds later.  Permission bits
+    alone do not tell: root passes every access test, and /proc refuses root."""
+    temporary = temporary_name(real_target(output))
+    try:
+        os.close(os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
+    except OSError as error:
+        hint = SAVE_HINTS.get(error.errno, SAVE_HINT)
+        raise RenderError(f"{output}: cannot be written: {error.strerror or error} ({hint})"
+                          ) from None
+    try:
+        os.unlink(temporary)
+    except OSError:
+        pass

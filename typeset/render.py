@@ -168,12 +168,15 @@ def log_path_for(out_pdf: Path) -> Path:
     return out_pdf.with_name(out_pdf.name + ".log")
 
 
-def check_pdf_output(project: Project, out_pdf: Path) -> None:
-    """Refuse ``out_pdf`` (RenderError) where render_pdf would, before anything is done: the
-    editor asks for another name then, instead of saying "name a new file" after the work."""
+def check_pdf_output(project: Project, out_pdf: Path, tex_out: Path | None = None,
+                     fragment_out: Path | None = None) -> None:
+    """Refuse the outputs (RenderError) where render_pdf would, before anything is done: the
+    editor asks for another name then, instead of saying "name a new file" after the work, and
+    `floatpage render` before it settles."""
     out_pdf = Path(out_pdf)
-    check_outputs([out_pdf, log_path_for(out_pdf)], project_inputs(project),
-                  project_companions(project))
+    check_outputs([out_pdf, Path(tex_out) if tex_out else None,
+                   Path(fragment_out) if fragment_out else None, log_path_for(out_pdf)],
+                  project_inputs(project), project_companions(project))
 
 
 def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
@@ -187,10 +190,7 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     started = time.perf_counter()
     say = progress or (lambda message: None)
     out_pdf = Path(out_pdf)
-    outputs = [out_pdf, Path(tex_out) if tex_out else None,
-               Path(fragment_out) if fragment_out else None]
-    check_outputs(outputs + [log_path_for(out_pdf)], project_inputs(project),
-                  project_companions(project))
+    check_pdf_output(project, out_pdf, tex_out, fragment_out)
     engine_path()
     if not project.pages:
         raise RenderError("the project has no pages; add a [[pages]] table")

@@ -451,3 +451,30 @@ def test_a_png_libpng_refuses_is_named_with_what_to_do_not_internal_error(tmp_pa
            "read: open it and save it again as PNG or JPEG" in result.stderr, result.stderr
     assert "internal error" not in result.stderr
     assert not (tmp_path / "card.pdf").exists()
+
+
+@pytest.mark.parametrize("where", ["proc", "read-only mount"])
+def test_an_output_folder_that_takes_no_new_file_is_refused_before_the_work(
+        tmp_path, full_disk, where):
+    """`render -o /proc/x.pdf` settled and typeset the whole document (seconds) before the
+    save found that the folder takes no file; permission bits could not tell (root passes
+    them, and /proc refuses root).  Now a probe file beside the output is made and removed
+    first: the message is the probe's, and nothing is left behind."""
+    from floatpage.model import load_project
+    from floatpage.typeset.errors import RenderError
+    from floatpage.typeset.render import check_pdf_output
+
+    path = card(tmp_path)
+    if where == "proc":
+        out = Path("/proc/floatpage-card.pdf")
+    else:
+        out = full_disk / "card.pdf"
+        subprocess.run(["mount", "-o", "remount,ro", str(full_disk)], check=True)
+    before = listing(tmp_path)
+    result = run("render", str(path), "-o", str(out))
+    assert result.returncode == 1, result.stderr
+    assert result.stderr.startswith(f"floatpage: {out}: cannot be written: "), result.stderr
+    assert "internal error" not in result.stderr
+    assert listing(tmp_path) == before
+    with pytest.raises(RenderError, match="cannot be written"):  # no typesetting needed to say so
+        check_pdf_output(load_project(path), out)
