@@ -63,3 +63,45 @@ async def test_a_choice_typed_ahead_reaches_the_dialog_the_one_before_opened(pro
         assert app.screen.id == "text-dialog"
         assert app.screen.focused.text == "Ok"
 
+
+def top_bar(app) -> str:
+    return app.editor.query_one("#page-bar").plain
+
+
+async def test_a_page_added_is_named_by_its_place_and_the_top_bar_agrees(tmp_path):
+    """`N` on the album's first page added a page at place 2 named "page-3" (the next free
+    number), and the top bar read "page 2/3 page-3". Now it is "page-2", the album's old
+    page-2 is "page-3", a page the user named keeps its name, and the file saves so."""
+    album = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", album)
+    path = album / "photo-album.toml"
+    async with editor(path) as (app, pilot):
+        await pilot.press("N")
+        await pilot.pause()
+        assert "page 2/3 page-2" in top_bar(app)
+        assert [page.id for page in app.session.project.pages] == ["page-1", "page-2", "page-3"]
+        assert len(app.session.project.pages[2].items) > 0  # the album's second page, moved up
+        await pilot.press("ctrl+s")
+        await pilot.pause(0.5)
+    assert [page.id for page in load_project(path).pages] == ["page-1", "page-2", "page-3"]
+
+
+async def test_pages_the_user_named_keep_their_names_when_pages_come_and_go(tmp_path):
+    path = tmp_path / "card.toml"
+    save_project(Project(pages=[Page(id="front", size="A5", width_mm=148.0, height_mm=210.0),
+                                Page(id="page-2", size="A5", width_mm=148.0, height_mm=210.0),
+                                Page(id="back", size="A5", width_mm=148.0, height_mm=210.0)]),
+                 path)
+    async with editor(path) as (app, pilot):
+        await pilot.press("N")  # after "front": place 2, the old page-2 moves to place 3
+        await pilot.pause()
+        names = [page.id for page in app.session.project.pages]
+        assert names == ["front", "page-2", "page-3", "back"]
+        assert "page 2/4 page-2" in top_bar(app)
+        await pilot.press("D", "down", "enter")  # remove the new page: page-3 is page-2 again
+        await pilot.pause(0.3)
+        assert [page.id for page in app.session.project.pages] == ["front", "page-2", "back"]
+        await pilot.press("ctrl+z")
+        await pilot.pause()
+        assert [page.id for page in app.session.project.pages] == ["front", "page-2", "page-3",
+                                                                    "back"]
