@@ -3,15 +3,17 @@ keys typed ahead of a dialog, a new page's name, and a template's placeholder in
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
 from textual import events
 
 from floatpage.model import load_project, save_project
-from floatpage.model.document import Page, Project
+from floatpage.model.document import Page, PictureItem, Project, TextItem
+from floatpage.tui.cell_text import wrap_cells
 
-from editor_helpers import editor, position, screen_of
+from editor_helpers import editor, position, preview_text, screen_of
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -105,3 +107,27 @@ async def test_pages_the_user_named_keep_their_names_when_pages_come_and_go(tmp_
         await pilot.pause()
         assert [page.id for page in app.session.project.pages] == ["front", "page-2", "page-3",
                                                                     "back"]
+
+
+async def test_a_placeholder_is_never_broken_in_a_narrow_box(tmp_path):
+    """A merge template's picture in a narrow box read "pictures/{photo" over "}": the
+    preview breaks beside a {placeholder}, never inside it, and shows one too wide for its
+    box shortened ("{fi…}")."""
+    path = tmp_path / "offer.toml"
+    save_project(Project(pages=[Page(id="p", size="A5", width_mm=148.0, height_mm=210.0, items=[
+        PictureItem(id="photo", x=40.0, y=60.0, w=22.0, h=40.0, path="pictures/{photo}"),
+        TextItem(id="hello", x=110.0, y=60.0, w=16.0, h=40.0, text="Dear {first_name}")])]),
+        path)
+    async with editor(path) as (app, pilot):
+        rows = preview_text(app).splitlines()
+        assert any("{photo}" in row for row in rows)  # the picture's, whole
+        assert any(re.search(r"\{fi\w*…\}", row) for row in rows)  # the text's, shortened
+        for row in rows:  # no placeholder begun on one row and ended on another
+            assert row.count("{") == row.count("}"), row
+
+
+def test_a_placeholder_breaks_beside_it_and_shortens_only_when_it_must():
+    assert wrap_cells("pictures/{photo}", 12) == ["pictures/", "{photo}"]
+    assert wrap_cells("pictures/{photo}", 5) == ["pictu", "res/", "{ph…}"]
+    assert wrap_cells("Dear {first name} x", 12) == ["Dear", "{first name}", "x"]
+    assert wrap_cells("a lone { brace", 7) == ["a lone", "{ brace"]  # nothing to keep whole
