@@ -3,8 +3,12 @@ keys typed ahead of a dialog, a new page's name, and a template's placeholder in
 
 from __future__ import annotations
 
+import os
 import re
 import shutil
+import subprocess
+import sys
+import time
 from pathlib import Path
 
 from textual import events
@@ -131,3 +135,60 @@ def test_a_placeholder_breaks_beside_it_and_shortens_only_when_it_must():
     assert wrap_cells("pictures/{photo}", 5) == ["pictu", "res/", "{ph…}"]
     assert wrap_cells("Dear {first name} x", 12) == ["Dear", "{first name}", "x"]
     assert wrap_cells("a lone { brace", 7) == ["a lone", "{ brace"]  # nothing to keep whole
+
+
+class Tmux:
+    """The real editor in a tmux pane of its own server (its own socket: other runs' tmux
+    servers are never touched)."""
+
+    def __init__(self, project: Path, size=(100, 30)):
+        self.socket = f"floatpage-walk7-{os.getpid()}-{project.parent.name}"
+        floatpage = Path(sys.executable).parent / "floatpage"
+        self.tmux("-f", "/dev/null", "new-session", "-d", "-x", str(size[0]), "-y",
+                  str(size[1]), f"{floatpage} edit {project}")
+
+    def tmux(self, *args: str) -> str:
+        return subprocess.run(["tmux", "-L", self.socket, *args], check=True,
+                              capture_output=True, text=True, timeout=10).stdout
+
+    def screen(self) -> str:
+        return self.tmux("capture-pane", "-p")
+
+    def wait_for(self, wanted, timeout: float = 20.0) -> str:
+        """The pane once `wanted(pane)` holds; fails with the pane shown after `timeout`."""
+        deadline = time.monotonic() + timeout
+        while True:
+            pane = self.screen()
+            if wanted(pane):
+                return pane
+            assert time.monotonic() < deadline, pane
+            time.sleep(0.1)
+
+    def close(self) -> None:
+        subprocess.run(["tmux", "-L", self.socket, "kill-server"], capture_output=True)
+
+
+def test_keys_sent_in_one_go_in_tmux_reach_the_dialog_they_open(project_path):
+    """The walk's own steps in tmux: `send-keys p l` in one call moved the selected title
+    (it came out anchored, 3 mm to the right) behind the picture dialog, and `send-keys t
+    Hello` opened an empty text form and moved the title with the l's."""
+    pane = Tmux(project_path)
+    try:
+        pane.wait_for(lambda shown: "6 items" in shown)
+        pane.tmux("send-keys", "Tab")
+        top = pane.wait_for(lambda shown: "title (text" in shown).splitlines()[0]
+        assert "at 74, 25 mm" in top and "anchored" not in top
+        pane.tmux("send-keys", "p", "l")
+        pane.wait_for(lambda shown: "Insert a picture" in shown)
+        time.sleep(0.5)  # where a stray `l` would have gone by now
+        pane.tmux("send-keys", "Escape")
+        top = pane.wait_for(lambda shown: "Insert a picture" not in shown).splitlines()[0]
+        assert "at 74, 25 mm" in top and "anchored" not in top and "unsaved" not in top, top
+        pane.tmux("send-keys", "t", "Hello")
+        pane.wait_for(lambda shown: "Insert a text box" in shown)
+        pane.wait_for(lambda shown: "Hello" in shown, timeout=5.0)
+        pane.tmux("send-keys", "Escape")
+        top = pane.wait_for(lambda shown: "Insert a text box" not in shown).splitlines()[0]
+        assert "at 74, 25 mm" in top and "anchored" not in top, top
+    finally:
+        pane.close()
