@@ -24,6 +24,7 @@ from textual.app import App
 from textual.screen import Screen
 
 ANSWER_WAIT_S = 0.5  # the longest keys wait for a dialog's answer (they never stay stuck)
+MOUNT_WAIT_S = 5.0  # ... and for a screen to mount
 
 
 class TypeAhead:
@@ -41,7 +42,11 @@ class TypeAhead:
         self.app.run_worker(self.wait_for(screen), exclusive=False, group="type-ahead")
 
     async def wait_for(self, screen: Screen) -> None:
-        await screen._mounted_event.wait()
+        try:  # a screen that fails to mount must not keep the keys for ever
+            await asyncio.wait_for(screen._mounted_event.wait(), MOUNT_WAIT_S)
+        except asyncio.TimeoutError:
+            self.opened(screen)
+            return
         # Its on_mount has run (a dialog focuses its first field there); the refresh after it
         # applies the auto focus of a screen that names none.
         screen.call_after_refresh(self.opened, screen)
