@@ -3,7 +3,6 @@ keys typed ahead of a dialog, a new page's name, and a template's placeholder in
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
 import subprocess
@@ -138,17 +137,17 @@ def test_a_placeholder_breaks_beside_it_and_shortens_only_when_it_must():
 
 
 class Tmux:
-    """The real editor in a tmux pane of its own server (its own socket: other runs' tmux
-    servers are never touched)."""
+    """The real editor in a tmux pane of its own server, whose socket is in the test's own
+    folder (other runs' tmux servers are never touched, and nothing is left behind)."""
 
     def __init__(self, project: Path, size=(100, 30)):
-        self.socket = f"floatpage-walk7-{os.getpid()}-{project.parent.name}"
+        self.socket = str(project.parent / "tmux.sock")
         floatpage = Path(sys.executable).parent / "floatpage"
         self.tmux("-f", "/dev/null", "new-session", "-d", "-x", str(size[0]), "-y",
                   str(size[1]), f"{floatpage} edit {project}")
 
     def tmux(self, *args: str) -> str:
-        return subprocess.run(["tmux", "-L", self.socket, *args], check=True,
+        return subprocess.run(["tmux", "-S", self.socket, *args], check=True,
                               capture_output=True, text=True, timeout=10).stdout
 
     def screen(self) -> str:
@@ -165,7 +164,7 @@ class Tmux:
             time.sleep(0.1)
 
     def close(self) -> None:
-        subprocess.run(["tmux", "-L", self.socket, "kill-server"], capture_output=True)
+        subprocess.run(["tmux", "-S", self.socket, "kill-server"], capture_output=True)
 
 
 def test_keys_sent_in_one_go_in_tmux_reach_the_dialog_they_open(project_path):
