@@ -13,6 +13,7 @@ from functools import partial
 from pathlib import Path
 from typing import Iterable
 
+from textual import events
 from textual.app import App, SystemCommand
 from textual.screen import Screen
 
@@ -22,6 +23,10 @@ from floatpage.tui.keymap import COMMANDS, key_label
 from floatpage.tui.recovery import HangupGuard, load_recovered
 from floatpage.tui.session import EditSession
 from floatpage.tui.terminal_driver import HangupAwareDriver
+from floatpage.tui.type_ahead import TypeAhead
+
+
+ANSWER_KEYS = ("enter", "escape")  # the keys that answer a dialog, and may open the next
 
 
 class FloatpageApp(App):
@@ -36,6 +41,7 @@ class FloatpageApp(App):
                          else None)
         self.session = session
         self.autostart = autostart
+        self.type_ahead = TypeAhead(self)
 
     def on_mount(self) -> None:
         if not self.is_headless:  # a real terminal, which can hang up
@@ -48,6 +54,40 @@ class FloatpageApp(App):
         # out of the collector's sight, so a full collection during a frame is short. Without
         # this, frames at 200 items spiked to 40-50 ms once a few seconds (measured).
         gc.freeze()
+
+    def push_screen(self, screen, *args, **kwargs):
+        """Every screen opened (a dialog, help, the palette) takes the keys typed after the
+        one that opened it (`tui.type_ahead`)."""
+        result = super().push_screen(screen, *args, **kwargs)
+        self.type_ahead.screen_pushed(self.screen)
+        return result
+
+    async def on_event(self, event: events.Event) -> None:
+        if isinstance(event, events.Key) and not event.is_forwarded:
+            if not self.type_ahead.holds(event):
+                await self.take_key(event)
+            return
+        await super().on_event(event)
+
+    async def take_key(self, event: events.Key) -> None:
+        """A key, in its turn. On the editor screen its binding runs now, before the next key
+        is read, so that a dialog it opens is there for that key; a key no binding takes goes
+        on to the focused widget as usual (the editor's on_key says what it needs)."""
+        screen = self.screen
+        if screen is self.screen_stack[0] and self._focus_takes_no_keys(screen):
+            if (await self._check_bindings(event.key, priority=True)
+                    or await self._check_bindings(event.key)):
+                return
+        await super().on_event(event)
+        if screen is not self.screen_stack[0] and event.key in ANSWER_KEYS:
+            self.type_ahead.answer_sent(screen)
+
+    @staticmethod
+    def _focus_takes_no_keys(screen: Screen) -> bool:
+        """The editor's focus is its preview, which handles no keys of its own: running the
+        bindings first changes nothing but the timing."""
+        from floatpage.tui.page_preview import PagePreview
+        return screen.focused is None or isinstance(screen.focused, PagePreview)
 
     def get_default_screen(self) -> Screen:
         return EditorScreen(self.session, autostart=self.autostart)

@@ -13,6 +13,7 @@ import unicodedata
 
 from rich.cells import cell_len
 
+from floatpage.merge.placeholders import TOKEN
 from floatpage.typeset.bidi import base_direction, directional_runs, has_rtl, number_runs
 from floatpage.typeset.break_points import pieces
 
@@ -61,10 +62,14 @@ def wrap_cells(text: str, cells: int) -> list[str]:
     (`break_points.pieces`: between words, and between Chinese or Japanese characters but
     never before a 。 or a small kana, nor before a French "!" set after a space); a piece
     longer than a line is broken.  The preview had its own rule, spaces only, and put a
-    whole CJK sentence on the next line that the PDF began on this one."""
+    whole CJK sentence on the next line that the PDF began on this one.
+
+    A merge template's ``{placeholder}`` is never broken (a narrow picture box read
+    "pictures/{photo" over "}"): a piece longer than a line breaks beside it, and a
+    placeholder wider than the line shows shortened, "{pho…}" (`placeholder_pieces`)."""
     lines: list[str] = []
     line, line_cells = "", 0
-    for word, joined in pieces(text.replace("\t", " ")):
+    for word, joined in placeholder_pieces(text.replace("\t", " ")):
         parts = graphemes(word)
         word_cells = sum(width(g) for g in parts)
         gap = 1 if line and not joined else 0
@@ -74,11 +79,76 @@ def wrap_cells(text: str, cells: int) -> list[str]:
         if line:
             lines.append(line)
             line, line_cells = "", 0
-        for grapheme in parts:  # the word alone, broken where it must be
-            if line_cells + width(grapheme) > cells and line:
+        for unit in units(word, cells):  # the word alone, broken where it must be
+            unit_cells = sum(width(g) for g in graphemes(unit))
+            if line_cells + unit_cells > cells and line:
                 lines.append(line)
                 line, line_cells = "", 0
-            line, line_cells = line + grapheme, line_cells + width(grapheme)
+            line, line_cells = line + unit, line_cells + unit_cells
     if line or not lines:
         lines.append(line)
     return [visual(one) for one in lines]
+
+
+def placeholder_pieces(text: str) -> list[tuple[str, bool]]:
+    """`break_points.pieces`, with the pieces of one ``{placeholder}`` that holds spaces
+    ("{first name}") joined again into one; a lone "{" that nothing closes joins nothing."""
+    found = pieces(text)
+    out: list[tuple[str, bool]] = []
+    index = 0
+    while index < len(found):
+        word, joined = found[index]
+        index += 1
+        if opens_placeholder(word):
+            closing = next((later for later in range(index, len(found))
+                            if closes_placeholder(found[later][0])), None)
+            if closing is not None and not any(
+                    "{" in found[between][0] for between in range(index, closing)):
+                for later_word, later_joined in found[index:closing + 1]:
+                    word += ("" if later_joined else " ") + later_word
+                index = closing + 1
+        out.append((word, joined))
+    return out
+
+
+def closes_placeholder(word: str) -> bool:
+    """Whether a "}" in `word` comes before any "{" (it ends a placeholder begun before)."""
+    close, open_ = word.find("}"), word.find("{")
+    return close >= 0 and (open_ < 0 or close < open_)
+
+
+def opens_placeholder(word: str) -> bool:
+    """Whether `word` ends inside a ``{`` that a later ``}`` may close ("{{" is a brace)."""
+    tokens = [match for match in TOKEN.finditer(word) if match.group(0) not in ("{{", "}}")]
+    return bool(tokens) and tokens[-1].group(0) == "{"
+
+
+def units(word: str, cells: int) -> list[str]:
+    """What a word longer than a line may be broken into: its graphemes, but each whole
+    ``{placeholder}`` one unit, cut to "{pla…}" when it is wider than ``cells``."""
+    out: list[str] = []
+    start = 0
+    for match in TOKEN.finditer(word):
+        if match.group(1) is None:
+            continue  # a brace, "{{" or "}}": graphemes like any other
+        out.extend(graphemes(word[start:match.start()]))
+        out.append(shortened(match.group(0), cells))
+        start = match.end()
+    out.extend(graphemes(word[start:]))
+    return out
+
+
+def shortened(placeholder: str, cells: int) -> str:
+    """The placeholder in at most ``cells`` cells: "{photo}", "{ph…}", "{…}", "…"."""
+    parts = graphemes(placeholder)
+    if sum(width(g) for g in parts) <= cells:
+        return placeholder
+    if cells < 3:
+        return "\u2026"
+    kept, used = [], 0
+    for grapheme in parts[:-1]:
+        if used + width(grapheme) > cells - 2:
+            break
+        kept.append(grapheme)
+        used += width(grapheme)
+    return "".join(kept) + "\u2026}"

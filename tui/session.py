@@ -23,6 +23,7 @@ from floatpage.model.document import (
 )
 from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
+from floatpage.model.page_names import named_by_place, rename_by_place
 from floatpage.model.page_sizes import page_dimensions
 from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
@@ -781,14 +782,18 @@ class EditSession:
         self.engine = self._build_engine()
 
     def add_page(self) -> str:
+        """A page after the current one, named by its place (`model.page_names`): the pages
+        the editor named after it move up a number, the ones the user named keep theirs."""
         self.checkpoint("add page")
         current = self.page
-        # numbered from where it stands: a card's second page "page-2", not "page-1" beside
-        # a first page called "front"
+        followers = named_by_place(self.project.pages)
         page = Page(id=self.new_id("page", self.page_index + 2), size=current.size,
                     orientation=current.orientation,
                     width_mm=current.width_mm, height_mm=current.height_mm)
         self.project.pages.insert(self.page_index + 1, page)
+        followers.add(id(page))
+        self._renamed(rename_by_place(self.project.pages, followers,
+                                      self.project.all_item_ids()))
         self.page_index += 1
         self.selected_id = None
         self.engine = self._build_engine()
@@ -798,11 +803,19 @@ class EditSession:
         if len(self.project.pages) == 1:
             raise EditError("a project keeps at least one page")
         self.checkpoint(f"remove page {self.page.id}")
+        followers = named_by_place(self.project.pages)
         removed = self.project.pages.pop(self.page_index)
+        self.pages_edited.discard(removed.id)
+        self._renamed(rename_by_place(self.project.pages, followers,
+                                      self.project.all_item_ids()))
         self.page_index = min(self.page_index, len(self.project.pages) - 1)
         self.selected_id = None
         self.engine = self._build_engine()
         return removed.id
+
+    def _renamed(self, renamed: dict[str, str]) -> None:
+        """The pages a save settles keep that mark under their new names."""
+        self.pages_edited = {renamed.get(page_id, page_id) for page_id in self.pages_edited}
 
     def set_page_size(self, size: str, orientation: str, width_mm: float | None = None,
                       height_mm: float | None = None, *, label: str = "page size") -> None:
