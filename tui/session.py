@@ -752,7 +752,11 @@ class EditSession:
 
     def unanchor(self) -> None:
         """Take the selected item's anchor off; for a member of a group whose anchor another
-        member holds, the group's (as `a` on any member anchors the group)."""
+        member holds, the group's (as `a` on any member anchors the group).  An item still held
+        from arrow keys is let go first, as every edit lets go of it: its release anchors it
+        where it was put, and `u` typed right after the arrows (within RELEASE_AFTER_S, as keys
+        come over SSH) said "not anchored" while the status line said it was."""
+        self.end_move()
         item = self._require_selected()
         if item.anchor is None and item.group:
             item = self.page.item(self.mover_of(item.id))

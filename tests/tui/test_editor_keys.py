@@ -605,3 +605,28 @@ async def test_the_picture_dialog_names_where_it_looked(project_path):
         assert "not found" in error and "pick a file in the tree" in error
         await pilot.press("ctrl+a", "ctrl+k", "enter")
         assert "type a path" in str(app.screen.query_one("#picture-error").render())
+
+
+async def test_u_typed_right_after_the_arrows_lets_the_moved_item_float(tmp_path):
+    """`u` typed within RELEASE_AFTER_S of the last arrow (keys sent in one burst, as over
+    SSH) found the held item not yet anchored and said '"b5" is not anchored'; a moment later
+    the release anchored it where it was put, against the user's `u`."""
+    blocks = [BlockItem(id=f"b{i}", x=30 + 45 * (i % 4), y=40 + 50 * (i // 4), w=35, h=35,
+                        color="#336699") for i in range(12)]
+    path = tmp_path / "blocks.toml"
+    save_project(Project(title="Blocks", pages=[Page(id="p", size="A4", width_mm=210,
+                                                     height_mm=297, items=blocks)]), path)
+    async with editor(path) as (app, pilot):
+        screen = screen_of(app)
+        app.session.engine.settle()
+        screen.selected_id = "b5"
+        await pilot.press("shift+right", "shift+right", "u")
+        await pilot.pause()
+        assert item(app, "b5").anchor is None
+        assert not app.session.engine.bodies.held[app.session.engine.ids.index("b5")]
+        screen.release_held()  # the timer's release, had it not been stopped: nothing to do
+        await pilot.pause()
+        assert item(app, "b5").anchor is None
+        await pilot.press("ctrl+z")  # undo brings the move's anchor back
+        await pilot.pause()
+        assert isinstance(item(app, "b5").anchor, PointAnchor)
