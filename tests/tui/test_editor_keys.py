@@ -81,15 +81,21 @@ async def test_arrows_move_the_selected_item_which_is_held_then_released(project
         assert item(app, "block").x == pytest.approx(x - SMALL_STEP_MM)
 
 
+def twelve_blocks(folder: Path) -> Path:
+    """Twelve free blocks on A4, in a 4 x 3 grid: room to move one among the others."""
+    blocks = [BlockItem(id=f"b{i}", x=30 + 45 * (i % 4), y=40 + 50 * (i // 4), w=35, h=35,
+                        color="#336699") for i in range(12)]
+    path = folder / "blocks.toml"
+    save_project(Project(title="Blocks", pages=[Page(id="p", size="A4", width_mm=210,
+                                                     height_mm=297, items=blocks)]), path)
+    return path
+
+
 async def test_a_free_item_moved_stays_where_it_was_put_and_says_so(tmp_path):
     """A free block moved 20 mm among eleven others floated back once let go, and farther
     (20 mm from where it was put), without a word: a move of a free item anchors it there,
     the status line says so and how to undo it, and it is saved so."""
-    blocks = [BlockItem(id=f"b{i}", x=30 + 45 * (i % 4), y=40 + 50 * (i // 4), w=35, h=35,
-                        color="#336699") for i in range(12)]
-    path = tmp_path / "blocks.toml"
-    save_project(Project(title="Blocks", pages=[Page(id="p", size="A4", width_mm=210,
-                                                     height_mm=297, items=blocks)]), path)
+    path = twelve_blocks(tmp_path)
     async with editor(path) as (app, pilot):
         screen = screen_of(app)
         app.session.engine.settle()
@@ -611,11 +617,7 @@ async def test_u_typed_right_after_the_arrows_lets_the_moved_item_float(tmp_path
     """`u` typed within RELEASE_AFTER_S of the last arrow (keys sent in one burst, as over
     SSH) found the held item not yet anchored and said '"b5" is not anchored'; a moment later
     the release anchored it where it was put, against the user's `u`."""
-    blocks = [BlockItem(id=f"b{i}", x=30 + 45 * (i % 4), y=40 + 50 * (i // 4), w=35, h=35,
-                        color="#336699") for i in range(12)]
-    path = tmp_path / "blocks.toml"
-    save_project(Project(title="Blocks", pages=[Page(id="p", size="A4", width_mm=210,
-                                                     height_mm=297, items=blocks)]), path)
+    path = twelve_blocks(tmp_path)
     async with editor(path) as (app, pilot):
         screen = screen_of(app)
         app.session.engine.settle()
