@@ -23,7 +23,7 @@ from floatpage.model.document import (
 )
 from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
-from floatpage.model.page_names import named_by_place, rename_by_place
+from floatpage.model.page_names import named_by_place, place_name, rename_by_place
 from floatpage.model.page_sizes import page_dimensions
 from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
@@ -356,10 +356,10 @@ class EditSession:
 
     # -- ids and placement -------------------------------------------------------------------
 
-    def new_id(self, stem: str, first: int = 1) -> str:
-        """``stem-N`` with the least N from ``first`` that no item or page has."""
+    def new_id(self, stem: str) -> str:
+        """``stem-N`` with the least N that no item or page has."""
         taken = self.project.all_item_ids() | {page.id for page in self.project.pages}
-        for number in itertools.count(first):
+        for number in itertools.count(1):
             candidate = f"{stem}-{number}"
             if candidate not in taken:
                 return candidate
@@ -791,7 +791,8 @@ class EditSession:
         self.checkpoint("add page")
         current = self.page
         followers = named_by_place(self.project.pages)
-        page = Page(id=self.new_id("page", self.page_index + 2), size=current.size,
+        # named by its place; rename_by_place below settles the name (and renumbers the rest)
+        page = Page(id=place_name(self.page_index + 2), size=current.size,
                     orientation=current.orientation,
                     width_mm=current.width_mm, height_mm=current.height_mm)
         self.project.pages.insert(self.page_index + 1, page)
