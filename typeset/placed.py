@@ -178,8 +178,8 @@ class DocumentFits:
 
 
 def place_calendar(item: CalendarItem, label: str, warnings: list[str],
-                   fits: DocumentFits | None = None) -> PlacedCalendar:
-    layout = fits.calendar(item) if fits is not None else layout_calendar(item)
+                   fits: DocumentFits) -> PlacedCalendar:
+    layout = fits.calendar(item)
     if layout.missing:
         warnings.append(missing_glyph_warning(label, layout.groups[0].face, list(layout.missing)))
     return PlacedCalendar(item.id, label, rect_of(item), item.color, layout.groups, layout.rules,
@@ -229,7 +229,8 @@ def place_document(project: Project, fits: DocumentFits | None = None) -> Placed
     """The document as it will print; ``fits``, if given, are this project's own (DocumentFits)."""
     warnings: list[str] = []
     pages = []
-    roles = fits.roles if fits is not None else RoleFits.of(project)
+    fits = fits if fits is not None else DocumentFits.of(project)
+    roles = fits.roles
     for page in project.pages:
         placed_page = PlacedPage(page.id, page.width_mm, page.height_mm,
                                  background=place_background(project, page))
@@ -285,7 +286,8 @@ def place_document(project: Project, fits: DocumentFits | None = None) -> Placed
 def text_warnings(project: Project, fits: DocumentFits | None = None) -> list[str]:
     """Fit warnings for texts and calendars only (no picture files are read)."""
     warnings: list[str] = []
-    roles = fits.roles if fits is not None else RoleFits.of(project)
+    fits = fits if fits is not None else DocumentFits.of(project)
+    roles = fits.roles
     for page in project.pages:
         for item in page.items:
             if isinstance(item, TextItem):
