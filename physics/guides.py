@@ -27,7 +27,12 @@ fixed point; the hold is what lets that step align items the forces alone would 
 there.  A run that starts cold tests a saved layout (model.layout's probes), whose centres the
 save rounded to 0.01 mm: there a line holds what lies within ``ON_LINE_MM`` +
 ``SAVED_SLACK_MM`` of it, or a feature the snap left 0.048 mm from its line, 0.052 mm after
-the save, slid away under a push the hold would have taken, in every probe.
+the save, slid away under a push the hold would have taken, in every probe.  There the lines
+no longer pull: the pull's work is done while the page cools, and the snap's rest check
+(physics.rest_check) weighs a move by the pushes, not by a pull toward a line the snap chose
+to leave a feature off.  (A feature 4.3 mm off a line on an A3 page of 12 items still took a
+pull of 0.13 mm per step^2 there, on top of a push just within the rest limit: the probe ran
+230 steps, moved items 8.7 mm and asked for one more probe, twice the settle without guides.)
 
 Once the page has spread and cools onto its lines (fast_mode.run_fast), what the pull does for
 the page is bring features within a nudge (``ALIGNED_MM``, 0.5 mm) of their lines: the snap
@@ -221,7 +226,9 @@ class GuidePulls:
         if len(self.own) == 0:
             self.quiet += 1  # nothing in range: nothing for the pull to do
             return
-        share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT))
+        # cold, the lines hold and no longer pull (see the module doc): the distances are
+        # still measured, for the hold and the quiet count
+        share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT)) if heat >= HOLD_HEAT else 0.0
         apart = np.empty(len(self.own))
         # compiled (guide_pull_kernel.pull): distance = factor * partner + offset - own, then
         # acc[own] += PULL_EVERY * k * share * distance * max(1 - |distance| / reach, 0), the
