@@ -17,6 +17,7 @@
    move; benchmarks/snap_identity.py to main's snaps. */
 
 #include "snap_sweep_state.h" /* the Sweep, Moves, Span; snap_kernel_support.h */
+#include "snap_scoring_core.h" /* score_body: the scoring, called without Python */
 
 static void moves_clear(Moves *moves)
 {
@@ -60,30 +61,59 @@ static int swept(Sweep *self, int axis, double low, double high)
     return 0;
 }
 
-/* score_moves on ``table``: fills ``out``'s shifts, gain, flags; returns the span read */
-static int scored(Sweep *self, PyObject *table, PyObject *members, Moves *out, Span *span)
+/* score_moves on the table of kind ``bleed`` along ``axis`` for the body of ``rows``: fills
+   ``out``'s shifts, gain, flags; returns the span read.  The scoring of snap_scoring_core.h,
+   called on the cells and rows this Sweep read once (sweep_new), with the arguments
+   _Snapper.options hands score_moves. */
+static int scored(Sweep *self, int bleed, int axis, const int64_t *rows, Py_ssize_t n,
+                  Moves *out, Span *span)
 {
-    PyObject *args[5] = {table, members, self->ranges, self->candidates_object,
-                         self->tries == self->max_tries ? self->max_tries_object
-                                                        : self->every_move_object};
-    PyObject *result = PyObject_Vectorcall(self->score_moves, args, 5, NULL);
-    if (result == NULL)
-        return -1;
-    if (!PyTuple_Check(result) || PyTuple_GET_SIZE(result) != 6) {
-        Py_DECREF(result);
-        PyErr_SetString(PyExc_TypeError, "score_moves: a tuple of six");
+    if (!self->table_held[bleed][axis]) {
+        PyErr_SetString(PyExc_RuntimeError, "no table of this kind");
         return -1;
     }
-    out->shifts = Py_NewRef(PyTuple_GET_ITEM(result, 0));
-    out->gain = PyFloat_AsDouble(PyTuple_GET_ITEM(result, 1));
-    out->missing = PyObject_IsTrue(PyTuple_GET_ITEM(result, 2));
-    out->lined_up = PyObject_IsTrue(PyTuple_GET_ITEM(result, 3));
-    span->low = PyFloat_AsDouble(PyTuple_GET_ITEM(result, 4));
-    span->high = PyFloat_AsDouble(PyTuple_GET_ITEM(result, 5));
-    Py_DECREF(result);
-    if (PyErr_Occurred() || out->missing < 0 || out->lined_up < 0 || !PyTuple_Check(out->shifts))
-        return PyErr_Occurred() ? -1 : (PyErr_SetString(PyExc_TypeError, "shifts"), -1);
+    if (n == 0) {
+        PyErr_SetString(PyExc_ValueError, "ranges: scoring_ranges' array; members: some rows");
+        return -1;
+    }
+    Py_buffer *view = &self->table_views[bleed][axis];
+    Scored found;
+    if (score_body(view->buf, view->shape[0], rows, n, self->range_values, self->candidates,
+                   self->tries, &found) < 0)
+        return -1;
+    out->shifts = found.shifts;
+    out->gain = found.gain;
+    out->missing = found.missing;
+    out->lined_up = found.lined_up;
+    span->low = found.low;
+    span->high = found.high;
     return 0;
+}
+
+/* a line's rows, its groups' in its order (np.concatenate's), in room kept by the Sweep */
+static const int64_t *line_rows(Sweep *self, PyObject *roots, Py_ssize_t *n)
+{
+    Py_ssize_t total = 0, count = PyList_GET_SIZE(roots);
+    for (Py_ssize_t k = 0; k < count; k++)
+        total += self->member_sizes[PyLong_AsSsize_t(PyList_GET_ITEM(roots, k))];
+    if (total > self->line_room) {
+        int64_t *grown = PyMem_Realloc(self->line_room_rows, (total + 1) * sizeof(int64_t));
+        if (grown == NULL) {
+            PyErr_NoMemory();
+            return NULL;
+        }
+        self->line_room_rows = grown;
+        self->line_room = total;
+    }
+    Py_ssize_t at = 0;
+    for (Py_ssize_t k = 0; k < count; k++) {
+        Py_ssize_t root = PyLong_AsSsize_t(PyList_GET_ITEM(roots, k));
+        memcpy(self->line_room_rows + at, self->member_rows[root],
+               self->member_sizes[root] * sizeof(int64_t));
+        at += self->member_sizes[root];
+    }
+    *n = at;
+    return self->line_room_rows;
 }
 
 /* _Snapper.options([root], axis) */
@@ -105,13 +135,9 @@ static int options_alone(Sweep *self, Py_ssize_t root, int axis, Moves *out)
         out->lined_up = known->lined_up;
         return 0;
     }
-    PyObject *table = self->tables[self->bleeds[root] ? 1 : 0][axis];
     Span read;
-    if (table == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "no table of this kind");
-        return -1;
-    }
-    if (scored(self, table, out->members, out, &read) < 0)
+    if (scored(self, self->bleeds[root] ? 1 : 0, axis, self->member_rows[root],
+               self->member_sizes[root], out, &read) < 0)
         return -1;
     if (self->memo_on) {
         Py_XSETREF(known->shifts, Py_NewRef(out->shifts));
@@ -236,13 +262,10 @@ static int options_line(Sweep *self, PyObject *roots, PyObject *key, int axis, M
     out->members = members_of(self, roots);
     if (out->members == NULL)
         return -1;
-    PyObject *table = self->tables[all_bleed][axis];
     Span read;
-    if (table == NULL) {
-        PyErr_SetString(PyExc_RuntimeError, "no table of this kind");
-        return -1;
-    }
-    if (scored(self, table, out->members, out, &read) < 0)
+    Py_ssize_t row_count;
+    const int64_t *rows = line_rows(self, roots, &row_count);
+    if (rows == NULL || scored(self, all_bleed, axis, rows, row_count, out, &read) < 0)
         return -1;
     if (self->memo_on) {
         PyObject *kept = Py_BuildValue("[ndd OOO d OO]", self->swept_count[axis], read.low,
@@ -615,19 +638,27 @@ static void sweep_dealloc(Sweep *self)
         PyMem_Free(self->swept_high[axis]);
         Py_CLEAR(self->lines_known[axis]);
         Py_CLEAR(self->stuck[axis]);
-        for (int bleed = 0; bleed < 2; bleed++)
+        for (int bleed = 0; bleed < 2; bleed++) {
+            if (self->table_held[bleed][axis])
+                PyBuffer_Release(&self->table_views[bleed][axis]);
+            self->table_held[bleed][axis] = 0;
             Py_CLEAR(self->tables[bleed][axis]);
+        }
     }
     PyMem_Free(self->too_large);
     PyMem_Free(self->bleeds);
+    if (self->member_rows != NULL)
+        for (Py_ssize_t row = 0; row < self->count; row++)
+            PyMem_Free(self->member_rows[row]);
+    PyMem_Free(self->member_rows);
+    PyMem_Free(self->member_sizes);
+    PyMem_Free(self->line_room_rows);
     Py_CLEAR(self->members);
     Py_CLEAR(self->root_lists);
     Py_CLEAR(self->item_tables);
     Py_CLEAR(self->roots);
     Py_CLEAR(self->mover_mask);
-    Py_CLEAR(self->ranges);
     Py_CLEAR(self->aligned);
-    Py_CLEAR(self->score_moves);
     Py_CLEAR(self->find_line);
     Py_CLEAR(self->fitting_shifts);
     Py_CLEAR(self->keeps_rest);
@@ -646,9 +677,6 @@ static void sweep_dealloc(Sweep *self)
     PyMem_Free(self->before_known);
     PyMem_Free(self->before_held);
     PyMem_Free(self->before_push);
-    Py_CLEAR(self->candidates_object);
-    Py_CLEAR(self->max_tries_object);
-    Py_CLEAR(self->every_move_object);
     Py_CLEAR(self->line_members);
     Py_CLEAR(self->moved_from);
     Py_CLEAR(self->centres);
@@ -675,12 +703,12 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
 {
     Py_ssize_t count, candidates, max_tries, every_move;
     PyObject *members, *too_large, *bleeds, *plain, *bleeding, *item_tables, *roots, *mover_mask,
-        *ranges, *aligned, *score, *find, *fits, *keeps_rest, *apply, *concatenate, *fit_args;
+        *ranges, *aligned, *find, *fits, *keeps_rest, *apply, *concatenate, *fit_args;
     double nudge;
-    if (!PyArg_ParseTuple(args, "nO!SSOOO!OOOO!OOOOOOO!nnnd:Sweep", &count, &PyList_Type,
+    if (!PyArg_ParseTuple(args, "nO!SSOOO!OOOO!OOOOOO!nnnd:Sweep", &count, &PyList_Type,
                           &members, &too_large, &bleeds, &plain, &bleeding, &PyTuple_Type,
                           &item_tables, &roots, &mover_mask, &ranges, &PyFloat_Type, &aligned,
-                          &score, &find, &fits, &keeps_rest, &apply, &concatenate,
+                          &find, &fits, &keeps_rest, &apply, &concatenate,
                           &PyTuple_Type, &fit_args, &candidates, &max_tries, &every_move,
                           &nudge))
         return NULL;
@@ -698,9 +726,7 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     self->item_tables = Py_NewRef(item_tables);
     self->roots = Py_NewRef(roots);
     self->mover_mask = Py_NewRef(mover_mask);
-    self->ranges = Py_NewRef(ranges);
     self->aligned = Py_NewRef(aligned);
-    self->score_moves = Py_NewRef(score);
     self->find_line = Py_NewRef(find);
     self->fitting_shifts = Py_NewRef(fits);
     self->keeps_rest = Py_NewRef(keeps_rest);
@@ -721,15 +747,61 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     self->every_move = every_move;
     self->nudge = nudge;
     self->memo_on = 1;
-    self->candidates_object = PyLong_FromSsize_t(candidates);
-    self->max_tries_object = PyLong_FromSsize_t(max_tries);
-    self->every_move_object = PyLong_FromSsize_t(every_move);
     self->line_members = PyDict_New();
-    if (self->candidates_object == NULL || self->max_tries_object == NULL
-            || self->every_move_object == NULL || self->line_members == NULL)
+    if (self->line_members == NULL)
         goto failed;
     if (take_tables(plain, self->tables[0]) < 0 || take_tables(bleeding, self->tables[1]) < 0)
         goto failed;
+    /* what the scoring reads, read once: every table's cells (held until the Sweep goes; the
+       moves add to them in place), the ranges, each mover's rows */
+    for (int bleed = 0; bleed < 2; bleed++)
+        for (int axis = 0; axis < 2; axis++) {
+            if (self->tables[bleed][axis] == NULL)
+                continue;
+            if (read_doubles(self->tables[bleed][axis], &self->table_views[bleed][axis], 2,
+                             "table") < 0)
+                goto failed;
+            self->table_held[bleed][axis] = 1;
+            if (self->table_views[bleed][axis].shape[1] != COLUMNS
+                    || self->table_views[bleed][axis].shape[0] < count) {
+                PyErr_SetString(PyExc_ValueError, "table: the snap's 15 columns, a row per row");
+                goto failed;
+            }
+        }
+    {
+        Py_buffer range_view;
+        if (read_doubles(ranges, &range_view, 1, "ranges") < 0)
+            goto failed;
+        int fits_ranges = range_view.shape[0] == RANGES;
+        if (fits_ranges)
+            memcpy(self->range_values, range_view.buf, RANGES * sizeof(double));
+        PyBuffer_Release(&range_view);
+        if (!fits_ranges) {
+            PyErr_SetString(PyExc_ValueError, "ranges: scoring_ranges' array");
+            goto failed;
+        }
+    }
+    self->member_rows = PyMem_Calloc(count + 1, sizeof(int64_t *));
+    self->member_sizes = PyMem_Calloc(count + 1, sizeof(Py_ssize_t));
+    if (self->member_rows == NULL || self->member_sizes == NULL)
+        goto no_memory;
+    for (Py_ssize_t row = 0; row < count; row++) {
+        PyObject *group = PyList_GET_ITEM(members, row);
+        if (group == Py_None)
+            continue;
+        Py_buffer rows_view;
+        if (read_rows(group, &rows_view, count) < 0)
+            goto failed;
+        Py_ssize_t size = rows_view.shape[0];
+        self->member_rows[row] = PyMem_Malloc((size + 1) * sizeof(int64_t));
+        if (self->member_rows[row] == NULL) {
+            PyBuffer_Release(&rows_view);
+            goto no_memory;
+        }
+        memcpy(self->member_rows[row], rows_view.buf, size * sizeof(int64_t));
+        self->member_sizes[row] = size;
+        PyBuffer_Release(&rows_view);
+    }
     self->too_large = PyMem_Malloc(2 * count + 1);
     self->bleeds = PyMem_Malloc(count + 1);
     self->root_lists = PyList_New(count);
@@ -820,7 +892,7 @@ static PyTypeObject SweepType = {
     .tp_dealloc = (destructor)sweep_dealloc,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc = "Sweep(count, members, too_large, bleeds, tables, bleed_tables, item_tables, "
-              "roots, mover_mask, ranges, aligned, score_moves, line_of, fitting_shifts, "
+              "roots, mover_mask, ranges, aligned, line_of, fitting_shifts, "
               "keeps_rest, apply, concatenate, fit_args, candidates, max_tries, every_move, "
               "nudge): one page's snap sweeps with their memo (physics.snapping._Snapper."
               "compiled builds it).  Holds no reference back to a Sweep: apply and keeps_rest "

@@ -31,12 +31,11 @@ typedef struct {
     char *bleeds;            /* per row */
     PyObject *tables[2][2];  /* [bleed][axis], NULL where no mover needs that kind */
     PyObject *item_tables;   /* (x, y): what reads the rows alone */
-    PyObject *roots, *mover_mask, *ranges, *aligned;
-    PyObject *score_moves, *find_line, *fitting_shifts, *keeps_rest, *concatenate;
+    PyObject *roots, *mover_mask, *aligned;
+    PyObject *find_line, *fitting_shifts, *keeps_rest, *concatenate;
     PyObject *moved_from, *centres, *rest_before; /* what a move changes besides the tables */
     PyObject *fit_args;      /* centres, halves, lowest, highest, item tables, fit limits */
     Py_ssize_t candidates, max_tries, every_move, tries;
-    PyObject *candidates_object, *max_tries_object, *every_move_object; /* the same, made once */
     PyObject *line_members; /* dict: a line's roots (in its order) -> their rows, made once */
     double nudge;
     int memo_on;             /* 0 while try_lesser scores afresh (a throwaway memo) */
@@ -58,6 +57,16 @@ typedef struct {
     PyObject *root_list, *group_rows, *pairs_of;
     char *before_known, *before_held; /* per group: RestCheck.as_it_is's, until a move */
     double *before_push;
+    /* what the scoring (snap_scoring_core.h, called directly) reads, read once in sweep_new:
+       each table's cells (held until the Sweep goes), scoring_ranges' 19 doubles, each mover's
+       rows, and room for a line's rows */
+    Py_buffer table_views[2][2];
+    int table_held[2][2];
+    double range_values[19];
+    int64_t **member_rows;
+    Py_ssize_t *member_sizes;
+    int64_t *line_room_rows;
+    Py_ssize_t line_room;
 } Sweep;
 
 #endif
