@@ -229,9 +229,12 @@ static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
     merged(shifts, half, shifts + half, n - half, spare);
     Py_ssize_t kept = 1;
     shifts[0] = spare[0];
-    for (Py_ssize_t i = 1; i < n; i++) { /* written always, kept if new (no branch) */
+    /* written always, kept if new (no branch); spare is sorted, so the last kept equals
+       the value before (==: a -0 after a 0 is no new value) and the test need not wait for
+       the last store */
+    for (Py_ssize_t i = 1; i < n; i++) {
         shifts[kept] = spare[i];
-        kept += spare[i] != shifts[kept - 1];
+        kept += spare[i] != spare[i - 1];
     }
     made.count = kept;
     made.missing = low[2] > high[2] || low[3] > high[3];
@@ -327,7 +330,10 @@ static PyObject *best_first(const double *shifts, const long *scores, Py_ssize_t
         better += scores[k] < now;
     if (better == 0)
         return PyTuple_New(0);
-    Move *moves = PyMem_Malloc(better * sizeof(Move));
+    /* a handful as a rule (at most the candidates scored, 64): on the stack, sorted by
+       insertion; the order is total (``order`` breaks every tie), so any sort gives this one */
+    Move kept_here[64];
+    Move *moves = better <= 64 ? kept_here : PyMem_Malloc(better * sizeof(Move));
     if (moves == NULL)
         return PyErr_NoMemory();
     Py_ssize_t n = 0;
@@ -338,7 +344,16 @@ static PyObject *best_first(const double *shifts, const long *scores, Py_ssize_t
             moves[n].order = n;
             n++;
         }
-    qsort(moves, n, sizeof(Move), better_move);
+    if (n <= 64)
+        for (Py_ssize_t k = 1; k < n; k++) {
+            Move move = moves[k];
+            Py_ssize_t j = k;
+            for (; j > 0 && better_move(&moves[j - 1], &move) > 0; j--)
+                moves[j] = moves[j - 1];
+            moves[j] = move;
+        }
+    else
+        qsort(moves, n, sizeof(Move), better_move);
     *best = moves[0].score;
     Py_ssize_t kept = 0; /* the chosen written over the sorted moves, never ahead of them */
     for (Py_ssize_t k = 0; k < n && kept < tries; k++)
@@ -352,7 +367,8 @@ static PyObject *best_first(const double *shifts, const long *scores, Py_ssize_t
         else
             PyTuple_SET_ITEM(found, k, value);
     }
-    PyMem_Free(moves);
+    if (moves != kept_here)
+        PyMem_Free(moves);
     return found;
 }
 
