@@ -611,6 +611,108 @@ failed:
     return NULL;
 }
 
+/* _Snapper.near: the movers (ascending) with a feature within ``window`` of a moved group's
+   features, before its last move (moved_from) or now, on ``axis``; a row touched marks its
+   group.  The same comparisons as the NumPy: a row's low edge below a spot's highest feature
+   plus the window, its high edge above the spot's lowest less it. */
+static PyObject *sweep_near(Sweep *self, PyObject *args)
+{
+    PyObject *moved;
+    int axis;
+    double window;
+    if (!PyArg_ParseTuple(args, "O!id", &PyList_Type, &moved, &axis, &window))
+        return NULL;
+    if (axis != 0 && axis != 1) {
+        PyErr_SetString(PyExc_ValueError, "axis: 0 or 1");
+        return NULL;
+    }
+    Py_ssize_t spots = 2 * PyList_GET_SIZE(moved);
+    if (spots == 0)
+        return PyList_New(0);
+    Py_buffer table_view, roots_view;
+    if (read_doubles(PyTuple_GET_ITEM(self->item_tables, axis), &table_view, 2, "item table") < 0)
+        return NULL;
+    if (read_rows(self->roots, &roots_view, self->count) < 0) {
+        PyBuffer_Release(&table_view);
+        return NULL;
+    }
+    PyObject *result = NULL;
+    double *lows = PyMem_Malloc(spots * sizeof(double)), *highs = PyMem_Malloc(spots * sizeof(double));
+    char *touched = PyMem_Calloc(self->count + 1, 1);
+    if (lows == NULL || highs == NULL || touched == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (roots_view.shape[0] != self->count || table_view.shape[1] != COLUMNS
+            || table_view.shape[0] < self->count) {
+        PyErr_SetString(PyExc_ValueError, "roots: one per row; the item table: a row per row");
+        goto done;
+    }
+    const double *cells = table_view.buf;
+    for (Py_ssize_t k = 0; k < spots / 2; k++) {
+        Py_ssize_t root = PyLong_AsSsize_t(PyList_GET_ITEM(moved, k));
+        if (root == -1 && PyErr_Occurred())
+            goto done;
+        if (root < 0 || root >= self->count || self->member_rows[root] == NULL) {
+            PyErr_SetString(PyExc_IndexError, "moved: movers of the page");
+            goto done;
+        }
+        PyObject *before = PyDict_GetItemWithError(self->moved_from, PyList_GET_ITEM(moved, k));
+        if (before == NULL) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_KeyError, "moved: a group that has not moved");
+            goto done;
+        }
+        if (!PyList_Check(before) || PyList_GET_SIZE(before) == 0) {
+            PyErr_SetString(PyExc_TypeError, "moved_from: a list of floats");
+            goto done;
+        }
+        /* min(spot) - window and max(spot) + window, the spot before, then the one now */
+        double low = INFINITY, high = -INFINITY;
+        for (Py_ssize_t f = 0; f < PyList_GET_SIZE(before); f++) {
+            double at = PyFloat_AsDouble(PyList_GET_ITEM(before, f));
+            if (at == -1.0 && PyErr_Occurred())
+                goto done;
+            if (at < low) low = at;
+            if (at > high) high = at;
+        }
+        lows[2 * k] = low - window;
+        highs[2 * k] = high + window;
+        low = INFINITY;
+        high = -INFINITY;
+        for (Py_ssize_t m = 0; m < self->member_sizes[root]; m++)
+            for (int feature = LOW_EDGE; feature <= HIGH_EDGE; feature++) {
+                double at = cells[self->member_rows[root][m] * COLUMNS + feature];
+                if (at < low) low = at;
+                if (at > high) high = at;
+            }
+        lows[2 * k + 1] = low - window;
+        highs[2 * k + 1] = high + window;
+    }
+    for (Py_ssize_t row = 0; row < self->count; row++) {
+        double low_edge = cells[row * COLUMNS + LOW_EDGE], high_edge = cells[row * COLUMNS + HIGH_EDGE];
+        for (Py_ssize_t k = 0; k < spots && !touched[row]; k++)
+            touched[row] = low_edge < highs[k] && high_edge > lows[k];
+    }
+    const int64_t *roots = roots_view.buf;
+    result = PyList_New(0);
+    for (Py_ssize_t row = 0; result != NULL && row < self->count; row++) {
+        if (self->member_rows[row] == NULL || !(touched[row] || touched[roots[row]]))
+            continue;
+        PyObject *value = PyLong_FromSsize_t(row);
+        if (value == NULL || PyList_Append(result, value) < 0)
+            Py_CLEAR(result);
+        Py_XDECREF(value);
+    }
+done:
+    PyMem_Free(lows);
+    PyMem_Free(highs);
+    PyMem_Free(touched);
+    PyBuffer_Release(&roots_view);
+    PyBuffer_Release(&table_view);
+    return result;
+}
+
 static PyObject *sweep_improve(Sweep *self, PyObject *args)
 {
     return over_rows(self, args, improve);
@@ -882,6 +984,8 @@ static PyMethodDef sweep_methods[] = {
      "every move made, in order"},
     {"try_lesser", (PyCFunction)sweep_lesser, METH_VARARGS,
      "try_lesser(rows, axis) -> roots moved: _Snapper.try_lesser of each row in turn"},
+    {"near", (PyCFunction)sweep_near, METH_VARARGS,
+     "near(moved, axis, window) -> movers: _Snapper.near of the groups moved, as a list"},
     {NULL, NULL, 0, NULL},
 };
 

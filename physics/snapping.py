@@ -116,12 +116,18 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
     if compiled:  # the sweeps and the memo in C (snap_sweep_kernel): the same moves
         sweep = snapper.compiled()
         improve, try_lesser = sweep.improve, sweep.try_lesser
+
+        def near(moved: list[int], axis: int) -> list[int]:
+            return sweep.near(moved, axis, snapper.window)
     else:  # _Snapper's own Python, the definition the compiled sweeps are held to
         def improve(rows: list[int], axis: int) -> list[int]:
             return [root for row in rows for root in snapper.improve(row, axis)]
 
         def try_lesser(rows: list[int], axis: int) -> list[int]:
             return [root for row in rows for root in snapper.try_lesser(row, axis)]
+
+        def near(moved: list[int], axis: int) -> list[int]:
+            return snapper.near(moved, axis).tolist()
     moves = 0
     movers = snapper.movers.tolist()
     todo = [movers, movers]
@@ -129,14 +135,14 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
         moved_any = False
         for axis in (0, 1):
             moved = improve(todo[axis], axis)
-            todo[axis] = snapper.near(moved, axis).tolist()
+            todo[axis] = near(moved, axis)
             moves += len(moved)
             moved_any = moved_any or bool(moved)
         if not moved_any:
             lesser = [try_lesser(movers, axis) for axis in (0, 1)]
             if not lesser[0] and not lesser[1]:
                 break
-            todo = [snapper.near(lesser[axis], axis).tolist() for axis in (0, 1)]
+            todo = [near(lesser[axis], axis) for axis in (0, 1)]
             moves += len(lesser[0]) + len(lesser[1])
     return moves
 

@@ -88,3 +88,72 @@ def test_a_sweep_refuses_rows_that_are_not_movers():
         pass
     else:
         raise AssertionError("a row outside the page was swept")
+
+
+def engines_with_moves() -> list[Engine]:
+    """Pages whose first sweeps move many groups: two of followers (groups of several rows),
+    a 45-item page, and the same with its centres on a 0.25 mm grid (features exactly a
+    window apart)."""
+    from anchored_pages import random_project
+    from floatpage.model.layout import engine_for_page
+
+    engines = []
+    for seed in (27100, 27101):
+        project = random_project(seed, "follow")
+        engine = engine_for_page(project.pages[0], project.physics)
+        engine.reheat()
+        engine.settle(finalize=False)
+        engines.append(engine)
+    for grid in (False, True):
+        engine = Engine(297.0, 210.0, Params())
+        load(engine, mixed_scene(45, 0.45, seed=2003, page_w_mm=297.0, page_h_mm=210.0))
+        engine.settle(finalize=False)
+        if grid:
+            engine.bodies.centres[:] = np.round(engine.bodies.centres * 4) / 4
+        engines.append(engine)
+    return engines
+
+
+def test_the_compiled_near_finds_the_python_near():
+    """Sweep.near (C) against _Snapper.near (NumPy, its definition) on the same snapper after
+    the compiled sweeps' moves: every moved group alone, all of them, and random lists of them
+    with repeats (a group moved twice in a sweep), on both axes, in several windows (the
+    snap's, none, and a wide one)."""
+    rng = np.random.default_rng(16)
+    asked = 0
+    for engine in engines_with_moves():
+        page = (engine.page_w_mm, engine.page_h_mm)
+        bodies = copy.deepcopy(engine.bodies)
+        clearance, margin, rest = snap_limits(bodies, *page, engine.params)
+        snapper = _Snapper(bodies, page, clearance, margin, rest)
+        sweep = snapper.compiled()
+        moved = [sweep.improve(snapper.movers.tolist(), axis) for axis in (0, 1)]
+        assert moved[0] and moved[1]
+        snap_window = snapper.window
+        for window in (snap_window, 0.0, 40.0):
+            snapper.window = window
+            for axis in (0, 1):
+                lists = [[root] for root in moved[axis]] + [moved[axis], []]
+                lists += [rng.choice(moved[axis], size=rng.integers(1, 6)).tolist()
+                          for _ in range(10)]
+                for roots in lists:
+                    assert sweep.near(roots, axis, window) == snapper.near(roots, axis).tolist()
+                    asked += 1
+        snapper.window = snap_window
+    assert asked > 200
+
+
+def test_the_compiled_near_refuses_groups_that_never_moved():
+    engine = Engine(210.0, 297.0, Params())
+    load(engine, mixed_scene(6, 0.3, seed=5))
+    bodies = engine.bodies
+    clearance, margin, rest = snap_limits(bodies, 210.0, 297.0, engine.params)
+    snapper = _Snapper(bodies, (210.0, 297.0), clearance, margin, rest)
+    sweep = snapper.compiled()
+    for bad, error in (([snapper.movers[0].item()], KeyError), ([bodies.count + 3], IndexError)):
+        try:
+            sweep.near(bad, 0, snapper.window)
+        except error:
+            pass
+        else:
+            raise AssertionError(f"near of {bad} answered")
