@@ -4,11 +4,9 @@
    same subtractions and comparisons of the same floats (tests/physics/test_snap_fits.py holds
    it to the plain definition). */
 
-#include "snap_kernel_support.h"
+#include "snap_fit_core.h" /* fit_body, the test itself; snap_kernel_support.h */
 
 /* ---- whether a move fits (physics.snapping._Snapper.fits) ---- */
-
-enum { CLEARANCE, FARTHEST, TOLERANCE, FIT_LIMITS };
 
 PyDoc_STRVAR(fitting_shifts_doc,
 "fitting_shifts(members, axis, shifts, centres, halves, lowest, highest, tables, limits)\n"
@@ -42,11 +40,9 @@ static PyObject *fitting_shifts(PyObject *module, PyObject *const *args, Py_ssiz
         PyErr_SetString(PyExc_ValueError, "axis: 0 or 1");
         return NULL;
     }
-    int across_axis = 1 - axis;
     Py_buffer views[8];
     int held = 0;
     PyObject *result = NULL;
-    double *work = NULL;
     if (read_doubles(args[3], &views[0], 2, "centres") < 0)
         goto done;
     held++;
@@ -85,120 +81,10 @@ static PyObject *fitting_shifts(PyObject *module, PyObject *const *args, Py_ssiz
     }
     const double *centres = views[0].buf, *halves = views[2].buf;
     const double *lowest = views[3].buf, *highest = views[4].buf, *limits = views[7].buf;
-    const double *along_table = views[5 + axis].buf, *across_table = views[5 + across_axis].buf;
-    const int64_t *members = views[1].buf;
-    Py_ssize_t member_count = views[1].shape[0], shift_count = PyTuple_GET_SIZE(args[2]);
-    double clearance = limits[CLEARANCE], farthest = limits[FARTHEST];
-    double tolerance = limits[TOLERANCE];
-    /* work: the shifts inside the margins, then per tested pair (neighbour, member) the
-       neighbour's position, the member's, their reach, the gap across and the gap needed */
-    work = PyMem_Malloc((shift_count + 5 * count * member_count + 1) * sizeof(double));
-    if (work == NULL) {
-        PyErr_NoMemory();
-        goto done;
-    }
-    double *inside = work, *tests = work + shift_count;
-    Py_ssize_t inside_count = 0;
-    for (Py_ssize_t k = 0; k < shift_count; k++) {
-        double shift = PyFloat_AsDouble(PyTuple_GET_ITEM(args[2], k));
-        if (shift == -1.0 && PyErr_Occurred())
-            goto done;
-        int within = 1;
-        for (Py_ssize_t m = 0; m < member_count && within; m++) {
-            Py_ssize_t row = members[m];
-            double at = centres[2 * row + axis];
-            double low = lowest[2 * row + axis], high = highest[2 * row + axis];
-            low = at < low ? at : low;    /* min(lowest, at) */
-            high = at > high ? at : high; /* max(highest, at) */
-            double moved = at + shift;
-            within = low - tolerance <= moved && moved <= high + tolerance;
-        }
-        if (within)
-            inside[inside_count++] = shift;
-    }
-    Py_ssize_t tested = 0;
-    if (inside_count) {
-        /* the neighbours: the other active rows within the clearance (and a millimetre)
-           across, and within it and the longest move along (an inactive row's extent is out
-           of every range) */
-        double spare = clearance + 1.0, reach = spare + farthest;
-        const double *across_row = across_table + members[0] * COLUMNS;
-        const double *along_row = along_table + members[0] * COLUMNS;
-        double low_across = across_row[LOW_EDGE], high_across = across_row[HIGH_EDGE];
-        double low = along_row[LOW_EDGE], high = along_row[HIGH_EDGE];
-        for (Py_ssize_t m = 1; m < member_count; m++) {
-            across_row = across_table + members[m] * COLUMNS;
-            along_row = along_table + members[m] * COLUMNS;
-            if (across_row[LOW_EDGE] < low_across) low_across = across_row[LOW_EDGE];
-            if (across_row[HIGH_EDGE] > high_across) high_across = across_row[HIGH_EDGE];
-            if (along_row[LOW_EDGE] < low) low = along_row[LOW_EDGE];
-            if (along_row[HIGH_EDGE] > high) high = along_row[HIGH_EDGE];
-        }
-        double across_high = high_across + spare, across_low = low_across - spare;
-        double along_high = high + reach, along_low = low - reach;
-        if (make_room(0, count) < 0) {
-            PyErr_NoMemory();
-            goto done;
-        }
-        for (Py_ssize_t m = 0; m < member_count; m++)
-            is_member[members[m]] = 1;
-        for (Py_ssize_t other = 0; other < count; other++) {
-            across_row = across_table + other * COLUMNS;
-            along_row = along_table + other * COLUMNS;
-            if (!(across_row[LOWS] < across_high && across_row[HIGHS] > across_low
-                  && along_row[LOWS] < along_high && along_row[HIGHS] > along_low)
-                    || is_member[other])
-                continue;
-            double there = centres[2 * other + axis];
-            double there_across = centres[2 * other + across_axis];
-            int close = 0;
-            Py_ssize_t first = tested;
-            for (Py_ssize_t m = 0; m < member_count; m++) {
-                Py_ssize_t row = members[m];
-                double at = centres[2 * row + axis];
-                double across = fabs(there_across - centres[2 * row + across_axis])
-                                - halves[2 * other + across_axis]
-                                - halves[2 * row + across_axis];
-                double pair_reach = halves[2 * other + axis] + halves[2 * row + axis];
-                double now = fabs(there - at) - pair_reach;
-                close |= across < clearance && now < clearance + farthest;
-                double needed = across > now ? across : now;      /* max(now, across) */
-                needed = clearance < needed ? clearance : needed; /* min(., clearance) */
-                needed -= tolerance;
-                if (!(across >= needed)) { /* else every shift passes: max(gap, across) */
-                    double *test = tests + 5 * tested++;
-                    test[0] = there;
-                    test[1] = at;
-                    test[2] = pair_reach;
-                    test[3] = across;
-                    test[4] = needed;
-                }
-            }
-            if (!close)
-                tested = first; /* a neighbour close to no member: none of its pairs tested */
-        }
-        for (Py_ssize_t m = 0; m < member_count; m++)
-            is_member[members[m]] = 0;
-    }
-    result = PyList_New(0);
-    for (Py_ssize_t k = 0; result != NULL && k < inside_count; k++) {
-        double shift = inside[k];
-        int fits = 1;
-        for (Py_ssize_t t = 0; t < tested && fits; t++) {
-            const double *test = tests + 5 * t;
-            double gap = fabs(test[0] - (test[1] + shift)) - test[2];
-            gap = test[3] > gap ? test[3] : gap; /* max(gap along, gap across) */
-            fits = gap >= test[4];
-        }
-        if (fits) {
-            PyObject *value = PyFloat_FromDouble(shift);
-            if (value == NULL || PyList_Append(result, value) < 0)
-                Py_CLEAR(result);
-            Py_XDECREF(value);
-        }
-    }
+    const double *along_table = views[5 + axis].buf, *across_table = views[5 + 1 - axis].buf;
+    result = fit_body(centres, count, views[1].buf, views[1].shape[0], axis, args[2], halves,
+                      lowest, highest, along_table, across_table, limits);
 done:
-    PyMem_Free(work);
     for (int k = 0; k < held; k++)
         PyBuffer_Release(&views[k]);
     return result;

@@ -18,6 +18,7 @@
 
 #include "snap_sweep_state.h" /* the Sweep, Moves, Span; snap_kernel_support.h */
 #include "snap_scoring_core.h" /* score_body: the scoring, called without Python */
+#include "snap_fit_core.h"     /* fit_body: the fit test, the same */
 
 static void moves_clear(Moves *moves)
 {
@@ -393,11 +394,20 @@ static int attempt(Sweep *self, Moves *moves, PyObject *shifts, int axis)
 {
     if (PyTuple_GET_SIZE(shifts) == 0)
         return 0;
-    PyObject *fitting = PyObject_CallFunction(
-        self->fitting_shifts, "OiOOOOOOO", moves->members, axis, shifts,
-        PyTuple_GET_ITEM(self->fit_args, 0), PyTuple_GET_ITEM(self->fit_args, 1),
-        PyTuple_GET_ITEM(self->fit_args, 2), PyTuple_GET_ITEM(self->fit_args, 3),
-        PyTuple_GET_ITEM(self->fit_args, 4), PyTuple_GET_ITEM(self->fit_args, 5));
+    /* fitting_shifts(members, axis, shifts, *fit_args), on the arrays read once (sweep_new) */
+    Py_ssize_t row_count;
+    const int64_t *body_rows = line_rows(self, moves->roots, &row_count);
+    if (body_rows == NULL)
+        return -1;
+    if (row_count == 0) {
+        PyErr_SetString(PyExc_ValueError, "limits: clearance, farthest, tolerance; members: some");
+        return -1;
+    }
+    PyObject *fitting = fit_body(
+        self->fit_views[FIT_CENTRES].buf, self->count, body_rows, row_count, axis, shifts,
+        self->fit_views[FIT_HALVES].buf, self->fit_views[FIT_LOWEST].buf,
+        self->fit_views[FIT_HIGHEST].buf, self->fit_views[FIT_TABLE_X + axis].buf,
+        self->fit_views[FIT_TABLE_X + 1 - axis].buf, self->fit_views[FIT_LIMIT_VALUES].buf);
     if (fitting == NULL)
         return -1;
     if (!PyList_Check(fitting)) {
@@ -755,6 +765,9 @@ static void sweep_dealloc(Sweep *self)
     PyMem_Free(self->member_rows);
     PyMem_Free(self->member_sizes);
     PyMem_Free(self->line_room_rows);
+    for (int k = 0; k < self->fit_held; k++)
+        PyBuffer_Release(&self->fit_views[k]);
+    self->fit_held = 0;
     Py_CLEAR(self->members);
     Py_CLEAR(self->root_lists);
     Py_CLEAR(self->item_tables);
@@ -762,7 +775,6 @@ static void sweep_dealloc(Sweep *self)
     Py_CLEAR(self->mover_mask);
     Py_CLEAR(self->aligned);
     Py_CLEAR(self->find_line);
-    Py_CLEAR(self->fitting_shifts);
     Py_CLEAR(self->keeps_rest);
     Py_CLEAR(self->reached_by);
     Py_CLEAR(self->rest_net);
@@ -805,12 +817,12 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
 {
     Py_ssize_t count, candidates, max_tries, every_move;
     PyObject *members, *too_large, *bleeds, *plain, *bleeding, *item_tables, *roots, *mover_mask,
-        *ranges, *aligned, *find, *fits, *keeps_rest, *apply, *concatenate, *fit_args;
+        *ranges, *aligned, *find, *keeps_rest, *apply, *concatenate, *fit_args;
     double nudge;
-    if (!PyArg_ParseTuple(args, "nO!SSOOO!OOOO!OOOOOO!nnnd:Sweep", &count, &PyList_Type,
+    if (!PyArg_ParseTuple(args, "nO!SSOOO!OOOO!OOOOO!nnnd:Sweep", &count, &PyList_Type,
                           &members, &too_large, &bleeds, &plain, &bleeding, &PyTuple_Type,
                           &item_tables, &roots, &mover_mask, &ranges, &PyFloat_Type, &aligned,
-                          &find, &fits, &keeps_rest, &apply, &concatenate,
+                          &find, &keeps_rest, &apply, &concatenate,
                           &PyTuple_Type, &fit_args, &candidates, &max_tries, &every_move,
                           &nudge))
         return NULL;
@@ -830,7 +842,6 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     self->mover_mask = Py_NewRef(mover_mask);
     self->aligned = Py_NewRef(aligned);
     self->find_line = Py_NewRef(find);
-    self->fitting_shifts = Py_NewRef(fits);
     self->keeps_rest = Py_NewRef(keeps_rest);
     if (!PyTuple_Check(apply) || PyTuple_GET_SIZE(apply) != 3
             || !PyDict_Check(PyTuple_GET_ITEM(apply, 0))
@@ -887,6 +898,36 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     self->member_sizes = PyMem_Calloc(count + 1, sizeof(Py_ssize_t));
     if (self->member_rows == NULL || self->member_sizes == NULL)
         goto no_memory;
+    /* what the fit test reads, the same way: the centres, halves, margins (a pair per row),
+       the item tables of both axes, the fit limits (moves change the centres and tables in
+       place, never the arrays) */
+    {
+        PyObject *item_pair = PyTuple_GET_ITEM(fit_args, 4);
+        if (!PyTuple_Check(item_pair) || PyTuple_GET_SIZE(item_pair) != 2) {
+            PyErr_SetString(PyExc_TypeError, "fit_args: the item tables as (x, y)");
+            goto failed;
+        }
+        PyObject *arrays[FIT_VIEWS] = {
+            PyTuple_GET_ITEM(fit_args, 0), PyTuple_GET_ITEM(fit_args, 1),
+            PyTuple_GET_ITEM(fit_args, 2), PyTuple_GET_ITEM(fit_args, 3),
+            PyTuple_GET_ITEM(item_pair, 0), PyTuple_GET_ITEM(item_pair, 1),
+            PyTuple_GET_ITEM(fit_args, 5)};
+        for (int k = 0; k < FIT_VIEWS; k++) {
+            if (read_doubles(arrays[k], &self->fit_views[k], k == FIT_LIMIT_VALUES ? 1 : 2,
+                             "fit_args") < 0)
+                goto failed;
+            self->fit_held = k + 1;
+            Py_buffer *view = &self->fit_views[k];
+            int fits = k == FIT_LIMIT_VALUES ? view->shape[0] == FIT_LIMITS
+                : k >= FIT_TABLE_X ? view->shape[0] >= count && view->shape[1] == COLUMNS
+                                   : view->shape[0] == count && view->shape[1] == 2;
+            if (!fits) {
+                PyErr_SetString(PyExc_ValueError, "fit_args: (rows, 2) centres, halves and "
+                                "margins, the snap's tables, three limits");
+                goto failed;
+            }
+        }
+    }
     for (Py_ssize_t row = 0; row < count; row++) {
         PyObject *group = PyList_GET_ITEM(members, row);
         if (group == Py_None)
@@ -996,7 +1037,7 @@ static PyTypeObject SweepType = {
     .tp_dealloc = (destructor)sweep_dealloc,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc = "Sweep(count, members, too_large, bleeds, tables, bleed_tables, item_tables, "
-              "roots, mover_mask, ranges, aligned, line_of, fitting_shifts, "
+              "roots, mover_mask, ranges, aligned, line_of, "
               "keeps_rest, apply, concatenate, fit_args, candidates, max_tries, every_move, "
               "nudge): one page's snap sweeps with their memo (physics.snapping._Snapper."
               "compiled builds it).  Holds no reference back to a Sweep: apply and keeps_rest "

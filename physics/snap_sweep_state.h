@@ -32,7 +32,7 @@ typedef struct {
     PyObject *tables[2][2];  /* [bleed][axis], NULL where no mover needs that kind */
     PyObject *item_tables;   /* (x, y): what reads the rows alone */
     PyObject *roots, *mover_mask, *aligned;
-    PyObject *find_line, *fitting_shifts, *keeps_rest, *concatenate;
+    PyObject *find_line, *keeps_rest, *concatenate;
     PyObject *moved_from, *centres, *rest_before; /* what a move changes besides the tables */
     PyObject *fit_args;      /* centres, halves, lowest, highest, item tables, fit limits */
     Py_ssize_t candidates, max_tries, every_move, tries;
@@ -67,6 +67,12 @@ typedef struct {
     Py_ssize_t *member_sizes;
     int64_t *line_room_rows;
     Py_ssize_t line_room;
+    /* what the fit test (snap_fit_core.h, called directly) reads, read once in sweep_new */
+    Py_buffer fit_views[7]; /* FIT_CENTRES .. FIT_LIMIT_VALUES */
+    int fit_held;           /* how many of them are held */
 } Sweep;
+
+enum { FIT_CENTRES, FIT_HALVES, FIT_LOWEST, FIT_HIGHEST, FIT_TABLE_X, FIT_TABLE_Y,
+       FIT_LIMIT_VALUES, FIT_VIEWS };
 
 #endif
