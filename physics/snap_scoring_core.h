@@ -252,9 +252,23 @@ static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
    shift, so each count is a sweep of the distances from where the last shift's stopped (the
    same counts as a bisection).  The four sweeps go side by side, one pass over the shifts,
    each starting where a bisection puts the first shift's end: most distances lie beyond the
-   first window, and the four walks are independent work for the processor.  "d <= x" is
-   compared as such: NumPy's bisection had it as "d < the next float after x", the same test
-   on every float that is not infinite (no distance is: the cut to the relevant drops them). */
+   first window.  "d <= x" is compared as such: NumPy's bisection had it as "d < the next
+   float after x", the same test on every float that is not infinite (no distance is: the cut
+   to the relevant drops them).
+
+   A sweep steps four distances at a time: of four sorted distances, those below an end are
+   the first ones, so their count is how far to step, and it is 4 only when the walk goes on.
+   The step taken one distance at a time was a branch per distance that no predictor could
+   guess (a shift's end passes one or two distances).  ``ordered`` holds four +inf past its
+   ``count`` (below every end), so that no step reads past it. */
+#define STEP4(at, test)                                                                    \
+    for (;;) {                                                                             \
+        const double *from = ordered + at;                                                 \
+        int step = (test(from[0])) + (test(from[1])) + (test(from[2])) + (test(from[3]));  \
+        at += step;                                                                        \
+        if (step < 4)                                                                      \
+            break;                                                                         \
+    }
 static void misses_after(const double *ordered, Py_ssize_t count, const double *shifts,
                          Py_ssize_t shift_count, const double *ranges, long *scores)
 {
@@ -270,17 +284,22 @@ static void misses_after(const double *ordered, Py_ssize_t count, const double *
         double shift = shifts[k];
         double to_a = near + shift, to_b = less_aligned + shift;
         double to_c = less_near + shift, to_d = aligned + shift;
-        while (a < count && ordered[a] < to_a)
-            a++;
-        while (b < count && ordered[b] < to_b)
-            b++;
-        while (c < count && ordered[c] <= to_c)
-            c++;
-        while (d < count && ordered[d] <= to_d)
-            d++;
+#define BELOW_A(x) ((x) < to_a)
+#define BELOW_B(x) ((x) < to_b)
+#define UP_TO_C(x) ((x) <= to_c)
+#define UP_TO_D(x) ((x) <= to_d)
+        STEP4(a, BELOW_A)
+        STEP4(b, BELOW_B)
+        STEP4(c, UP_TO_C)
+        STEP4(d, UP_TO_D)
+#undef BELOW_A
+#undef BELOW_B
+#undef UP_TO_C
+#undef UP_TO_D
         scores[k] = 2 * (long)a + 3 * (long)b - 2 * (long)c - 3 * (long)d;
     }
 }
+#undef STEP4
 
 /* The ``wanted`` shifts of ``distinct`` (sorted, each once) nearest to 0, of two as near the
    lower first, in ascending order: the nearest values of a sorted array are a run of it, the
@@ -416,11 +435,12 @@ static int score_body(const double *table, Py_ssize_t rows, const int64_t *membe
     for (Py_ssize_t k = 0; k < member_count; k++)
         is_member[members[k]] = 0;
     Py_ssize_t room = member_count * near * PAIRINGS;
-    if (make_room(8 * room + 4, rows) < 0) {
+    if (make_room(8 * room + 8, rows) < 0) {
         PyErr_NoMemory();
         return -1;
     }
-    double *ordered = scratch, *shifts = scratch + room, *spare = shifts + 3 * room + 1;
+    /* the distances (and four +inf past them: misses_after), the candidates, their spare */
+    double *ordered = scratch, *shifts = scratch + room + 4, *spare = shifts + 3 * room + 1;
     double relevant = ranges[RELEVANT];
     Py_ssize_t count = 0;
     for (Py_ssize_t k = 0; k < member_count; k++) {
@@ -454,6 +474,8 @@ static int score_body(const double *table, Py_ssize_t rows, const int64_t *membe
         PyErr_NoMemory();
         return -1;
     }
+    for (int pad = 0; pad < 4; pad++)
+        ordered[count + pad] = INFINITY;
     misses_after(ordered, count, shifts + first, scored, ranges, scores);
     long best = made.now;
     PyObject *chosen = best_first(shifts + first, scores, scored, made.now, tries, &best);

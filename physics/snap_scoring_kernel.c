@@ -120,7 +120,9 @@ static PyObject *scored_candidates(PyObject *module, PyObject *const *args, Py_s
             PyErr_SetString(PyExc_ValueError, "ordered: sorted distances, no NaN");
             goto done;
         }
-    shifts = PyMem_Malloc((6 * count + 2) * sizeof(double));
+    /* room for the candidates and their spare, then the distances again with four +inf
+       past them (misses_after steps four at a time) */
+    shifts = PyMem_Malloc((7 * count + 6) * sizeof(double));
     scores = PyMem_Malloc((3 * count + 1) * sizeof(long));
     if (shifts == NULL || scores == NULL) {
         PyErr_NoMemory();
@@ -128,7 +130,11 @@ static PyObject *scored_candidates(PyObject *module, PyObject *const *args, Py_s
     }
     Candidates made = candidate_shifts(ordered, count, ranges_view.buf, shifts,
                                        shifts + 3 * count + 1);
-    misses_after(ordered, count, shifts, made.count, ranges_view.buf, scores);
+    double *padded = shifts + 6 * count + 2;
+    memcpy(padded, ordered, count * sizeof(double));
+    for (int pad = 0; pad < 4; pad++)
+        padded[count + pad] = INFINITY;
+    misses_after(padded, count, shifts, made.count, ranges_view.buf, scores);
     shift_list = PyList_New(made.count);
     score_list = PyList_New(made.count);
     if (shift_list == NULL || score_list == NULL)
