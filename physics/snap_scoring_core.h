@@ -223,8 +223,15 @@ static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
     for (Py_ssize_t i = start; i < stop; i++)
         spare[n++] = ordered[i] + escape;
     run[3] = n;
-    /* merged pairwise into shifts, then the halves back into spare, then each value once */
-    Py_ssize_t half = merged(spare, 1, spare + 1, run[1] - 1, shifts);
+    /* merged pairwise into shifts, then the halves back into spare, then each value once;
+       staying goes into the first run where a merge would put it (after the distances
+       below 0, before the others), found by a bisection */
+    Py_ssize_t reach_count = run[1] - 1, below_zero = below(spare + 1, reach_count, spare[0]);
+    memcpy(shifts, spare + 1, below_zero * sizeof(double));
+    shifts[below_zero] = spare[0];
+    memcpy(shifts + below_zero + 1, spare + 1 + below_zero,
+           (reach_count - below_zero) * sizeof(double));
+    Py_ssize_t half = reach_count + 1;
     merged(spare + run[1], run[2] - run[1], spare + run[2], run[3] - run[2], shifts + half);
     merged(shifts, half, shifts + half, n - half, spare);
     Py_ssize_t kept = 1;
@@ -427,10 +434,10 @@ static int score_body(const double *table, Py_ssize_t rows, const int64_t *membe
     for (Py_ssize_t k = 0; k < member_count; k++)
         is_member[members[k]] = 1;
     Py_ssize_t near = 0;
-    for (Py_ssize_t row = 0; row < rows; row++) {
+    for (Py_ssize_t row = 0; row < rows; row++) { /* written always, kept if near */
         const double *line = table + row * COLUMNS;
-        if (line[LOWS] < high && line[HIGHS] > low && !is_member[row])
-            near_rows[near++] = row;
+        near_rows[near] = row;
+        near += (line[LOWS] < high) & (line[HIGHS] > low) & !is_member[row];
     }
     for (Py_ssize_t k = 0; k < member_count; k++)
         is_member[members[k]] = 0;
