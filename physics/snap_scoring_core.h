@@ -497,4 +497,61 @@ static int score_body(const double *table, Py_ssize_t rows, const int64_t *membe
     return 0;
 }
 
+/* line_of on raw arrays: ``row`` and the movers (roots marked in ``movers``) with a feature on
+   one of the lines of ``row``'s group (its rows ``members``, checked by the caller) on the axis
+   of ``table`` (its first ``count`` rows: the items), in row order after ``row``; and the
+   span of the group's features widened by ``aligned`` in ``low_out``, ``high_out``.  A new
+   list, or NULL with an exception set. */
+static PyObject *line_body(const double *table, Py_ssize_t count, const int64_t *members,
+                           Py_ssize_t member_count, Py_ssize_t row, const int64_t *roots,
+                           const char *movers, double aligned, double *low_out,
+                           double *high_out)
+{
+    if (make_room(0, count) < 0)
+        return PyErr_NoMemory();
+    double low = INFINITY, high = -INFINITY;
+    for (Py_ssize_t k = 0; k < member_count; k++)
+        for (int feature = LOW_EDGE; feature <= HIGH_EDGE; feature++) {
+            double at = table[members[k] * COLUMNS + feature];
+            if (at < low) low = at;
+            if (at > high) high = at;
+        }
+    /* is_member marks the roots found (all 0 again before returning) */
+    Py_ssize_t found = 0;
+    for (Py_ssize_t other = 0; other < count; other++) {
+        Py_ssize_t root = roots[other];
+        if (root == row || !movers[root] || is_member[root])
+            continue;
+        const double *theirs = table + other * COLUMNS + THEIRS;
+        int on = 0;
+        for (Py_ssize_t k = 0; k < member_count && !on; k++) {
+            const double *mine = table + members[k] * COLUMNS + MINE;
+            for (int pairing = 0; pairing < PAIRINGS; pairing++)
+                on |= fabs(theirs[pairing] - mine[pairing]) <= aligned;
+        }
+        if (on) {
+            is_member[root] = 1;
+            found++;
+        }
+    }
+    PyObject *line = PyList_New(found + 1);
+    if (line == NULL)
+        goto unmark;
+    PyList_SET_ITEM(line, 0, PyLong_FromSsize_t(row));
+    for (Py_ssize_t other = 0, n = 1; other < count && n <= found; other++)
+        if (is_member[other])
+            PyList_SET_ITEM(line, n++, PyLong_FromSsize_t(other));
+    for (Py_ssize_t k = 0; k <= found; k++)
+        if (PyList_GET_ITEM(line, k) == NULL) {
+            Py_CLEAR(line);
+            break;
+        }
+    *low_out = low - aligned;
+    *high_out = high + aligned;
+unmark:
+    for (Py_ssize_t other = 0; other < count; other++)
+        is_member[other] = 0;
+    return line;
+}
+
 #endif

@@ -209,56 +209,11 @@ static PyObject *line_of(PyObject *module, PyObject *const *args, Py_ssize_t nar
         PyErr_SetString(PyExc_ValueError, "members: some rows");
         goto done;
     }
-    if (make_room(0, count) < 0) {
-        PyErr_NoMemory();
-        goto done;
-    }
-    const double *table = table_view.buf;
-    const int64_t *members = members_view.buf, *roots = roots_view.buf;
-    const char *movers = movers_view.buf;
-    Py_ssize_t member_count = members_view.shape[0];
-    double low = INFINITY, high = -INFINITY;
-    for (Py_ssize_t k = 0; k < member_count; k++)
-        for (int feature = LOW_EDGE; feature <= HIGH_EDGE; feature++) {
-            double at = table[members[k] * COLUMNS + feature];
-            if (at < low) low = at;
-            if (at > high) high = at;
-        }
-    /* is_member marks the roots found (all 0 again before returning) */
-    Py_ssize_t found = 0;
-    for (Py_ssize_t other = 0; other < count; other++) {
-        Py_ssize_t root = roots[other];
-        if (root == row || !movers[root] || is_member[root])
-            continue;
-        const double *theirs = table + other * COLUMNS + THEIRS;
-        int on = 0;
-        for (Py_ssize_t k = 0; k < member_count && !on; k++) {
-            const double *mine = table + members[k] * COLUMNS + MINE;
-            for (int pairing = 0; pairing < PAIRINGS; pairing++)
-                on |= fabs(theirs[pairing] - mine[pairing]) <= aligned;
-        }
-        if (on) {
-            is_member[root] = 1;
-            found++;
-        }
-    }
-    PyObject *line = PyList_New(found + 1);
-    if (line == NULL)
-        goto unmark;
-    PyList_SET_ITEM(line, 0, PyLong_FromSsize_t(row));
-    for (Py_ssize_t other = 0, n = 1; other < count && n <= found; other++)
-        if (is_member[other])
-            PyList_SET_ITEM(line, n++, PyLong_FromSsize_t(other));
-    for (Py_ssize_t k = 0; k <= found; k++)
-        if (PyList_GET_ITEM(line, k) == NULL) {
-            Py_CLEAR(line);
-            break;
-        }
+    double low = 0.0, high = 0.0;
+    PyObject *line = line_body(table_view.buf, count, members_view.buf, members_view.shape[0],
+                               row, roots_view.buf, movers_view.buf, aligned, &low, &high);
     if (line != NULL)
-        result = Py_BuildValue("(Ndd)", line, low - aligned, high + aligned);
-unmark:
-    for (Py_ssize_t other = 0; other < count; other++)
-        is_member[other] = 0;
+        result = Py_BuildValue("(Ndd)", line, low, high);
 done:
     if (views > 3) PyBuffer_Release(&movers_view);
     if (views > 2) PyBuffer_Release(&roots_view);

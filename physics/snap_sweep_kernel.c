@@ -247,22 +247,15 @@ static int options_line(Sweep *self, PyObject *roots, PyObject *key, int axis, M
             int same = PyObject_RichCompareBool(PyList_GET_ITEM(entry, 3), roots, Py_EQ);
             if (same < 0)
                 return -1;
-            if (same) {
+            if (same)
                 Py_SETREF(out->roots, Py_NewRef(PyList_GET_ITEM(entry, 3)));
-                out->members = Py_NewRef(PyList_GET_ITEM(entry, 4));
-            } else { /* the same groups named in another order: their rows in that order */
-                out->members = members_of(self, roots);
-                if (out->members == NULL)
-                    return -1;
-            }
+            /* the rows (members_of, in the order of the roots named) are made by attempt,
+               if there is a move to try: most lines have none */
             return 0;
         }
         if (PyDict_DelItem(self->lines_known[axis], key) < 0)
             return -1;
     }
-    out->members = members_of(self, roots);
-    if (out->members == NULL)
-        return -1;
     Span read;
     Py_ssize_t row_count;
     const int64_t *rows = line_rows(self, roots, &row_count);
@@ -270,7 +263,7 @@ static int options_line(Sweep *self, PyObject *roots, PyObject *key, int axis, M
         return -1;
     if (self->memo_on) {
         PyObject *kept = Py_BuildValue("[ndd OOO d OO]", self->swept_count[axis], read.low,
-                                       read.high, out->roots, out->members, out->shifts,
+                                       read.high, out->roots, Py_None, out->shifts,
                                        out->gain, out->missing ? Py_True : Py_False,
                                        out->lined_up ? Py_True : Py_False);
         if (kept == NULL)
@@ -290,20 +283,15 @@ static PyObject *line_of(Sweep *self, Py_ssize_t row, int axis)
     PyObject **known = &self->line_value[axis][row];
     if (self->memo_on && still_valid(self, axis, span))
         return Py_NewRef(*known);
-    PyObject *result = PyObject_CallFunction(
-        self->find_line, "OOnnOOO", PyTuple_GET_ITEM(self->item_tables, axis),
-        PyList_GET_ITEM(self->members, row), row, self->count, self->roots, self->mover_mask,
-        self->aligned);
-    if (result == NULL)
+    /* line_of(item table, members, row, count, roots, movers, aligned), on the arrays read
+       once (sweep_new) */
+    double low = 0.0, high = 0.0;
+    PyObject *line = line_body(self->line_views[axis].buf, self->count, self->member_rows[row],
+                               self->member_sizes[row], row, self->line_views[2].buf,
+                               self->line_views[3].buf, PyFloat_AS_DOUBLE(self->aligned), &low,
+                               &high);
+    if (line == NULL)
         return NULL;
-    PyObject *line;
-    double low, high;
-    if (!PyArg_ParseTuple(result, "O!dd", &PyList_Type, &line, &low, &high)) {
-        Py_DECREF(result);
-        return NULL;
-    }
-    Py_INCREF(line);
-    Py_DECREF(result);
     if (self->memo_on) {
         Py_XSETREF(*known, Py_NewRef(line));
         span->low = low;
@@ -394,6 +382,11 @@ static int attempt(Sweep *self, Moves *moves, PyObject *shifts, int axis)
 {
     if (PyTuple_GET_SIZE(shifts) == 0)
         return 0;
+    if (moves->members == NULL) { /* a line's rows as one array, made when first tried */
+        moves->members = members_of(self, moves->roots);
+        if (moves->members == NULL)
+            return -1;
+    }
     /* fitting_shifts(members, axis, shifts, *fit_args), on the arrays read once (sweep_new) */
     Py_ssize_t row_count;
     const int64_t *body_rows = line_rows(self, moves->roots, &row_count);
@@ -768,13 +761,15 @@ static void sweep_dealloc(Sweep *self)
     for (int k = 0; k < self->fit_held; k++)
         PyBuffer_Release(&self->fit_views[k]);
     self->fit_held = 0;
+    for (int k = 0; k < self->line_held; k++)
+        PyBuffer_Release(&self->line_views[k]);
+    self->line_held = 0;
     Py_CLEAR(self->members);
     Py_CLEAR(self->root_lists);
     Py_CLEAR(self->item_tables);
     Py_CLEAR(self->roots);
     Py_CLEAR(self->mover_mask);
     Py_CLEAR(self->aligned);
-    Py_CLEAR(self->find_line);
     Py_CLEAR(self->keeps_rest);
     Py_CLEAR(self->reached_by);
     Py_CLEAR(self->rest_net);
@@ -817,12 +812,12 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
 {
     Py_ssize_t count, candidates, max_tries, every_move;
     PyObject *members, *too_large, *bleeds, *plain, *bleeding, *item_tables, *roots, *mover_mask,
-        *ranges, *aligned, *find, *keeps_rest, *apply, *concatenate, *fit_args;
+        *ranges, *aligned, *keeps_rest, *apply, *concatenate, *fit_args;
     double nudge;
-    if (!PyArg_ParseTuple(args, "nO!SSOOO!OOOO!OOOOO!nnnd:Sweep", &count, &PyList_Type,
+    if (!PyArg_ParseTuple(args, "nO!SSOOO!OOOO!OOOO!nnnd:Sweep", &count, &PyList_Type,
                           &members, &too_large, &bleeds, &plain, &bleeding, &PyTuple_Type,
                           &item_tables, &roots, &mover_mask, &ranges, &PyFloat_Type, &aligned,
-                          &find, &keeps_rest, &apply, &concatenate,
+                          &keeps_rest, &apply, &concatenate,
                           &PyTuple_Type, &fit_args, &candidates, &max_tries, &every_move,
                           &nudge))
         return NULL;
@@ -841,7 +836,6 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     self->roots = Py_NewRef(roots);
     self->mover_mask = Py_NewRef(mover_mask);
     self->aligned = Py_NewRef(aligned);
-    self->find_line = Py_NewRef(find);
     self->keeps_rest = Py_NewRef(keeps_rest);
     if (!PyTuple_Check(apply) || PyTuple_GET_SIZE(apply) != 3
             || !PyDict_Check(PyTuple_GET_ITEM(apply, 0))
@@ -926,6 +920,22 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
                                 "margins, the snap's tables, three limits");
                 goto failed;
             }
+        }
+    }
+    /* and what finding a line reads: the item tables, the roots, the movers' marks */
+    for (int k = 0; k < 4; k++) {
+        PyObject *array = k < 2 ? PyTuple_GET_ITEM(item_tables, k) : k == 2 ? roots : mover_mask;
+        Py_buffer *view = &self->line_views[k];
+        int read = k < 2 ? read_doubles(array, view, 2, "item tables")
+            : k == 2 ? read_rows(array, view, count) : read_flags(array, view, count);
+        if (read < 0)
+            goto failed;
+        self->line_held = k + 1;
+        if (k < 2 ? view->shape[0] < count || view->shape[1] != COLUMNS
+                  : k == 2 && view->shape[0] != count) {
+            PyErr_SetString(PyExc_ValueError, "item tables: a row per item or more; roots: one "
+                            "per row");
+            goto failed;
         }
     }
     for (Py_ssize_t row = 0; row < count; row++) {
@@ -1037,7 +1047,7 @@ static PyTypeObject SweepType = {
     .tp_dealloc = (destructor)sweep_dealloc,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc = "Sweep(count, members, too_large, bleeds, tables, bleed_tables, item_tables, "
-              "roots, mover_mask, ranges, aligned, line_of, "
+              "roots, mover_mask, ranges, aligned, "
               "keeps_rest, apply, concatenate, fit_args, candidates, max_tries, every_move, "
               "nudge): one page's snap sweeps with their memo (physics.snapping._Snapper."
               "compiled builds it).  Holds no reference back to a Sweep: apply and keeps_rest "

@@ -11,7 +11,8 @@
 /* one body's candidate moves (snapping.Moves), every reference owned */
 typedef struct {
     PyObject *roots;   /* list of ints: the groups moved together */
-    PyObject *members; /* int64 array of their rows (None where no move is tried) */
+    PyObject *members; /* int64 array of their rows (None where no move is tried; NULL for a
+                          line until attempt needs them) */
     PyObject *shifts;  /* tuple of floats, best first */
     double gain;
     int missing, lined_up;
@@ -32,7 +33,7 @@ typedef struct {
     PyObject *tables[2][2];  /* [bleed][axis], NULL where no mover needs that kind */
     PyObject *item_tables;   /* (x, y): what reads the rows alone */
     PyObject *roots, *mover_mask, *aligned;
-    PyObject *find_line, *keeps_rest, *concatenate;
+    PyObject *keeps_rest, *concatenate;
     PyObject *moved_from, *centres, *rest_before; /* what a move changes besides the tables */
     PyObject *fit_args;      /* centres, halves, lowest, highest, item tables, fit limits */
     Py_ssize_t candidates, max_tries, every_move, tries;
@@ -46,8 +47,8 @@ typedef struct {
     Moves *alone_value[2];
     Span *line_span[2];      /* per row: its line (line_of) */
     PyObject **line_value[2];
-    PyObject *lines_known[2]; /* dict: sorted roots -> [since, low, high, roots, members,
-                                 shifts, gain, missing, lined_up] */
+    PyObject *lines_known[2]; /* dict: sorted roots -> [since, low, high, roots, None (the
+                                 members, made by attempt), shifts, gain, missing, lined_up] */
     PyObject *stuck[2];      /* set of sorted roots: lines whose move failed since the last */
     /* the rest check (RestCheck.keeps_rest), when the snap has one */
     int has_rest, grouped;
@@ -70,6 +71,10 @@ typedef struct {
     /* what the fit test (snap_fit_core.h, called directly) reads, read once in sweep_new */
     Py_buffer fit_views[7]; /* FIT_CENTRES .. FIT_LIMIT_VALUES */
     int fit_held;           /* how many of them are held */
+    /* what finding a line (line_body, called directly) reads: the item tables of x and y,
+       the roots, the movers' marks; read once in sweep_new */
+    Py_buffer line_views[4];
+    int line_held;
 } Sweep;
 
 enum { FIT_CENTRES, FIT_HALVES, FIT_LOWEST, FIT_HIGHEST, FIT_TABLE_X, FIT_TABLE_Y,

@@ -371,7 +371,7 @@ class _Snapper:
         bleeds = bytes(self.bleeds.get(row, False) for row in range(count))
         return Sweep(count, members, too_large, bleeds, self.kind_tables(False),
                      self.kind_tables(True), self.item_tables, self.roots, self.mover_mask,
-                     self.ranges, ALIGNED_MM, find_line,
+                     self.ranges, ALIGNED_MM,
                      self.rest.compiled_parts() if self.rest is not None else None,
                      (self.moved_from, self.bodies.centres, self.rest.before
                       if self.rest is not None else {}),
