@@ -166,25 +166,6 @@ typedef struct {
     long now;          /* staying's score (misses_after of 0) */
 } Candidates;
 
-/* Two ascending runs merged into ``into``; returns its length. */
-static Py_ssize_t merged(const double *a, Py_ssize_t a_count, const double *b,
-                         Py_ssize_t b_count, double *into)
-{
-    Py_ssize_t i = 0, j = 0, n = 0;
-    while (i < a_count && j < b_count) { /* without a branch on the values (a select) */
-        double x = a[i], y = b[j];
-        int take_b = y < x;
-        into[n++] = take_b ? y : x;
-        j += take_b;
-        i += !take_b;
-    }
-    while (i < a_count)
-        into[n++] = a[i++];
-    while (j < b_count)
-        into[n++] = b[j++];
-    return n;
-}
-
 /* Shifts that put a feature on a line at one of the sorted distances ``ordered`` from it
    within reach, or put it just out of a near miss with one (ESCAPE_MM) within ``farthest``,
    and 0 (staying); sorted, each once.  The way out of a near miss may be long: two items of
@@ -196,7 +177,7 @@ static Py_ssize_t merged(const double *a, Py_ssize_t a_count, const double *b,
    merged, not sorted.  Their order and repeats change no choice (best_first orders the moves
    by their keys, each once; staying, and any move of 0 or -0, scores what staying does and is
    never chosen), so they are kept sorted and once, which lets misses_after sweep instead of
-   bisect.  ``shifts`` and ``spare`` hold room for 3 * count + 1 each. */
+   bisect.  ``shifts`` holds room for 3 * count + 1, ``spare`` for 3 * count + 4. */
 static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
                                    const double *ranges, double *shifts, double *spare)
 {
@@ -206,42 +187,53 @@ static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
     const Py_ssize_t *low = found, *high = found + 4;
     double escape = ranges[ESCAPE];
     Candidates made;
-    /* the runs, one after the other in spare: staying; |distance| <= reach; of |distance| <
+    /* the runs in spare, each followed by +inf (below no value: a run used up is never
+       taken again): staying and |distance| <= reach, staying placed where a merge puts it
+       (after the distances below 0, before the others: a bisection); then of |distance| <
        farthest + ESCAPE_MM, those whose escape down, then up, stays within farthest */
-    Py_ssize_t n = 0, run[4]; /* run[1..3]: where the three runs after staying end */
-    spare[n++] = 0.0;
-    for (Py_ssize_t i = low[0]; i < high[0]; i++)
-        spare[n++] = ordered[i];
-    run[1] = n;
+    Py_ssize_t reach_count = high[0] > low[0] ? high[0] - low[0] : 0;
+    const double *reach = ordered + low[0];
+    Py_ssize_t below_zero = below(reach, reach_count, 0.0);
+    double *staying_run = spare;
+    memcpy(staying_run, reach, below_zero * sizeof(double));
+    staying_run[below_zero] = 0.0;
+    memcpy(staying_run + below_zero + 1, reach + below_zero,
+           (reach_count - below_zero) * sizeof(double));
+    Py_ssize_t n = reach_count + 1;
+    staying_run[n] = INFINITY;
+    double *down_run = staying_run + n + 1, *up_run;
+    Py_ssize_t downs = 0, ups = 0;
     Py_ssize_t start = high[1] > found[8] ? high[1] : found[8];
     Py_ssize_t stop = low[1] < found[9] ? low[1] : found[9];
     for (Py_ssize_t i = start; i < stop; i++)
-        spare[n++] = ordered[i] - escape;
-    run[2] = n;
+        down_run[downs++] = ordered[i] - escape;
+    down_run[downs] = INFINITY;
+    up_run = down_run + downs + 1;
     start = high[1] > found[10] ? high[1] : found[10];
     stop = low[1] < found[11] ? low[1] : found[11];
     for (Py_ssize_t i = start; i < stop; i++)
-        spare[n++] = ordered[i] + escape;
-    run[3] = n;
-    /* merged pairwise into shifts, then the halves back into spare, then each value once;
-       staying goes into the first run where a merge would put it (after the distances
-       below 0, before the others), found by a bisection */
-    Py_ssize_t reach_count = run[1] - 1, below_zero = below(spare + 1, reach_count, spare[0]);
-    memcpy(shifts, spare + 1, below_zero * sizeof(double));
-    shifts[below_zero] = spare[0];
-    memcpy(shifts + below_zero + 1, spare + 1 + below_zero,
-           (reach_count - below_zero) * sizeof(double));
-    Py_ssize_t half = reach_count + 1;
-    merged(spare + run[1], run[2] - run[1], spare + run[2], run[3] - run[2], shifts + half);
-    merged(shifts, half, shifts + half, n - half, spare);
-    Py_ssize_t kept = 1;
-    shifts[0] = spare[0];
-    /* written always, kept if new (no branch); spare is sorted, so the last kept equals
-       the value before (==: a -0 after a 0 is no new value) and the test need not wait for
-       the last store */
-    for (Py_ssize_t i = 1; i < n; i++) {
-        shifts[kept] = spare[i];
-        kept += spare[i] != spare[i - 1];
+        up_run[ups++] = ordered[i] + escape;
+    up_run[ups] = INFINITY;
+    n += downs + ups;
+    /* one merge of the three runs into shifts, ties to the earlier run (as merging the
+       escapes first, then the result into staying's run: the order the shifts always had),
+       each value kept once: a value is new if it differs (!=: a -0 after a 0 is no new
+       value) from the one merged before it.  Without a branch on the values: each step
+       takes the least head and writes it, kept or not. */
+    const double *from_staying = staying_run, *from_down = down_run, *from_up = up_run;
+    Py_ssize_t kept = 0;
+    double last = 0.0;
+    for (Py_ssize_t t = 0; t < n; t++) {
+        double x = *from_staying, y = *from_down, z = *from_up;
+        int take_x = (x <= y) & (x <= z);
+        int take_y = !take_x & (y <= z);
+        double value = take_x ? x : (take_y ? y : z);
+        from_staying += take_x;
+        from_down += take_y;
+        from_up += !(take_x | take_y);
+        shifts[kept] = value;
+        kept += (t == 0) | (value != last);
+        last = value;
     }
     made.count = kept;
     made.missing = low[2] > high[2] || low[3] > high[3];
@@ -442,11 +434,12 @@ static int score_body(const double *table, Py_ssize_t rows, const int64_t *membe
     for (Py_ssize_t k = 0; k < member_count; k++)
         is_member[members[k]] = 0;
     Py_ssize_t room = member_count * near * PAIRINGS;
-    if (make_room(8 * room + 8, rows) < 0) {
+    if (make_room(8 * room + 12, rows) < 0) {
         PyErr_NoMemory();
         return -1;
     }
-    /* the distances (and four +inf past them: misses_after), the candidates, their spare */
+    /* the distances (and four +inf past them: misses_after), the candidates (3 * room + 1),
+       the runs they are merged from (3 * room + 4), the sort's spare (room) */
     double *ordered = scratch, *shifts = scratch + room + 4, *spare = shifts + 3 * room + 1;
     double relevant = ranges[RELEVANT];
     Py_ssize_t count = 0;
@@ -461,9 +454,7 @@ static int score_body(const double *table, Py_ssize_t rows, const int64_t *membe
             }
         }
     }
-    /* the spare room past the candidates' (7 * room + 2) for the sort: a double and a count
-       per distance */
-    double *sort_spare = spare + 3 * room + 1;
+    double *sort_spare = spare + 3 * room + 4;
     Py_ssize_t *bucket_counts = counts_for(room + 2);
     if (bucket_counts == NULL) {
         PyErr_NoMemory();
