@@ -175,18 +175,22 @@ class _Snapper:
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
         # what fits reads besides the page: the clearance, the longest move, the tolerance
         self.fit_limits = np.array([clearance_mm, self.farthest, TOLERANCE_MM])
-        # per group and axis: too large to fit between its margins (it has no move to make)
-        too_large, bleed = (self.lowest > self.highest).tolist(), bodies.bleed.tolist()
-        member_lists = {row: members.tolist() for row, members in self.members.items()}
-        self.too_large = {row: [any(too_large[member][axis] for member in members)
-                                for axis in (0, 1)] for row, members in member_lists.items()}
+        # per group and axis: too large to fit between its margins (it has no move to make);
+        # a group's flags are any of its active rows' (one scatter, not a loop per group:
+        # a third of a 50-item page's set-up)
+        grouped = self.roots[self.active]
+        too_large = np.zeros((bodies.count, 2), dtype=bool)
+        np.logical_or.at(too_large, grouped, (self.lowest > self.highest)[self.active])
+        bleeding = np.zeros(bodies.count, dtype=bool)
+        np.logical_or.at(bleeding, grouped, bodies.bleed[self.active])
+        movers, too_large, bleeding = self.movers.tolist(), too_large.tolist(), bleeding.tolist()
+        self.too_large = {row: too_large[row] for row in movers}
         is_mover = np.zeros(bodies.count, dtype=bool)
         is_mover[self.movers] = True
         self.mover_mask = is_mover  # per row: whether it is a mover's root (line_of)
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
-        self.bleeds = {row: any(bleed[member] for member in members)
-                       for row, members in member_lists.items()}
+        self.bleeds = {row: bleeding[row] for row in movers}
         # the same as sets, for a line's groups (options)
         self.too_large_roots = [{row for row, large in self.too_large.items() if large[axis]}
                                 for axis in (0, 1)]
@@ -420,15 +424,23 @@ def feature_table(centres: np.ndarray, halves: np.ndarray, active: np.ndarray, a
     distances to the page's lines are then those to rows of the table, the same subtractions
     in the same floats as to each line."""
     lines = features(centres, halves, axis)
-    rows = np.column_stack([lines, np.where(active[:, None], lines[:, THEIRS], np.inf),
-                            lines[:, MINE],
-                            np.where(active, lines[:, LOW], np.inf),
-                            np.where(active, lines[:, HIGH], -np.inf)])
-    page = np.full((len(edges) + len(middles), rows.shape[1]), np.nan)
+    count = len(lines)
+    # one array filled column block by column block (the same floats as stacking them)
+    table = np.empty((count + len(edges) + len(middles), HIGHS_COLUMN + 1))
+    rows, page = table[:count], table[count:]
+    rows[:, FEATURES] = lines
+    rows[:, THEIRS_COLUMNS] = lines[:, THEIRS]
+    rows[:, MINE_COLUMNS] = lines[:, MINE]
+    rows[:, LOWS_COLUMN], rows[:, HIGHS_COLUMN] = lines[:, LOW], lines[:, HIGH]
+    if not active.all():
+        inactive = ~active
+        rows[inactive, THEIRS_COLUMNS] = np.inf
+        rows[inactive, LOWS_COLUMN], rows[inactive, HIGHS_COLUMN] = np.inf, -np.inf
+    page[:] = np.nan
     theirs = page[:, THEIRS_COLUMNS]
     theirs[:] = np.inf
     for column in np.flatnonzero(THEIRS == LOW):  # their low edge: paired with my low, high
         theirs[:len(edges), column] = edges
     theirs[len(edges):, THEIRS == CENTRE] = middles[:, None]
     page[:, LOWS_COLUMN], page[:, HIGHS_COLUMN] = -np.inf, np.inf
-    return np.concatenate([rows, page])
+    return table

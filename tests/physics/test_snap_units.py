@@ -142,3 +142,40 @@ def test_the_lines_hold_on_pages_with_followers():
         assert moves > 5 and lines.compared > 50, (seed, moves, lines.compared)
         grouped += bool((lines.roots != np.arange(len(lines.roots))).any())
     assert grouped == 3
+
+
+def test_the_groups_flags_are_any_of_their_active_rows():
+    """_Snapper's per-group flags (too large to fit between its margins, per axis; may bleed),
+    set by one scatter over the active rows, against their definition, group by group: any of
+    the group's active rows.  Pages with followers (groups of several rows), some rows made
+    bleed, some too large for their margins on one axis, one follower made inactive."""
+    from anchored_pages import random_project
+    from floatpage.model.layout import engine_for_page
+    from floatpage.physics.geometry import item_bounds
+    from floatpage.physics.rest_check import group_members
+
+    checked = 0
+    for seed in (27100, 27101, 27102):
+        project = random_project(seed, "follow")
+        engine = engine_for_page(project.pages[0], project.physics)
+        bodies = engine.bodies
+        rng = np.random.default_rng(seed)
+        bodies.bleed[:] = rng.random(bodies.count) < 0.3
+        followers = np.flatnonzero(bodies.group_roots()[0] != np.arange(bodies.count))
+        assert len(followers) > 0
+        bodies.sizes[followers[0], 0] = engine.page_w_mm * 1.5  # too wide for its margins
+        bodies.active[followers[-1]] = False
+        page = (engine.page_w_mm, engine.page_h_mm)
+        clearance, margin, rest = snap_limits(bodies, *page, engine.params)
+        snapper = snapping._Snapper(bodies, page, clearance, margin, rest)
+        lowest, highest = item_bounds(bodies, *page, margin)
+        groups = group_members(snapper.roots, snapper.active)
+        for row in snapper.movers.tolist():
+            members = groups[row].tolist()
+            assert snapper.too_large[row] == [any(lowest[m, axis] > highest[m, axis]
+                                                  for m in members) for axis in (0, 1)]
+            assert snapper.bleeds[row] == any(bool(bodies.bleed[m]) for m in members)
+            checked += 1
+        assert any(large[0] for large in snapper.too_large.values())
+        assert any(snapper.bleeds.values()) and not all(snapper.bleeds.values())
+    assert checked > 20
