@@ -20,10 +20,15 @@ RELOCATABLE_ITEMS = 150
 # this share of the room inside the walls; below it a page the physics jammed gets a second
 # start (Engine, packing.packed_layout).
 GUTTER_FITS_COVER = 0.85
-# Alignment gives way on a fuller page than ROOMY_COVER, unless it has few items and its gutter
-# fits: the snap's cost grows with the items, and a calendar month of 4 items covering 76 %
-# lines up as well as one at 70 %.
-FEW_ITEMS = 12
+# Alignment gives way on a fuller page than ROOMY_COVER only if it has more than LINE_UP_ITEMS
+# items or its gutter does not fit: the snap's cost grows with the items, and its gain shrinks
+# on a pressed crowd (200 items covering half of A4: 28.7 -> 20.4 near misses an item for
+# 1.9x the settle).  Up to 60 items it pays: pages of 37-57 items covering 55-57 % of A4, A5
+# and A4 landscape (grown cover 0.75-0.85) went from 7.8-10.9 near misses an item, not lined
+# up at all, to 3.1-6.5, for 1.2-1.5x the settle, as other pages of that many items cost
+# (guide_cost.py --seeds 60 --first-seed 4000: 4006, 4012, 4017); a calendar month of 4
+# items covering 76 % lines up as well as one at 70 %.
+LINE_UP_ITEMS = 60
 JITTER_MM = 0.5  # size of the seeded nudge that separates items on one point (A4)
 COINCIDENT_MM = 1e-6
 AXES = np.arange(2)  # x, y (see xy_slots)
@@ -163,7 +168,7 @@ def taken_by(bodies: Bodies, rows: np.ndarray, low: np.ndarray, high: np.ndarray
 def lines_up(cover: float, count: int) -> bool:
     """Whether a page of ``count`` active items whose grown cover (``grown_cover``) is
     ``cover`` is worth aligning: the guide force pulls and the snap runs."""
-    return cover <= ROOMY_COVER or (count <= FEW_ITEMS and cover <= GUTTER_FITS_COVER)
+    return cover <= ROOMY_COVER or (count <= LINE_UP_ITEMS and cover <= GUTTER_FITS_COVER)
 
 
 def group_extents(bodies: Bodies, roots: np.ndarray, root_offsets: np.ndarray
