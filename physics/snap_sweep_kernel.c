@@ -6,8 +6,10 @@
    recalls, a body's options, the choice between its move and its line's, the tries: some two
    microseconds of interpreter a call, tens of thousands of calls a snap, two thirds of its time
    on the 50- and 60-item pages of benchmarks/guide_cost.py.  Here the same decisions in the
-   same order: the same kernels are called with the same arguments (through their Python entry
-   points), the memo keeps and recalls what AxisMemo did (a span is stale once a move along its
+   same order: the scoring, the line finding and the fit test are the kernels' own C
+   (snap_scoring_core.h, snap_fit_core.h, included here as in their modules) called directly
+   with the arguments their Python entry points get, on arrays read once per snap (through
+   Python, each call's tuple and buffer requests were a fifth of its cost), the memo keeps and recalls what AxisMemo did (a span is stale once a move along its
    axis sweeps an item across it, ends included), a line stuck since the last move is not tried
    again, the first fitting move that keeps the page at rest is made, as _Snapper.apply makes
    it.  The rest check (RestCheck.keeps_rest, as_it_is) is here too, its force sums and the
