@@ -851,7 +851,24 @@ class EditorScreen(Screen):
 
     # -- files -------------------------------------------------------------------------------
 
-    def action_save(self) -> None:
+    def action_save(self, then: Callable[[], object] | None = None) -> None:
+        """Save, after asking first when another program changed the file since the editor
+        read or saved it (an edit in a text editor, a `git checkout`): Ctrl+S replaced such
+        changes without a word. `then` runs once the project is saved."""
+        if not self.session.changed_on_disk():
+            self.save_now(then)
+            return
+        name = self.session.project.path.name
+        self.ask(ChoiceDialog(f"{name} was changed by another program",
+                              [("Replace it with the editor's version", "replace"),
+                               ("Keep editing (save nothing)", None)],
+                              message=f"Since the editor opened or last saved {name}, another "
+                              "program changed it. Saving replaces those changes; the file as "
+                              f"it is now stays as {name}.bak.", highlighted=None,
+                              dialog_id="changed-on-disk-dialog"),
+                 lambda _choice: self.save_now(then))
+
+    def save_now(self, then: Callable[[], object] | None = None) -> None:
         """Save the pages edited since the last save as `floatpage settle` would leave them,
         so a saved file is a fixed point of it: saved after a nudge, the greeting card's
         picture was snapped back onto the page's centre line by the next settle, 1.8 mm from
@@ -876,6 +893,8 @@ class EditorScreen(Screen):
             return
         self.notify(f"saved {path}", timeout=3)
         self.redraw()
+        if then is not None:
+            then()
 
     def action_export_pdf(self) -> None:
         if self.export_state:
@@ -987,6 +1006,4 @@ class EditorScreen(Screen):
         if choice == "discard":
             self.app.exit()
         elif choice == "save":
-            self.action_save()
-            if not self.session.unsaved:
-                self.app.exit()
+            self.action_save(then=lambda: None if self.session.unsaved else self.app.exit())

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import hashlib
 import itertools
 import math
 import os
@@ -37,6 +38,14 @@ MIN_SIDE_MM = 3.0
 
 class EditError(FloatpageError):
     """An edit that cannot be done as asked; the message says why, for a notification."""
+
+
+def file_digest(path: Path | None) -> str | None:
+    """The file's content hash, or None when there is no such file to read."""
+    try:
+        return hashlib.sha256(path.read_bytes()).hexdigest() if path is not None else None
+    except OSError:
+        return None
 
 
 def picture_aspect(path: Path) -> float | None:
@@ -212,6 +221,10 @@ class EditSession:
         self.history = History()
         self.version = 0  # the document state: every edit makes a new one, undo returns to one
         self.saved_version = 0
+        # The file as the editor last read or wrote it: a save checks that no other program
+        # (a text editor, `git checkout`) changed it meanwhile; the lock keeps out only
+        # floatpage's own writers, and Ctrl+S replaced such changes without a word.
+        self.disk_digest = file_digest(project.path)
         self._versions = itertools.count(1)
         self.held_id: str | None = None
         self.status_note: str | None = None  # what a release or a page size did, in words
@@ -904,7 +917,14 @@ class EditSession:
         self.sync_positions()
         path = save_project(self.project)
         self.saved_version = self.version
+        self.disk_digest = file_digest(path)
         return path
+
+    def changed_on_disk(self) -> bool:
+        """Whether another program changed the project file since the editor read or saved it
+        (a file since removed is not: a save only writes it again, and loses nothing)."""
+        now = file_digest(self.project.path)
+        return now is not None and now != self.disk_digest
 
     def finalize_for_export(self) -> Project:
         """Run the no-overlap pass on every page, write positions back; return a copy to render.

@@ -1,0 +1,75 @@
+"""Defects a demanding user met in a first week with the editor (user-walk-8), each driven
+through the real app with Pilot, on a real project file."""
+
+from __future__ import annotations
+
+from floatpage.model import load_project
+
+from editor_helpers import editor, position
+
+
+def edited_elsewhere(path) -> str:
+    """Change the title's words as a text editor (or a `git checkout`) would, behind the
+    editor's back; return the file's new text."""
+    text = path.read_text()
+    changed = text.replace("Happy Birthday Anna", "Happy Birthday Anna and Ben")
+    assert changed != text
+    path.write_text(changed)
+    return changed
+
+
+async def test_a_save_asks_before_replacing_changes_another_program_made_to_the_file(
+        project_path):
+    """With the editor open, the user mended a word in the file in vim; a nudge and Ctrl+S in
+    the editor then wrote its own version over it without a word (only one `.bak` back). Now
+    Ctrl+S asks, Esc keeps the file as the other program left it, and the replacement,
+    chosen, keeps that version as the `.bak`."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "right")
+        await pilot.pause()
+        theirs = edited_elsewhere(project_path)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert app.screen.id == "changed-on-disk-dialog"
+        assert project_path.read_text() == theirs
+        await pilot.press("escape")  # keep editing: nothing written, the edit still unsaved
+        await pilot.pause()
+        assert app.screen is app.editor
+        assert project_path.read_text() == theirs
+        assert app.session.unsaved
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert app.screen.id == "changed-on-disk-dialog"
+        await pilot.press("up", "enter")  # "Replace it with the editor's version"
+        await pilot.pause()
+        assert app.screen is app.editor
+        assert not app.session.unsaved
+        assert "and Ben" not in project_path.read_text()
+        assert project_path.with_name("card.toml.bak").read_text() == theirs
+        # the editor's own save is no change by another program: the next Ctrl+S just saves
+        await pilot.press("right", "ctrl+s")
+        await pilot.pause()
+        assert app.screen is app.editor
+        assert not app.session.unsaved
+
+
+async def test_save_and_quit_asks_too_and_quits_once_the_file_is_replaced(project_path):
+    """The quit dialog's "Save and quit" goes through the same question."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "right")
+        await pilot.pause()
+        moved = app.session.selected_id
+        edited_elsewhere(project_path)
+        await pilot.press("q")
+        await pilot.pause()
+        assert app.screen.id == "quit-dialog"
+        await pilot.press("enter")  # "Save and quit" is highlighted
+        await pilot.pause()
+        assert app.screen.id == "changed-on-disk-dialog"
+        x_on_screen = position(app, moved)[0]
+        await pilot.press("up", "enter")
+        await pilot.pause()
+        assert app._exit  # quit, once saved
+    saved = load_project(project_path)
+    assert "and Ben" not in project_path.read_text()
+    assert abs(saved.pages[0].item(moved).x - x_on_screen) < 0.01
