@@ -3,9 +3,14 @@ through the real app with Pilot, on a real project file."""
 
 from __future__ import annotations
 
+import shutil
+from pathlib import Path
+
 from floatpage.model import load_project
 
 from editor_helpers import editor, position
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def edited_elsewhere(path) -> str:
@@ -73,3 +78,25 @@ async def test_save_and_quit_asks_too_and_quits_once_the_file_is_replaced(projec
     saved = load_project(project_path)
     assert "and Ben" not in project_path.read_text()
     assert abs(saved.pages[0].item(moved).x - x_on_screen) < 0.01
+
+
+async def test_a_region_made_saved_undone_and_saved_again_is_saved(tmp_path):
+    """A long session on the album, undone all the way back, would not save: "Not saved:
+    KeyError: 'region'" (the save had added the key into the document it keeps)."""
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    path = folder / "photo-album.toml"
+    async with editor(path) as (app, pilot):
+        await pilot.press("tab", "tab", "R")
+        await pilot.pause()
+        assert app.screen.id == "region-dialog"
+        await pilot.press("enter")
+        await pilot.pause()
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert "[[pages.regions]]" in path.read_text()
+        await pilot.press("ctrl+z", "ctrl+s")
+        await pilot.pause()
+        assert not app.session.unsaved
+    assert "region" not in path.read_text()
+    assert len(load_project(path).pages) == 2
