@@ -228,6 +228,7 @@ class EditSession:
         # (a text editor, `git checkout`) changed it meanwhile; the lock keeps out only
         # floatpage's own writers, and Ctrl+S replaced such changes without a word.
         self.disk_digest = file_digest(project.path)
+        self.read_text = project.source_text  # see `save`
         self._versions = itertools.count(1)
         self.held_id: str | None = None
         self.status_note: str | None = None  # what a release or a page size did, in words
@@ -945,6 +946,11 @@ class EditSession:
     def save(self) -> Path:
         self.end_move()
         self.sync_positions()
+        if self.version == 0 and self.read_text is not None:
+            # every edit undone: saved into the text as it was read, not into the one the last
+            # save left (an anchor taken off and put back came at its table's end, pages
+            # removed and brought back left blank lines), so the file is as it was read
+            self.project.source_text, self.project.parsed_source = self.read_text, None
         path = save_project(self.project)
         self.saved_version = self.version
         self.disk_digest = file_digest(path)

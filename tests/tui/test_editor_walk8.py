@@ -125,3 +125,24 @@ async def test_ctrl_s_on_an_unchanged_sample_writes_nothing_and_undone_edits_sav
             await pilot.press("ctrl+z", "ctrl+s")
             await pilot.pause()
             assert path.read_bytes() == original, sample
+
+
+async def test_every_edit_undone_saves_the_file_as_it_was_read(tmp_path):
+    """A caption unanchored (`u`), saved, then the edit undone and saved again: its anchor
+    came back at the end of its table, after `role`, and a page added and removed left a
+    blank line; after a long session undone all the way back, `git diff` showed them."""
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    path = folder / "photo-album.toml"
+    original = path.read_bytes()
+    async with editor(path) as (app, pilot):
+        await pilot.press("bracketright")
+        await pilot.pause()
+        app.session.select("p2-photo-1-caption")
+        await pilot.press("u", "N", "ctrl+s")
+        await pilot.pause()
+        assert path.read_bytes() != original
+        await pilot.press("ctrl+z", "ctrl+z", "ctrl+s")
+        await pilot.pause()
+        assert not app.session.history.undo_stack
+        assert path.read_bytes() == original
