@@ -111,9 +111,22 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
 
     from floatpage.tui.recovery import discard_recovery
 
-    when = datetime.fromtimestamp(recovery.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
+    kept_at = recovery.stat().st_mtime
+    when = datetime.fromtimestamp(kept_at).strftime("%Y-%m-%d %H:%M")
     print(f"{printable(str(project))} has unsaved edits from an editor that lost its terminal at {when} "
           f"(kept in {printable(recovery.name)}).")
+    try:
+        changed_at = project.stat().st_mtime
+    except OSError:
+        changed_at = kept_at
+    if changed_at > kept_at:
+        # A project saved again since (another editor session, a settle, a `git pull`): the
+        # kept edits were made to the file before that, and restoring them then saving
+        # replaced the newer file without a word.
+        later = datetime.fromtimestamp(changed_at).strftime("%Y-%m-%d %H:%M")
+        print(f"The project itself was changed after that, at {later}: restored, these edits "
+              "replace that version when you save (it is kept as "
+              f"{printable(project.name)}.bak); discard them to keep it.")
     while True:
         try:
             answer = ask_letter("[r]estore them, [d]iscard them, or [q]uit and decide later? ")

@@ -257,3 +257,32 @@ print(sorted(set(sys.modules) - before))
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "[]"
     assert recovery_path(path).exists()
+
+
+def test_the_recovery_question_says_when_the_project_was_changed_after_the_edits(tmp_path):
+    """Edits kept at a hang-up, then the project saved again (another session, a settle, a
+    `git pull`): the question offered to restore them as if nothing had happened, and a save
+    then replaced the newer file without a word (user-walk-8)."""
+    path = project_file(tmp_path)
+    recovery = recovery_path(path)
+    recovery.write_bytes(path.read_bytes())
+    kept_at = time.time() - 600
+    os.utime(path, (kept_at - 60, kept_at - 60))
+    os.utime(recovery, (kept_at, kept_at))
+    editor = Editor(path)
+    try:
+        editor.read_until(b"[d]iscard them")
+        assert b"changed after that" not in editor.screen  # the file is older than the edits
+    finally:
+        editor.kill()
+        os.close(editor.fd)
+    path.write_text(path.read_text().replace('"Hello"', '"Hello again"'))  # saved since
+    editor = Editor(path)
+    try:
+        editor.read_until(b"[d]iscard them")
+        screen = editor.screen.replace(b"\r\n", b" ")
+        assert b"The project itself was changed after that" in screen, screen
+        assert b"card.toml.bak" in screen
+    finally:
+        editor.kill()
+        os.close(editor.fd)
