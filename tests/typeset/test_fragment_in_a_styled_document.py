@@ -46,9 +46,22 @@ def test_a_documents_own_tikz_styles_do_not_reach_the_fragments_items(tmp_path):
         Page(id="front", size="custom", width_mm=100, height_mm=80, items=[
             PictureItem(id="photo", x=30, y=30, w=45, h=30, path="pictures/photo.png"),
             BlockItem(id="block", x=75, y=30, w=30, h=30, color="#22aa44"),
-            TextItem(id="title", x=50, y=65, w=80, h=12, text="Hello there")])])
+            TextItem(id="title", x=50, y=65, w=80, h=12, text="Open 8:00-20:00; now!")])])
     render_pdf(project, tmp_path / "card.pdf", fragment_out=tmp_path / "fragment.tex")
     plain = compiled_page(tmp_path, "")
     styled = compiled_page(tmp_path, STYLES)
     assert plain.size == styled.size
     assert ImageChops.difference(plain, styled).getbbox() is None
+
+
+def test_the_documents_language_adds_no_space_before_the_fragments_colons(tmp_path):
+    """A French document (polyglossia) set the flyer's "8:00-20:00" as "8 :00-20 :00": its
+    rule puts a space before every colon, semicolon and exclamation mark, and the fragment's
+    lines, fitted without them, grew past their boxes."""
+    project = Project(path=tmp_path / "card.toml", title="Horaires", pages=[
+        Page(id="front", size="custom", width_mm=100, height_mm=40, items=[
+            TextItem(id="hours", x=50, y=20, w=90, h=14, text="Open 8:00-20:00; now!")])])
+    render_pdf(project, tmp_path / "card.pdf", fragment_out=tmp_path / "fragment.tex")
+    plain = compiled_page(tmp_path, "")
+    french = compiled_page(tmp_path, r"\usepackage{polyglossia}\setdefaultlanguage{french}")
+    assert ImageChops.difference(plain, french).getbbox() is None
