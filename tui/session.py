@@ -658,8 +658,22 @@ class EditSession:
             scale = min(w / item.w, h / item.h) if fx >= 1 else max(w / item.w, h / item.h)
             w, h = item.w * scale, item.h * scale
         self.checkpoint(f"resize {item.id}")
+        page = self.page
+        followed = item.group or isinstance(item.anchor, ItemAnchor) or any(
+            isinstance(other.anchor, ItemAnchor) and other.anchor.to == item.id
+            for other in page.items)
+        if not followed:
+            item.w, item.h = w, h
+            self.engine.resize(item.id, w, h)
+            return w, h
+        # A caption keeps its distance from the photo it follows, as on a new page size: its
+        # offset between centres kept, a photo grown with `+` came down over its caption, and
+        # neither the physics nor `check` saw it (one body: they never part)
+        self.sync_positions()
+        old_sizes = {other.id: (other.w, other.h) for other in page.items}
         item.w, item.h = w, h
-        self.engine.resize(item.id, w, h)
+        scale_follow_offsets(page, old_sizes, 1.0, 1.0)
+        self.rebuild_engine(sync=False)
         return w, h
 
     def update_item(self, item_id: str, changes: dict) -> None:
@@ -681,11 +695,17 @@ class EditSession:
                 scale = min(1.0, 0.9 * self.page.width_mm / w,
                             0.9 * self.page.height_mm / (w * aspect))
                 changes["w"], changes["h"] = w * scale, w * aspect * scale
+        resized = "w" in changes or "h" in changes
+        if resized:  # followers keep their distance, as `resize_selected` keeps it
+            self.sync_positions()
+            old_sizes = {other.id: (other.w, other.h) for other in self.page.items}
         for key, value in changes.items():
             setattr(item, key, value)
         if gamma_changes:
             item.anchor.gamma = gamma
-        self.rebuild_engine()
+        if resized:
+            scale_follow_offsets(self.page, old_sizes, 1.0, 1.0)
+        self.rebuild_engine(sync=not resized)
 
     def refuse_bad_group_or_region(self, item, changes: dict) -> None:
         """Raise EditError for a group or region the project file could not hold (the loader's

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from floatpage.model import load_project
 
-from editor_helpers import editor, position
+from editor_helpers import editor, item, position
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -146,3 +146,41 @@ async def test_every_edit_undone_saves_the_file_as_it_was_read(tmp_path):
         await pilot.pause()
         assert not app.session.history.undo_stack
         assert path.read_bytes() == original
+
+
+def edge_gap(app, follower_id: str) -> float:
+    """The space between a follower's top edge and the bottom edge of the item it follows."""
+    follower = item(app, follower_id)
+    target = item(app, follower.anchor.to)
+    return (follower.y - follower.h / 2) - (target.y + target.h / 2)
+
+
+async def test_a_photo_grown_or_its_caption_grown_keeps_the_space_between_them(tmp_path):
+    """`+` on an album photo kept its caption's offset between centres: three presses and the
+    photo came down over its caption's words, and `check` said 0 overlaps (a photo and its
+    caption are one body, never parted). `+` on the caption did the same upwards."""
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    path = folder / "photo-album.toml"
+    async with editor(path) as (app, pilot):
+        caption = "p1-photo-1-caption"
+        before = edge_gap(app, caption)
+        assert before > 0
+        app.session.select("p1-photo-1")
+        await pilot.press("plus", "plus", "plus")
+        await pilot.pause()
+        assert item(app, "p1-photo-1").h > 1.25 * 55.72
+        assert abs(edge_gap(app, caption) - before) < 0.02
+        app.session.select(caption)
+        await pilot.press("plus", "plus")
+        await pilot.pause()
+        assert abs(edge_gap(app, caption) - before) < 0.02
+        other = "p1-photo-2-caption"  # a height typed in the item's form
+        gap = edge_gap(app, other)
+        app.session.update_item("p1-photo-2", {"w": 90.0, "h": 67.5})
+        assert abs(edge_gap(app, other) - gap) < 0.02
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+    saved = load_project(path).pages[0]
+    photo, words = saved.item("p1-photo-1"), saved.item(caption)
+    assert words.y - words.h / 2 - (photo.y + photo.h / 2) > before - 0.02
