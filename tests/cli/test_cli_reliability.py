@@ -304,7 +304,7 @@ def test_two_settles_at_once_keep_the_version_from_before_both(tmp_path):
                                   text=True, cwd=ROOT) for _ in range(2)]
     results = [(p.wait(timeout=120), p.stderr.read()) for p in processes]
     for code, stderr in results:
-        assert code == 0 or "is being edited by PID" in stderr, stderr
+        assert code == 0 or "is being written by PID" in stderr, stderr
     assert (tmp_path / "card.toml.bak").read_text() == original
 
 
@@ -342,7 +342,11 @@ def test_the_editor_refuses_a_project_another_process_holds(tmp_path):
     with ProjectLock(path, purpose="floatpage settle"):
         result = run("edit", str(path), timeout=60)
     assert result.returncode == 1
-    assert "is being edited by PID" in result.stderr
+    # a settle is waited for, not closed: "is being edited by … (floatpage settle); close it
+    # there" sent the user looking for an editor (user-walk-8)
+    assert f"is being written by PID {os.getpid()} (floatpage settle); wait for it to finish" \
+        in result.stderr
+    assert "close it there" not in result.stderr
 
 
 # 6. leftovers of a killed save --------------------------------------------------------------------
