@@ -141,6 +141,23 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
             raise FloatpageError(f"{project}: not opened; the unsaved edits stay in {recovery}")
 
 
+def note_kept_edits(path: str) -> None:
+    """A note (on stderr: a Makefile's output stays as it was) that an editor which lost its
+    terminal left unsaved edits beside the project: after a dropped SSH link, `make` checked,
+    settled and rendered the file without them, and nothing said they were there."""
+    from floatpage.tui.recovery import pending_recovery
+
+    try:
+        kept = pending_recovery(path)
+    except OSError:
+        return
+    if kept is not None:
+        print(f"note: {printable(str(path))}: {printable(kept.name)} holds unsaved edits from "
+              "an editor that lost its terminal, not in the project file this command reads; "
+              f"`floatpage edit {printable(str(path))}` offers to restore or discard them",
+              file=sys.stderr)
+
+
 def ask_letter(prompt: str) -> str:
     """One answer to a `[r]estore`-style question: on a terminal, the first key pressed, as
     the prompt's brackets promise (a user pressed r and waited: it wanted Enter too); else a
@@ -586,6 +603,8 @@ def main(argv: Sequence[str] | None = None) -> int:
               file=sys.stderr)
         return EXIT_USER_ERROR
     try:
+        if args.run in (cmd_check, cmd_settle, cmd_render):
+            note_kept_edits(args.path)
         return args.run(args)
     except FloatpageError as error:
         # Line by line: a message may list several problems, each on its own line, and each

@@ -707,3 +707,23 @@ def test_a_deleted_current_folder_is_a_clear_error_not_an_internal_one(tmp_path)
     assert result.returncode == 1, result.stderr
     assert "current folder no longer exists" in result.stderr
     assert "internal error" not in result.stderr
+
+
+def test_check_settle_and_render_say_an_editor_left_unsaved_edits_beside_the_project(tmp_path):
+    """After a dropped SSH link, `make` checked, settled and rendered the project without the
+    edits the editor had kept in `.card.toml.recover`, and nothing said they were there
+    (user-walk-8). A note on stderr names them; the exit code and stdout stay as they were."""
+    path = card(tmp_path)
+    assert run("settle", str(path)).returncode == 0  # settled: what follows changes nothing
+    quiet = {command: run(command, str(path)) for command in ("check", "settle")}
+    for result in quiet.values():
+        assert "unsaved edits" not in result.stderr
+    (tmp_path / ".card.toml.recover").write_text(path.read_text())
+    for command in ("check", "settle", "render"):
+        result = run(command, str(path))
+        assert result.returncode == 0, result.stderr
+        assert ".card.toml.recover holds unsaved edits from an editor that lost its terminal" \
+            in result.stderr, (command, result.stderr)
+        assert f"floatpage edit {path}` offers to restore" in result.stderr
+        if command in quiet:
+            assert result.stdout == quiet[command].stdout
