@@ -180,6 +180,12 @@ class EditorScreen(Screen):
                         "cannot be made",
                         title="Pictures not found" if gone else "Pictures that cannot be used",
                         severity="warning", timeout=20)
+        typed = self.session.typed_when_lost
+        if typed:  # restored edits: the words in a form the lost terminal left unapplied
+            self.notify("\n".join(f"• {printable(words)}" for words in typed[:4])
+                        + "\nThey are not in the page: type them again (Enter on the item, or "
+                        "i to insert)", title="Typed when the terminal went, not applied",
+                        severity="warning", timeout=30)
         path = self.session.project.path
         if path is not None and read_only(path):  # said at once, not after an hour's edits
             self.notify(f"{printable(path.name)} is read-only: edits can be made and exported, "

@@ -229,6 +229,7 @@ class EditSession:
         # floatpage's own writers, and Ctrl+S replaced such changes without a word.
         self.disk_digest = file_digest(project.path)
         self.read_text = project.source_text  # see `save`
+        self.typed_when_lost: list[str] = []  # words in forms a lost terminal left unapplied
         self._versions = itertools.count(1)
         self.held_id: str | None = None
         self.status_note: str | None = None  # what a release or a page size did, in words
