@@ -867,12 +867,26 @@ class EditorScreen(Screen):
         name = self.session.project.path.name
         self.ask(ChoiceDialog(f"{name} was changed by another program",
                               [("Replace it with the editor's version", "replace"),
+                               ("Open the file as it is now", "reload"),
                                ("Keep editing (save nothing)", None)],
                               message=f"Since the editor opened or last saved {name}, another "
                               "program changed it. Saving replaces those changes; the file as "
-                              f"it is now stays as {name}.bak.", highlighted=None,
+                              f"it is now stays as {name}.bak. Opened as it is now, the "
+                              "editor's unsaved edits and undo history go.", highlighted=None,
                               dialog_id="changed-on-disk-dialog"),
-                 lambda _choice: self.save_now(then))
+                 lambda choice: self.save_now(then) if choice == "replace"
+                 else self.reload_from_disk())
+
+    def reload_from_disk(self) -> None:
+        """The project as another program left it, in place of the editor's version."""
+        try:
+            self.session.reload()
+        except FloatpageError as error:  # their version does not load: say why, keep ours
+            self.notify(f"{error}\nThe editor's version is kept; mend the file, or replace "
+                        "it with Ctrl+S", title="Not opened", severity="error", timeout=15)
+            return
+        self.notify(f"opened {self.session.project.path.name} as it is now", timeout=4)
+        self.after_edit()
 
     def save_now(self, then: Callable[[], object] | None = None) -> None:
         """Save the pages edited since the last save as `floatpage settle` would leave them,

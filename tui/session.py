@@ -977,6 +977,35 @@ class EditSession:
         self.disk_digest = file_digest(path)
         return path
 
+    def reload(self) -> None:
+        """Read the project file again as it now is (another program changed it): the edits
+        not saved and the undo history go; the page on screen stays if it is still there.
+        Raises the loader's error, leaving the session as it was, for a file that no longer
+        loads."""
+        from floatpage.model.project_file import load_project
+
+        path = self.project.path
+        project = load_project(path, allow_outside_files=self.project.allow_outside_files,
+                               missing_pictures_ok=True)
+        if not project.pages:
+            width, height = page_dimensions("A4", "portrait")
+            project.pages.append(Page(id="page-1", width_mm=width, height_mm=height))
+        ids = [page.id for page in project.pages]
+        page_id = self.page.id
+        self.project = project
+        self.page_index = ids.index(page_id) if page_id in ids else min(self.page_index,
+                                                                         len(ids) - 1)
+        if self.selected_id not in {item.id for item in self.page.items}:
+            self.selected_id = None
+        self.pages_edited.clear()
+        self.history = History()
+        self.version = self.saved_version = 0
+        self._versions = itertools.count(1)
+        self.held_id, self.status_note, self.room_wanted = None, None, None
+        self.disk_digest = file_digest(path)
+        self.read_text = project.source_text
+        self.engine = self._build_engine()
+
     def changed_on_disk(self) -> bool:
         """Whether another program changed the project file since the editor read or saved it
         (a file since removed is not: a save only writes it again, and loses nothing)."""

@@ -45,7 +45,7 @@ async def test_a_save_asks_before_replacing_changes_another_program_made_to_the_
         await pilot.press("ctrl+s")
         await pilot.pause()
         assert app.screen.id == "changed-on-disk-dialog"
-        await pilot.press("up", "enter")  # "Replace it with the editor's version"
+        await pilot.press("home", "enter")  # "Replace it with the editor's version"
         await pilot.pause()
         assert app.screen is app.editor
         assert not app.session.unsaved
@@ -56,6 +56,35 @@ async def test_a_save_asks_before_replacing_changes_another_program_made_to_the_
         await pilot.pause()
         assert app.screen is app.editor
         assert not app.session.unsaved
+
+
+async def test_the_file_as_another_program_left_it_can_be_opened_in_its_place(project_path):
+    """The title mended in vim while the editor was open: the question also opens the file as
+    it now is (the editor's unsaved nudge and its undo go); a file left broken is named and
+    the editor's version kept."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "right")
+        await pilot.pause()
+        theirs = edited_elsewhere(project_path)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        await pilot.press("home", "down", "enter")  # "Open the file as it is now"
+        await pilot.pause()
+        assert app.screen is app.editor
+        assert project_path.read_text() == theirs
+        assert app.session.project.pages[0].item("title").text == "Happy Birthday Anna and Ben"
+        assert not app.session.unsaved and not app.session.history.undo_stack
+        await pilot.press("right", "ctrl+s")  # their file is the editor's now: saved at once
+        await pilot.pause()
+        assert app.screen is app.editor and not app.session.unsaved
+        assert "and Ben" in project_path.read_text()
+        project_path.write_text(project_path.read_text() + "\n[[pages]\n")  # left broken
+        await pilot.press("right", "ctrl+s")
+        await pilot.pause()
+        await pilot.press("home", "down", "enter")
+        await pilot.pause()
+        assert app.screen is app.editor and app.session.unsaved  # the editor's version kept
+        assert "and Ben" in app.session.project.pages[0].item("title").text
 
 
 async def test_save_and_quit_asks_too_and_quits_once_the_file_is_replaced(project_path):
@@ -72,7 +101,7 @@ async def test_save_and_quit_asks_too_and_quits_once_the_file_is_replaced(projec
         await pilot.pause()
         assert app.screen.id == "changed-on-disk-dialog"
         x_on_screen = position(app, moved)[0]
-        await pilot.press("up", "enter")
+        await pilot.press("home", "enter")
         await pilot.pause()
         assert app._exit  # quit, once saved
     saved = load_project(project_path)
