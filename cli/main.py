@@ -111,9 +111,22 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
 
     from floatpage.tui.recovery import discard_recovery
 
-    when = datetime.fromtimestamp(recovery.stat().st_mtime).strftime("%Y-%m-%d %H:%M")
+    kept_at = recovery.stat().st_mtime
+    when = datetime.fromtimestamp(kept_at).strftime("%Y-%m-%d %H:%M")
     print(f"{printable(str(project))} has unsaved edits from an editor that lost its terminal at {when} "
           f"(kept in {printable(recovery.name)}).")
+    try:
+        changed_at = project.stat().st_mtime
+    except OSError:
+        changed_at = kept_at
+    if changed_at > kept_at:
+        # A project saved again since (another editor session, a settle, a `git pull`): the
+        # kept edits were made to the file before that, and restoring them then saving
+        # replaced the newer file without a word.
+        later = datetime.fromtimestamp(changed_at).strftime("%Y-%m-%d %H:%M")
+        print(f"The project itself was changed after that, at {later}: restored, these edits "
+              "replace that version when you save (it is kept as "
+              f"{printable(project.name)}.bak); discard them to keep it.")
     while True:
         try:
             answer = ask_letter("[r]estore them, [d]iscard them, or [q]uit and decide later? ")
@@ -126,6 +139,23 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
             return False
         if answer in ("q", "quit"):
             raise FloatpageError(f"{project}: not opened; the unsaved edits stay in {recovery}")
+
+
+def note_kept_edits(path: str) -> None:
+    """A note (on stderr: a Makefile's output stays as it was) that an editor which lost its
+    terminal left unsaved edits beside the project: after a dropped SSH link, `make` checked,
+    settled and rendered the file without them, and nothing said they were there."""
+    from floatpage.tui.recovery import pending_recovery
+
+    try:
+        kept = pending_recovery(path)
+    except OSError:
+        return
+    if kept is not None:
+        print(f"note: {printable(str(path))}: {printable(kept.name)} holds unsaved edits from "
+              "an editor that lost its terminal, not in the project file this command reads; "
+              f"`floatpage edit {printable(str(path))}` offers to restore or discard them",
+              file=sys.stderr)
 
 
 def ask_letter(prompt: str) -> str:
@@ -573,6 +603,8 @@ def main(argv: Sequence[str] | None = None) -> int:
               file=sys.stderr)
         return EXIT_USER_ERROR
     try:
+        if args.run in (cmd_check, cmd_settle, cmd_render):
+            note_kept_edits(args.path)
         return args.run(args)
     except FloatpageError as error:
         # Line by line: a message may list several problems, each on its own line, and each

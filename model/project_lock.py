@@ -78,9 +78,7 @@ class ProjectLock:
                 if time.monotonic() >= deadline:
                     holder = read_holder(fd)
                     os.close(fd)
-                    raise ProjectLockedError(
-                        f"{self.project}: is being edited by {holder}; close it there, "
-                        "or wait for it to finish, then try again") from None
+                    raise ProjectLockedError(f"{self.project}: {held_by(holder)}") from None
                 time.sleep(POLL_S)
         try:  # who holds it, for a waiter's message; a full disk refuses even these bytes,
             os.ftruncate(fd, 0)  # and the save that follows says so, naming the project
@@ -113,6 +111,16 @@ def file_kind(mode: int) -> str:
         return ""
     return ("device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else
             "pipe" if stat.S_ISFIFO(mode) else "socket" if stat.S_ISSOCK(mode) else "special file")
+
+
+def held_by(holder: str) -> str:
+    """What the one refused is told: an editor is closed by its user, any other writer (a
+    `settle` of a long project) is waited for; "is being edited by PID 4242 (floatpage
+    settle); close it there" sent a user looking for an editor there was none of."""
+    if "floatpage" in holder and "floatpage edit" not in holder:
+        return f"is being written by {holder}; wait for it to finish, then try again"
+    return (f"is being edited by {holder}; close it there, or wait for it to finish, "
+            "then try again")
 
 
 def read_holder(fd: int) -> str:

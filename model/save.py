@@ -164,6 +164,11 @@ def add_key(table: Table, key: str, value: Any) -> None:
     body = table.value.body
     if trailing_space(table) and hasattr(table.value, "_insert_at"):
         table.value._insert_at(len(body) - 1, key, value)
+        # The container holds the key now, but the Table (a dict) keeps its own copy of the
+        # keys, which tomlkit's Table.append updates and `_insert_at` does not: the editor
+        # saves into the same document again, and taking the key out there (an undo, a
+        # group emptied) failed with "KeyError: 'region'".
+        dict.__setitem__(table, key, table.value[key])
     else:
         table[key] = value
 

@@ -18,9 +18,10 @@ from textual.app import App, SystemCommand
 from textual.screen import Screen
 
 from floatpage.model.project_file import load_project
+from floatpage.tui.dialogs.form import FormDialog
 from floatpage.tui.editor_screen import EditorScreen
 from floatpage.tui.keymap import COMMANDS, key_label
-from floatpage.tui.recovery import HangupGuard, load_recovered
+from floatpage.tui.recovery import HangupGuard, load_recovered, typed_when_lost
 from floatpage.tui.session import EditSession
 from floatpage.tui.terminal_driver import HangupAwareDriver
 from floatpage.tui.type_ahead import TypeAhead
@@ -45,7 +46,7 @@ class FloatpageApp(App):
 
     def on_mount(self) -> None:
         if not self.is_headless:  # a real terminal, which can hang up
-            HangupGuard(self.session, self.exit).install()
+            HangupGuard(self.session, self.exit, self.typed_in_forms).install()
             # The writer and input threads wait for the interpreter lock while a physics frame
             # runs; Python hands it over every 5 ms by default, which delayed a key's screen
             # write or the key itself by up to that much. 1 ms costs little with three threads.
@@ -110,6 +111,17 @@ class FloatpageApp(App):
             yield SystemCommand(f"{command.label}  ({key_label(command.keys)})", command.help,
                                 partial(editor.run_action, command.action))
 
+    def typed_in_forms(self) -> list[str]:
+        """What the open forms hold that was typed and not applied, one line each, for the
+        recovery file (`HangupGuard`): the form's title, the field's label and the words."""
+        typed = []
+        for screen in self.screen_stack:
+            if isinstance(screen, FormDialog):
+                for label, words in screen.typed():
+                    label = " ".join(label.split())
+                    typed.append(f"{screen.title_text} · {label}: {words}")
+        return typed
+
     async def action_quit(self) -> None:
         """Ctrl+Q and the palette's Quit ask first, like q, when there are unsaved changes."""
         self.editor.action_quit()
@@ -126,8 +138,10 @@ def make_app(project_path: str | Path, *, seed: int | None = None,
     `autostart=False` starts with the physics paused, so tests see repeatable frames.
     `recovered=True` opens the edits a lost terminal left in the recovery file, unsaved.
     """
+    typed: list[str] = []
     if recovered:
         project = load_recovered(project_path, allow_outside_files=allow_outside_files)
+        typed = typed_when_lost(project_path)
     else:  # a picture moved away must not keep the user out of the editor: it says so
         project = load_project(project_path, allow_outside_files=allow_outside_files,
                                missing_pictures_ok=True)
@@ -135,4 +149,5 @@ def make_app(project_path: str | Path, *, seed: int | None = None,
     session = EditSession(project, seed=session_seed)
     if recovered:
         session.mark_unsaved()
+        session.typed_when_lost = typed
     return FloatpageApp(session, autostart=autostart)

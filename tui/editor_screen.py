@@ -180,6 +180,12 @@ class EditorScreen(Screen):
                         "cannot be made",
                         title="Pictures not found" if gone else "Pictures that cannot be used",
                         severity="warning", timeout=20)
+        typed = self.session.typed_when_lost
+        if typed:  # restored edits: the words in a form the lost terminal left unapplied
+            self.notify("\n".join(f"• {printable(words)}" for words in typed[:4])
+                        + "\nThey are not in the page: type them again (Enter on the item, or "
+                        "i to insert)", title="Typed when the terminal went, not applied",
+                        severity="warning", timeout=30)
         path = self.session.project.path
         if path is not None and read_only(path):  # said at once, not after an hour's edits
             self.notify(f"{printable(path.name)} is read-only: edits can be made and exported, "
@@ -851,7 +857,38 @@ class EditorScreen(Screen):
 
     # -- files -------------------------------------------------------------------------------
 
-    def action_save(self) -> None:
+    def action_save(self, then: Callable[[], object] | None = None) -> None:
+        """Save, after asking first when another program changed the file since the editor
+        read or saved it (an edit in a text editor, a `git checkout`): Ctrl+S replaced such
+        changes without a word. `then` runs once the project is saved."""
+        if not self.session.changed_on_disk():
+            self.save_now(then)
+            return
+        name = self.session.project.path.name
+        self.ask(ChoiceDialog(f"{name} was changed by another program",
+                              [("Replace it with the editor's version", "replace"),
+                               ("Open the file as it is now", "reload"),
+                               ("Keep editing (save nothing)", None)],
+                              message=f"Since the editor opened or last saved {name}, another "
+                              "program changed it. Saving replaces those changes; the file as "
+                              f"it is now stays as {name}.bak. Opened as it is now, the "
+                              "editor's unsaved edits and undo history go.", highlighted=None,
+                              dialog_id="changed-on-disk-dialog"),
+                 lambda choice: self.save_now(then) if choice == "replace"
+                 else self.reload_from_disk())
+
+    def reload_from_disk(self) -> None:
+        """The project as another program left it, in place of the editor's version."""
+        try:
+            self.session.reload()
+        except FloatpageError as error:  # their version does not load: say why, keep ours
+            self.notify(f"{error}\nThe editor's version is kept; mend the file, or replace "
+                        "it with Ctrl+S", title="Not opened", severity="error", timeout=15)
+            return
+        self.notify(f"opened {self.session.project.path.name} as it is now", timeout=4)
+        self.after_edit()
+
+    def save_now(self, then: Callable[[], object] | None = None) -> None:
         """Save the pages edited since the last save as `floatpage settle` would leave them,
         so a saved file is a fixed point of it: saved after a nudge, the greeting card's
         picture was snapped back onto the page's centre line by the next settle, 1.8 mm from
@@ -876,6 +913,8 @@ class EditorScreen(Screen):
             return
         self.notify(f"saved {path}", timeout=3)
         self.redraw()
+        if then is not None:
+            then()
 
     def action_export_pdf(self) -> None:
         if self.export_state:
@@ -987,6 +1026,4 @@ class EditorScreen(Screen):
         if choice == "discard":
             self.app.exit()
         elif choice == "save":
-            self.action_save()
-            if not self.session.unsaved:
-                self.app.exit()
+            self.action_save(then=lambda: None if self.session.unsaved else self.app.exit())

@@ -30,17 +30,43 @@ def recovery_path(project_path: str | Path) -> Path:
     return real.with_name(f".{real.name}.recover")
 
 
-def write_recovery(session) -> Path | None:
-    """Write the session's unsaved project to its recovery file; None when nothing is unsaved."""
-    if not session.unsaved or session.project.path is None:
+# Words typed into a form that was open when the terminal went, one per line at the top of the
+# recovery file: they were lost (a text typed into the insert form over SSH, then the link
+# dropped), and are shown again when the edits are restored. Comments: the file stays TOML.
+TYPED_NOTE = "# typed when the terminal went, not applied: "
+
+
+def comment_safe(text: str) -> str:
+    """``text`` on one line a TOML comment may hold: line breaks as " ⏎ ", other control
+    characters (which no comment may hold) and lone surrogates as \\uXXXX."""
+    text = text.replace("\r\n", "\n").replace("\n", " ⏎ ")
+    return "".join(f"\\u{ord(char):04x}" if (ord(char) < 0x20 and char != "\t")
+                   or ord(char) == 0x7F or 0xD800 <= ord(char) <= 0xDFFF else char
+                   for char in text)
+
+
+def write_recovery(session, typed: list[str] | tuple[str, ...] = ()) -> Path | None:
+    """Write the session's unsaved project, and ``typed`` (words in a form not yet applied), to
+    its recovery file; None when there is neither."""
+    if not (session.unsaved or typed) or session.project.path is None:
         return None
     try:
         session.sync_positions()
     except Exception:  # noqa: BLE001 - mid-step numbers: the model's last positions will do
         pass
     path = recovery_path(session.project.path)
-    atomic_write(path, dump_project(session.project).encode("utf-8"), backup=False)
+    notes = "".join(f"{TYPED_NOTE}{comment_safe(words)}\n" for words in typed)
+    atomic_write(path, (notes + dump_project(session.project)).encode("utf-8"), backup=False)
     return path
+
+
+def split_typed(text: str) -> tuple[list[str], str]:
+    """The typed notes at the top of a recovery file's text, and the rest of it."""
+    lines = text.splitlines(keepends=True)
+    notes = []
+    while lines and lines[0].startswith(TYPED_NOTE):
+        notes.append(lines.pop(0)[len(TYPED_NOTE):].rstrip("\r\n"))
+    return notes, "".join(lines)
 
 
 def pending_recovery(project_path: str | Path) -> Path | None:
@@ -53,7 +79,19 @@ def load_recovered(project_path: str | Path, *, allow_outside_files: bool = Fals
     project = load_project(recovery_path(project_path), allow_outside_files=allow_outside_files,
                            missing_pictures_ok=True)
     project.path = Path(project_path)
+    if project.source_text is not None:  # the notes are no part of the project, nor saved
+        project.source_text = split_typed(project.source_text)[1]
     return project
+
+
+def typed_when_lost(project_path: str | Path) -> list[str]:
+    """The words that were in open forms when the terminal went, as the recovery file keeps
+    them (see TYPED_NOTE)."""
+    try:
+        text = recovery_path(project_path).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return []
+    return split_typed(text)[0]
 
 
 def discard_recovery(project_path: str | Path) -> None:
@@ -69,9 +107,11 @@ class HangupGuard:
     should a terminal that stopped reading hold the exit up.
     """
 
-    def __init__(self, session, exit_app: Callable[[], None]):
+    def __init__(self, session, exit_app: Callable[[], None],
+                 typed: Callable[[], list[str]] = list):
         self.session = session
         self.exit_app = exit_app
+        self.typed = typed  # the words in open forms (`FloatpageApp.typed_in_forms`)
 
     def install(self) -> None:
         # What write_recovery needs is imported now, not in the handler: tomlkit is imported
@@ -85,7 +125,11 @@ class HangupGuard:
 
     def save(self) -> None:
         try:
-            write_recovery(self.session)
+            typed = self.typed()
+        except Exception:  # noqa: BLE001 - the edits matter more than the words in a form
+            typed = []
+        try:
+            write_recovery(self.session, typed)
         except Exception:  # noqa: BLE001 - leaving matters more than a message nobody sees
             pass
 

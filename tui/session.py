@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import hashlib
 import itertools
 import math
 import os
@@ -33,10 +34,21 @@ from floatpage.tui.history import History, Snapshot
 from floatpage.tui.reading_order import reading_order, step_through
 
 MIN_SIDE_MM = 3.0
+# How far an unmoved item's position as the engine has it may lie from the file's and still
+# be the file's (one step of the saved 0.01 mm, and the float error of the sum)
+ROUNDING_KEPT_MM = 0.0101
 
 
 class EditError(FloatpageError):
     """An edit that cannot be done as asked; the message says why, for a notification."""
+
+
+def file_digest(path: Path | None) -> str | None:
+    """The file's content hash, or None when there is no such file to read."""
+    try:
+        return hashlib.sha256(path.read_bytes()).hexdigest() if path is not None else None
+    except OSError:
+        return None
 
 
 def picture_aspect(path: Path) -> float | None:
@@ -212,6 +224,12 @@ class EditSession:
         self.history = History()
         self.version = 0  # the document state: every edit makes a new one, undo returns to one
         self.saved_version = 0
+        # The file as the editor last read or wrote it: a save checks that no other program
+        # (a text editor, `git checkout`) changed it meanwhile; the lock keeps out only
+        # floatpage's own writers, and Ctrl+S replaced such changes without a word.
+        self.disk_digest = file_digest(project.path)
+        self.read_text = project.source_text  # see `save`
+        self.typed_when_lost: list[str] = []  # words in forms a lost terminal left unapplied
         self._versions = itertools.count(1)
         self.held_id: str | None = None
         self.status_note: str | None = None  # what a release or a page size did, in words
@@ -248,9 +266,20 @@ class EditSession:
         0.2-1.6 s of an insert or a turned page spent on an answer never used."""
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
         engine = engine_for_page(self.page, settings)
+        self.mark_rest(engine)
         if check and needs_settling(self.page, settings, engine):
             engine.reheat()
         return engine
+
+    def mark_rest(self, engine: Engine) -> None:
+        """Note where the new engine has the page's items (rounded as a save writes them)
+        beside where the model has them, for `sync_positions`."""
+        page = self.page
+        resting = copy_of(page)
+        write_back(resting, engine)
+        self.rest_marks = (page.id, {
+            item.id: ((done.x, done.y), (item.x, item.y))
+            for item, done in zip(page.items, resting.items)})
 
     def resting_copy(self) -> Page:
         """A copy of the page with the engine's positions, rounded as a save writes them."""
@@ -295,8 +324,24 @@ class EditSession:
         self.pages_edited.clear()
 
     def sync_positions(self) -> None:
-        """Copy the engine's live positions into the model's items."""
-        write_back(self.page, self.engine)
+        """Copy the engine's live positions into the model's items.
+
+        An item the engine has not moved since it was built keeps the model's own position:
+        a follower stands at its target plus its offset, which can round 0.01 mm away from
+        the position the file says (the album's captions: 76.44 + 36.36 against 112.81), and
+        Ctrl+S on a project nobody had changed rewrote it, as did undoing every edit."""
+        page = self.page
+        write_back(page, self.engine)
+        page_id, marks = self.rest_marks
+        if page_id != page.id:
+            return
+        for item in page.items:
+            mark = marks.get(item.id)
+            if mark is None or mark[0] != (item.x, item.y) or mark[1] == mark[0] \
+                    or max(abs(a - b) for a, b in zip(*mark)) > ROUNDING_KEPT_MM \
+                    or isinstance(item.anchor, PointAnchor) and item.anchor.hard:
+                continue
+            item.x, item.y = mark[1]
 
     def reading_order(self) -> list[str]:
         self.sync_positions()
@@ -614,8 +659,22 @@ class EditSession:
             scale = min(w / item.w, h / item.h) if fx >= 1 else max(w / item.w, h / item.h)
             w, h = item.w * scale, item.h * scale
         self.checkpoint(f"resize {item.id}")
+        page = self.page
+        followed = item.group or isinstance(item.anchor, ItemAnchor) or any(
+            isinstance(other.anchor, ItemAnchor) and other.anchor.to == item.id
+            for other in page.items)
+        if not followed:
+            item.w, item.h = w, h
+            self.engine.resize(item.id, w, h)
+            return w, h
+        # A caption keeps its distance from the photo it follows, as on a new page size: its
+        # offset between centres kept, a photo grown with `+` came down over its caption, and
+        # neither the physics nor `check` saw it (one body: they never part)
+        self.sync_positions()
+        old_sizes = {other.id: (other.w, other.h) for other in page.items}
         item.w, item.h = w, h
-        self.engine.resize(item.id, w, h)
+        scale_follow_offsets(page, old_sizes, 1.0, 1.0)
+        self.rebuild_engine(sync=False)
         return w, h
 
     def update_item(self, item_id: str, changes: dict) -> None:
@@ -637,11 +696,17 @@ class EditSession:
                 scale = min(1.0, 0.9 * self.page.width_mm / w,
                             0.9 * self.page.height_mm / (w * aspect))
                 changes["w"], changes["h"] = w * scale, w * aspect * scale
+        resized = "w" in changes or "h" in changes
+        if resized:  # followers keep their distance, as `resize_selected` keeps it
+            self.sync_positions()
+            old_sizes = {other.id: (other.w, other.h) for other in self.page.items}
         for key, value in changes.items():
             setattr(item, key, value)
         if gamma_changes:
             item.anchor.gamma = gamma
-        self.rebuild_engine()
+        if resized:
+            scale_follow_offsets(self.page, old_sizes, 1.0, 1.0)
+        self.rebuild_engine(sync=not resized)
 
     def refuse_bad_group_or_region(self, item, changes: dict) -> None:
         """Raise EditError for a group or region the project file could not hold (the loader's
@@ -902,9 +967,50 @@ class EditSession:
     def save(self) -> Path:
         self.end_move()
         self.sync_positions()
+        if self.version == 0 and self.read_text is not None:
+            # every edit undone: saved into the text as it was read, not into the one the last
+            # save left (an anchor taken off and put back came at its table's end, pages
+            # removed and brought back left blank lines), so the file is as it was read
+            self.project.source_text, self.project.parsed_source = self.read_text, None
         path = save_project(self.project)
         self.saved_version = self.version
+        self.disk_digest = file_digest(path)
         return path
+
+    def reload(self) -> None:
+        """Read the project file again as it now is (another program changed it): the edits
+        not saved and the undo history go; the page on screen stays if it is still there.
+        Raises the loader's error, leaving the session as it was, for a file that no longer
+        loads."""
+        from floatpage.model.project_file import load_project
+
+        path = self.project.path
+        project = load_project(path, allow_outside_files=self.project.allow_outside_files,
+                               missing_pictures_ok=True)
+        if not project.pages:
+            width, height = page_dimensions("A4", "portrait")
+            project.pages.append(Page(id="page-1", width_mm=width, height_mm=height))
+        ids = [page.id for page in project.pages]
+        page_id = self.page.id
+        self.project = project
+        self.page_index = ids.index(page_id) if page_id in ids else min(self.page_index,
+                                                                         len(ids) - 1)
+        if self.selected_id not in {item.id for item in self.page.items}:
+            self.selected_id = None
+        self.pages_edited.clear()
+        self.history = History()
+        self.version = self.saved_version = 0
+        self._versions = itertools.count(1)
+        self.held_id, self.status_note, self.room_wanted = None, None, None
+        self.disk_digest = file_digest(path)
+        self.read_text = project.source_text
+        self.engine = self._build_engine()
+
+    def changed_on_disk(self) -> bool:
+        """Whether another program changed the project file since the editor read or saved it
+        (a file since removed is not: a save only writes it again, and loses nothing)."""
+        now = file_digest(self.project.path)
+        return now is not None and now != self.disk_digest
 
     def finalize_for_export(self) -> Project:
         """Run the no-overlap pass on every page, write positions back; return a copy to render.

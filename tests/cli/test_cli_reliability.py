@@ -304,7 +304,7 @@ def test_two_settles_at_once_keep_the_version_from_before_both(tmp_path):
                                   text=True, cwd=ROOT) for _ in range(2)]
     results = [(p.wait(timeout=120), p.stderr.read()) for p in processes]
     for code, stderr in results:
-        assert code == 0 or "is being edited by PID" in stderr, stderr
+        assert code == 0 or "is being written by PID" in stderr, stderr
     assert (tmp_path / "card.toml.bak").read_text() == original
 
 
@@ -342,7 +342,11 @@ def test_the_editor_refuses_a_project_another_process_holds(tmp_path):
     with ProjectLock(path, purpose="floatpage settle"):
         result = run("edit", str(path), timeout=60)
     assert result.returncode == 1
-    assert "is being edited by PID" in result.stderr
+    # a settle is waited for, not closed: "is being edited by … (floatpage settle); close it
+    # there" sent the user looking for an editor (user-walk-8)
+    assert f"is being written by PID {os.getpid()} (floatpage settle); wait for it to finish" \
+        in result.stderr
+    assert "close it there" not in result.stderr
 
 
 # 6. leftovers of a killed save --------------------------------------------------------------------
@@ -703,3 +707,23 @@ def test_a_deleted_current_folder_is_a_clear_error_not_an_internal_one(tmp_path)
     assert result.returncode == 1, result.stderr
     assert "current folder no longer exists" in result.stderr
     assert "internal error" not in result.stderr
+
+
+def test_check_settle_and_render_say_an_editor_left_unsaved_edits_beside_the_project(tmp_path):
+    """After a dropped SSH link, `make` checked, settled and rendered the project without the
+    edits the editor had kept in `.card.toml.recover`, and nothing said they were there
+    (user-walk-8). A note on stderr names them; the exit code and stdout stay as they were."""
+    path = card(tmp_path)
+    assert run("settle", str(path)).returncode == 0  # settled: what follows changes nothing
+    quiet = {command: run(command, str(path)) for command in ("check", "settle")}
+    for result in quiet.values():
+        assert "unsaved edits" not in result.stderr
+    (tmp_path / ".card.toml.recover").write_text(path.read_text())
+    for command in ("check", "settle", "render"):
+        result = run(command, str(path))
+        assert result.returncode == 0, result.stderr
+        assert ".card.toml.recover holds unsaved edits from an editor that lost its terminal" \
+            in result.stderr, (command, result.stderr)
+        assert f"floatpage edit {path}` offers to restore" in result.stderr
+        if command in quiet:
+            assert result.stdout == quiet[command].stdout

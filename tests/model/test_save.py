@@ -269,3 +269,27 @@ def test_a_key_added_and_a_first_region_keep_the_files_blank_lines(tmp_path):
     save_project(project)
     text = path.read_text()
     assert 'color = "#ff8800"\n\n[[pages.regions]]\n' in text and text.endswith("h = 100.0\n")
+
+
+def test_a_key_a_save_added_can_be_changed_and_taken_out_by_the_next_save(tmp_path):
+    """The editor keeps the document it saved into: a group or region key added before an
+    item's closing blank line, then taken out by an undo and saved again, failed with
+    "KeyError: 'region'" (user-walk-8: a long session, undone all the way back, could not be
+    saved)."""
+    from floatpage.model.document import Region
+
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    path = folder / "photo-album.toml"
+    project = load_project(path)
+    page = project.pages[0]
+    item = page.items[1]  # an item between two others: its table ends with a blank line
+    page.regions.append(Region("top", 0.0, 0.0, 200.0, 200.0))
+    for group, region in (("g", ""), ("h", "top"), ("", "top"), ("g", ""), ("", "")):
+        item.group, item.region = group, region
+        save_project(project)
+        again = load_project(path).pages[0].items[1]
+        assert (again.group, again.region) == (group, region)
+        text = path.read_text()
+        assert text.count("group =") == (1 if group else 0)
+        assert text.count('region = "top"') == (1 if region else 0)

@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 
 from floatpage.model import BlockItem, Page, Project, TextItem, load_project, save_project
-from floatpage.tui.recovery import recovery_path
+from floatpage.tui.recovery import comment_safe, recovery_path
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -257,3 +257,76 @@ print(sorted(set(sys.modules) - before))
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "[]"
     assert recovery_path(path).exists()
+
+
+def test_the_recovery_question_says_when_the_project_was_changed_after_the_edits(tmp_path):
+    """Edits kept at a hang-up, then the project saved again (another session, a settle, a
+    `git pull`): the question offered to restore them as if nothing had happened, and a save
+    then replaced the newer file without a word (user-walk-8)."""
+    path = project_file(tmp_path)
+    recovery = recovery_path(path)
+    recovery.write_bytes(path.read_bytes())
+    kept_at = time.time() - 600
+    os.utime(path, (kept_at - 60, kept_at - 60))
+    os.utime(recovery, (kept_at, kept_at))
+    editor = Editor(path)
+    try:
+        editor.read_until(b"[d]iscard them")
+        assert b"changed after that" not in editor.screen  # the file is older than the edits
+    finally:
+        editor.kill()
+        os.close(editor.fd)
+    path.write_text(path.read_text().replace('"Hello"', '"Hello again"'))  # saved since
+    editor = Editor(path)
+    try:
+        editor.read_until(b"[d]iscard them")
+        screen = editor.screen.replace(b"\r\n", b" ")
+        assert b"The project itself was changed after that" in screen, screen
+        assert b"card.toml.bak" in screen
+    finally:
+        editor.kill()
+        os.close(editor.fd)
+
+
+def test_words_typed_into_a_form_when_the_terminal_went_are_kept_and_shown_again(tmp_path):
+    """Over SSH, a text typed into the insert form, then the link dropped: the recovery file
+    held the moves but not the words, and they were lost (user-walk-8). They are kept, as
+    comments at the top of the recovery file, and shown again when the edits are restored;
+    the project saved from them holds no such comment."""
+    path = project_file(tmp_path)
+    editor = Editor(path)
+    try:
+        editor.read_until(b"items")
+        editor.send(b"t")
+        editor.read_until(b"Insert a text box")
+        editor.drain(0.5)
+        editor.send("Hello over ssh\rcafé".encode())
+        editor.drain(1.0)
+        os.close(editor.fd)  # the terminal goes away
+        code, _ = editor.wait_exit(5.0)
+    finally:
+        editor.kill()
+    assert code is not None
+    kept = recovery_path(path).read_text()
+    assert "Hello over ssh ⏎ café" in kept, kept[:400]
+    # what no TOML comment may hold is written so that the file still loads
+    assert comment_safe("a\x01b\x7f\ud800\tc\r\nd") == "a\\u0001b\\u007f\\ud800\tc ⏎ d"
+    assert load_project(recovery_path(path)).pages[0].item("title").text == "Hello"
+
+    again = Editor(path)
+    try:
+        again.read_until(b"[r]estore them, [d]iscard them")
+        again.send(b"r")
+        again.read_until(b"not applied")
+        again.read_until(b"Hello over ssh")
+        again.drain(0.5)
+        again.send(b"\x13")  # Ctrl+S
+        again.drain(1.0)
+        again.send(b"\x11")  # Ctrl+Q
+        code, _ = again.wait_exit(10.0)
+    finally:
+        again.kill()
+        os.close(again.fd)
+    assert code == 0, again.screen[-500:]
+    assert "typed when the terminal went" not in path.read_text()
+    assert not recovery_path(path).exists()

@@ -111,6 +111,19 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
                 values[field.name] = widget.value
         return values
 
+    def typed(self) -> list[tuple[str, str]]:
+        """(label, text) of each line or text field whose text was changed, as typed: what a
+        lost terminal would lose (`tui.recovery` keeps it)."""
+        typed = []
+        for field in self.fields:
+            if field.kind not in ("line", "text"):
+                continue
+            widget = self.query_one(f"#field-{field.name}")
+            now = widget.text if isinstance(widget, TextArea) else widget.value
+            if now != str(field.value):
+                typed.append((field.label, now))
+        return typed
+
     def action_apply(self) -> None:
         try:
             result = self.parse(self.values())
