@@ -51,10 +51,9 @@ def test_the_compiled_sweeps_make_the_python_sweeps_moves(count, coverage, seed,
     assert compiled == python
 
 
-def test_the_compiled_sweeps_on_pages_with_followers_and_many_moves():
-    """Groups of several rows (followers of an anchored page), and a 120-item page whose snap
-    makes hundreds of moves (the memo recalled and invalidated many times, try_lesser's
-    moves): the same moves both ways, and enough of them to mean something."""
+def followers_settled() -> list[Engine]:
+    """Two anchored pages of photos with followers (groups of several rows), settled without
+    their final pass: what the snap would start from."""
     from anchored_pages import random_project
     from floatpage.model.layout import engine_for_page
 
@@ -65,6 +64,14 @@ def test_the_compiled_sweeps_on_pages_with_followers_and_many_moves():
         engine.reheat()
         engine.settle(finalize=False)
         engines.append(engine)
+    return engines
+
+
+def test_the_compiled_sweeps_on_pages_with_followers_and_many_moves():
+    """Groups of several rows (followers of an anchored page), and a 120-item page whose snap
+    makes hundreds of moves (the memo recalled and invalidated many times, try_lesser's
+    moves): the same moves both ways, and enough of them to mean something."""
+    engines = followers_settled()
     big = Engine(297.0, 210.0, Params())
     load(big, mixed_scene(120, 0.4, seed=3001, page_w_mm=297.0, page_h_mm=210.0))
     big.settle(finalize=False)
@@ -94,16 +101,7 @@ def engines_with_moves() -> list[Engine]:
     """Pages whose first sweeps move many groups: two of followers (groups of several rows),
     a 45-item page, and the same with its centres on a 0.25 mm grid (features exactly a
     window apart)."""
-    from anchored_pages import random_project
-    from floatpage.model.layout import engine_for_page
-
-    engines = []
-    for seed in (27100, 27101):
-        project = random_project(seed, "follow")
-        engine = engine_for_page(project.pages[0], project.physics)
-        engine.reheat()
-        engine.settle(finalize=False)
-        engines.append(engine)
+    engines = followers_settled()
     for grid in (False, True):
         engine = Engine(297.0, 210.0, Params())
         load(engine, mixed_scene(45, 0.45, seed=2003, page_w_mm=297.0, page_h_mm=210.0))

@@ -99,6 +99,26 @@ class Editor:
             pass
 
 
+def restore_save_and_quit(path: Path, answer: bytes, *shown: bytes) -> None:
+    """Open the editor again, answer its recovery question, wait for each of ``shown``, then
+    save and quit; it must leave cleanly."""
+    again = Editor(path)
+    try:
+        again.read_until(b"[r]estore them, [d]iscard them")
+        again.send(answer)
+        for text in shown:
+            again.read_until(text)
+        again.drain(0.5)
+        again.send(b"\x13")  # Ctrl+S
+        again.drain(1.0)
+        again.send(b"\x11")  # Ctrl+Q
+        code, _ = again.wait_exit(10.0)
+    finally:
+        again.kill()
+        os.close(again.fd)
+    assert code == 0, again.screen[-500:]
+
+
 def edit_something(editor: Editor) -> None:
     editor.read_until(b"items")
     editor.send(b"\t")  # select the first item
@@ -166,20 +186,7 @@ def test_the_next_edit_offers_the_recovered_edits(tmp_path):
     assert recovery_path(path).exists(), editor.screen[-3000:]
     moved_x = load_project(recovery_path(path)).pages[0].item("block").x
 
-    again = Editor(path)
-    try:
-        again.read_until(b"[r]estore them, [d]iscard them")
-        again.send(b"r\r")
-        again.read_until(b"2 items")
-        again.drain(0.5)
-        again.send(b"\x13")  # Ctrl+S
-        again.drain(1.0)
-        again.send(b"\x11")  # Ctrl+Q
-        code, _ = again.wait_exit(10.0)
-    finally:
-        again.kill()
-        os.close(again.fd)
-    assert code == 0, again.screen[-500:]
+    restore_save_and_quit(path, b"r\r", b"2 items")
     assert load_project(path).pages[0].item("block").x == moved_x
     assert not recovery_path(path).exists()
 
@@ -313,20 +320,6 @@ def test_words_typed_into_a_form_when_the_terminal_went_are_kept_and_shown_again
     assert comment_safe("a\x01b\x7f\ud800\tc\r\nd") == "a\\u0001b\\u007f\\ud800\tc ⏎ d"
     assert load_project(recovery_path(path)).pages[0].item("title").text == "Hello"
 
-    again = Editor(path)
-    try:
-        again.read_until(b"[r]estore them, [d]iscard them")
-        again.send(b"r")
-        again.read_until(b"not applied")
-        again.read_until(b"Hello over ssh")
-        again.drain(0.5)
-        again.send(b"\x13")  # Ctrl+S
-        again.drain(1.0)
-        again.send(b"\x11")  # Ctrl+Q
-        code, _ = again.wait_exit(10.0)
-    finally:
-        again.kill()
-        os.close(again.fd)
-    assert code == 0, again.screen[-500:]
+    restore_save_and_quit(path, b"r", b"not applied", b"Hello over ssh")
     assert "typed when the terminal went" not in path.read_text()
     assert not recovery_path(path).exists()

@@ -23,6 +23,17 @@ def edited_elsewhere(path) -> str:
     return changed
 
 
+async def nudged_then_saved_over(pilot, path) -> str:
+    """An item nudged in the editor, the file changed behind its back, then Ctrl+S: the
+    question the editor asks; returns the other program's text."""
+    await pilot.press("tab", "right")
+    await pilot.pause()
+    theirs = edited_elsewhere(path)
+    await pilot.press("ctrl+s")
+    await pilot.pause()
+    return theirs
+
+
 async def test_a_save_asks_before_replacing_changes_another_program_made_to_the_file(
         project_path):
     """With the editor open, the user mended a word in the file in vim; a nudge and Ctrl+S in
@@ -30,11 +41,7 @@ async def test_a_save_asks_before_replacing_changes_another_program_made_to_the_
     Ctrl+S asks, Esc keeps the file as the other program left it, and the replacement,
     chosen, keeps that version as the `.bak`."""
     async with editor(project_path) as (app, pilot):
-        await pilot.press("tab", "right")
-        await pilot.pause()
-        theirs = edited_elsewhere(project_path)
-        await pilot.press("ctrl+s")
-        await pilot.pause()
+        theirs = await nudged_then_saved_over(pilot, project_path)
         assert app.screen.id == "changed-on-disk-dialog"
         assert project_path.read_text() == theirs
         await pilot.press("escape")  # keep editing: nothing written, the edit still unsaved
@@ -63,11 +70,7 @@ async def test_the_file_as_another_program_left_it_can_be_opened_in_its_place(pr
     it now is (the editor's unsaved nudge and its undo go); a file left broken is named and
     the editor's version kept."""
     async with editor(project_path) as (app, pilot):
-        await pilot.press("tab", "right")
-        await pilot.pause()
-        theirs = edited_elsewhere(project_path)
-        await pilot.press("ctrl+s")
-        await pilot.pause()
+        theirs = await nudged_then_saved_over(pilot, project_path)
         await pilot.press("home", "down", "enter")  # "Open the file as it is now"
         await pilot.pause()
         assert app.screen is app.editor
