@@ -17,7 +17,6 @@ Per file: the pages' summed settle off and on and their ratio, and the near miss
 from __future__ import annotations
 
 import argparse
-import copy
 import statistics
 import tempfile
 import time
@@ -25,13 +24,13 @@ from dataclasses import replace
 from pathlib import Path
 
 from floatpage.model import load_project
-from floatpage.model.layout import engine_for_page, settle_page
+from floatpage.model.layout import copy_of, engine_for_page, settle_page
 from fresh_projects import random_project, seed_range
 
 
 def settle_seconds(page, physics) -> tuple[float, float]:
     """CPU seconds of one settle of a copy of ``page``, and its near misses per item."""
-    trial = copy.deepcopy(page)
+    trial = copy_of(page)
     start = time.process_time()
     settle_page(trial, physics)
     seconds = time.process_time() - start

@@ -21,7 +21,7 @@ from floatpage.model.project_file import load_project
 from floatpage.tui.dialogs.form import FormDialog
 from floatpage.tui.editor_screen import EditorScreen
 from floatpage.tui.keymap import COMMANDS, key_label
-from floatpage.tui.recovery import HangupGuard, load_recovered, typed_when_lost
+from floatpage.tui.recovery import HangupGuard, load_recovered
 from floatpage.tui.session import EditSession
 from floatpage.tui.terminal_driver import HangupAwareDriver
 from floatpage.tui.type_ahead import TypeAhead
@@ -140,8 +140,7 @@ def make_app(project_path: str | Path, *, seed: int | None = None,
     """
     typed: list[str] = []
     if recovered:
-        project = load_recovered(project_path, allow_outside_files=allow_outside_files)
-        typed = typed_when_lost(project_path)
+        project, typed = load_recovered(project_path, allow_outside_files=allow_outside_files)
     else:  # a picture moved away must not keep the user out of the editor: it says so
         project = load_project(project_path, allow_outside_files=allow_outside_files,
                                missing_pictures_ok=True)

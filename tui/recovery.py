@@ -75,23 +75,15 @@ def pending_recovery(project_path: str | Path) -> Path | None:
 
 
 def load_recovered(project_path: str | Path, *, allow_outside_files: bool = False):
-    """The project as the recovery file holds it, to be saved under the project's own name."""
+    """The project as the recovery file holds it, to be saved under the project's own name,
+    and the words that were in open forms when the terminal went (see TYPED_NOTE)."""
     project = load_project(recovery_path(project_path), allow_outside_files=allow_outside_files,
                            missing_pictures_ok=True)
     project.path = Path(project_path)
+    typed: list[str] = []
     if project.source_text is not None:  # the notes are no part of the project, nor saved
-        project.source_text = split_typed(project.source_text)[1]
-    return project
-
-
-def typed_when_lost(project_path: str | Path) -> list[str]:
-    """The words that were in open forms when the terminal went, as the recovery file keeps
-    them (see TYPED_NOTE)."""
-    try:
-        text = recovery_path(project_path).read_text(encoding="utf-8", errors="replace")
-    except OSError:
-        return []
-    return split_typed(text)[0]
+        typed, project.source_text = split_typed(project.source_text)
+    return project, typed
 
 
 def discard_recovery(project_path: str | Path) -> None:

@@ -213,14 +213,23 @@ class EditSession:
     """The project being edited and everything needed to change it and undo the change."""
 
     def __init__(self, project: Project, *, seed: int = 0):
-        self.project = project
         self.seed = seed
-        self.pages_edited: set[str] = set()  # page ids a save settles (settle_edited_pages)
+        self.selected_id: str | None = None
+        self.typed_when_lost: list[str] = []  # words in forms a lost terminal left unapplied
+        self.open(project)
+
+    def open(self, project: Project, page_id: str | None = None, page_index: int = 0) -> None:
+        """Edit ``project`` as read from its file: nothing unsaved, no undo history, on the
+        page ``page_id`` if it has one, else at ``page_index`` (or its last page)."""
         if not project.pages:
             width, height = page_dimensions("A4", "portrait")
             project.pages.append(Page(id="page-1", width_mm=width, height_mm=height))
-        self.page_index = 0
-        self.selected_id: str | None = None
+        self.project = project
+        ids = [page.id for page in project.pages]
+        self.page_index = ids.index(page_id) if page_id in ids else min(page_index, len(ids) - 1)
+        if self.selected_id not in {item.id for item in self.page.items}:
+            self.selected_id = None
+        self.pages_edited: set[str] = set()  # page ids a save settles (settle_edited_pages)
         self.history = History()
         self.version = 0  # the document state: every edit makes a new one, undo returns to one
         self.saved_version = 0
@@ -229,7 +238,6 @@ class EditSession:
         # floatpage's own writers, and Ctrl+S replaced such changes without a word.
         self.disk_digest = file_digest(project.path)
         self.read_text = project.source_text  # see `save`
-        self.typed_when_lost: list[str] = []  # words in forms a lost terminal left unapplied
         self._versions = itertools.count(1)
         self.held_id: str | None = None
         self.status_note: str | None = None  # what a release or a page size did, in words
@@ -275,16 +283,16 @@ class EditSession:
         """Note where the new engine has the page's items (rounded as a save writes them)
         beside where the model has them, for `sync_positions`."""
         page = self.page
-        resting = copy_of(page)
-        write_back(resting, engine)
+        resting = self.resting_copy(engine)
         self.rest_marks = (page.id, {
             item.id: ((done.x, done.y), (item.x, item.y))
             for item, done in zip(page.items, resting.items)})
 
-    def resting_copy(self) -> Page:
-        """A copy of the page with the engine's positions, rounded as a save writes them."""
+    def resting_copy(self, engine: Engine | None = None) -> Page:
+        """A copy of the page with the engine's positions (the session's, or ``engine``'s),
+        rounded as a save writes them."""
         page = copy_of(self.page)
-        write_back(page, self.engine)
+        write_back(page, self.engine if engine is None else engine)
         return page
 
     def settle_copy(self, page: Page) -> None:
@@ -984,27 +992,10 @@ class EditSession:
         loads."""
         from floatpage.model.project_file import load_project
 
-        path = self.project.path
-        project = load_project(path, allow_outside_files=self.project.allow_outside_files,
+        project = load_project(self.project.path,
+                               allow_outside_files=self.project.allow_outside_files,
                                missing_pictures_ok=True)
-        if not project.pages:
-            width, height = page_dimensions("A4", "portrait")
-            project.pages.append(Page(id="page-1", width_mm=width, height_mm=height))
-        ids = [page.id for page in project.pages]
-        page_id = self.page.id
-        self.project = project
-        self.page_index = ids.index(page_id) if page_id in ids else min(self.page_index,
-                                                                         len(ids) - 1)
-        if self.selected_id not in {item.id for item in self.page.items}:
-            self.selected_id = None
-        self.pages_edited.clear()
-        self.history = History()
-        self.version = self.saved_version = 0
-        self._versions = itertools.count(1)
-        self.held_id, self.status_note, self.room_wanted = None, None, None
-        self.disk_digest = file_digest(path)
-        self.read_text = project.source_text
-        self.engine = self._build_engine()
+        self.open(project, self.page.id, self.page_index)
 
     def changed_on_disk(self) -> bool:
         """Whether another program changed the project file since the editor read or saved it
