@@ -47,7 +47,11 @@ class RestCheck:
     def __init__(self, bodies: Bodies, page: tuple[float, float], gap: float,
                  insets: tuple[np.ndarray, np.ndarray], beta: float, reach: float, scale: float,
                  hold: float = 0.0,
-                 lines: list[tuple[np.ndarray, np.ndarray]] | None = None):
+                 lines: list[tuple[np.ndarray, np.ndarray]] | None = None,
+                 pair_centres: np.ndarray | None = None):
+        """``pair_centres``: where the pairs are found, if not at the bodies' centres now (a
+        check built after a snap's first nudges finds them where the snap started:
+        physics.deferred_rest)."""
         self.bodies, self.page, self.gap = bodies, page, gap
         self.halves = bodies.sizes / 2
         active = bodies.active
@@ -57,7 +61,8 @@ class RestCheck:
         group_mass = np.bincount(roots, weights=charges, minlength=bodies.count)
         movable = bodies.free[roots] & ~bodies.held & active
         inverse = np.where(movable, 1.0 / np.maximum(group_mass[roots], 1e-12), 0.0)
-        i, j = candidate_pairs(bodies.centres, self.halves, np.flatnonzero(active), roots,
+        i, j = candidate_pairs(bodies.centres if pair_centres is None else pair_centres,
+                               self.halves, np.flatnonzero(active), roots,
                                gap + 2 * reach)
         total = inverse[i] + inverse[j]
         total = np.where(total > 0, total, 1.0)

@@ -38,6 +38,7 @@ import numpy as np
 
 from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.bodies import Bodies
+from floatpage.physics.deferred_rest import DeferredRest
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members
 from floatpage.physics.snap_fit_kernel import fitting_shifts
@@ -75,29 +76,35 @@ def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
     guides (the paper mode stays the published model, without them).  Returns the moves made."""
     if params.mode != "fast" or params.guides <= 0:
         return 0
-    clearance, margin, rest = snap_limits(bodies, page_w_mm, page_h_mm, params)
+    clearance, margin, rest = snap_limits(bodies, page_w_mm, page_h_mm, params, deferred=True)
     return snap_to_guides(bodies, page_w_mm, page_h_mm, clearance, margin, params.guides, rest)
 
 
-def snap_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float,
-                params: Params) -> tuple[float, float, RestCheck]:
+def snap_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
+                deferred: bool = False) -> tuple[float, float, RestCheck | DeferredRest]:
     """What bounds the page's snap besides its bodies: the clearance every pair keeps (the
-    gutter plus the rounding slack), the print-safe margin and the rest check."""
+    gutter plus the rounding slack), the print-safe margin and the rest check (``deferred``:
+    built when a move first asks, physics.deferred_rest; most probes' snaps never do)."""
     margin = page_margin(params.margin_mm, page_w_mm, page_h_mm)
     page = (page_w_mm, page_h_mm)
-    gap = target_gap(bodies.sizes[bodies.active], page_w_mm, page_h_mm, params.gutter_mm)
-    rest = RestCheck(bodies, page, gap, bodies.insets(margin, *page), params.beta, snap_range(*page),
-                     page_scale(*page), hold_strength(page, params.guides),
-                     [page_lines(*page, margin, axis, bodies.regions) for axis in (0, 1)])
+
+    def rest_check(pair_centres: np.ndarray | None = None) -> RestCheck:
+        gap = target_gap(bodies.sizes[bodies.active], page_w_mm, page_h_mm, params.gutter_mm)
+        return RestCheck(bodies, page, gap, bodies.insets(margin, *page), params.beta,
+                         snap_range(*page), page_scale(*page), hold_strength(page, params.guides),
+                         [page_lines(*page, margin, axis, bodies.regions) for axis in (0, 1)],
+                         pair_centres)
+    rest = DeferredRest(rest_check, bodies.centres) if deferred else rest_check()
     return params.gutter_mm + ROUNDING_MM, margin, rest
 
 
 def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance_mm: float,
-                   margin_mm: float, strength: float, rest: RestCheck | None = None,
+                   margin_mm: float, strength: float, rest: RestCheck | DeferredRest | None = None,
                    compiled: bool = True) -> int:
     """Snap free items onto their guide lines in place (see the module doc); returns the number
     of moves made.  ``clearance_mm`` is the gap every pair must keep (the gutter plus the
     rounding slack), ``margin_mm`` the page's print-safe margin; strength 0 does nothing.
+    ``rest`` is asked before every move beyond a nudge (None: no move is checked).
 
     The first sweep tries every free item on both axes; a later one only the items with a
     feature near one that moved on that axis (nothing else can have a better move now).
@@ -153,7 +160,7 @@ class _Snapper:
     every row's low edge, centre and high edge on that axis, updated as rows move."""
 
     def __init__(self, bodies: Bodies, page: tuple[float, float], clearance_mm: float,
-                 margin_mm: float, rest: RestCheck | None):
+                 margin_mm: float, rest: RestCheck | DeferredRest | None):
         self.bodies, self.clearance, self.rest = bodies, clearance_mm, rest
         self.halves = bodies.sizes / 2
         self.active = bodies.active.copy()
@@ -367,7 +374,8 @@ class _Snapper:
     def compiled(self) -> Sweep:
         """This page's sweeps in C (snap_sweep_kernel.Sweep), reading what this snapper
         worked out and making its moves as apply does (moved_from, the centres and every
-        table, the rest check's kept forces forgotten)."""
+        table, the rest check's kept forces forgotten).  The rest check's parts are read when
+        the first move asks for them (a deferred check is built then)."""
         count = self.bodies.count
         members = [self.members.get(row) for row in range(count)]
         too_large = bytes(self.too_large[row][axis] if row in self.too_large else False
@@ -376,7 +384,7 @@ class _Snapper:
         return Sweep(count, members, too_large, bleeds, self.kind_tables(False),
                      self.kind_tables(True), self.item_tables, self.roots, self.mover_mask,
                      self.ranges, ALIGNED_MM,
-                     self.rest.compiled_parts() if self.rest is not None else None,
+                     self.rest.compiled_parts if self.rest is not None else None,
                      (self.moved_from, self.bodies.centres, self.rest.before
                       if self.rest is not None else {}),
                      np.concatenate, (self.bodies.centres, self.halves, self.lowest,
