@@ -25,7 +25,7 @@ import numpy as np
 
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.fast_forces import (
-    RADIAL_SHARE, blocked_axes, candidate_pairs, wall_rest_box,
+    GRID_FROM_ITEMS, RADIAL_SHARE, candidate_pairs, wall_rest_box,
 )
 from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
@@ -33,6 +33,7 @@ from floatpage.physics.force_terms import (
 from floatpage.physics.line_hold import LineHold
 from floatpage.physics.guides import ON_LINE_MM
 from floatpage.physics.rest_check_kernel import held_on_lines, rest_net
+from floatpage.physics.snap_setup_kernel import pair_tables, sweep_pairs
 from floatpage.physics.stillness import PROBE_HEAT
 
 REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
@@ -61,15 +62,26 @@ class RestCheck:
         group_mass = np.bincount(roots, weights=charges, minlength=bodies.count)
         movable = bodies.free[roots] & ~bodies.held & active
         inverse = np.where(movable, 1.0 / np.maximum(group_mass[roots], 1e-12), 0.0)
-        i, j = candidate_pairs(bodies.centres if pair_centres is None else pair_centres,
-                               self.halves, np.flatnonzero(active), roots,
-                               gap + 2 * reach)
-        total = inverse[i] + inverse[j]
-        total = np.where(total > 0, total, 1.0)
+        # The pairs and their table compiled (physics/snap_setup_kernel.c): as candidate_pairs
+        # finds them by its sweep, and as blocked_axes and the shares of a push would make them
+        # in NumPy, the same floats (tests/physics/test_snap_setup.py), for a tenth of a small
+        # page's forty NumPy calls.  A page of GRID_FROM_ITEMS rows finds them by the grid.
+        at = bodies.centres if pair_centres is None else pair_centres
+        if active.sum() < GRID_FROM_ITEMS:
+            pair_ends = np.frombuffer(sweep_pairs(at, self.halves, active, roots,
+                                                  gap + 2 * reach), dtype=np.int64).reshape(-1, 2)
+        else:
+            pair_ends = np.column_stack(candidate_pairs(at, self.halves, np.flatnonzero(active),
+                                                        roots, gap + 2 * reach)).astype(np.int64)
+        i, j = pair_ends[:, 0], pair_ends[:, 1]
+        table, self.pair_lists_of = pair_tables(pair_ends, bodies.sizes, self.halves, inverse,
+                                                *insets, *page, gap)
+        # per pair: its reach (half sizes summed plus the gap, as the contacts keep it), its
+        # blocked axes (blocked_axes, no gutter), its ends' shares of a push
+        self.pair_ends, self.pair_table = pair_ends, np.frombuffer(table).reshape(-1, 6)
         self.i, self.j = i, j
-        self.share_i, self.share_j = inverse[i] / total, inverse[j] / total
-        self.blocked = blocked_axes(bodies.sizes, i, j, *page, 0.0, insets)
-        self.reach = self.halves[i] + self.halves[j] + gap  # each pair's, as the contacts keep it
+        self.reach, self.blocked = self.pair_table[:, 0:2], self.pair_table[:, 2:4] != 0
+        self.share_i, self.share_j = self.pair_table[:, 4], self.pair_table[:, 5]
         near, far = insets  # where each row's walls stand (Bodies.insets)
         self.rest_low, self.rest_high = wall_rest_box(self.halves, *page, gap / 2 + near,
                                                       gap / 2 + far)
@@ -86,24 +98,16 @@ class RestCheck:
         self.lines = LineHold(bodies.centres, self.halves, self.active_rows, roots,
                               self.group_rows, self.page_lines)
         count = bodies.count
-        ends = np.concatenate([i, j])
-        order = np.argsort(ends, kind="stable")
-        split = np.searchsorted(ends[order], np.arange(count + 1))
-        pair_ids = np.concatenate([np.arange(len(i)), np.arange(len(j))])[order]
-        self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
         self.grouped = bool((roots != np.arange(count)).any())
-        # what the force sum (rest_check_kernel.rest_net) reads, as tables: per pair, its ends, its
-        # reach, its blocked axes and its ends' shares; per row, its rest box and its anchor
-        # spring (the columns rest_net names)
-        self.pair_ends = np.column_stack([i, j]).astype(np.int64)
-        self.pair_table = np.column_stack([self.reach, self.blocked, self.share_i, self.share_j]
-                                          ).astype(float).reshape(len(i), 6)
+        # what the force sum (rest_check_kernel.rest_net) reads, as tables: per pair, its ends
+        # and pair_table (above); per row, its rest box and its anchor spring (the columns
+        # rest_net names)
         self.row_table = np.column_stack([self.rest_low, self.rest_high, self.anchor_k,
                                           self.anchors])
         self.forces = np.array([K_CONTACT, K_WALL, PROBE_RADIAL])
-        # what reached_by reads, as Python lists
+        # what reached_by reads, as Python lists (with pair_lists_of: each row's pairs, as i
+        # and then as j, each in pair order)
         self.pair_ends_lists = (i.tolist(), j.tolist())
-        self.pair_lists_of = [pairs.tolist() for pairs in self.pairs_of]
         self.root_list, self.movable_list = roots.tolist(), self.movable.tolist()
         self.group_row_lists = [rows.tolist() for rows in self.group_rows]
         self.reach_of: dict[bytes, tuple[np.ndarray, list[int], list[int]]] = {}
