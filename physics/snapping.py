@@ -186,16 +186,23 @@ class _Snapper:
         # per group and axis: too large to fit between its margins (it has no move to make);
         # a group's flags are any of its active rows' (one scatter, not a loop per group:
         # a third of a 50-item page's set-up)
-        grouped = self.roots[self.active]
-        too_large = np.zeros((bodies.count, 2), dtype=bool)
-        np.logical_or.at(too_large, grouped, (self.lowest > self.highest)[self.active])
-        bleeding = np.zeros(bodies.count, dtype=bool)
-        np.logical_or.at(bleeding, grouped, bodies.bleed[self.active])
-        movers, too_large, bleeding = self.movers.tolist(), too_large.tolist(), bleeding.tolist()
-        self.too_large = {row: too_large[row] for row in movers}
+        if len(groups.several) == 0:  # every group one row: its own flags, if active
+            too_large = (self.lowest > self.highest) & self.active[:, None]
+            bleeding = bodies.bleed & self.active
+        else:
+            grouped = self.roots[self.active]
+            too_large = np.zeros((bodies.count, 2), dtype=bool)
+            np.logical_or.at(too_large, grouped, (self.lowest > self.highest)[self.active])
+            bleeding = np.zeros(bodies.count, dtype=bool)
+            np.logical_or.at(bleeding, grouped, bodies.bleed[self.active])
         is_mover = np.zeros(bodies.count, dtype=bool)
         is_mover[self.movers] = True
         self.mover_mask = is_mover  # per row: whether it is a mover's root (line_of)
+        # what compiled hands the sweeps: the movers' flags as bytes, one (two) per row
+        self.flag_bytes = ((too_large & is_mover[:, None]).tobytes(),
+                           (bleeding & is_mover).tobytes())
+        movers, too_large, bleeding = self.movers.tolist(), too_large.tolist(), bleeding.tolist()
+        self.too_large = {row: too_large[row] for row in movers}
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
         self.bleeds = {row: bleeding[row] for row in movers}
@@ -379,9 +386,7 @@ class _Snapper:
         the first move asks for them (a deferred check is built then)."""
         count = self.bodies.count
         members = [self.members.get(row) for row in range(count)]
-        too_large = bytes(self.too_large[row][axis] if row in self.too_large else False
-                          for row in range(count) for axis in (0, 1))
-        bleeds = bytes(self.bleeds.get(row, False) for row in range(count))
+        too_large, bleeds = self.flag_bytes  # per row and axis, per row: a mover's flags
         return Sweep(count, members, too_large, bleeds, self.kind_tables(False),
                      self.kind_tables(True), self.item_tables, self.roots, self.mover_mask,
                      self.ranges, ALIGNED_MM,

@@ -1,9 +1,10 @@
 """The snap's set-up in C (physics/snap_setup_kernel.c) must make what its NumPy definitions
 make, bit for bit: the snapper's tables (snapping.feature_table), the rest check's pairs
 (fast_forces.candidate_pairs by its sweep) and their table (blocked_axes, each pair's reach and
-shares, each row's pairs).  (benchmarks/snap_identity.py checks every move of 101 snaps against
-main's; these check the units on random pages: ties on a grid, groups, inactive rows, walls
-that differ from row to row.)"""
+shares, each row's pairs); and the set-up's shortcuts for pages without followers or without
+squeezed items must answer as their plain definitions.  (benchmarks/snap_identity.py checks
+every move of 101 snaps against main's; these check the units on random pages: ties on a grid,
+groups, inactive rows, walls that differ from row to row.)"""
 
 from __future__ import annotations
 
@@ -12,7 +13,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from floatpage.physics.fast_forces import blocked_axes, candidate_pairs
+from floatpage.physics.fast_forces import blocked_axes, candidate_pairs, wall_rest_box
+from floatpage.physics.rest_check import group_members
 from floatpage.physics.snap_setup_kernel import pair_tables, sweep_pairs
 from floatpage.physics.snapping import feature_table, filled_table
 
@@ -129,3 +131,77 @@ def test_the_kernels_refuse_what_is_not_their_arrays():
     with pytest.raises(ValueError):  # not C-contiguous
         fill_feature_table(np.empty((4, 15))[::-1], centres, halves, active, 0, np.zeros(1),
                            np.zeros(0))
+
+
+@settings(max_examples=100, deadline=None, derandomize=True, database=None)
+@given(seed=st.integers(0, 2 ** 32 - 1), count=st.integers(0, 30), follow=st.booleans())
+def test_group_members_are_each_roots_active_rows(seed, count, follow):
+    """Pages with followers (the sort) and without (each active row alone): per row, the
+    active rows whose root it is, in row order; ``several``, the roots of groups of more than
+    one active row."""
+    _, _, active, roots = random_page(seed, count, None)
+    if not follow:
+        roots = np.arange(count)
+    found = group_members(roots, active)
+    expected = [[member for member in range(count) if roots[member] == row and active[member]]
+                for row in range(count)]
+    assert [rows.tolist() for rows in found] == expected
+    assert all(rows.dtype == np.int64 for rows in found)
+    assert found.several.tolist() == [row for row in range(count) if len(expected[row]) > 1]
+
+
+@settings(max_examples=100, deadline=None, derandomize=True, database=None)
+@given(seed=st.integers(0, 2 ** 32 - 1), count=st.integers(1, 30),
+       squeezed=st.sampled_from([0.0, 0.2]))
+def test_the_wall_rest_box_is_its_definition(seed, count, squeezed):
+    """wall_rest_box, which returns early where no item is squeezed, against its whole
+    definition, on pages where none is and where some are (too large, or crowded by walls
+    that differ from row to row)."""
+    rng = np.random.default_rng(seed)
+    page = (100.0, 140.0)
+    halves = rng.uniform(0.5, 30.0, (count, 2))
+    large = rng.random(count) < squeezed
+    halves[large] = rng.uniform(45.0, 80.0, (large.sum(), 2))
+    near, far = rng.uniform(0.0, 8.0, (count, 2)), rng.uniform(0.0, 8.0, (count, 2))
+    extent = np.array(page)
+    lowest, highest = halves + near, extent - halves - far
+    middle = np.broadcast_to(extent / 2, halves.shape) + (near - far) / 2
+    out = (2 * halves >= extent) | (lowest > highest)
+    expected = np.where(out, middle, lowest), np.where(out, middle, highest)
+    found = wall_rest_box(halves, *page, near, far)
+    assert found[0].tobytes() == expected[0].tobytes()
+    assert found[1].tobytes() == expected[1].tobytes()
+
+
+def test_the_movers_flags_without_followers():
+    """_Snapper's flags on pages where no row follows another (group_members' shortcut): each
+    mover's own, too large per axis and may bleed, and the bytes the compiled sweeps get (a
+    mover's flags, nothing for other rows)."""
+    from floatpage.physics import Engine, Params
+    from floatpage.physics.geometry import item_bounds
+    from floatpage.physics.snapping import _Snapper, snap_limits
+
+    from seeded_scenes import load, mixed_scene
+
+    engine = Engine(210.0, 297.0, Params())
+    load(engine, mixed_scene(20, 0.5, seed=4, page_w_mm=210.0, page_h_mm=297.0))
+    bodies = engine.bodies
+    rng = np.random.default_rng(4)
+    bodies.bleed[:] = rng.random(bodies.count) < 0.3
+    bodies.sizes[1, 0] = 300.0  # too wide for its margins
+    bodies.decorative[2] = True  # not active: no mover
+    page = (210.0, 297.0)
+    clearance, margin, rest = snap_limits(bodies, *page, engine.params, deferred=True)
+    snapper = _Snapper(bodies, page, clearance, margin, rest)
+    lowest, highest = item_bounds(bodies, *page, margin)
+    movers = snapper.movers.tolist()
+    assert 1 in movers and 2 not in movers
+    too_large, bleeds = bytearray(2 * bodies.count), bytearray(bodies.count)
+    for row in movers:
+        assert snapper.too_large[row] == [bool(lowest[row, axis] > highest[row, axis])
+                                          for axis in (0, 1)]
+        assert snapper.bleeds[row] == bool(bodies.bleed[row])
+        too_large[2 * row:2 * row + 2] = bytes(snapper.too_large[row])
+        bleeds[row] = snapper.bleeds[row]
+    assert snapper.too_large[1] == [True, False]
+    assert snapper.flag_bytes == (bytes(too_large), bytes(bleeds))
