@@ -24,16 +24,16 @@ from __future__ import annotations
 import numpy as np
 
 from floatpage.physics.bodies import Bodies
-from floatpage.physics.fast_forces import (
-    GRID_FROM_ITEMS, RADIAL_SHARE, candidate_pairs, wall_rest_box,
-)
+from floatpage.physics.fast_forces import GRID_FROM_ITEMS, RADIAL_SHARE, candidate_pairs
 from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
 from floatpage.physics.line_hold import LineHold
 from floatpage.physics.guides import ON_LINE_MM
 from floatpage.physics.rest_check_kernel import held_on_lines, rest_net
-from floatpage.physics.snap_setup_kernel import pair_tables, sweep_pairs
+from floatpage.physics.snap_setup_kernel import (
+    inverse_masses, pair_tables, row_table, sweep_pairs,
+)
 from floatpage.physics.stillness import PROBE_HEAT
 
 REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
@@ -58,14 +58,14 @@ class RestCheck:
         active = bodies.active
         roots, _ = bodies.group_roots()
         self.roots = roots
-        charges = np.where(active, bodies.charges, 0.0)
-        group_mass = np.bincount(roots, weights=charges, minlength=bodies.count)
-        movable = bodies.free[roots] & ~bodies.held & active
-        inverse = np.where(movable, 1.0 / np.maximum(group_mass[roots], 1e-12), 0.0)
-        # The pairs and their table compiled (physics/snap_setup_kernel.c): as candidate_pairs
-        # finds them by its sweep, and as blocked_axes and the shares of a push would make them
-        # in NumPy, the same floats (tests/physics/test_snap_setup.py), for a tenth of a small
-        # page's forty NumPy calls.  A page of GRID_FROM_ITEMS rows finds them by the grid.
+        free = bodies.free
+        # The masses, the pairs and the tables compiled (physics/snap_setup_kernel.c): the
+        # inverse masses as np.bincount and np.where make them, the pairs as candidate_pairs
+        # finds them by its sweep, their table as blocked_axes and the shares of a push, the
+        # rows' as wall_rest_box and the anchor springs, in NumPy: the same floats
+        # (tests/physics/test_snap_setup.py), for a tenth of a small page's fifty NumPy calls.
+        # A page of GRID_FROM_ITEMS rows finds its pairs by the grid.
+        inverse = np.frombuffer(inverse_masses(bodies.sizes, roots, active, free, bodies.held))
         at = bodies.centres if pair_centres is None else pair_centres
         if active.sum() < GRID_FROM_ITEMS:
             pair_ends = np.frombuffer(sweep_pairs(at, self.halves, active, roots,
@@ -82,13 +82,14 @@ class RestCheck:
         self.i, self.j = i, j
         self.reach, self.blocked = self.pair_table[:, 0:2], self.pair_table[:, 2:4] != 0
         self.share_i, self.share_j = self.pair_table[:, 4], self.pair_table[:, 5]
-        near, far = insets  # where each row's walls stand (Bodies.insets)
-        self.rest_low, self.rest_high = wall_rest_box(self.halves, *page, gap / 2 + near,
-                                                      gap / 2 + far)
-        anchored = ~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard
-        self.anchor_k = np.where(anchored, K_ANCHOR * beta / BETA_DEFAULT * bodies.gammas, 0.0)
-        self.anchors = np.where(anchored[:, None], bodies.anchors, 0.0)
-        self.movable = bodies.free & active  # roots of groups the integrator moves
+        # per row (the columns rest_net names): its rest box, the walls where Bodies.insets
+        # stands them, at the gap (wall_rest_box); its soft anchor's spring and anchor
+        self.row_table = np.frombuffer(row_table(
+            self.halves, *insets, *page, gap, bodies.anchors, bodies.hard, bodies.gammas,
+            K_ANCHOR * beta / BETA_DEFAULT)).reshape(-1, 7)
+        self.rest_low, self.rest_high = self.row_table[:, 0:2], self.row_table[:, 2:4]
+        self.anchor_k, self.anchors = self.row_table[:, 4], self.row_table[:, 5:7]
+        self.movable = free & active  # roots of groups the integrator moves
         self.limit = REST_ACC * scale
         self.hold = hold  # a line's hold on a group with a feature on it (physics.guides)
         # the page's own guide lines per axis, (edges, centres): guides.page_lines
@@ -99,11 +100,7 @@ class RestCheck:
                               self.group_rows, self.page_lines)
         count = bodies.count
         self.grouped = bool((roots != np.arange(count)).any())
-        # what the force sum (rest_check_kernel.rest_net) reads, as tables: per pair, its ends
-        # and pair_table (above); per row, its rest box and its anchor spring (the columns
-        # rest_net names)
-        self.row_table = np.column_stack([self.rest_low, self.rest_high, self.anchor_k,
-                                          self.anchors])
+        # what the force sum (rest_check_kernel.rest_net) reads besides the tables above
         self.forces = np.array([K_CONTACT, K_WALL, PROBE_RADIAL])
         # what reached_by reads, as Python lists (with pair_lists_of: each row's pairs, as i
         # and then as j, each in pair order)

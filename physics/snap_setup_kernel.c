@@ -1,6 +1,7 @@
 /* The alignment snap's set-up, compiled: the snapper's tables (snapping.feature_table) and the
-   rest check's pairs and pair tables (rest_check.RestCheck: fast_forces.candidate_pairs,
-   blocked_axes, each pair's reach and shares, the pairs of each row).
+   rest check's pairs and tables (rest_check.RestCheck: fast_forces.candidate_pairs,
+   blocked_axes, each pair's reach and shares, the pairs of each row; the masses, the rest
+   boxes of fast_forces.wall_rest_box, the anchor springs).
 
    A snap runs twice a settle, and on a page of 5-30 items its set-up was made of some two
    hundred NumPy calls of a microsecond each on arrays of a few dozen rows: half of the snap,
@@ -396,11 +397,159 @@ done:
     return result;
 }
 
+/* ---- the rest check's rows: masses, rest boxes, anchor springs ---- */
+
+PyDoc_STRVAR(inverse_masses_doc,
+"inverse_masses(sizes, roots, active, free, held) -> bytes\n\n"
+"Per row, as float64: one over its group's mass (the charges w h of its active rows summed\n"
+"row by row, as np.bincount adds them; at least 1e-12) where the integrator moves it (its\n"
+"root free, itself not held, active), 0 elsewhere: RestCheck's inverse masses.");
+
+static PyObject *inverse_masses(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 5) {
+        PyErr_SetString(PyExc_TypeError, "inverse_masses(sizes, roots, active, free, held)");
+        return NULL;
+    }
+    Py_buffer views[5];
+    int held = 0;
+    PyObject *result = NULL;
+    double *mass = NULL;
+    if (read_doubles(args[0], &views[0], 2, "sizes") < 0)
+        goto done;
+    held++;
+    Py_ssize_t count = views[0].shape[0];
+    if (views[0].shape[1] != 2) {
+        PyErr_SetString(PyExc_ValueError, "sizes: (rows, 2)");
+        goto done;
+    }
+    if (read_rows(args[1], &views[1], count) < 0)
+        goto done;
+    held++;
+    if (views[1].shape[0] != count) {
+        PyErr_SetString(PyExc_ValueError, "roots: one per row");
+        goto done;
+    }
+    for (int k = 2; k < 5; k++) {
+        if (read_flags(args[k], &views[k], count) < 0)
+            goto done;
+        held++;
+    }
+    const double *sizes = views[0].buf;
+    const int64_t *roots = views[1].buf;
+    const char *active = views[2].buf, *free_rows = views[3].buf, *held_rows = views[4].buf;
+    mass = PyMem_Calloc(count + 1, sizeof(double));
+    result = PyBytes_FromStringAndSize(NULL, count * sizeof(double));
+    if (mass == NULL || result == NULL) {
+        if (mass == NULL)
+            PyErr_NoMemory();
+        Py_CLEAR(result);
+        goto done;
+    }
+    for (Py_ssize_t row = 0; row < count; row++) /* np.where(active, w * h, 0.0), bincount */
+        mass[roots[row]] += active[row] ? sizes[2 * row] * sizes[2 * row + 1] : 0.0;
+    double *inverse = (double *)PyBytes_AS_STRING(result);
+    for (Py_ssize_t row = 0; row < count; row++) {
+        double group = mass[roots[row]];
+        group = isnan(group) ? NAN : (group > 1e-12 ? group : 1e-12); /* np.maximum */
+        double one_over = 1.0 / group;
+        inverse[row] = free_rows[roots[row]] && !held_rows[row] && active[row] ? one_over : 0.0;
+    }
+done:
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    PyMem_Free(mass);
+    return result;
+}
+
+PyDoc_STRVAR(row_table_doc,
+"row_table(halves, near, far, page_w, page_h, gap, anchors, hard, gammas, anchor_scale)\n"
+"    -> bytes\n\n"
+"RestCheck's row_table, (rows, 7) float64 as bytes: each row's rest box (fast_forces.\n"
+"wall_rest_box with its walls at gap / 2 + near and gap / 2 + far: its lowest and highest\n"
+"centre, the middle between its walls where it is too large for the page or for them), its\n"
+"anchor spring's stiffness (anchor_scale times its gamma where it has a soft anchor, 0\n"
+"elsewhere) and its anchor (0 where none).");
+
+static PyObject *row_table(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 10) {
+        PyErr_SetString(PyExc_TypeError, "row_table(halves, near, far, page_w, page_h, gap, "
+                        "anchors, hard, gammas, anchor_scale)");
+        return NULL;
+    }
+    double extent[2] = {PyFloat_AsDouble(args[3]), PyFloat_AsDouble(args[4])};
+    double gap = PyFloat_AsDouble(args[5]), scale = PyFloat_AsDouble(args[9]);
+    if (PyErr_Occurred())
+        return NULL;
+    Py_buffer views[6];
+    int held = 0;
+    PyObject *result = NULL;
+    if (read_doubles(args[0], &views[0], 2, "halves") < 0)
+        goto done;
+    held++;
+    Py_ssize_t count = views[0].shape[0];
+    if (views[0].shape[1] != 2) {
+        PyErr_SetString(PyExc_ValueError, "halves: (rows, 2)");
+        goto done;
+    }
+    if (read_pairs_of(args[1], &views[1], count, "near") < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[2], &views[2], count, "far") < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[6], &views[3], count, "anchors") < 0)
+        goto done;
+    held++;
+    if (read_flags(args[7], &views[4], count) < 0)
+        goto done;
+    held++;
+    if (read_doubles(args[8], &views[5], 1, "gammas") < 0)
+        goto done;
+    held++;
+    if (views[5].shape[0] != count) {
+        PyErr_SetString(PyExc_ValueError, "gammas: one per row");
+        goto done;
+    }
+    const double *halves = views[0].buf, *near = views[1].buf, *far = views[2].buf;
+    const double *anchors = views[3].buf, *gammas = views[5].buf;
+    const char *hard = views[4].buf;
+    result = PyBytes_FromStringAndSize(NULL, 7 * count * sizeof(double));
+    if (result == NULL)
+        goto done;
+    double *cells = (double *)PyBytes_AS_STRING(result);
+    for (Py_ssize_t row = 0; row < count; row++) {
+        double *out = cells + 7 * row;
+        for (int axis = 0; axis < 2; axis++) {
+            double half = halves[2 * row + axis];
+            double low_wall = gap / 2 + near[2 * row + axis];
+            double high_wall = gap / 2 + far[2 * row + axis];
+            double lowest = half + low_wall, highest = extent[axis] - half - high_wall;
+            if (2 * half >= extent[axis] || lowest > highest) /* squeezed: the middle */
+                lowest = highest = extent[axis] / 2 + (low_wall - high_wall) / 2;
+            out[axis] = lowest;
+            out[2 + axis] = highest;
+        }
+        int anchored = !isnan(anchors[2 * row]) && !hard[row];
+        out[4] = anchored ? scale * gammas[row] : 0.0;
+        out[5] = anchored ? anchors[2 * row] : 0.0;
+        out[6] = anchored ? anchors[2 * row + 1] : 0.0;
+    }
+done:
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"fill_feature_table", (PyCFunction)(void (*)(void))fill_feature_table, METH_FASTCALL,
      fill_feature_table_doc},
     {"sweep_pairs", (PyCFunction)(void (*)(void))sweep_pairs, METH_FASTCALL, sweep_pairs_doc},
     {"pair_tables", (PyCFunction)(void (*)(void))pair_tables, METH_FASTCALL, pair_tables_doc},
+    {"inverse_masses", (PyCFunction)(void (*)(void))inverse_masses, METH_FASTCALL,
+     inverse_masses_doc},
+    {"row_table", (PyCFunction)(void (*)(void))row_table, METH_FASTCALL, row_table_doc},
     {NULL, NULL, 0, NULL},
 };
 

@@ -1,10 +1,11 @@
 """The snap's set-up in C (physics/snap_setup_kernel.c) must make what its NumPy definitions
 make, bit for bit: the snapper's tables (snapping.feature_table), the rest check's pairs
 (fast_forces.candidate_pairs by its sweep) and their table (blocked_axes, each pair's reach and
-shares, each row's pairs); and the set-up's shortcuts for pages without followers or without
-squeezed items must answer as their plain definitions.  (benchmarks/snap_identity.py checks
-every move of 101 snaps against main's; these check the units on random pages: ties on a grid,
-groups, inactive rows, walls that differ from row to row.)"""
+shares, each row's pairs), its rows' (masses, rest boxes, anchor springs); and the set-up's
+shortcuts for pages without followers or without squeezed items must answer as their plain
+definitions.  (benchmarks/snap_identity.py checks every move of 101 snaps against main's; these
+check the units on random pages: ties on a grid, groups, inactive rows, walls that differ from
+row to row.)"""
 
 from __future__ import annotations
 
@@ -15,7 +16,9 @@ from hypothesis import strategies as st
 
 from floatpage.physics.fast_forces import blocked_axes, candidate_pairs, wall_rest_box
 from floatpage.physics.rest_check import group_members
-from floatpage.physics.snap_setup_kernel import pair_tables, sweep_pairs
+from floatpage.physics.snap_setup_kernel import (
+    inverse_masses, pair_tables, row_table, sweep_pairs,
+)
 from floatpage.physics.snapping import feature_table, filled_table
 
 
@@ -205,3 +208,34 @@ def test_the_movers_flags_without_followers():
         bleeds[row] = snapper.bleeds[row]
     assert snapper.too_large[1] == [True, False]
     assert snapper.flag_bytes == (bytes(too_large), bytes(bleeds))
+
+
+@settings(max_examples=100, deadline=None, derandomize=True, database=None)
+@given(seed=st.integers(0, 2 ** 32 - 1), count=st.integers(0, 30),
+       squeezed=st.sampled_from([0.0, 0.2]), gap=st.sampled_from([0.0, 1.5, 4.0]))
+def test_the_rows_table_is_numpys(seed, count, squeezed, gap):
+    """RestCheck's row table against the NumPy that made it: the rest boxes (wall_rest_box at
+    the gap, walls that differ from row to row, items too large or crowded among them), the
+    soft anchors' springs (no anchor, hard anchors: none) and the masses (groups of several
+    rows, inactive and held rows, groups that do not move)."""
+    centres, halves, active, roots = random_page(seed, count, None)
+    rng = np.random.default_rng(seed + 2)
+    large = rng.random(count) < squeezed
+    halves[large] = rng.uniform(45.0, 80.0, (large.sum(), 2))
+    near, far = rng.uniform(0.0, 8.0, (count, 2)), rng.uniform(0.0, 8.0, (count, 2))
+    anchors = np.where(rng.random((count, 1)) < 0.5, centres, np.nan)
+    hard, gammas = rng.random(count) < 0.3, rng.uniform(0.5, 2.0, count)
+    page, scale = (100.0, 140.0), 0.8 * 1.3 / 1.1
+    found = np.frombuffer(row_table(halves, near, far, *page, gap, anchors, hard, gammas, scale))
+    low, high = wall_rest_box(halves, *page, gap / 2 + near, gap / 2 + far)
+    anchored = ~np.isnan(anchors[:, 0]) & ~hard
+    expected = np.column_stack([low, high, np.where(anchored, scale * gammas, 0.0),
+                                np.where(anchored[:, None], anchors, 0.0)])
+    assert found.tobytes() == expected.tobytes()
+    sizes, free, held = halves * 2, rng.random(count) < 0.8, rng.random(count) < 0.1
+    inverse = np.frombuffer(inverse_masses(sizes, roots, active, free, held))
+    mass = np.bincount(roots, weights=np.where(active, sizes[:, 0] * sizes[:, 1], 0.0),
+                       minlength=count)
+    movable = free[roots] & ~held & active
+    assert inverse.tobytes() == np.where(movable, 1.0 / np.maximum(mass[roots], 1e-12),
+                                         0.0).tobytes()
