@@ -247,7 +247,7 @@ def main() -> None:
         elif args.jitter:
             extra = f"| {jitter_now[-1]:.2f} "
         print(f"| {scene.name} | {best_off[0]:.3f} | {best_on[0]:.3f} | {ratio:.2f} | "
-              f"{best_on[1]:.3f} | {rest:.2f} | {best_off[2]} → {best_on[2]} | "
+              f"{best_on[1]:.4f} | {rest:.2f} | {best_off[2]} → {best_on[2]} | "
               f"{best_off[3]} → {best_on[3]} | {best_off[4]:.2f} → {best_on[4]:.2f} {extra}| {ok} |",
               flush=True)
     print(f"\non/off: median {np.median(ratios):.2f}, worst {max(ratios):.2f}; "

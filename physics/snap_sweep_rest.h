@@ -236,6 +236,15 @@ done:
 /* RestCheck.keeps_rest(members, axis, shift) */
 static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
 {
+    if (!self->rest_taken) { /* the first move that asks: the check is built now */
+        PyObject *parts = PyObject_CallNoArgs(self->keeps_rest);
+        if (parts == NULL)
+            return -1;
+        int taken = take_rest(self, parts);
+        Py_DECREF(parts);
+        if (taken < 0)
+            return -1;
+    }
     PyObject *found = PyObject_CallOneArg(self->reached_by, members);
     if (found == NULL)
         return -1;
