@@ -280,9 +280,10 @@ def cmd_render(args: argparse.Namespace) -> int:
     for warning in report.warnings + (unsettled_warnings(project, args.path)
                                       if args.no_settle else []):
         print(f"warning: {printable(warning)}", file=sys.stderr)
+    from floatpage.model.page_report import empty_page_notes
     from floatpage.typeset.render import resolution_notes
 
-    for note in resolution_notes(project) + report.notes:
+    for note in empty_page_notes(project) + resolution_notes(project) + report.notes:
         print(f"note: {printable(note)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
@@ -380,7 +381,7 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     from floatpage.model.page_report import (
-        page_report, settle_may_help, tiny_items, what_settle_fixes,
+        empty_page_notes, page_report, settle_may_help, tiny_items, what_settle_fixes,
     )
     from floatpage.model.layout import engine_for_page
 
@@ -405,7 +406,8 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"warning: {printable(warning)}")
         issues += 1
     # notes, not problems: --strict still passes
-    for note in resolution_notes(project) + faint_text_notes(project, fits):
+    for note in empty_page_notes(project) + resolution_notes(project) \
+            + faint_text_notes(project, fits):
         print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")

@@ -117,6 +117,9 @@ def next_month(project) -> tuple[int, int]:
 Answer = TypeVar("Answer")
 
 
+# An empty page (an `N` too many) said "no overlaps" and printed as a blank sheet: as
+# `check`'s note (model.page_report.empty_page_notes) says, with what to do
+EMPTY_PAGE_WORDS = "no items: prints as a blank page · i inserts · D removes the page"
 SNAP_SAID_MM = 0.5  # a save's settle that moves the selected item this far says so
 
 
@@ -379,8 +382,8 @@ class EditorScreen(Screen):
         key = None if moving else engine.quality_key()
         if key is None or key != self._quality_key:  # at rest, measured once per layout:
             quality = engine.quality()  # a decoration nudged on a still page changes nothing
-            self._quality = (quality.summary(), quality_in_words(quality),
-                             engine.alignment().short())
+            words = quality_in_words(quality) if self.session.page.items else EMPTY_PAGE_WORDS
+            self._quality = (quality.summary(), words, engine.alignment().short())
             self._quality_key = key
             self.reasons = []
             if key is not None and not quality.ok:  # why, as `check` says it: off this thread

@@ -1,0 +1,51 @@
+"""What user-walk-9 found in the command line, each run as a user runs it: the real
+`floatpage` process on a real project file (and real LuaLaTeX for `render`)."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+
+def floatpage(*args: str, cwd: Path) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "floatpage.cli.main", *args],
+                          capture_output=True, text=True, timeout=300, cwd=cwd,
+                          stdin=subprocess.DEVNULL)
+
+
+def card_with_an_empty_page(folder: Path, background: str = "") -> Path:
+    """A greeting card from `floatpage new`, with a third page holding no item (an `N` too
+    many in the editor)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    assert floatpage("new", "card", "card.toml", cwd=folder).returncode == 0
+    path = folder / "card.toml"
+    with path.open("a") as file:
+        file.write(f'\n[[pages]]\nid = "spare"\nsize = "5x8in"\n{background}')
+    return path
+
+
+def test_check_and_render_say_a_page_has_no_items_as_a_note_that_strict_lets_pass(tmp_path):
+    """An empty page printed as a blank sheet, and `check` said of it only "0 overlaps ·
+    even 1.00 · balance 1.00" and "0.00 edge lines per item". Now `check` (on stdout, with its
+    other notes) and `render` (on stderr, with its own) name the page; a note, so `--strict`
+    still passes: a blank page can be meant."""
+    path = card_with_an_empty_page(tmp_path / "card")
+    checked = floatpage("check", "card.toml", "--strict", cwd=path.parent)
+    assert checked.returncode == 0, checked.stdout + checked.stderr
+    assert "page spare: no items\n" in checked.stdout
+    assert ('note: page "spare" has no items: it prints as a blank page; put something on '
+            "it, or remove the page (D on it in the editor)") in checked.stdout
+    assert "even 1.00 · balance 1.00" not in checked.stdout
+    assert checked.stdout.count("no items") == 2  # the card's own pages are not named
+    rendered = floatpage("render", "card.toml", "-o", "card.pdf", cwd=path.parent)
+    assert rendered.returncode == 0, rendered.stderr
+    assert 'note: page "spare" has no items' in rendered.stderr
+    assert "3 page(s)" in rendered.stdout
+
+
+def test_an_empty_page_with_a_background_is_said_to_print_only_its_background(tmp_path):
+    path = card_with_an_empty_page(tmp_path / "card", 'background = {color = "#203040"}\n')
+    checked = floatpage("check", "card.toml", cwd=path.parent)
+    assert 'note: page "spare" has no items: it prints as only its background' \
+        in checked.stdout
