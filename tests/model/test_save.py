@@ -316,3 +316,32 @@ def test_tomlkit_is_bounded_to_the_releases_a_save_was_checked_against():
     from tomlkit.container import Container
 
     assert hasattr(Container, "_insert_at")  # what add_key relies on, within the bound
+
+
+def test_an_anchor_taken_off_saved_and_put_back_keeps_its_place_in_the_file(tmp_path):
+    """The calendar's month names have `anchor` before `role`: taken off (the editor's `u`),
+    saved, then put back (`a`, or an undo) and saved again, the anchor came after `role`, a
+    diff nobody asked for (user-walk-8). Now it goes back where it was, and the file saved
+    with it back is the file as read."""
+    folder = tmp_path / "calendar"
+    shutil.copytree(ROOT / "sample_projects" / "calendar-2027", folder)
+    path = folder / "calendar-2027.toml"
+    original = path.read_text()
+    project = load_project(path)
+    month = project.pages[0].items[0]
+    assert month.anchor is not None and month.role
+    anchor = month.anchor
+    month.anchor = None
+    save_project(project)
+    assert path.read_text().count("anchor =") == original.count("anchor =") - 1
+    month.anchor = anchor
+    save_project(project)
+    assert path.read_text() == original
+    # a key taken out twice, and one whose follower went too, still come back whole
+    month.anchor, month.role = None, ""
+    save_project(project)
+    month.anchor, month.role = anchor, "month-name"
+    save_project(project)
+    again = load_project(path).pages[0].items[0]
+    assert (again.anchor, again.role) == (anchor, "month-name")
+    assert path.read_text() == original
