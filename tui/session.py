@@ -51,6 +51,16 @@ def file_digest(path: Path | None) -> str | None:
         return None
 
 
+def file_stamp(path: Path | None) -> tuple[int, int, int] | None:
+    """What a cheap look at the file tells (size, modification time, inode), or None when
+    there is no such file: a change to any of them is worth reading the file for."""
+    try:
+        found = path.stat() if path is not None else None
+    except OSError:
+        return None
+    return (found.st_size, found.st_mtime_ns, found.st_ino) if found is not None else None
+
+
 def picture_aspect(path: Path) -> float | None:
     """Height / width of a picture file, or None if Pillow cannot read it."""
     try:
@@ -237,6 +247,8 @@ class EditSession:
         # (a text editor, `git checkout`) changed it meanwhile; the lock keeps out only
         # floatpage's own writers, and Ctrl+S replaced such changes without a word.
         self.disk_digest = file_digest(project.path)
+        self.disk_stamp = self.stamp_seen = file_stamp(project.path)  # see `look_at_file`
+        self.disk_told: str | None = None  # the digest (or "gone") `look_at_file` last told of
         self.read_text = project.source_text  # see `save`
         self._versions = itertools.count(1)
         self.held_id: str | None = None
@@ -983,6 +995,8 @@ class EditSession:
         path = save_project(self.project)
         self.saved_version = self.version
         self.disk_digest = file_digest(path)
+        self.disk_stamp = self.stamp_seen = file_stamp(path)
+        self.disk_told = None
         return path
 
     def reload(self) -> None:
@@ -996,6 +1010,37 @@ class EditSession:
                                allow_outside_files=self.project.allow_outside_files,
                                missing_pictures_ok=True)
         self.open(project, self.page.id, self.page_index)
+
+    def look_at_file(self) -> str | None:
+        """A cheap look, for the editor's timer, at whether another program (a text editor,
+        `git checkout`, a `floatpage settle` run by hand) changed or removed the project
+        file since the editor read or saved it: such changes were found only at Ctrl+S.
+
+        The file is read (and hashed) only when its size, time or inode changed, and only
+        once they have stayed the same for one look (a `git checkout` or a slow write is
+        over, not read half done). Returns "changed" or "gone" once for each new state of the
+        file that differs from the editor's (a file changed back, or touched only, is no
+        change), and None otherwise."""
+        path = self.project.path
+        stamp = file_stamp(path)
+        if stamp == self.disk_stamp:
+            self.stamp_seen = stamp
+            return None
+        if stamp != self.stamp_seen:  # changed since the last look: still being written?
+            self.stamp_seen = stamp
+            return None
+        self.disk_stamp = stamp
+        now = file_digest(path) if stamp is not None else "gone"
+        if now is None:  # unreadable just now (a rename under way): look again next time
+            self.disk_stamp = self.stamp_seen = None
+            return None
+        if now == self.disk_digest:
+            self.disk_told = None
+            return None
+        if now == self.disk_told:
+            return None
+        self.disk_told = now
+        return "gone" if now == "gone" else "changed"
 
     def changed_on_disk(self) -> bool:
         """Whether another program changed the project file since the editor read or saved it

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from editor_helpers import editor, screen_of
+from editor_helpers import editor, screen_of, type_text
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -55,3 +55,113 @@ async def test_an_anchor_taken_off_saved_and_put_back_keeps_its_line_in_the_file
         await pilot.pause()
         assert not app.session.unsaved
     assert month_name_keys()[-2:] == ["anchor", "role"]
+
+
+async def until(pilot, condition, seconds: float = 6.0) -> bool:
+    """Let the app run (its timers too) until ``condition()`` holds, or ``seconds`` pass."""
+    for _ in range(int(seconds / 0.1)):
+        if condition():
+            return True
+        await pilot.pause(0.1)
+    return condition()
+
+
+def changed_elsewhere(path: Path) -> str:
+    """The title's words mended as vim would, behind the editor's back; the new text."""
+    text = path.read_text().replace("Happy Birthday Anna", "Happy Birthday Anna and Ben")
+    path.write_text(text)
+    return text
+
+
+def asked(app) -> bool:
+    return app.screen.id == "changed-on-disk-dialog"
+
+
+async def test_a_change_another_program_makes_is_told_at_once_not_at_the_next_ctrl_s(
+        project_path):
+    """The file mended in vim while the editor had it open, with a nudge unsaved: nothing
+    said so until Ctrl+S, maybe an hour of edits later. Now the editor asks within seconds,
+    with the Ctrl+S question's choices; "Keep editing" is the one highlighted (the edits are
+    not lost to an Enter typed as it opens), the question is not asked again for the same
+    file, and Ctrl+S still asks before replacing it."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab", "right")
+        await pilot.pause()
+        assert app.session.unsaved
+        theirs = changed_elsewhere(project_path)
+        assert await until(pilot, lambda: asked(app)), "no word of the change"
+        dialog = app.screen
+        assert [label for label, _ in dialog.choices] == [
+            "Replace it with the editor's version", "Open the file as it is now",
+            "Keep editing (save nothing)"]
+        assert "changed card.toml just now" in dialog.message
+        assert "unsaved edits" in dialog.message
+        await pilot.press("enter")  # the highlighted choice: keep editing
+        await pilot.pause()
+        assert app.screen is app.editor and app.session.unsaved
+        assert project_path.read_text() == theirs
+        assert not await until(pilot, lambda: asked(app), seconds=2.5)  # told once
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert asked(app)  # Ctrl+S still asks
+        await pilot.press("home", "enter")
+        await pilot.pause()
+        assert not app.session.unsaved and "and Ben" not in project_path.read_text()
+        assert project_path.with_name("card.toml.bak").read_text() == theirs
+        assert not await until(pilot, lambda: asked(app), seconds=2.5)  # its own save: no change
+
+
+async def test_with_nothing_unsaved_the_changed_file_opens_as_it_is_now_with_one_enter(
+        project_path):
+    """Nothing edited in the editor, the file changed by `git checkout`: the question has
+    "Open the file as it is now" highlighted, and Enter shows their version."""
+    async with editor(project_path) as (app, pilot):
+        changed_elsewhere(project_path)
+        assert await until(pilot, lambda: asked(app))
+        assert "Nothing in the editor is unsaved" in app.screen.message
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.screen is app.editor
+        assert app.session.project.pages[0].item("title").text == "Happy Birthday Anna and Ben"
+        assert not app.session.unsaved
+
+
+async def test_a_change_made_while_a_form_is_open_waits_until_the_form_is_done(project_path):
+    """Words typed into the edit form when the file changed behind the editor: the question
+    must not open over the form (keys typed would answer it) nor close it; it comes once the
+    form is applied, and the applied words are still the editor's to keep."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("tab")
+        await pilot.pause()
+        assert app.session.selected_id == "title"
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.screen.id == "edit-dialog"
+        changed_elsewhere(project_path)
+        await type_text(pilot, " xyz")
+        assert not await until(pilot, lambda: asked(app), seconds=2.5)
+        assert app.screen.id == "edit-dialog"
+        await pilot.press("ctrl+s")  # the form's own Ctrl+S: apply
+        await pilot.pause()
+        assert await until(pilot, lambda: asked(app))
+        await pilot.press("escape")
+        await pilot.pause()
+        assert app.session.unsaved
+        assert "xyz" in app.session.project.pages[0].item("title").text
+
+
+async def test_a_file_only_touched_is_no_change_and_a_removed_one_is_told(project_path):
+    """`touch`, or a checkout that writes the same bytes, changes nothing: no question. A
+    file removed (or renamed away) is told once, and Ctrl+S writes it again."""
+    import os
+
+    async with editor(project_path) as (app, pilot):
+        os.utime(project_path, (1e9, 1e9))
+        assert not await until(pilot, lambda: asked(app), seconds=2.5)
+        project_path.rename(project_path.with_name("moved.toml"))
+        told = lambda: any("removed or renamed" in n.message for n in app._notifications)
+        assert await until(pilot, told)
+        assert app.screen is app.editor
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert project_path.exists()
