@@ -35,6 +35,29 @@ MERGE_FIELD = re.compile(r"\{[^{}]+\}")
 PDF_SIDE_UNITS = (1.0, 14_400.0)
 
 
+EXIF_ORIENTATION = 0x0112
+QUARTER_TURNS = (5, 6, 7, 8)  # EXIF orientations that turn the picture a quarter turn
+
+
+def upright_size(path: Path) -> tuple[int, int] | None:
+    """A raster picture's pixel size as it prints, or None if Pillow cannot read it: a JPEG
+    whose EXIF tag turns it a quarter turn (every phone's portrait photo, stored sideways)
+    prints turned upright (typeset.pictures), so its width and height swap."""
+    from PIL import Image
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
+            with Image.open(path) as image:
+                width, height = image.size
+                if image.format == "JPEG" \
+                        and image.getexif().get(EXIF_ORIENTATION) in QUARTER_TURNS:
+                    width, height = height, width
+        return width, height
+    except Exception:  # unreadable, or no raster picture (a PDF): the caller's default
+        return None
+
+
 @dataclass(frozen=True)
 class PictureHeader:
     """A picture as its header describes it; ``problem`` says why it cannot be used."""

@@ -24,7 +24,7 @@ CROP_ABOVE = 0.05
 def _working_copy(path: str, mtime_ns: int):
     """The decoded copy, or None for a file the loader would refuse (the editor opens a
     project with such a picture, to mend it): a 200-megapixel PNG is never decoded here."""
-    from PIL import Image
+    from PIL import Image, ImageOps
 
     from floatpage.model.picture_files import read_header
 
@@ -33,6 +33,8 @@ def _working_copy(path: str, mtime_ns: int):
     try:
         with Image.open(path) as image:
             image.draft("RGB", (WORKING_SIZE, WORKING_SIZE))  # JPEG: decode at reduced scale
+            if image.format == "JPEG":  # turned upright as the PDF prints it: a phone's
+                image = ImageOps.exif_transpose(image)  # portrait photo showed sideways
             image = image.convert("RGB")
             image.thumbnail((WORKING_SIZE, WORKING_SIZE))
             return image.copy()

@@ -5,7 +5,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from editor_helpers import editor, screen_of, type_text
+import pytest
+
+from editor_helpers import (
+    BLUE, RED, editor, item, item_pixel_box, pixel, screen_of, type_text,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -165,3 +169,37 @@ async def test_a_file_only_touched_is_no_change_and_a_removed_one_is_told(projec
         await pilot.press("ctrl+s")
         await pilot.pause()
         assert project_path.exists()
+
+
+def phone_photo(path: Path) -> Path:
+    """A portrait photo as a phone stores it: 30 x 40 pixels upright (red above, blue
+    below), saved turned a quarter (40 x 30) with the EXIF tag that turns it back."""
+    from PIL import Image
+
+    upright = Image.new("RGB", (30, 40), BLUE)
+    upright.paste(RED, (0, 0, 30, 20))
+    exif = Image.Exif()
+    exif[0x0112] = 6  # "turn 90° clockwise to show"
+    upright.transpose(Image.Transpose.ROTATE_90).save(path, exif=exif.tobytes(), quality=95)
+    return path
+
+
+async def test_a_phones_portrait_photo_is_inserted_upright_in_a_portrait_box(project_path):
+    """A phone's portrait photo (stored sideways, with an EXIF turn) got a landscape box and
+    showed sideways in the preview; the PDF, which turns it upright, then cut its top and
+    bottom off to fill the box. The box is portrait now, and the preview shows it upright."""
+    phone_photo(project_path.parent / "pictures" / "phone.jpg")
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("p", "tab")
+        await type_text(pilot, "pictures/phone.jpg")
+        await pilot.press("enter")
+        await pilot.pause()
+        new = item(app, "picture-1")
+        assert new.h / new.w == pytest.approx(40 / 30)
+        left, top, right, bottom = item_pixel_box(app, "picture-1")
+        middle = (left + right) // 2
+        assert near(pixel(app, middle, top + 1), RED) and near(pixel(app, middle, bottom - 2), BLUE)
+
+
+def near(colour, wanted, tolerance: int = 60) -> bool:
+    return all(abs(a - b) <= tolerance for a, b in zip(colour, wanted))
