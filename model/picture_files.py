@@ -45,6 +45,8 @@ def upright_size(path: Path) -> tuple[int, int] | None:
     prints turned upright (typeset.pictures), so its width and height swap."""
     from PIL import Image
 
+    if is_pdf(path):
+        return pdf_size(path)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)
@@ -56,6 +58,32 @@ def upright_size(path: Path) -> tuple[int, int] | None:
         return width, height
     except Exception:  # unreadable, or no raster picture (a PDF): the caller's default
         return None
+
+
+def is_pdf(path: Path) -> bool:
+    try:
+        with open(path, "rb") as handle:
+            return handle.read(5) == b"%PDF-"
+    except OSError:
+        return False
+
+
+def pdf_size(path: Path) -> tuple[int, int] | None:
+    """A PDF picture's first page as LuaTeX places it (its crop box, turned by its /Rotate),
+    in PDF units rounded, or None for a PDF that does not open: only its shape is used."""
+    import pikepdf
+
+    try:
+        with pikepdf.open(path) as pdf:
+            page = pdf.pages[0]
+            box = [float(v) for v in page.cropbox]
+            turns = int(page.obj.get("/Rotate", 0)) // 90 % 2
+    except Exception:
+        return None
+    width, height = round(abs(box[2] - box[0])), round(abs(box[3] - box[1]))
+    if not (width and height):
+        return None
+    return (height, width) if turns else (width, height)
 
 
 @dataclass(frozen=True)

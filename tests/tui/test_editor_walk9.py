@@ -203,3 +203,25 @@ async def test_a_phones_portrait_photo_is_inserted_upright_in_a_portrait_box(pro
 
 def near(colour, wanted, tolerance: int = 60) -> bool:
     return all(abs(a - b) <= tolerance for a, b in zip(colour, wanted))
+
+
+async def test_a_pdf_logo_gets_its_own_shape_and_is_drawn_in_the_preview(project_path):
+    """A shop's logo as a PDF (4:1) got the default 4:3 box, and the preview said
+    "unreadable pictures/logo.pdf" in it, as if the file were broken, while the PDF printed
+    it. The box takes the PDF page's shape, and the preview draws its first page."""
+    from PIL import Image
+
+    logo = Image.new("RGB", (400, 100), BLUE)
+    logo.paste(RED, (0, 0, 100, 100))  # a red square at its left end
+    logo.save(project_path.parent / "pictures" / "logo.pdf", resolution=100)
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("p", "tab")
+        await type_text(pilot, "pictures/logo.pdf")
+        await pilot.press("enter")
+        await pilot.pause()
+        new = item(app, "picture-1")
+        assert new.h / new.w == pytest.approx(0.25, abs=0.01)
+        left, top, right, bottom = item_pixel_box(app, "picture-1")
+        middle = (top + bottom) // 2
+        assert near(pixel(app, left + 2, middle), RED)
+        assert near(pixel(app, (left + right) // 2, middle), BLUE)
