@@ -249,9 +249,30 @@ def settle_and_report(project, args: argparse.Namespace) -> int:
     for page, report in zip(project.pages, reports):
         state = "settled" if report.settled else "NOT settled (stopped at the step limit)"
         print(f"page {page.id}: {state} after {report.steps} steps, final energy {report.energy:.3g}")
+        left = problems_left(page, project.physics) if report.fixed_point else ""
+        if left:
+            print(f"  still {left}: another settle changes nothing; "
+                  f"`floatpage check {printable(args.path)}` says why and what to do")
     steps = sum(report.steps for report in reports)
     print(f"{steps} steps in {elapsed:.2f} s")
     return EXIT_OK
+
+
+def problems_left(page, physics) -> str:
+    """The problems `check` counts that a settled page still has, in words ("3 items off
+    the page"), or "". A page too small for its items (a card's size typed down to A6 by
+    hand) settled with items off it; settle said only "settled", then "already settled,
+    nothing to write", while `check` sent the user back to `settle` (user-walk-9)."""
+    from floatpage.model.layout import engine_for_page
+
+    quality = engine_for_page(page, physics).quality()
+    counts = ((quality.overlap_count, "overlap"), (len(quality.off_page), "off the page"),
+              (len(quality.in_margin), "in the print-safe margin"),
+              (len(quality.outside_region), "outside its region"))
+    words = [f"{count} overlap{'s' if count > 1 else ''}" if what == "overlap"
+             else f"{count} item{'s' if count > 1 else ''} {what}"
+             for count, what in counts if count]
+    return ", ".join(words)
 
 
 def cmd_render(args: argparse.Namespace) -> int:

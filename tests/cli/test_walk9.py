@@ -49,3 +49,44 @@ def test_an_empty_page_with_a_background_is_said_to_print_only_its_background(tm
     checked = floatpage("check", "card.toml", cwd=path.parent)
     assert 'note: page "spare" has no items: it prints as only its background' \
         in checked.stdout
+
+
+def test_a_postcard_in_a6_and_a_flyer_in_dl_are_known_sizes(tmp_path):
+    """A6, the postcard and folded card size, was refused with 'did you mean "A5"?' (a page
+    twice as large), and DL, the long flyer that fits an envelope, was unknown: both needed
+    `custom` with millimetres typed by hand. Both are named sizes now, and print so."""
+    import pikepdf
+
+    path = card_with_an_empty_page(tmp_path / "card")
+    text = path.read_text().replace('size = "5x8in"', 'size = "A6"')
+    path.write_text(text.replace('id = "spare"\nsize = "A6"', 'id = "spare"\nsize = "dl"'))
+    settled = floatpage("settle", "card.toml", cwd=path.parent)
+    assert settled.returncode == 0, settled.stderr
+    rendered = floatpage("render", "card.toml", "-o", "card.pdf", cwd=path.parent)
+    assert rendered.returncode == 0, rendered.stderr
+    with pikepdf.open(path.parent / "card.pdf") as pdf:
+        sizes = [tuple(round(float(v) * 25.4 / 72) for v in page.mediabox[2:])
+                 for page in pdf.pages]
+    assert sizes == [(105, 148), (105, 148), (99, 210)]
+
+
+def test_settle_says_what_it_could_not_mend_instead_of_only_settled(tmp_path):
+    """A 5x8in card's size typed down to A6 by hand: settle said "settled" and then
+    "already settled, nothing to write", while `check` said "run `floatpage settle` to fix
+    the items off the page": a loop. Settle now names what is left on each page and sends
+    the user to `check`, which says why; a page with nothing left gets no such line."""
+    folder = tmp_path / "card"
+    folder.mkdir()
+    assert floatpage("new", "card", "card.toml", cwd=folder).returncode == 0
+    path = folder / "card.toml"
+    assert "still" not in floatpage("settle", "card.toml", cwd=folder).stdout
+    path.write_text(path.read_text().replace('size = "5x8in"', 'size = "A6"'))
+    for _ in range(2):
+        settled = floatpage("settle", "card.toml", cwd=folder)
+        assert settled.returncode == 0, settled.stderr
+        lines = settled.stdout.splitlines()
+        front = lines.index(next(line for line in lines if line.startswith("page front:")))
+        assert lines[front + 1].startswith("  still ")
+        assert "off the page: another settle changes nothing; `floatpage check card.toml` " \
+               "says why and what to do" in lines[front + 1]
+    assert "already settled, nothing to write" in settled.stdout
