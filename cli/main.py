@@ -119,7 +119,19 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
         changed_at = project.stat().st_mtime
     except OSError:
         changed_at = kept_at
-    if changed_at > kept_at:
+    from floatpage.tui.recovery import recovery_base
+    from floatpage.tui.session import file_digest
+
+    base = recovery_base(project)
+    if changed_at <= kept_at and base is not None and base != file_digest(project):
+        # changed by another program while the editor had it open, before it lost its
+        # terminal: the dates cannot tell, the digest the recovery file keeps can
+        when_changed = datetime.fromtimestamp(changed_at).strftime("%Y-%m-%d %H:%M")
+        print(f"The project itself was changed by another program at {when_changed}, while "
+              "the editor had it open: restored, these edits replace that version when you "
+              f"save (Ctrl+S asks first; it is kept as {printable(project.name)}.bak); "
+              "discard them to keep it.")
+    elif changed_at > kept_at:
         # A project saved again since (another editor session, a settle, a `git pull`): the
         # kept edits were made to the file before that, and restoring them then saving
         # replaced the newer file without a word.
