@@ -34,6 +34,11 @@ from floatpage.tui.history import History, Snapshot
 from floatpage.tui.reading_order import reading_order, step_through
 
 MIN_SIDE_MM = 3.0
+# The item fields the physics reads (model.layout.engine_for_page): an edit of any other
+# (words, colours, fonts, a calendar's month, another picture of the same shape) keeps the
+# engine and its rest, as `floatpage settle` of the edited file moves nothing either
+PHYSICAL_FIELDS = frozenset({"id", "x", "y", "w", "h", "decorative", "bleed", "anchor",
+                             "group", "region"})
 # How far an unmoved item's position as the engine has it may lie from the file's and still
 # be the file's (one step of the saved 0.01 mm, and the float error of the sum)
 ROUNDING_KEPT_MM = 0.0101
@@ -722,7 +727,11 @@ class EditSession:
             item.anchor.gamma = gamma
         if resized:
             scale_follow_offsets(self.page, old_sizes, 1.0, 1.0)
-        self.rebuild_engine(sync=not resized)
+        if gamma_changes or not changes.keys().isdisjoint(PHYSICAL_FIELDS):
+            self.rebuild_engine(sync=not resized)
+        # else: words, colours, fonts, another picture of the same shape change no body the
+        # physics moves, so nothing is reheated: a price changed on the flyer reheated the
+        # page, and the save's settle moved every item up to 9 mm (user-walk-9)
 
     def refuse_bad_group_or_region(self, item, changes: dict) -> None:
         """Raise EditError for a group or region the project file could not hold (the loader's

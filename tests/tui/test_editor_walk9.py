@@ -225,3 +225,41 @@ async def test_a_pdf_logo_gets_its_own_shape_and_is_drawn_in_the_preview(project
         middle = (top + bottom) // 2
         assert near(pixel(app, left + 2, middle), RED)
         assert near(pixel(app, (left + right) // 2, middle), BLUE)
+
+
+async def test_a_price_changed_on_the_flyer_moves_nothing(tmp_path):
+    """A price typed anew on the shop flyer ("€2.40" to "€1.99", the same box): the edit
+    reheated the page, and Ctrl+S saved every item moved, up to 9 mm, though `floatpage
+    settle` of the file with the new price moves nothing. Words, colours and fonts change no
+    body the physics moves: nothing is reheated, and the save changes the price alone."""
+    import shutil
+
+    folder = tmp_path / "flyer"
+    shutil.copytree(ROOT / "sample_projects" / "shop-flyer", folder)
+    path = folder / "shop-flyer.toml"
+    before = path.read_text()
+    async with editor(path, autostart=True) as (app, pilot):
+        price = next(i for i in app.session.page.items if "€" in getattr(i, "text", ""))
+        app.editor.selected_id = price.id
+        await pilot.pause()
+        old = price.text
+        new = old.replace(old.split("€")[1].split()[0], "1.99")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.screen.id == "edit-dialog"
+        app.screen.query_one("#field-text").text = new
+        await pilot.press("ctrl+s")  # apply the form
+        await pilot.pause()
+        assert app.screen is app.editor and app.session.unsaved
+        await until(pilot, lambda: app.editor.at_rest, seconds=10)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert not app.session.unsaved
+    after = path.read_text()
+    assert after == before.replace(toml_string(old), toml_string(new))
+
+
+def toml_string(text: str) -> str:
+    import json
+
+    return json.dumps(text, ensure_ascii=False)
