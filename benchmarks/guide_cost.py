@@ -6,14 +6,15 @@ did: Engine.settle calls (the full run and the probes), fast-mode steps.
 
     .venv/bin/python benchmarks/guide_cost.py --repeats 3
     .venv/bin/python benchmarks/guide_cost.py --seeds 7     # plus seven fresh seeded pages
-    .venv/bin/python benchmarks/guide_cost.py --before --jitter 6   # and the fixed schedule
+    .venv/bin/python benchmarks/guide_cost.py --before --jitter 6   # and cooled onto the lines
 
-``--before`` also settles each page with guides on the way the guided cooling ended before the
-sixteenth session (on its fixed schedule alone: fast_mode.QUIET_PULLS infinite), in the same
-run, alternating with the others: its on/off, steps and near misses beside today's.  Near
+``--before`` also settles each page with guides on the way a settle did before the eighteenth
+session, cooling onto the guide lines once still (fast_mode.run_fast's ``cool_onto_guides``, on
+the schedule the editor's frames keep; the quiet count that could end it sooner is gone), in the
+same run, alternating with the others: its on/off, steps and near misses beside today's.  Near
 misses turn on a hair: moving every free item by a normal 1 micrometre before the final pass
 changed the 50-item page's 1.90 to 2.06 (one seed of two).  ``--jitter K`` adds K more settles of each page (guides on,
-and with --before on the fixed schedule too), each moving every free item by a normal
+and with --before cooled onto the lines too), each moving every free item by a normal
 0.01 mm (seeds 1..K) before its final pass, and prints the near misses averaged over them and
 the plain settle: a change of the layouts is better or worse where these averages say so.
 
@@ -41,7 +42,6 @@ from dataclasses import replace
 import numpy as np
 
 import floatpage.physics.engine as engine_module
-import floatpage.physics.fast_mode as fast_mode
 from floatpage.model.layout import engine_for_page, settle_project
 from floatpage.physics.alignment import measure_alignment
 from alignment import benchmark_scenes, random_scenes, scene_project
@@ -84,7 +84,16 @@ class Tally:
 
 
 TALLY = Tally()
-QUIET_PULLS = fast_mode.QUIET_PULLS
+HEADLESS_RUN = engine_module.Engine._run_until_settled
+
+
+def cooled_onto_the_lines(engine, max_steps: int) -> int:
+    """Engine._run_until_settled as it was before the eighteenth session: cooling onto the
+    guides once the page is still, as the editor's frames do."""
+    steps = 0
+    while not engine.settled and steps < max_steps:
+        steps += engine._run(min(10_000, max_steps - steps), cool_onto_guides=True)
+    return steps
 
 
 class Jitter:
@@ -115,11 +124,12 @@ def settle_once(project, guides: float, fixed_schedule: bool = False, jitter_see
                 ) -> tuple[float, float, int, int, float, bool]:
     """CPU seconds, of them in the snap, Engine.settle calls, steps; near misses per item and
     whether the page keeps zero overlap, the gutter and the margin, as settled.
-    ``fixed_schedule``: the guided cooling ends on its schedule alone (as before the sixteenth
-    session); ``jitter_seed`` > 0: jittered before the final pass (Jitter)."""
+    ``fixed_schedule``: cooled onto the lines once still (as before the eighteenth session);
+    ``jitter_seed`` > 0: jittered before the final pass (Jitter)."""
     trial = copy.deepcopy(project)
     trial.physics = replace(trial.physics, guides=guides)
-    fast_mode.QUIET_PULLS = np.inf if fixed_schedule else QUIET_PULLS
+    engine_module.Engine._run_until_settled = (cooled_onto_the_lines if fixed_schedule
+                                               else HEADLESS_RUN)
     JITTER.mm, JITTER.seed, JITTER.done = 0.01, jitter_seed, jitter_seed <= 0
     TALLY.snap_s, TALLY.settles, TALLY.steps = 0.0, 0, 0
     start = time.process_time()
@@ -181,7 +191,7 @@ def main() -> None:
     parser.add_argument("--times", type=int, default=1)
     parser.add_argument("--free-snap", action="store_true")
     parser.add_argument("--before", action="store_true",
-                        help="also settle with the guided cooling on its fixed schedule")
+                        help="also settle cooling onto the lines, as before the eighteenth session")
     parser.add_argument("--jitter", type=int, default=0,
                         help="near misses averaged over this many jittered settles too")
     args = parser.parse_args()
@@ -237,7 +247,7 @@ def main() -> None:
         elif args.jitter:
             extra = f"| {jitter_now[-1]:.2f} "
         print(f"| {scene.name} | {best_off[0]:.3f} | {best_on[0]:.3f} | {ratio:.2f} | "
-              f"{best_on[1]:.3f} | {rest:.2f} | {best_off[2]} → {best_on[2]} | "
+              f"{best_on[1]:.4f} | {rest:.2f} | {best_off[2]} → {best_on[2]} | "
               f"{best_off[3]} → {best_on[3]} | {best_off[4]:.2f} → {best_on[4]:.2f} {extra}| {ok} |",
               flush=True)
     print(f"\non/off: median {np.median(ratios):.2f}, worst {max(ratios):.2f}; "
@@ -246,7 +256,7 @@ def main() -> None:
     if args.before:
         worse = sum(now > then + 1e-9 for now, then in zip(misses, old_misses))
         better = sum(now < then - 1e-9 for now, then in zip(misses, old_misses))
-        print(f"before (fixed schedule): on/off median {np.median(old_ratios):.2f}, worst "
+        print(f"before (cooled onto the lines): on/off median {np.median(old_ratios):.2f}, worst "
               f"{max(old_ratios):.2f}; near misses summed {sum(old_misses):.2f} → "
               f"{sum(misses):.2f}; pages worse {worse}, better {better}")
     if args.jitter:

@@ -70,7 +70,6 @@ class Engine(SecondStart, RoomRelocation):
         self._heat = 1.0
         self._settled = True
         self._spread_out = False  # the fast mode's page has spread and cools onto its guides
-        self._jammed = False  # settle's first pass ran early and failed (_first_pass_fails)
         self._rng = np.random.default_rng(params.seed)
 
     # ----- reading -------------------------------------------------------------------------
@@ -375,7 +374,9 @@ class Engine(SecondStart, RoomRelocation):
         self.reheat()
 
     # ----- running -------------------------------------------------------------------------
-    def _run(self, steps: int, gives_up: Callable[[], bool] | None = None) -> int:
+    def _run(self, steps: int, cool_onto_guides: bool = True) -> int:
+        """``cool_onto_guides``: the editor's frames let the guides pull a still page onto its
+        lines; a headless settle leaves that to the snap (fast_mode.run_fast)."""
         if self.params.mode == "paper":
             done, self._heat, self._settled = run_paper(
                 self._bodies, self.page_w_mm, self.page_h_mm, self.params, self._heat, steps,
@@ -383,7 +384,7 @@ class Engine(SecondStart, RoomRelocation):
         else:
             done, self._heat, self._settled, self._spread_out = run_fast(
                 self._bodies, self.page_w_mm, self.page_h_mm, self.params, self._heat, steps,
-                self._rng, self._spread_out, gives_up)
+                self._rng, self._spread_out, cool_onto_guides)
         return done
 
     def advance(self, steps: int | None = None, *, budget_s: float | None = None,
@@ -459,17 +460,12 @@ class Engine(SecondStart, RoomRelocation):
         the settle's time."""
         start = self._bodies.centres.copy()
         second_start = finalize and self._second_start_applies()
-        self._jammed = False
-        steps = self._run_until_settled(max_steps, self._first_pass_fails if second_start
-                                        else None)
+        steps = self._run_until_settled(max_steps)
         energy = self.kinetic_energy
         fits = True
         if finalize:
             align = self._moved_at_most(start, align_within_mm)
-            if self._jammed:  # the first attempt's pass has run, and failed (_first_pass_fails)
-                fits = False
-            else:
-                fits = self.finalize(fall_back=not second_start, align=align)
+            fits = self.finalize(fall_back=not second_start, align=align)
             if not fits and second_start:
                 fits = self._settle_from_packing(max_steps, align)
         return SettleReport(steps=steps, energy=energy, settled=self._settled, fits=fits)
@@ -481,27 +477,8 @@ class Engine(SecondStart, RoomRelocation):
         return bool(np.abs(self._bodies.centres[active] - start[active]).max(initial=0.0)
                     <= limit_mm)
 
-    def _run_until_settled(self, max_steps: int,
-                           gives_up: Callable[[], bool] | None = None) -> int:
+    def _run_until_settled(self, max_steps: int) -> int:
         steps = 0
         while not self._settled and steps < max_steps:
-            steps += self._run(min(10_000, max_steps - steps), gives_up)
+            steps += self._run(min(10_000, max_steps - steps), cool_onto_guides=False)
         return steps
-
-    def _first_pass_fails(self) -> bool:
-        """Asked by the fast mode when a page with a second start first comes to rest, before
-        it cools onto its guides: the first attempt's no-overlap pass, run on the page as it
-        lies.  If that cannot reach the gutter here, the page is jammed (the 5-item page of
-        benchmarks/physics.py: a stack one gutter too tall), lining it up is wasted (60 of its
-        198 steps), and the run ends with the pass's result, as finalize would leave it; the
-        second start follows.  If it can, the page is put back exactly as it was and runs on,
-        so the result is the same as without the question."""
-        bodies = self._bodies
-        centres, velocities = bodies.centres.copy(), bodies.velocities.copy()
-        if remove_overlaps(bodies, self.page_w_mm, self.page_h_mm, self.params.gutter_mm,
-                           margin_mm=self.margin_mm, fall_back=False):
-            bodies.centres[:], bodies.velocities[:] = centres, velocities
-            return False
-        bodies.velocities[:] = 0.0
-        self._jammed = True
-        return True

@@ -280,11 +280,14 @@ def wall_rest_box(halves: np.ndarray, page_w_mm: float, page_h_mm: float, margin
     highest = extent - halves - far
     too_big = 2 * halves >= extent
     crowded = lowest > highest  # fits, but not with both margins: rest in the middle
+    squeezed = too_big | crowded
+    if not squeezed.any():  # most pages: every item its own box (the snap's set-up asks)
+        return lowest, highest
     middle = np.broadcast_to(extent / 2, halves.shape)
     if far_margin is not None:
         middle = middle + (np.asarray(margin) - np.asarray(far)) / 2
-    lowest = np.where(too_big | crowded, middle, lowest)
-    highest = np.where(too_big | crowded, middle, highest)
+    lowest = np.where(squeezed, middle, lowest)
+    highest = np.where(squeezed, middle, highest)
     return lowest, highest
 
 

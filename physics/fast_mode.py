@@ -11,7 +11,6 @@ Verlet neighbour list).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 
 import numpy as np
 
@@ -19,7 +18,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.constraints import enforce_positions, hand_forces_to_roots
 from floatpage.physics.fast_forces import target_gap, wall_rest_box
 from floatpage.physics.force_terms import AnchorPulls, ContactPushes, Force, WallPushes
-from floatpage.physics.guides import GUIDE_HEAT, HOLD_HEAT, QUIET_PULLS, GuidePulls, guide_pulls
+from floatpage.physics.guides import GUIDE_HEAT, HOLD_HEAT, guide_pulls
 from floatpage.physics.geometry import (
     ROOMY_COVER, as_insets, clamp_to_page, group_bounds, grown_cover, lines_up, squared_norms,
 )
@@ -86,7 +85,7 @@ def fast_forces(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Para
 
 def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params, heat: float,
              steps: int, rng: np.random.Generator, spread_out: bool = False,
-             gives_up: Callable[[], bool] | None = None) -> tuple[int, float, bool, bool]:
+             cool_onto_guides: bool = True) -> tuple[int, float, bool, bool]:
     """Advance up to ``steps`` steps in place; stop once the page is still.
 
     Each step: the forces' sum (fast_forces), semi-implicit Euler with friction and a speed
@@ -94,9 +93,12 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     spread out: whether the page has spread and now cools onto its guides, which the caller
     hands back to the next call, as the editor runs a page one frame at a time).
 
-    ``gives_up``, if given, is asked once, when the page has spread and first comes to rest:
-    True ends the run there, without cooling onto the guides (Engine.settle asks whether the
-    page as it lies can keep the gutter at all; if not, lining it up is wasted).
+    ``cool_onto_guides``: once the page is still, cool on while the guides pull its features
+    onto their lines (below).  The editor does, so that items glide onto a line as a user
+    watches; a headless settle (Engine.settle) does not, and leaves the lines to the snap
+    that follows it (physics.snapping): the cooling was 8-15 % of a settle's steps, while
+    the near misses the snap leaves were the same with it and without it (docs/benchmarks.md,
+    eighteenth session, "lead").  The lines' hold acts either way on a cold page.
     """
     free = bodies.free
     if not free.any() or steps <= 0:
@@ -124,23 +126,17 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
     any_followers = bool(followers.any())
     cooling = cooling_rate(params.heat_decay, int(active.sum()))
     keep = 1.0 - (max(cooling, GUIDED_COOLING) if spread_out else cooling)
-    # Once the page is still, the spreading is over: rather than cool slowly on while nothing
-    # moves, the heat drops to where the alignment guides pull in full (GUIDE_HEAT / 2), and
-    # cools from there at GUIDED_COOLING a step, until the page is still on its lines below the
-    # heat at which the lines hold (without guides, or on a page too full to line up, nothing
-    # more to wait for).  From 0.9 GUIDE_HEAT, where the pull is a fifth of its strength, that
-    # took at least 83 steps; from the half, at least 49, with the same near misses on every
-    # page of benchmarks/alignment.py --quick (the snap lines up what the pull leaves).
-    # The cooling also ends once QUIET_PULLS pulls in a row have brought no feature within a
-    # nudge of its line nor taken one out (guides.GuidePulls.quiet), on a page as still as
-    # the schedule's end asks: what is left is the pull creeping in features that stay near
-    # misses when it ends anyway, and the snap does the rest (docs/benchmarks.md, sixteenth
-    # session, "cooling": up to 30 steps fewer; near misses, averaged over jittered settles,
-    # the same).
+    # Once the page is still, the spreading is over: where it cools onto its guides
+    # (``cool_onto_guides``), rather than cool slowly on while nothing moves, the heat drops to
+    # where the alignment guides pull in full (GUIDE_HEAT / 2), and cools from there at
+    # GUIDED_COOLING a step, until the page is still on its lines below the heat at which the
+    # lines hold (without guides, or on a page too full to line up, nothing more to wait for).
+    # From 0.9 GUIDE_HEAT, where the pull is a fifth of its strength, that took at least 83
+    # steps; from the half, at least 49.
     cover = grown_cover(bodies, near, far, page_w_mm, page_h_mm, params.gutter_mm)
     roomy = cover <= ROOMY_COVER
     aligns = lines_up(cover, int(active.sum()))
-    guides_on = params.guides > 0 and aligns
+    guides_on = params.guides > 0 and aligns and cool_onto_guides
     guided_heat = GUIDE_HEAT / 2
     settled_below = HOLD_HEAT if guides_on else np.inf
     count = bodies.count
@@ -148,7 +144,6 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
                          inverse_mass, gap, skin, near, far, align=aligns,
                          saved=heat < HOLD_HEAT and not spread_out)
     contacts = forces[0]
-    guide = forces[-1] if isinstance(forces[-1], GuidePulls) else None
     for done in range(1, steps + 1):
         acc = np.zeros((count, 2))
         for force in forces:
@@ -182,17 +177,6 @@ def run_fast(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
         if top_speed < still_speed:
             if heat <= settled_below:
                 return done, heat, True, spread_out
-            if (spread_out and guide is not None and guide.quiet >= QUIET_PULLS
-                    and top_speed * heat < still_speed * HOLD_HEAT):
-                # the pull has nothing left for the snap, and the page is as still as at the
-                # schedule's end: a speed is heat times the forces left, so this is still
-                # below HOLD_HEAT (only still at its own heat, two pages of guide_cost.py needed
-                # one and two more probes)
-                return done, heat, True, spread_out
-            if not spread_out and gives_up is not None and gives_up():
-                return done, heat, True, spread_out
-            if not spread_out and guide is not None:
-                guide.start_quiet_count()
             heat = min(heat, guided_heat)  # spread out and still: on to where the guides pull
             keep = min(keep, 1.0 - GUIDED_COOLING)
             spread_out = True

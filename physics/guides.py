@@ -34,20 +34,16 @@ to leave a feature off.  (A feature 4.3 mm off a line on an A3 page of 12 items 
 pull of 0.13 mm per step^2 there, on top of a push just within the rest limit: the probe ran
 230 steps, moved items 8.7 mm and asked for one more probe, twice the settle without guides.)
 
-Once the page has spread and cools onto its lines (fast_mode.run_fast), what the pull does for
-the page is bring features within a nudge (``ALIGNED_MM``, 0.5 mm) of their lines: the snap
-after the run puts those on the line exactly without a rest check (snapping.NUDGE_MM), and a
-pair that close is no near miss.  A feature further off creeps in at a few hundredths of a
-millimetre a pull, still a near miss when the cooling ends.  So the force counts the pulls
-since the set of features within a nudge last changed (``quiet``), and the guided cooling ends
-on a still page once ``QUIET_PULLS`` pulls have changed nothing there.
+The pull acts wherever a page runs below ``GUIDE_HEAT``: a crowded page cools that far while
+it spreads, and the editor, once a page is still, cools it onto its lines so that items glide
+there as a user watches (fast_mode.run_fast).  A headless settle does not wait for that: the
+snap after it lines up what the pull would have (docs/benchmarks.md, eighteenth session).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from floatpage.physics.alignment import ALIGNED_MM
 from floatpage.physics.bodies import Bodies
 from floatpage.physics.guide_pull_kernel import chosen_pulls, hold as hold_slots, pull as pull_slots
 from floatpage.physics.params import page_scale
@@ -61,7 +57,6 @@ ON_LINE_MM = 0.05  # a feature this close to its guide is on it (and held)
 SAVED_SLACK_MM = 0.01  # a saved file's centres are rounded to 0.01 mm (model.layout.write_back)
 PULL_EVERY = 4  # the pull comes as one push every 4th step, four times as strong
 REFRESH_STEPS = 64  # steps between two searches for each item's nearest guide
-QUIET_PULLS = 6  # pulls (24 steps) that bring no feature within a nudge end the guided cooling
 PAGE = -1  # owner of the page's own guide lines
 NOBODY = -2  # owner of nearest_guides' sentinels
 LOOKS = np.arange(-2, 3)  # nearest_guides looks two places either side of a query
@@ -170,11 +165,6 @@ class GuidePulls:
         self.k = K_GUIDE * strength
         self.reach = snap_range(*page)
         self.steps = 0
-        # which chosen pulls' features lay within a nudge (ALIGNED_MM) of their line at the last
-        # pull, and how many pulls since that set (or a guide) last changed: run_fast ends the
-        # guided cooling on it
-        self.nudged: np.ndarray | None = None
-        self.quiet = 0
         self.own = np.zeros(0, dtype=int)
         self.refreshed_at: np.ndarray | None = None
         self.fixed: list[tuple[np.ndarray, np.ndarray] | None] = [None, None]  # page_lines
@@ -222,12 +212,10 @@ class GuidePulls:
                 self.steps % REFRESH_STEPS == 0
                 and np.abs(centres - self.refreshed_at).max() > self.reach / 2):
             self.refresh(centres)
-            self.nudged = None  # new guides: what lay within a nudge may have changed
         if len(self.own) == 0:
-            self.quiet += 1  # nothing in range: nothing for the pull to do
             return
         # cold, the lines hold and no longer pull (see the module doc): the distances are
-        # still measured, for the hold and the quiet count
+        # still measured, for the hold
         share = min(1.0, 2.0 * (1.0 - heat / GUIDE_HEAT)) if heat >= HOLD_HEAT else 0.0
         apart = np.empty(len(self.own))
         # compiled (guide_pull_kernel.pull): distance = factor * partner + offset - own, then
@@ -235,21 +223,10 @@ class GuidePulls:
         # NumPy's operations in its order (ten calls every fourth step of a cooling page)
         pull_slots(acc, centres, self.own, self.partner, self.factor, self.offset, self.reach,
                    PULL_EVERY * self.k * share, apart)
-        nudged = apart <= ALIGNED_MM
-        if self.nudged is not None and np.array_equal(nudged, self.nudged):
-            self.quiet += 1
-        else:
-            self.quiet = 0
-        self.nudged = nudged
         # Which groups to hold is worked out only on a cold page (hold_on_lines), from the
         # distances kept here: while the page spreads it was NumPy calls a pull for nothing
         # (a dozen, then the three that picked the slots on their line).
         self.apart, self.apart_slots, self.holding = apart, self.own, None
-
-    def start_quiet_count(self) -> None:
-        """Count the quiet pulls from now (the guided cooling begins: fast_mode.run_fast), not
-        from the pulls of the spreading, whose hotter page may still bring features in."""
-        self.quiet = 0
 
     def hold_on_lines(self, acc: np.ndarray) -> None:
         """Static friction at a line: a group with a feature on its guide keeps its place on

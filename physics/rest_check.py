@@ -21,18 +21,21 @@ millimetres in the next probe.)
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from floatpage.physics.bodies import Bodies
-from floatpage.physics.fast_forces import (
-    RADIAL_SHARE, blocked_axes, candidate_pairs, wall_rest_box,
-)
+from floatpage.physics.fast_forces import GRID_FROM_ITEMS, RADIAL_SHARE, candidate_pairs
 from floatpage.physics.force_terms import (
     BETA_DEFAULT, K_ANCHOR, K_CONTACT, K_WALL, RADIAL_FADE_HEAT,
 )
 from floatpage.physics.line_hold import LineHold
 from floatpage.physics.guides import ON_LINE_MM
 from floatpage.physics.rest_check_kernel import held_on_lines, rest_net
+from floatpage.physics.snap_setup_kernel import (
+    inverse_masses, pair_tables, row_table, sweep_pairs,
+)
 from floatpage.physics.stillness import PROBE_HEAT
 
 REST_ACC = 0.8  # mm per step^2 on A4: the probe's first step (heat 0.02, friction 0.4) moves
@@ -47,31 +50,48 @@ class RestCheck:
     def __init__(self, bodies: Bodies, page: tuple[float, float], gap: float,
                  insets: tuple[np.ndarray, np.ndarray], beta: float, reach: float, scale: float,
                  hold: float = 0.0,
-                 lines: list[tuple[np.ndarray, np.ndarray]] | None = None):
+                 lines: list[tuple[np.ndarray, np.ndarray]] | None = None,
+                 pair_centres: np.ndarray | None = None):
+        """``pair_centres``: where the pairs are found, if not at the bodies' centres now (a
+        check built after a snap's first nudges finds them where the snap started:
+        physics.deferred_rest)."""
         self.bodies, self.page, self.gap = bodies, page, gap
         self.halves = bodies.sizes / 2
         active = bodies.active
         roots, _ = bodies.group_roots()
         self.roots = roots
-        charges = np.where(active, bodies.charges, 0.0)
-        group_mass = np.bincount(roots, weights=charges, minlength=bodies.count)
-        movable = bodies.free[roots] & ~bodies.held & active
-        inverse = np.where(movable, 1.0 / np.maximum(group_mass[roots], 1e-12), 0.0)
-        i, j = candidate_pairs(bodies.centres, self.halves, np.flatnonzero(active), roots,
-                               gap + 2 * reach)
-        total = inverse[i] + inverse[j]
-        total = np.where(total > 0, total, 1.0)
+        free = bodies.free
+        # The masses, the pairs and the tables compiled (physics/snap_setup_kernel.c): the
+        # inverse masses as np.bincount and np.where make them, the pairs as candidate_pairs
+        # finds them by its sweep, their table as blocked_axes and the shares of a push, the
+        # rows' as wall_rest_box and the anchor springs, in NumPy: the same floats
+        # (tests/physics/test_snap_setup.py), for a tenth of a small page's fifty NumPy calls.
+        # A page of GRID_FROM_ITEMS rows finds its pairs by the grid.
+        inverse = np.frombuffer(inverse_masses(bodies.sizes, roots, active, free, bodies.held))
+        at = bodies.centres if pair_centres is None else pair_centres
+        if active.sum() < GRID_FROM_ITEMS:
+            pair_ends = np.frombuffer(sweep_pairs(at, self.halves, active, roots,
+                                                  gap + 2 * reach), dtype=np.int64).reshape(-1, 2)
+        else:
+            pair_ends = np.column_stack(candidate_pairs(at, self.halves, np.flatnonzero(active),
+                                                        roots, gap + 2 * reach)).astype(np.int64)
+        i, j = pair_ends[:, 0], pair_ends[:, 1]
+        table, self.pair_lists_of = pair_tables(pair_ends, bodies.sizes, self.halves, inverse,
+                                                *insets, *page, gap)
+        # per pair: its reach (half sizes summed plus the gap, as the contacts keep it), its
+        # blocked axes (blocked_axes, no gutter), its ends' shares of a push
+        self.pair_ends, self.pair_table = pair_ends, np.frombuffer(table).reshape(-1, 6)
         self.i, self.j = i, j
-        self.share_i, self.share_j = inverse[i] / total, inverse[j] / total
-        self.blocked = blocked_axes(bodies.sizes, i, j, *page, 0.0, insets)
-        self.reach = self.halves[i] + self.halves[j] + gap  # each pair's, as the contacts keep it
-        near, far = insets  # where each row's walls stand (Bodies.insets)
-        self.rest_low, self.rest_high = wall_rest_box(self.halves, *page, gap / 2 + near,
-                                                      gap / 2 + far)
-        anchored = ~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard
-        self.anchor_k = np.where(anchored, K_ANCHOR * beta / BETA_DEFAULT * bodies.gammas, 0.0)
-        self.anchors = np.where(anchored[:, None], bodies.anchors, 0.0)
-        self.movable = bodies.free & active  # roots of groups the integrator moves
+        self.reach, self.blocked = self.pair_table[:, 0:2], self.pair_table[:, 2:4] != 0
+        self.share_i, self.share_j = self.pair_table[:, 4], self.pair_table[:, 5]
+        # per row (the columns rest_net names): its rest box, the walls where Bodies.insets
+        # stands them, at the gap (wall_rest_box); its soft anchor's spring and anchor
+        self.row_table = np.frombuffer(row_table(
+            self.halves, *insets, *page, gap, bodies.anchors, bodies.hard, bodies.gammas,
+            K_ANCHOR * beta / BETA_DEFAULT)).reshape(-1, 7)
+        self.rest_low, self.rest_high = self.row_table[:, 0:2], self.row_table[:, 2:4]
+        self.anchor_k, self.anchors = self.row_table[:, 4], self.row_table[:, 5:7]
+        self.movable = free & active  # roots of groups the integrator moves
         self.limit = REST_ACC * scale
         self.hold = hold  # a line's hold on a group with a feature on it (physics.guides)
         # the page's own guide lines per axis, (edges, centres): guides.page_lines
@@ -81,24 +101,12 @@ class RestCheck:
         self.lines = LineHold(bodies.centres, self.halves, self.active_rows, roots,
                               self.group_rows, self.page_lines)
         count = bodies.count
-        ends = np.concatenate([i, j])
-        order = np.argsort(ends, kind="stable")
-        split = np.searchsorted(ends[order], np.arange(count + 1))
-        pair_ids = np.concatenate([np.arange(len(i)), np.arange(len(j))])[order]
-        self.pairs_of = [pair_ids[split[row]:split[row + 1]] for row in range(count)]
         self.grouped = bool((roots != np.arange(count)).any())
-        # what the force sum (rest_check_kernel.rest_net) reads, as tables: per pair, its ends, its
-        # reach, its blocked axes and its ends' shares; per row, its rest box and its anchor
-        # spring (the columns rest_net names)
-        self.pair_ends = np.column_stack([i, j]).astype(np.int64)
-        self.pair_table = np.column_stack([self.reach, self.blocked, self.share_i, self.share_j]
-                                          ).astype(float).reshape(len(i), 6)
-        self.row_table = np.column_stack([self.rest_low, self.rest_high, self.anchor_k,
-                                          self.anchors])
+        # what the force sum (rest_check_kernel.rest_net) reads besides the tables above
         self.forces = np.array([K_CONTACT, K_WALL, PROBE_RADIAL])
-        # what reached_by reads, as Python lists
+        # what reached_by reads, as Python lists (with pair_lists_of: each row's pairs, as i
+        # and then as j, each in pair order)
         self.pair_ends_lists = (i.tolist(), j.tolist())
-        self.pair_lists_of = [pairs.tolist() for pairs in self.pairs_of]
         self.root_list, self.movable_list = roots.tolist(), self.movable.tolist()
         self.group_row_lists = [rows.tolist() for rows in self.group_rows]
         self.reach_of: dict[bytes, tuple[np.ndarray, list[int], list[int]]] = {}
@@ -147,11 +155,10 @@ class RestCheck:
         per_row = self.net(rows, pairs, members, axis, shift)
         if self.grouped:
             after_net = self.group_sums(per_row, rows, groups)
-            size = np.abs(after_net)
-            over = (np.maximum(size[:, 0], size[:, 1]) > self.limit + 1e-9).nonzero()[0]
+            over = (speed_of(after_net[:, 0], after_net[:, 1]) > self.limit + 1e-9).nonzero()[0]
         else:  # every group one row: the few sums tested as floats, no arrays unless needed
             limit = self.limit + 1e-9
-            over = [k for k, (x, y) in enumerate(per_row) if max(abs(x), abs(y)) > limit]
+            over = [k for k, (x, y) in enumerate(per_row) if math.sqrt(x * x + y * y) > limit]
             after_net = np.array(per_row) if over else None
         if not len(over):
             return True  # within the limit with no hold at all: which lines hold is moot
@@ -221,7 +228,7 @@ class RestCheck:
         size = np.abs(acc)
         if held is not None:
             size = np.where(held, np.maximum(size - self.hold, 0.0), size)
-        return np.maximum(size[:, 0], size[:, 1])  # a reduction's set-up costs more
+        return speed_of(size[:, 0], size[:, 1])
 
     def group_net(self, rows: list[int], pairs: list[int], groups: np.ndarray) -> np.ndarray:
         """Each group's net acceleration with the page as it is, (len(groups), 2)."""
@@ -239,10 +246,37 @@ class RestCheck:
         return summed[groups]
 
 
-def group_members(roots: np.ndarray, active: np.ndarray) -> list[np.ndarray]:
+def speed_of(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """The length of pushes (x, y): what the stillness test reads of the speed they give
+    (fast_mode.run_fast: the top speed is a Euclidean norm).  The larger of |x| and |y| let a
+    push of 0.63 on both axes (0.89 long) pass a limit of 0.79, and the probe's first step
+    moved the item 0.0106 mm, not still: the probe ran 262 steps and moved items 8.8 mm (seed
+    2008 of benchmarks/guide_cost.py --first-seed 2000).  Spelled as sqrt(x*x + y*y), not
+    hypot, so that the compiled sweeps (snap_sweep_rest.h) get the same floats."""
+    return np.sqrt(x * x + y * y)
+
+
+class Groups(list):
+    """group_members' answer: per row, its group's active rows; ``several`` holds the roots
+    of groups of more than one row (most pages have none)."""
+
+    several: np.ndarray
+
+
+def group_members(roots: np.ndarray, active: np.ndarray) -> Groups:
     """For each row, the active rows whose group root it is (empty unless it is a root), in
-    one sort: a comparison per root cost O(n^2) on a 10,000-item page."""
+    one sort: a comparison per root cost O(n^2) on a 10,000-item page.  Where no row follows
+    another (most pages), each active row alone, without the sort (a snap asks twice)."""
+    count = len(roots)
+    rows = np.arange(count)
+    if (roots == rows).all():
+        nothing, flags = rows[:0], active.tolist()
+        found = Groups(rows[row:row + 1] if flags[row] else nothing for row in range(count))
+        found.several = nothing
+        return found
     order = np.argsort(roots, kind="stable")
     order = order[active[order]]
-    bounds = np.searchsorted(roots[order], np.arange(len(roots) + 1))
-    return [order[bounds[row]:bounds[row + 1]] for row in range(len(roots))]
+    bounds = np.searchsorted(roots[order], np.arange(count + 1))
+    found = Groups(order[bounds[row]:bounds[row + 1]] for row in range(count))
+    found.several = np.flatnonzero(np.diff(bounds) > 1)
+    return found

@@ -159,7 +159,7 @@ class SecondStart:
         bodies.centres[:] = start
         bodies.velocities[:] = 0.0
         self.reheat(SECOND_START_HEAT)
-        self._spread_out = True  # spread already: it cools onto its guides (fast_mode.run_fast)
+        self._spread_out = True  # spread already: it cools at the guided rate (fast_mode.run_fast)
         self._run_until_settled(max_steps)
         if keeps():
             return True

@@ -810,6 +810,50 @@ static int take_tables(PyObject *pair, PyObject **tables)
     return 0;
 }
 
+/* The rest check's parts (RestCheck.compiled_parts), read when the Sweep is made or, from
+   their maker (DeferredRest.compiled_parts), before the first move that needs the check: a page
+   whose moves are all nudges, or that has none, never builds it (physics/deferred_rest.py). */
+static int take_rest(Sweep *self, PyObject *parts)
+{
+    PyObject *reached_by, *rest_net, *net_args, *held_on_lines, *hold_args, *no_rows,
+        *root_list, *group_rows, *pairs_of, *scratch_rows, *scratch_owner;
+    int grouped;
+    Py_ssize_t count = self->count;
+    if (!PyTuple_Check(parts)) {
+        PyErr_SetString(PyExc_TypeError, "rest: the parts as a tuple");
+        return -1;
+    }
+    if (!PyArg_ParseTuple(parts, "OOO!OO!OOOO!O!O!pdd:rest", &reached_by, &rest_net,
+                          &PyTuple_Type, &net_args, &held_on_lines, &PyTuple_Type,
+                          &hold_args, &no_rows, &scratch_rows, &scratch_owner,
+                          &PyList_Type, &root_list, &PyList_Type, &group_rows,
+                          &PyList_Type, &pairs_of, &grouped, &self->limit, &self->hold))
+        return -1;
+    if (PyTuple_GET_SIZE(net_args) != 5 || PyTuple_GET_SIZE(hold_args) != 7
+            || PyList_GET_SIZE(root_list) != count
+            || PyList_GET_SIZE(group_rows) != count || PyList_GET_SIZE(pairs_of) != count) {
+        PyErr_SetString(PyExc_ValueError, "rest: five net arguments, lists per row");
+        return -1;
+    }
+    self->grouped = grouped;
+    self->reached_by = Py_NewRef(reached_by);
+    self->rest_net = Py_NewRef(rest_net);
+    self->net_args = Py_NewRef(net_args);
+    self->held_on_lines = Py_NewRef(held_on_lines);
+    self->hold_args = Py_NewRef(hold_args);
+    self->no_rows = Py_NewRef(no_rows);
+    self->scratch_rows = Py_NewRef(scratch_rows);
+    self->scratch_owner = Py_NewRef(scratch_owner);
+    self->root_list = Py_NewRef(root_list);
+    self->group_rows = Py_NewRef(group_rows);
+    self->pairs_of = Py_NewRef(pairs_of);
+    self->zero = PyFloat_FromDouble(0.0);
+    if (self->zero == NULL)
+        return -1;
+    self->rest_taken = 1;
+    return 0;
+}
+
 static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
 {
     Py_ssize_t count, candidates, max_tries, every_move;
@@ -964,43 +1008,19 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
         goto no_memory;
     memcpy(self->too_large, PyBytes_AS_STRING(too_large), 2 * count);
     memcpy(self->bleeds, PyBytes_AS_STRING(bleeds), count);
-    if (keeps_rest != Py_None) { /* the rest check's parts (snapping._Snapper.compiled) */
-        PyObject *reached_by, *rest_net, *net_args, *held_on_lines, *hold_args, *no_rows,
-            *root_list, *group_rows, *pairs_of, *scratch_rows, *scratch_owner;
-        int grouped;
-        if (!PyArg_ParseTuple(keeps_rest, "OOO!OO!OOOO!O!O!pdd:rest", &reached_by, &rest_net,
-                              &PyTuple_Type, &net_args, &held_on_lines, &PyTuple_Type,
-                              &hold_args, &no_rows, &scratch_rows, &scratch_owner,
-                              &PyList_Type, &root_list, &PyList_Type, &group_rows,
-                              &PyList_Type, &pairs_of, &grouped, &self->limit, &self->hold))
-            goto failed;
-        if (PyTuple_GET_SIZE(net_args) != 5 || PyTuple_GET_SIZE(hold_args) != 7
-                || PyList_GET_SIZE(root_list) != count
-                || PyList_GET_SIZE(group_rows) != count || PyList_GET_SIZE(pairs_of) != count) {
-            PyErr_SetString(PyExc_ValueError, "rest: five net arguments, lists per row");
-            goto failed;
-        }
+    if (keeps_rest != Py_None) { /* the rest check: its parts now, or their maker's later */
         self->has_rest = 1;
-        self->grouped = grouped;
-        self->reached_by = Py_NewRef(reached_by);
-        self->rest_net = Py_NewRef(rest_net);
-        self->net_args = Py_NewRef(net_args);
-        self->held_on_lines = Py_NewRef(held_on_lines);
-        self->hold_args = Py_NewRef(hold_args);
-        self->no_rows = Py_NewRef(no_rows);
-        self->scratch_rows = Py_NewRef(scratch_rows);
-        self->scratch_owner = Py_NewRef(scratch_owner);
-        self->zero = PyFloat_FromDouble(0.0);
-        if (self->zero == NULL)
-            goto failed;
-        self->root_list = Py_NewRef(root_list);
-        self->group_rows = Py_NewRef(group_rows);
-        self->pairs_of = Py_NewRef(pairs_of);
         self->before_known = PyMem_Calloc(count + 1, 1);
         self->before_held = PyMem_Calloc(2 * count + 2, 1);
         self->before_push = PyMem_Calloc(count + 1, sizeof(double));
         if (self->before_known == NULL || self->before_held == NULL || self->before_push == NULL)
             goto no_memory;
+        if (PyTuple_Check(keeps_rest) && take_rest(self, keeps_rest) < 0)
+            goto failed;
+        if (!PyTuple_Check(keeps_rest) && !PyCallable_Check(keeps_rest)) {
+            PyErr_SetString(PyExc_TypeError, "keeps_rest: the rest parts, their maker or None");
+            goto failed;
+        }
     }
     for (Py_ssize_t row = 0; row < count; row++) {
         PyObject *list = Py_BuildValue("[n]", row);
@@ -1052,8 +1072,10 @@ static PyTypeObject SweepType = {
               "roots, mover_mask, ranges, aligned, "
               "keeps_rest, apply, concatenate, fit_args, candidates, max_tries, every_move, "
               "nudge): one page's snap sweeps with their memo (physics.snapping._Snapper."
-              "compiled builds it).  Holds no reference back to a Sweep: apply and keeps_rest "
-              "are the snapper's and the rest check's own methods.",
+              "compiled builds it).  keeps_rest: the rest check's parts (RestCheck."
+              "compiled_parts), a callable that makes them, called at the first move that "
+              "needs the check, or None.  Holds no reference back to a Sweep: apply and "
+              "keeps_rest are the snapper's and the rest check's own.",
     .tp_methods = sweep_methods,
     .tp_new = sweep_new,
 };

@@ -83,7 +83,7 @@ static inline double unheld(Sweep *self, const double *acc, const char *held)
         if (held != NULL && held[axis])
             size[axis] = larger(size[axis] - self->hold, 0.0);
     }
-    return larger(size[0], size[1]);
+    return sqrt(size[0] * size[0] + size[1] * size[1]); /* rest_check.speed_of */
 }
 
 /* LineHold.held(groups, axis, members, shift) into ``out`` (one flag per group): its rows and
@@ -236,6 +236,15 @@ done:
 /* RestCheck.keeps_rest(members, axis, shift) */
 static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
 {
+    if (!self->rest_taken) { /* the first move that asks: the check is built now */
+        PyObject *parts = PyObject_CallNoArgs(self->keeps_rest);
+        if (parts == NULL)
+            return -1;
+        int taken = take_rest(self, parts);
+        Py_DECREF(parts);
+        if (taken < 0)
+            return -1;
+    }
     PyObject *found = PyObject_CallOneArg(self->reached_by, members);
     if (found == NULL)
         return -1;
@@ -281,9 +290,8 @@ static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
     double limit = self->limit + 1e-9;
     Py_ssize_t over = 0;
     for (Py_ssize_t g = 0; g < count; g++) {
-        double x = fabs(after[2 * g]), y = fabs(after[2 * g + 1]);
-        /* grouped: np.maximum; every group one row: Python's max(abs(x), abs(y)) */
-        double size = self->grouped ? larger(x, y) : (y > x ? y : x);
+        double x = after[2 * g], y = after[2 * g + 1];
+        double size = sqrt(x * x + y * y); /* rest_check.speed_of */
         if (size > limit) {
             after[2 * over] = after[2 * g];
             after[2 * over + 1] = after[2 * g + 1];

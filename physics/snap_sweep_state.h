@@ -33,7 +33,7 @@ typedef struct {
     PyObject *tables[2][2];  /* [bleed][axis], NULL where no mover needs that kind */
     PyObject *item_tables;   /* (x, y): what reads the rows alone */
     PyObject *roots, *mover_mask, *aligned;
-    PyObject *keeps_rest, *concatenate;
+    PyObject *keeps_rest, *concatenate; /* keeps_rest: the rest parts, or their maker */
     PyObject *moved_from, *centres, *rest_before; /* what a move changes besides the tables */
     PyObject *fit_args;      /* centres, halves, lowest, highest, item tables, fit limits */
     Py_ssize_t candidates, max_tries, every_move, tries;
@@ -51,7 +51,7 @@ typedef struct {
                                  members, made by attempt), shifts, gain, missing, lined_up] */
     PyObject *stuck[2];      /* set of sorted roots: lines whose move failed since the last */
     /* the rest check (RestCheck.keeps_rest), when the snap has one */
-    int has_rest, grouped;
+    int has_rest, rest_taken, grouped; /* rest_taken: its parts read (take_rest) */
     double limit, hold;
     PyObject *reached_by, *rest_net, *net_args, *held_on_lines, *hold_args, *no_rows, *zero;
     PyObject *scratch_rows, *scratch_owner; /* int64, one per row: held_of's rows, owners */
@@ -76,6 +76,9 @@ typedef struct {
     Py_buffer line_views[4];
     int line_held;
 } Sweep;
+
+/* the rest check's parts read into the Sweep (snap_sweep_kernel.c), now or at its first use */
+static int take_rest(Sweep *self, PyObject *parts);
 
 enum { FIT_CENTRES, FIT_HALVES, FIT_LOWEST, FIT_HIGHEST, FIT_TABLE_X, FIT_TABLE_Y,
        FIT_LIMIT_VALUES, FIT_VIEWS };

@@ -38,9 +38,11 @@ import numpy as np
 
 from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.bodies import Bodies
+from floatpage.physics.deferred_rest import DeferredRest
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members
 from floatpage.physics.snap_fit_kernel import fitting_shifts
+from floatpage.physics.snap_setup_kernel import fill_feature_table
 from floatpage.physics.snap_scoring_kernel import line_of as find_line, score_moves
 from floatpage.physics.snap_sweep_kernel import Sweep
 from floatpage.physics.snap_memo import AxisMemo
@@ -75,29 +77,35 @@ def snap_page(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params
     guides (the paper mode stays the published model, without them).  Returns the moves made."""
     if params.mode != "fast" or params.guides <= 0:
         return 0
-    clearance, margin, rest = snap_limits(bodies, page_w_mm, page_h_mm, params)
+    clearance, margin, rest = snap_limits(bodies, page_w_mm, page_h_mm, params, deferred=True)
     return snap_to_guides(bodies, page_w_mm, page_h_mm, clearance, margin, params.guides, rest)
 
 
-def snap_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float,
-                params: Params) -> tuple[float, float, RestCheck]:
+def snap_limits(bodies: Bodies, page_w_mm: float, page_h_mm: float, params: Params,
+                deferred: bool = False) -> tuple[float, float, RestCheck | DeferredRest]:
     """What bounds the page's snap besides its bodies: the clearance every pair keeps (the
-    gutter plus the rounding slack), the print-safe margin and the rest check."""
+    gutter plus the rounding slack), the print-safe margin and the rest check (``deferred``:
+    built when a move first asks, physics.deferred_rest; most probes' snaps never do)."""
     margin = page_margin(params.margin_mm, page_w_mm, page_h_mm)
     page = (page_w_mm, page_h_mm)
-    gap = target_gap(bodies.sizes[bodies.active], page_w_mm, page_h_mm, params.gutter_mm)
-    rest = RestCheck(bodies, page, gap, bodies.insets(margin, *page), params.beta, snap_range(*page),
-                     page_scale(*page), hold_strength(page, params.guides),
-                     [page_lines(*page, margin, axis, bodies.regions) for axis in (0, 1)])
+
+    def rest_check(pair_centres: np.ndarray | None = None) -> RestCheck:
+        gap = target_gap(bodies.sizes[bodies.active], page_w_mm, page_h_mm, params.gutter_mm)
+        return RestCheck(bodies, page, gap, bodies.insets(margin, *page), params.beta,
+                         snap_range(*page), page_scale(*page), hold_strength(page, params.guides),
+                         [page_lines(*page, margin, axis, bodies.regions) for axis in (0, 1)],
+                         pair_centres)
+    rest = DeferredRest(rest_check, bodies.centres) if deferred else rest_check()
     return params.gutter_mm + ROUNDING_MM, margin, rest
 
 
 def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance_mm: float,
-                   margin_mm: float, strength: float, rest: RestCheck | None = None,
+                   margin_mm: float, strength: float, rest: RestCheck | DeferredRest | None = None,
                    compiled: bool = True) -> int:
     """Snap free items onto their guide lines in place (see the module doc); returns the number
     of moves made.  ``clearance_mm`` is the gap every pair must keep (the gutter plus the
     rounding slack), ``margin_mm`` the page's print-safe margin; strength 0 does nothing.
+    ``rest`` is asked before every move beyond a nudge (None: no move is checked).
 
     The first sweep tries every free item on both axes; a later one only the items with a
     feature near one that moved on that axis (nothing else can have a better move now).
@@ -153,7 +161,7 @@ class _Snapper:
     every row's low edge, centre and high edge on that axis, updated as rows move."""
 
     def __init__(self, bodies: Bodies, page: tuple[float, float], clearance_mm: float,
-                 margin_mm: float, rest: RestCheck | None):
+                 margin_mm: float, rest: RestCheck | DeferredRest | None):
         self.bodies, self.clearance, self.rest = bodies, clearance_mm, rest
         self.halves = bodies.sizes / 2
         self.active = bodies.active.copy()
@@ -178,16 +186,23 @@ class _Snapper:
         # per group and axis: too large to fit between its margins (it has no move to make);
         # a group's flags are any of its active rows' (one scatter, not a loop per group:
         # a third of a 50-item page's set-up)
-        grouped = self.roots[self.active]
-        too_large = np.zeros((bodies.count, 2), dtype=bool)
-        np.logical_or.at(too_large, grouped, (self.lowest > self.highest)[self.active])
-        bleeding = np.zeros(bodies.count, dtype=bool)
-        np.logical_or.at(bleeding, grouped, bodies.bleed[self.active])
-        movers, too_large, bleeding = self.movers.tolist(), too_large.tolist(), bleeding.tolist()
-        self.too_large = {row: too_large[row] for row in movers}
+        if len(groups.several) == 0:  # every group one row: its own flags, if active
+            too_large = (self.lowest > self.highest) & self.active[:, None]
+            bleeding = bodies.bleed & self.active
+        else:
+            grouped = self.roots[self.active]
+            too_large = np.zeros((bodies.count, 2), dtype=bool)
+            np.logical_or.at(too_large, grouped, (self.lowest > self.highest)[self.active])
+            bleeding = np.zeros(bodies.count, dtype=bool)
+            np.logical_or.at(bleeding, grouped, bodies.bleed[self.active])
         is_mover = np.zeros(bodies.count, dtype=bool)
         is_mover[self.movers] = True
         self.mover_mask = is_mover  # per row: whether it is a mover's root (line_of)
+        # what compiled hands the sweeps: the movers' flags as bytes, one (two) per row
+        self.flag_bytes = ((too_large & is_mover[:, None]).tobytes(),
+                           (bleeding & is_mover).tobytes())
+        movers, too_large, bleeding = self.movers.tolist(), too_large.tolist(), bleeding.tolist()
+        self.too_large = {row: too_large[row] for row in movers}
         # The page's own lines per axis: the margin lines for items that keep the margin,
         # the page's edges for bleed groups (they may reach the edge), and the middle.
         self.bleeds = {row: bleeding[row] for row in movers}
@@ -203,8 +218,8 @@ class _Snapper:
         # the rows, the page's own lines as rows of their own (page_rows), always near, so that
         # a body's distances to its neighbours' lines and to the page's are one gather.  One
         # table per kind of page lines a mover needs ([bleed]), all kept in step.
-        tables = {bleed: [feature_table(bodies.centres, self.halves, self.active, axis,
-                                        *lines[bleed][axis]) for axis in (0, 1)]
+        tables = {bleed: [filled_table(bodies.centres, self.halves, self.active, axis,
+                                       *lines[bleed][axis]) for axis in (0, 1)]
                   for bleed in kinds}
         self.tables = tables  # [bleed][axis]: (rows + page lines, COLUMNS)
         kept = self.item_tables = tuple(tables[kinds[0]])  # [axis]: what reads the rows alone
@@ -367,16 +382,15 @@ class _Snapper:
     def compiled(self) -> Sweep:
         """This page's sweeps in C (snap_sweep_kernel.Sweep), reading what this snapper
         worked out and making its moves as apply does (moved_from, the centres and every
-        table, the rest check's kept forces forgotten)."""
+        table, the rest check's kept forces forgotten).  The rest check's parts are read when
+        the first move asks for them (a deferred check is built then)."""
         count = self.bodies.count
         members = [self.members.get(row) for row in range(count)]
-        too_large = bytes(self.too_large[row][axis] if row in self.too_large else False
-                          for row in range(count) for axis in (0, 1))
-        bleeds = bytes(self.bleeds.get(row, False) for row in range(count))
+        too_large, bleeds = self.flag_bytes  # per row and axis, per row: a mover's flags
         return Sweep(count, members, too_large, bleeds, self.kind_tables(False),
                      self.kind_tables(True), self.item_tables, self.roots, self.mover_mask,
                      self.ranges, ALIGNED_MM,
-                     self.rest.compiled_parts() if self.rest is not None else None,
+                     self.rest.compiled_parts if self.rest is not None else None,
                      (self.moved_from, self.bodies.centres, self.rest.before
                       if self.rest is not None else {}),
                      np.concatenate, (self.bodies.centres, self.halves, self.lowest,
@@ -443,4 +457,14 @@ def feature_table(centres: np.ndarray, halves: np.ndarray, active: np.ndarray, a
         theirs[:len(edges), column] = edges
     theirs[len(edges):, THEIRS == CENTRE] = middles[:, None]
     page[:, LOWS_COLUMN], page[:, HIGHS_COLUMN] = -np.inf, np.inf
+    return table
+
+
+def filled_table(centres: np.ndarray, halves: np.ndarray, active: np.ndarray, axis: int,
+                 edges: np.ndarray, middles: np.ndarray) -> np.ndarray:
+    """feature_table's table, filled by compiled code (snap_setup_kernel.fill_feature_table):
+    the same floats, one call instead of a score of NumPy ones (a tenth of a small page's
+    snap, made twice a snap and twice a settle)."""
+    table = np.empty((len(centres) + len(edges) + len(middles), HIGHS_COLUMN + 1))
+    fill_feature_table(table, centres, halves, active, axis, edges, middles)
     return table

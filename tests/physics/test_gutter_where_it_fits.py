@@ -89,39 +89,6 @@ def test_large_photos_stacked_in_the_margins_get_the_gutter():
     assert not quality.in_margin and not quality.off_page
 
 
-def test_a_jam_found_where_the_page_first_rests_skips_its_lining_up(monkeypatch):
-    # The 5-item page's first run cannot keep the gutter (a stack one gutter too tall): its
-    # pass, asked where the page first comes to rest, says so, and the run ends there instead
-    # of cooling onto the guides; the second start then leaves the very same page.
-    scene = mixed_scene(5, 0.5, seed=1)
-    asked = Engine(210, 297)
-    load(asked, scene)
-    early = asked.settle()
-    monkeypatch.setattr(Engine, "_first_pass_fails", lambda self: False)  # never asked
-    unasked = Engine(210, 297)
-    load(unasked, scene)
-    late = unasked.settle()
-    assert early.fits and late.fits
-    assert early.steps < late.steps - 40  # the guided cooling was skipped
-    assert np.array_equal(asked.bodies.centres, unasked.bodies.centres)
-
-
-def test_a_page_whose_pass_succeeds_where_it_rests_runs_on_as_if_never_asked(monkeypatch):
-    from seeded_scenes import big_item_scene
-
-    scene = big_item_scene(seed=1)
-    results = []
-    for ask in (True, False):
-        if not ask:
-            monkeypatch.setattr(Engine, "_first_pass_fails", lambda self: False)
-        engine = Engine(scene.page_w_mm, scene.page_h_mm)
-        load(engine, scene)
-        results.append((engine.settle().steps, engine.bodies.centres.copy()))
-    (steps_asked, asked), (steps_unasked, unasked) = results
-    assert steps_asked == steps_unasked
-    assert np.array_equal(asked, unasked)  # put back bit for bit after its trial pass
-
-
 @st.composite
 def roomy_pages(draw):
     """Free items of mixed shapes (1:8 to 8:1), none wider or taller than 45 % of the room,

@@ -67,7 +67,9 @@ def test_touching_items_with_no_gutter_are_nudged_clear_of_rounding():
     engine = Engine(*A4, Params(gutter_mm=0.0))
     engine.insert("a", 50, 50, 20, 20)
     engine.insert("b", 70, 50, 20, 20)
-    assert engine.finalize()
+    # the no-overlap pass alone: on this page, never run, the pushes are far from rest, and the
+    # snap may open the 0.3 mm between the facing edges (a near miss to it) to 4 mm
+    assert engine.finalize(align=False)
     (ax, _), (bx, _) = engine.positions()["a"], engine.positions()["b"]
     assert 0.01 < bx - ax - 20 < 0.5
 
