@@ -62,7 +62,7 @@ def cmd_new(args: argparse.Namespace) -> int:
             print(f"note: {printable(str(photo))} was left out: {why}", file=sys.stderr)
     items = sum(len(page.items) for page in project.pages)
     print(f"created {printable(str(project.path))}: {len(project.pages)} page(s), {items} item(s)")
-    print(f"next: floatpage edit {printable(str(project.path))}")
+    print(f"next: floatpage edit {typed_path(project.path)}")
     if args.kind == "album" and not args.photos:
         print("it holds the bundled sample photos; for your own, start again with "
               f"`floatpage new album {args.path} --photos DIR`")
@@ -166,7 +166,7 @@ def note_kept_edits(path: str) -> None:
     if kept is not None:
         print(f"note: {printable(str(path))}: {printable(kept.name)} holds unsaved edits from "
               "an editor that lost its terminal, not in the project file this command reads; "
-              f"`floatpage edit {printable(str(path))}` offers to restore or discard them",
+              f"`floatpage edit {typed_path(path)}` offers to restore or discard them",
               file=sys.stderr)
 
 
@@ -264,10 +264,18 @@ def settle_and_report(project, args: argparse.Namespace) -> int:
         left = problems_left(page, project.physics) if report.fixed_point else ""
         if left:
             print(f"  still {left}: another settle changes nothing; "
-                  f"`floatpage check {printable(args.path)}` says why and what to do")
+                  f"`floatpage check {typed_path(args.path)}` says why and what to do")
     steps = sum(report.steps for report in reports)
     print(f"{steps} steps in {elapsed:.2f} s")
     return EXIT_OK
+
+
+def typed_path(path) -> str:
+    """``path`` as it is typed into a shell, for the commands the messages suggest: "next:
+    floatpage edit Geburtstag Oma.toml", copied, ran `edit` on two files (user-walk-9)."""
+    import shlex
+
+    return printable(shlex.quote(str(path)))
 
 
 def problems_left(page, physics) -> str:
@@ -342,7 +350,7 @@ def unsettled_warnings(project, path: str) -> list[str]:
         more = ", …" if quality.overlap_count + len(quality.off_page) > len(named) else ""
         warnings.append(f'page "{printable(page.id)}" was printed as saved (--no-settle) with '
                         f"{' and '.join(part for part in found if part)} "
-                        f"({', '.join(named)}{more}); `floatpage check {printable(path)}` "
+                        f"({', '.join(named)}{more}); `floatpage check {typed_path(path)}` "
                         "says why and what to do (most often: settle first)")
     return warnings
 
@@ -446,7 +454,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
         print(f"{printable(args.path)}: {issues} layout problem(s); " + (
-            f"run `floatpage settle {printable(args.path)}` to fix "
+            f"run `floatpage settle {typed_path(args.path)}` to fix "
             f"{what_settle_fixes(settle_lines)}" if settle_lines
             else "no settle fixes them: see the reasons above"))
         return EXIT_USER_ERROR

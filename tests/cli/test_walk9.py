@@ -90,3 +90,17 @@ def test_settle_says_what_it_could_not_mend_instead_of_only_settled(tmp_path):
         assert "off the page: another settle changes nothing; `floatpage check card.toml` " \
                "says why and what to do" in lines[front + 1]
     assert "already settled, nothing to write" in settled.stdout
+
+
+def test_the_commands_suggested_for_a_name_with_spaces_run_as_copied(tmp_path):
+    """`floatpage new card "Geburtstag Oma.toml"` ended "next: floatpage edit Geburtstag
+    Oma.toml": copied into a shell, that names two files. The path is quoted as typed."""
+    made = floatpage("new", "card", "Geburtstag Oma.toml", cwd=tmp_path)
+    assert made.returncode == 0, made.stderr
+    suggested = made.stdout.split("next: ")[1].strip()
+    assert suggested == "floatpage edit 'Geburtstag Oma.toml'"
+    checked = subprocess.run(suggested.replace("floatpage edit", f"{sys.executable} -m "
+                                               "floatpage.cli.main check", 1),
+                             shell=True, cwd=tmp_path, capture_output=True, text=True,
+                             timeout=120)
+    assert checked.returncode == 0, checked.stderr
