@@ -50,7 +50,8 @@ FRAME_S = 1 / 30
 PHYSICS_BUDGET_S = 0.008  # leaves most of a 33 ms frame for drawing and for keys
 RELEASE_AFTER_S = 0.6  # a nudged item is let go this long after the last arrow key
 # How often the editor looks at the project file's size and time for changes another program
-# made (`look_at_file`): a stat a second costs nothing, and a change is told within a second
+# made (`look_at_file`): a stat a second costs nothing, and a change is told within two (it
+# is read once its size and time have held still for one look)
 LOOK_AT_FILE_S = 1.0
 STILL_FRAMES = 15  # half a second of frames that change nothing on screen: at rest
 ANSWER_FIRST_S = 0.02  # longer than Textual's screen update period (1/60 s)
@@ -893,7 +894,7 @@ class EditorScreen(Screen):
 
     def look_at_file(self) -> None:
         """Every LOOK_AT_FILE_S: tell at once when another program (vim, `git checkout`, a
-        `floatpage settle` from a shell) changed or removed the project file, instead of at
+        script) changed or removed the project file, instead of at
         the next Ctrl+S, maybe an hour of edits later. Never in the middle of an edit: while a
         dialog or form is open, or an item is held (nudged, dragged), the look waits, and the
         change is told when the edit is done. Told once for each new state of the file."""
