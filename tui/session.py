@@ -1019,8 +1019,8 @@ class EditSession:
     def look_at_file(self) -> str | None:
         """A cheap look, for the editor's timer, at whether another program (a text editor,
         `git checkout`, a script; floatpage's own writers wait for the editor's lock) changed
-        or removed the project
-        file since the editor read or saved it: such changes were found only at Ctrl+S.
+        or removed the project file since the editor read or saved it: such changes were
+        found only at Ctrl+S.
 
         The file is read (and hashed) only when its size, time or inode changed, and only
         once they have stayed the same for one look (a `git checkout` or a slow write is
