@@ -190,15 +190,20 @@ async def test_a_phones_portrait_photo_is_inserted_upright_in_a_portrait_box(pro
     bottom off to fill the box. The box is portrait now, and the preview shows it upright."""
     phone_photo(project_path.parent / "pictures" / "phone.jpg")
     async with editor(project_path) as (app, pilot):
-        await pilot.press("p", "tab")
-        await type_text(pilot, "pictures/phone.jpg")
-        await pilot.press("enter")
-        await pilot.pause()
+        await insert_picture(pilot, "pictures/phone.jpg")
         new = item(app, "picture-1")
         assert new.h / new.w == pytest.approx(40 / 30)
         left, top, right, bottom = item_pixel_box(app, "picture-1")
         middle = (left + right) // 2
         assert near(pixel(app, middle, top + 1), RED) and near(pixel(app, middle, bottom - 2), BLUE)
+
+
+async def insert_picture(pilot, path: str) -> None:
+    """Insert a picture the way a user does: `p`, then its path in the form."""
+    await pilot.press("p", "tab")
+    await type_text(pilot, path)
+    await pilot.press("enter")
+    await pilot.pause()
 
 
 def near(colour, wanted, tolerance: int = 60) -> bool:
@@ -215,10 +220,7 @@ async def test_a_pdf_logo_gets_its_own_shape_and_is_drawn_in_the_preview(project
     logo.paste(RED, (0, 0, 100, 100))  # a red square at its left end
     logo.save(project_path.parent / "pictures" / "logo.pdf", resolution=100)
     async with editor(project_path) as (app, pilot):
-        await pilot.press("p", "tab")
-        await type_text(pilot, "pictures/logo.pdf")
-        await pilot.press("enter")
-        await pilot.pause()
+        await insert_picture(pilot, "pictures/logo.pdf")
         new = item(app, "picture-1")
         assert new.h / new.w == pytest.approx(0.25, abs=0.01)
         left, top, right, bottom = item_pixel_box(app, "picture-1")
