@@ -21,6 +21,9 @@
 #include "snap_sweep_state.h" /* the Sweep, Moves, Span; snap_kernel_support.h */
 #include "snap_scoring_core.h" /* score_body: the scoring, called without Python */
 #include "snap_fit_core.h"     /* fit_body: the fit test, the same */
+/* the ranges' copy holds every double of scoring_ranges (RANGES, snap_scoring_core.h) */
+_Static_assert(sizeof(((Sweep *)0)->range_values) == RANGES * sizeof(double),
+               "Sweep.range_values: scoring_ranges' RANGES doubles");
 
 static void moves_clear(Moves *moves)
 {

@@ -41,6 +41,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.deferred_rest import DeferredRest
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members
+from floatpage.physics.save_grid import STEPS_PER_MM, on_save_grid
 from floatpage.physics.snap_fit_kernel import fitting_shifts
 from floatpage.physics.snap_setup_kernel import fill_feature_table
 from floatpage.physics.snap_scoring_kernel import line_of as find_line, score_moves
@@ -121,6 +122,7 @@ def snap_to_guides(bodies: Bodies, page_w_mm: float, page_h_mm: float, clearance
     if strength <= 0:
         return 0
     snapper = _Snapper(bodies, (page_w_mm, page_h_mm), clearance_mm, margin_mm, rest)
+    snapper.onto_grid()
     if compiled:  # the sweeps and the memo in C (snap_sweep_kernel): the same moves
         sweep = snapper.compiled()
         improve, try_lesser = sweep.improve, sweep.try_lesser
@@ -162,7 +164,7 @@ class _Snapper:
 
     def __init__(self, bodies: Bodies, page: tuple[float, float], clearance_mm: float,
                  margin_mm: float, rest: RestCheck | DeferredRest | None):
-        self.bodies, self.clearance, self.rest = bodies, clearance_mm, rest
+        self.bodies, self.clearance, self.rest, self.page = bodies, clearance_mm, rest, page
         self.halves = bodies.sizes / 2
         self.active = bodies.active.copy()
         self.roots, _ = bodies.group_roots()
@@ -179,7 +181,7 @@ class _Snapper:
         # what the scoring reads besides the table (the ranges of distances, the window):
         # what options reads of the distances lies within relevant_distance
         self.ranges = scoring_ranges(ALIGN_REACH * self.reach, self.farthest, self.window,
-                                     relevant_distance(self.farthest))
+                                     relevant_distance(self.farthest), STEPS_PER_MM)
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
         # what fits reads besides the page: the clearance, the longest move, the tolerance
         self.fit_limits = np.array([clearance_mm, self.farthest, TOLERANCE_MM])
@@ -234,6 +236,29 @@ class _Snapper:
         self.stuck_lines: set[tuple[tuple[int, ...], int]] = set()
         self.memo = AxisMemo()  # the lines and scores read off one axis, until a move there
         self.tries = MAX_TRIES  # moves a body tries per axis (options), but see try_lesser
+
+    def onto_grid(self) -> None:
+        """Put each mover on the grid a save writes (physics.save_grid) before the first move,
+        its followers shifted with it, where that shift fits (``fits``: no pair closer than
+        the clearance or than it was, every member inside its margins); the moves, whole
+        steps of the grid, keep it there.  A group the shift does not fit for stays where it
+        is (on a jammed page, rounding must not narrow a gap).  Held items and hard anchors
+        are no movers: they stay exactly where they are."""
+        page = self.page
+        for axis in (0, 1):
+            roots = self.movers
+            at = self.bodies.centres[roots, axis]
+            shifts = on_save_grid(at, self.halves[roots, axis], page[axis]) - at
+            for root, shift in zip(roots.tolist(), shifts.tolist()):
+                if shift == 0.0:
+                    continue
+                members = self.members[root]
+                if self.fits(members, axis, (shift,)):
+                    self.bodies.centres[members, axis] += shift
+                    for tables in self.tables.values():
+                        tables[axis][members] += shift
+                    if self.rest is not None:
+                        self.rest.moved(members, (axis,))
 
     def mine(self, row: int, axis: int) -> np.ndarray:
         """The group's features on ``axis`` (low edge, centre, high edge per member)."""
