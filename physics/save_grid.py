@@ -16,6 +16,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from floatpage.physics.fast_forces import GRID_FROM_ITEMS, candidate_pairs
+from floatpage.physics.snap_setup_kernel import sweep_pairs
+
 STEPS_PER_MM = 100  # 0.01 mm: model.layout.POSITION_DECIMALS (tests/physics/test_save_grid.py)
 
 
@@ -34,3 +37,55 @@ def on_save_grid(centres: np.ndarray, halves: np.ndarray, page_mm: float) -> np.
     high = inside & (nearest + halves > page_mm)
     nearest[high] = np.floor(np.round((page_mm - halves[high]) / step, 6)) / STEPS_PER_MM
     return nearest + 0.0
+
+
+def fitting_grid_shifts(centres: np.ndarray, halves: np.ndarray, rows: np.ndarray,
+                        roots: np.ndarray, shifts: np.ndarray, axis: int, lowest: np.ndarray,
+                        highest: np.ndarray, clearance: float, tolerance: float) -> np.ndarray:
+    """``shifts`` (per row of the page, along ``axis``, each at most half a step long: a
+    group's rows share its root's; 0 for rows that stay) less those of the groups they do not
+    fit for, made all at once: a group keeps its shift only if, with every other kept shift
+    made too, each of its rows stays inside its margins (or no further out than it is:
+    ``lowest``, ``highest`` per row and axis) and keeps every pair with another group's row
+    (of ``rows``, the active ones) at least the clearance apart, or as far apart as it is
+    now: snapping._Snapper.fits' test, for every group at once.  A group that fails drops
+    its shift and the rest are tested again, until none fails (each round drops at least
+    one, so it ends).  Only pairs within the clearance and two steps on both axes can fail
+    (each row moves at most half a step): found by the physics' sweep.  A new array."""
+    kept = shifts.copy()
+    if len(rows) < GRID_FROM_ITEMS:
+        ends = np.frombuffer(sweep_pairs(centres, halves, _active(rows, len(centres)), roots,
+                                         clearance + 2.0 / STEPS_PER_MM),
+                             dtype=np.int64).reshape(-1, 2)
+        i, j = ends[:, 0], ends[:, 1]
+    else:
+        i, j = candidate_pairs(centres, halves, rows, roots, clearance + 2.0 / STEPS_PER_MM)
+    across = 1 - axis
+    gap_across = (np.abs(centres[i, across] - centres[j, across]) - halves[i, across]
+                  - halves[j, across])
+    reach = halves[i, axis] + halves[j, axis]
+    along = centres[i, axis] - centres[j, axis]
+    needed = np.minimum(np.maximum(np.abs(along) - reach, gap_across), clearance) - tolerance
+    tested = ~(gap_across >= needed)  # else no shift along this axis brings them closer
+    i, j = i[tested], j[tested]
+    along, reach, gap_across, needed = (along[tested], reach[tested], gap_across[tested],
+                                        needed[tested])
+    at = centres[rows, axis]
+    low = np.minimum(lowest[rows, axis], at) - tolerance
+    high = np.maximum(highest[rows, axis], at) + tolerance
+    while True:
+        after = at + kept[rows]
+        failing = rows[(after < low) | (after > high)]
+        gap = np.maximum(np.abs(along + kept[i] - kept[j]) - reach, gap_across)
+        close = gap < needed
+        failing = np.concatenate([failing, i[close], j[close]])
+        failing = failing[kept[failing] != 0]
+        if not len(failing):
+            return kept
+        kept[np.isin(roots, roots[failing])] = 0.0
+
+
+def _active(rows: np.ndarray, count: int) -> np.ndarray:
+    active = np.zeros(count, dtype=bool)
+    active[rows] = True
+    return active

@@ -87,8 +87,9 @@ _RANGES: dict[tuple[float, float, float, float, float], np.ndarray] = {}
 
 def on_grid(shift: float, grid: float) -> float:
     """A candidate shift rounded onto ``grid`` steps per mm, as the kernel rounds it (0: as it
-    is): floor(shift * grid + 0.5) / grid, monotone, so the sorted candidates stay sorted."""
-    return math.floor(shift * grid + 0.5) / grid if grid > 0 else shift
+    is): shift * grid to the nearest whole number (ties to even), times 1 / grid; monotone, so
+    the sorted candidates stay sorted.  (Candidate shifts are at most a few centimetres.)"""
+    return round(shift * grid) * (1.0 / grid) if grid > 0 else shift
 
 
 def relevant_distance(farthest: float) -> float:

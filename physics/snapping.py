@@ -41,7 +41,7 @@ from floatpage.physics.bodies import Bodies
 from floatpage.physics.deferred_rest import DeferredRest
 from floatpage.physics.params import Params, page_margin, page_scale
 from floatpage.physics.rest_check import RestCheck, group_members
-from floatpage.physics.save_grid import STEPS_PER_MM, on_save_grid
+from floatpage.physics.save_grid import STEPS_PER_MM, fitting_grid_shifts, on_save_grid
 from floatpage.physics.snap_fit_kernel import fitting_shifts
 from floatpage.physics.snap_setup_kernel import fill_feature_table
 from floatpage.physics.snap_scoring_kernel import line_of as find_line, score_moves
@@ -250,26 +250,38 @@ class _Snapper:
 
     def onto_grid(self) -> None:
         """Put each mover on the grid a save writes (physics.save_grid) before the first move,
-        its followers shifted with it, where that shift fits (``fits``: no pair closer than
-        the clearance or than it was, every member inside its margins); the moves, whole
-        steps of the grid, keep it there.  A group the shift does not fit for stays where it
-        is (on a jammed page, rounding must not narrow a gap).  Held items and hard anchors
-        are no movers: they stay exactly where they are."""
-        page = self.page
+        its followers shifted with it, where that shift fits (save_grid.fitting_grid_shifts:
+        ``fits``' test for every group at once: no pair closer than the clearance or than it
+        was, every member inside its margins); the moves, whole steps of the grid, keep it
+        there.  A group the shift does not fit for stays where it is (on a jammed page,
+        rounding must not narrow a gap).  Held items and hard anchors are no movers: they
+        stay exactly where they are.  (Tested group by group through ``fits``, half a
+        millisecond on the 50-item page, a third of a small page's snap.)"""
+        movers = self.movers
+        if not len(movers):
+            return
+        centres, count = self.bodies.centres, self.bodies.count
+        rows = np.flatnonzero(self.active)
+        is_mover = self.mover_mask
         for axis in (0, 1):
-            roots = self.movers
-            at = self.bodies.centres[roots, axis]
-            shifts = on_save_grid(at, self.halves[roots, axis], page[axis]) - at
-            for root, shift in zip(roots.tolist(), shifts.tolist()):
-                if abs(shift) <= TOLERANCE_MM:  # on the grid but for a float
-                    continue
-                members = self.members[root]
-                if self.fits(members, axis, (shift,)):
-                    self.bodies.centres[members, axis] += shift
-                    for tables in self.tables.values():
-                        tables[axis][members] += shift
-                    if self.rest is not None:
-                        self.rest.moved(members, (axis,))
+            here = centres[movers, axis]
+            wanted = on_save_grid(here, self.halves[movers, axis], self.page[axis]) - here
+            wanted[np.abs(wanted) <= TOLERANCE_MM] = 0.0  # on the grid but for a float
+            if not wanted.any():
+                continue
+            per_root = np.zeros(count)
+            per_root[movers] = wanted
+            shifts = np.where(is_mover[self.roots] & self.active, per_root[self.roots], 0.0)
+            shifts = fitting_grid_shifts(centres, self.halves, rows, self.roots, shifts, axis,
+                                         self.lowest, self.highest, self.clearance,
+                                         TOLERANCE_MM)
+            moved = np.flatnonzero(shifts)
+            if len(moved):
+                centres[moved, axis] += shifts[moved]
+                for tables in self.tables.values():
+                    tables[axis][moved] += shifts[moved, None]
+                if self.rest is not None:
+                    self.rest.moved(moved, (axis,))
 
     def mine(self, row: int, axis: int) -> np.ndarray:
         """The group's features on ``axis`` (low edge, centre, high edge per member)."""

@@ -8,8 +8,6 @@ the snap's way."""
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -20,7 +18,7 @@ from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.save_grid import STEPS_PER_MM
 from floatpage.physics.snap_scoring_kernel import line_of, score_moves, scored_candidates
 from floatpage.physics.snap_scoring import (
-    ALIGNED_MM, ESCAPE_MM, MAX_CANDIDATES, MAX_TRIES, scoring_ranges,
+    ALIGNED_MM, ESCAPE_MM, MAX_CANDIDATES, MAX_TRIES, on_grid, scoring_ranges,
 )
 from floatpage.physics.snapping import (
     EVERY_MOVE, HIGHS_COLUMN, LOWS_COLUMN, MINE, MINE_COLUMNS, THEIRS, THEIRS_COLUMNS,
@@ -149,8 +147,8 @@ def plain_scoring(table: np.ndarray, members: list[int], reach: float, farthest:
     body (reaching into its extent widened by ``window``) that is not its own; the moves onto
     a line within ``reach`` and out of a near miss at most ``farthest`` long, and staying; of
     more than MAX_CANDIDATES of them (each rounded onto ``grid`` steps per mm first, if
-    any: as floor(shift * grid + 0.5) / grid), the distinct ones nearest 0 (of two as near,
-    the lower);
+    any: to the nearest whole number of steps, ties to even, times the step), the distinct
+    ones nearest 0 (of two as near, the lower);
     each scored as twice its near misses less three times its alignments; those scoring below
     staying, by score, length, value, each once, at most ``tries``."""
     rows = table.tolist()
@@ -173,7 +171,7 @@ def plain_scoring(table: np.ndarray, members: list[int], reach: float, farthest:
               + [d - ESCAPE_MM for d in escaping if abs(d - ESCAPE_MM) <= farthest]
               + [d + ESCAPE_MM for d in escaping if abs(d + ESCAPE_MM) <= farthest])
     if grid:
-        shifts = [math.floor(shift * grid + 0.5) / grid for shift in shifts]
+        shifts = [on_grid(shift, grid) for shift in shifts]
     if len(shifts) > MAX_CANDIDATES:
         shifts = sorted(sorted(set(shifts), key=lambda v: (abs(v), v))[:MAX_CANDIDATES])
     now = score(0.0)
