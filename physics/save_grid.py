@@ -42,7 +42,7 @@ def on_save_grid(centres: np.ndarray, halves: np.ndarray, page_mm: float) -> np.
 def fitting_grid_shifts(centres: np.ndarray, halves: np.ndarray, rows: np.ndarray,
                         roots: np.ndarray, shifts: np.ndarray, axis: int, lowest: np.ndarray,
                         highest: np.ndarray, clearance: float, tolerance: float) -> np.ndarray:
-    """``shifts`` (per row of the page, along ``axis``, each at most half a step long: a
+    """``shifts`` (per row of the page, along ``axis``, each at most a step long: a
     group's rows share its root's; 0 for rows that stay) less those of the groups they do not
     fit for, made all at once: a group keeps its shift only if, with every other kept shift
     made too, each of its rows stays inside its margins (or no further out than it is:
@@ -50,16 +50,16 @@ def fitting_grid_shifts(centres: np.ndarray, halves: np.ndarray, rows: np.ndarra
     (of ``rows``, the active ones) at least the clearance apart, or as far apart as it is
     now: snapping._Snapper.fits' test, for every group at once.  A group that fails drops
     its shift and the rest are tested again, until none fails (each round drops at least
-    one, so it ends).  Only pairs within the clearance and two steps on both axes can fail
-    (each row moves at most half a step): found by the physics' sweep.  A new array."""
+    one, so it ends).  Only pairs within the clearance and three steps on both axes can fail
+    (each row moves at most a step): found by the physics' sweep.  A new array."""
     kept = shifts.copy()
     if len(rows) < GRID_FROM_ITEMS:
         ends = np.frombuffer(sweep_pairs(centres, halves, _active(rows, len(centres)), roots,
-                                         clearance + 2.0 / STEPS_PER_MM),
+                                         clearance + 3.0 / STEPS_PER_MM),
                              dtype=np.int64).reshape(-1, 2)
         i, j = ends[:, 0], ends[:, 1]
     else:
-        i, j = candidate_pairs(centres, halves, rows, roots, clearance + 2.0 / STEPS_PER_MM)
+        i, j = candidate_pairs(centres, halves, rows, roots, clearance + 3.0 / STEPS_PER_MM)
     across = 1 - axis
     gap_across = (np.abs(centres[i, across] - centres[j, across]) - halves[i, across]
                   - halves[j, across])

@@ -17,7 +17,11 @@ import numpy as np
 
 from floatpage.physics.alignment import NEAR_MM
 
-ALIGNED_MM = 0.05  # features this close are aligned (positions are saved to 0.01 mm)
+# features this close are aligned (positions are saved to 0.01 mm); and a millionth more: on
+# the save's grid (physics.save_grid) two centres are often exactly 0.05 apart, which the
+# snap's floats (a sum of moves) put at 0.04999999999995 and the file's at 0.05000000000001,
+# a near miss the next probe's snap closed by moving an item 4.2 mm (fresh seed 2003)
+ALIGNED_MM = 0.05 + 1e-6
 ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
 ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
 MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
