@@ -5,11 +5,15 @@ items millimetres to close them: a settle took one probe more."""
 
 from __future__ import annotations
 
+
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import floatpage.physics.engine as engine_module
+from floatpage.physics import Engine, Params, snapping
+from floatpage.physics.finalize import ROUNDING_MM
 from floatpage.model.layout import POSITION_DECIMALS, safe_round, settle_project
 from floatpage.physics.alignment import NEAR_MM
 from floatpage.physics.save_grid import STEPS_PER_MM, on_save_grid
@@ -87,3 +91,24 @@ def test_what_the_snap_lines_up_stays_lined_up_once_saved(monkeypatch):
         settle_project(scene_project(scenes[seed]))
     assert sum(snaps) > 0 and len(snaps) >= 6
     assert broken == [0] * len(broken)
+
+
+def test_a_group_pressed_on_the_side_of_its_nearest_step_takes_the_other():
+    """An item 0.004 mm right of a step and exactly the clearance from a held item on its
+    left: its nearest step would narrow the gap, so it takes the step on its right (0.006 mm
+    away).  Left off the grid, the save rounded it to its nearest all the same."""
+    engine = Engine(200.0, 100.0, Params(guides=1.0))
+    clearance = engine.params.gutter_mm + ROUNDING_MM
+    right_x = 110.004
+    left_x = right_x - 40.0 - clearance
+    engine.insert("left", left_x, 50.0, 40.0, 20.0)
+    engine.insert("right", right_x, 50.0, 40.0, 20.0)
+    engine.hold("left")
+    bodies = engine.bodies
+    bodies.centres[:] = [[left_x, 50.0], [right_x, 50.0]]
+    clearance_mm, margin, rest = snapping.snap_limits(bodies, 200.0, 100.0, engine.params)
+    snapper = snapping._Snapper(bodies, (200.0, 100.0), clearance_mm, margin, rest)
+    snapper.onto_grid()
+    assert bodies.centres[0, 0] == left_x  # held: never rounded
+    assert bodies.centres[1, 0] == pytest.approx(110.01, abs=1e-9)  # not 110.00
+    assert bodies.centres[1, 0] - left_x - 40.0 >= clearance - 1e-9
