@@ -62,7 +62,7 @@ def cmd_new(args: argparse.Namespace) -> int:
             print(f"note: {printable(str(photo))} was left out: {why}", file=sys.stderr)
     items = sum(len(page.items) for page in project.pages)
     print(f"created {printable(str(project.path))}: {len(project.pages)} page(s), {items} item(s)")
-    print(f"next: floatpage edit {printable(str(project.path))}")
+    print(f"next: floatpage edit {typed_path(project.path)}")
     if args.kind == "album" and not args.photos:
         print("it holds the bundled sample photos; for your own, start again with "
               f"`floatpage new album {args.path} --photos DIR`")
@@ -119,7 +119,19 @@ def ask_about_recovery(project: Path, recovery: Path | None) -> bool:
         changed_at = project.stat().st_mtime
     except OSError:
         changed_at = kept_at
-    if changed_at > kept_at:
+    from floatpage.tui.recovery import recovery_base
+    from floatpage.tui.session import file_digest
+
+    base = recovery_base(project)
+    if changed_at <= kept_at and base is not None and base != file_digest(project):
+        # changed by another program while the editor had it open, before it lost its
+        # terminal: the dates cannot tell, the digest the recovery file keeps can
+        when_changed = datetime.fromtimestamp(changed_at).strftime("%Y-%m-%d %H:%M")
+        print(f"The project itself was changed by another program at {when_changed}, while "
+              "the editor had it open: restored, these edits replace that version when you "
+              f"save (Ctrl+S asks first; it is kept as {printable(project.name)}.bak); "
+              "discard them to keep it.")
+    elif changed_at > kept_at:
         # A project saved again since (another editor session, a settle, a `git pull`): the
         # kept edits were made to the file before that, and restoring them then saving
         # replaced the newer file without a word.
@@ -154,7 +166,7 @@ def note_kept_edits(path: str) -> None:
     if kept is not None:
         print(f"note: {printable(str(path))}: {printable(kept.name)} holds unsaved edits from "
               "an editor that lost its terminal, not in the project file this command reads; "
-              f"`floatpage edit {printable(str(path))}` offers to restore or discard them",
+              f"`floatpage edit {typed_path(path)}` offers to restore or discard them",
               file=sys.stderr)
 
 
@@ -249,9 +261,38 @@ def settle_and_report(project, args: argparse.Namespace) -> int:
     for page, report in zip(project.pages, reports):
         state = "settled" if report.settled else "NOT settled (stopped at the step limit)"
         print(f"page {page.id}: {state} after {report.steps} steps, final energy {report.energy:.3g}")
+        left = problems_left(page, project.physics) if report.fixed_point else ""
+        if left:
+            print(f"  still {left}: another settle changes nothing; "
+                  f"`floatpage check {typed_path(args.path)}` says why and what to do")
     steps = sum(report.steps for report in reports)
     print(f"{steps} steps in {elapsed:.2f} s")
     return EXIT_OK
+
+
+def typed_path(path) -> str:
+    """``path`` as it is typed into a shell, for the commands the messages suggest: "next:
+    floatpage edit Geburtstag Oma.toml", copied, ran `edit` on two files (user-walk-9)."""
+    import shlex
+
+    return printable(shlex.quote(str(path)))
+
+
+def problems_left(page, physics) -> str:
+    """The problems `check` counts that a settled page still has, in words ("3 items off
+    the page"), or "". A page too small for its items (a card's size typed down to A6 by
+    hand) settled with items off it; settle said only "settled", then "already settled,
+    nothing to write", while `check` sent the user back to `settle` (user-walk-9)."""
+    from floatpage.model.layout import engine_for_page
+
+    quality = engine_for_page(page, physics).quality()
+    counts = ((quality.overlap_count, "overlap"), (len(quality.off_page), "off the page"),
+              (len(quality.in_margin), "in the print-safe margin"),
+              (len(quality.outside_region), "outside its region"))
+    words = [f"{count} overlap{'s' if count > 1 else ''}" if what == "overlap"
+             else f"{count} item{'s' if count > 1 else ''} {what}"
+             for count, what in counts if count]
+    return ", ".join(words)
 
 
 def cmd_render(args: argparse.Namespace) -> int:
@@ -280,9 +321,10 @@ def cmd_render(args: argparse.Namespace) -> int:
     for warning in report.warnings + (unsettled_warnings(project, args.path)
                                       if args.no_settle else []):
         print(f"warning: {printable(warning)}", file=sys.stderr)
+    from floatpage.model.page_report import empty_page_notes
     from floatpage.typeset.render import resolution_notes
 
-    for note in resolution_notes(project) + report.notes:
+    for note in empty_page_notes(project) + resolution_notes(project) + report.notes:
         print(f"note: {printable(note)}", file=sys.stderr)
     print(f"wrote {printable(str(report.pdf))} ({report.pages} page(s), {report.seconds:.2f} s)")
     return EXIT_OK
@@ -308,7 +350,7 @@ def unsettled_warnings(project, path: str) -> list[str]:
         more = ", …" if quality.overlap_count + len(quality.off_page) > len(named) else ""
         warnings.append(f'page "{printable(page.id)}" was printed as saved (--no-settle) with '
                         f"{' and '.join(part for part in found if part)} "
-                        f"({', '.join(named)}{more}); `floatpage check {printable(path)}` "
+                        f"({', '.join(named)}{more}); `floatpage check {typed_path(path)}` "
                         "says why and what to do (most often: settle first)")
     return warnings
 
@@ -380,7 +422,7 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     from floatpage.model.page_report import (
-        page_report, settle_may_help, tiny_items, what_settle_fixes,
+        empty_page_notes, page_report, settle_may_help, tiny_items, what_settle_fixes,
     )
     from floatpage.model.layout import engine_for_page
 
@@ -405,13 +447,14 @@ def cmd_check(args: argparse.Namespace) -> int:
         print(f"warning: {printable(warning)}")
         issues += 1
     # notes, not problems: --strict still passes
-    for note in resolution_notes(project) + faint_text_notes(project, fits):
+    for note in empty_page_notes(project) + resolution_notes(project) \
+            + faint_text_notes(project, fits):
         print(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
         print(f"{printable(args.path)}: {issues} layout problem(s); " + (
-            f"run `floatpage settle {printable(args.path)}` to fix "
+            f"run `floatpage settle {typed_path(args.path)}` to fix "
             f"{what_settle_fixes(settle_lines)}" if settle_lines
             else "no settle fixes them: see the reasons above"))
         return EXIT_USER_ERROR

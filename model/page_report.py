@@ -44,6 +44,22 @@ def tiny_items(page) -> list[str]:
     return found
 
 
+def empty_page_notes(project) -> list[str]:
+    """A note for each page that holds no item: an `N` too many in the editor, or a page
+    whose items were all moved or deleted, printed as a blank sheet in the PDF and `check`
+    said nothing but "0 overlaps · even 1.00" of it (user-walk-8).  A note, not a problem:
+    a blank page can be meant (the back of a card), so `--strict` still passes."""
+    notes = []
+    for page in project.pages:
+        if page.items:
+            continue
+        shows = ("only its background" if page.background is not None
+                 and (page.background.color or page.background.picture) else "a blank page")
+        notes.append(f'page "{page.id}" has no items: it prints as {shows}; put '
+                     "something on it, or remove the page (D on it in the editor)")
+    return notes
+
+
 def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
     """The lines `check` prints for ``page`` (settled or not, as it lies in the file) and the
     number of layout problems it counts for ``--strict``.  Only the misses no reason explains
@@ -59,6 +75,8 @@ def page_reasons(page, engine, gutter_mm: float) -> tuple[list[str], int, str]:
     editor said "some gaps narrow" and left the why to `check` (user-walk-6).  Empty
     when nothing gave way."""
     quality = engine.quality()
+    if not page.items:  # no measure means anything here: "even 1.00 · balance 1.00" of nothing
+        return [f"page {page.id}: no items"], 0, ""
     bodies = engine.bodies
     lines = [f"page {page.id}: {quality.summary()}",
              f"  {measure_alignment(bodies.centres, bodies.sizes, bodies.decorative).summary()}"]

@@ -12,6 +12,11 @@ PAGE_SIZES_MM: dict[str, tuple[float, float]] = {
     "5x7in": (127.0, 177.8),
     "5x8in": (127.0, 203.2),
     "4x6in": (101.6, 152.4),
+    # A postcard's and a folded card's size in most of the world, and the long flyer that
+    # fits an envelope: "A6" was refused with 'did you mean "A5"?', which prints twice as
+    # large (user-walk-9). Last, so the editor's size list keeps its first places.
+    "A6": (105.0, 148.0),
+    "DL": (99.0, 210.0),
 }
 CUSTOM = "custom"
 

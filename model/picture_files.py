@@ -35,6 +35,57 @@ MERGE_FIELD = re.compile(r"\{[^{}]+\}")
 PDF_SIDE_UNITS = (1.0, 14_400.0)
 
 
+EXIF_ORIENTATION = 0x0112
+QUARTER_TURNS = (5, 6, 7, 8)  # EXIF orientations that turn the picture a quarter turn
+
+
+def upright_size(path: Path) -> tuple[int, int] | None:
+    """A raster picture's pixel size as it prints, or None if Pillow cannot read it: a JPEG
+    whose EXIF tag turns it a quarter turn (every phone's portrait photo, stored sideways)
+    prints turned upright (typeset.pictures), so its width and height swap."""
+    from PIL import Image
+
+    if is_pdf(path):
+        return pdf_size(path)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
+            with Image.open(path) as image:
+                width, height = image.size
+                if image.format == "JPEG" \
+                        and image.getexif().get(EXIF_ORIENTATION) in QUARTER_TURNS:
+                    width, height = height, width
+        return width, height
+    except Exception:  # unreadable, or no raster picture (a PDF): the caller's default
+        return None
+
+
+def is_pdf(path: Path) -> bool:
+    try:
+        with open(path, "rb") as handle:
+            return handle.read(5) == b"%PDF-"
+    except OSError:
+        return False
+
+
+def pdf_size(path: Path) -> tuple[int, int] | None:
+    """A PDF picture's first page as LuaTeX places it (its crop box, turned by its /Rotate),
+    in PDF units rounded, or None for a PDF that does not open: only its shape is used."""
+    import pikepdf
+
+    try:
+        with pikepdf.open(path) as pdf:
+            page = pdf.pages[0]
+            box = [float(v) for v in page.cropbox]
+            turns = int(page.obj.get("/Rotate", 0)) // 90 % 2
+    except Exception:
+        return None
+    width, height = round(abs(box[2] - box[0])), round(abs(box[3] - box[1]))
+    if not (width and height):
+        return None
+    return (height, width) if turns else (width, height)
+
+
 @dataclass(frozen=True)
 class PictureHeader:
     """A picture as its header describes it; ``problem`` says why it cannot be used."""

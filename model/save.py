@@ -144,7 +144,9 @@ def sync_table(table: Table, pairs: Pairs) -> None:
     """Make `table` hold `pairs`, changing only what differs, so comments and order survive."""
     wanted = {key for key, value, _ in pairs if value is not None}
     wanted |= {key for key in WRITTEN_ONLY_WHEN_NAMED if key in table and table[key] == ""}
-    for key in [k for k in table if k not in wanted and k not in ARRAYS_SYNCED_APART]:
+    unwanted = [k for k in table if k not in wanted and k not in ARRAYS_SYNCED_APART]
+    remember_places(table, unwanted)
+    for key in unwanted:
         del table[key]
     for key, value, default in pairs:
         if value is None or value is KEEP:
@@ -158,11 +160,40 @@ def sync_table(table: Table, pairs: Pairs) -> None:
             add_key(table, key, inline(value))
 
 
+PLACES = "_floatpage_places"  # a table's attribute: {removed key: the key that followed it}
+
+
+def remember_places(table: Table, keys: list[str]) -> None:
+    """Note which key followed each of ``keys`` (in the file's order, before any is taken
+    out) as a save takes them out of ``table``, so that the save that puts one back puts it
+    there (`add_key`): an anchor taken off (`u`), saved, then put back (`a`, or an undo)
+    came at its table's end, after `role`, a diff the user did not ask for (user-walk-8).
+    Kept on the table, which the editor saves into again."""
+    order = [entry.key for entry, _ in table.value.body if entry is not None]
+    places = table.__dict__.setdefault(PLACES, {})
+    for key in keys:
+        if key in order:
+            following = order[order.index(key) + 1:]
+            places[key] = following[0] if following else None
+
+
 def add_key(table: Table, key: str, value: Any) -> None:
-    """Add ``key`` to ``table`` before the blank line that ends it: put after it, a group
-    joined in the editor was written apart from its item's other keys (user walk 5)."""
+    """Add ``key`` to ``table`` where it was before a save took it out (`remember_place`),
+    else before the blank line that ends the table: put after it, a group joined in the
+    editor was written apart from its item's other keys (user walk 5).
+
+    Inserting uses tomlkit's internal `Container._insert_at` (tomlkit has no public insert;
+    pyproject.toml bounds tomlkit to the releases this was checked against)."""
+    from tomlkit.items import AoT, Table as TableItem
     body = table.value.body
-    if trailing_space(table) and hasattr(table.value, "_insert_at"):
+    follower = table.__dict__.get(PLACES, {}).pop(key, None)
+    place = next((index for index, (entry, item) in enumerate(body)
+                  if entry is not None and entry.key == follower
+                  and not isinstance(item, (TableItem, AoT))), None) if follower else None
+    if place is not None and hasattr(table.value, "_insert_at"):
+        table.value._insert_at(place, key, value)
+        dict.__setitem__(table, key, table.value[key])  # see below
+    elif trailing_space(table) and hasattr(table.value, "_insert_at"):
         table.value._insert_at(len(body) - 1, key, value)
         # The container holds the key now, but the Table (a dict) keeps its own copy of the
         # keys, which tomlkit's Table.append updates and `_insert_at` does not: the editor

@@ -139,8 +139,10 @@ def make_app(project_path: str | Path, *, seed: int | None = None,
     `recovered=True` opens the edits a lost terminal left in the recovery file, unsaved.
     """
     typed: list[str] = []
+    base = None
     if recovered:
-        project, typed = load_recovered(project_path, allow_outside_files=allow_outside_files)
+        project, typed, base = load_recovered(project_path,
+                                              allow_outside_files=allow_outside_files)
     else:  # a picture moved away must not keep the user out of the editor: it says so
         project = load_project(project_path, allow_outside_files=allow_outside_files,
                                missing_pictures_ok=True)
@@ -149,4 +151,6 @@ def make_app(project_path: str | Path, *, seed: int | None = None,
     if recovered:
         session.mark_unsaved()
         session.typed_when_lost = typed
+        if base is not None:  # the file the edits were made to: Ctrl+S asks before it
+            session.disk_digest = base  # replaces a version another program wrote since
     return FloatpageApp(session, autostart=autostart)

@@ -49,6 +49,10 @@ from floatpage.tui.status_line import Status, StatusLine
 FRAME_S = 1 / 30
 PHYSICS_BUDGET_S = 0.008  # leaves most of a 33 ms frame for drawing and for keys
 RELEASE_AFTER_S = 0.6  # a nudged item is let go this long after the last arrow key
+# How often the editor looks at the project file's size and time for changes another program
+# made (`look_at_file`): a stat a second costs nothing, and a change is told within two (it
+# is read once its size and time have held still for one look)
+LOOK_AT_FILE_S = 1.0
 STILL_FRAMES = 15  # half a second of frames that change nothing on screen: at rest
 ANSWER_FIRST_S = 0.02  # longer than Textual's screen update period (1/60 s)
 QUALITY_EVERY_S = 0.25  # the quality measure is O(n^2): while settling, refresh it 4 times a second
@@ -117,6 +121,9 @@ def next_month(project) -> tuple[int, int]:
 Answer = TypeVar("Answer")
 
 
+# An empty page (an `N` too many) said "no overlaps" and printed as a blank sheet: as
+# `check`'s note (model.page_report.empty_page_notes) says, with what to do
+EMPTY_PAGE_WORDS = "no items: prints as a blank page · i inserts · D removes the page"
 SNAP_SAID_MM = 0.5  # a save's settle that moves the selected item this far says so
 
 
@@ -166,6 +173,7 @@ class EditorScreen(Screen):
 
     def on_mount(self) -> None:
         self.frame_timer = self.set_interval(FRAME_S, self.tick, pause=True)
+        self.file_timer = self.set_interval(LOOK_AT_FILE_S, self.look_at_file)
         self.pacer = FramePacer(getattr(self.app._driver, "link", None))
         self.query_one(PagePreview).focus()
         self.redraw()
@@ -379,8 +387,8 @@ class EditorScreen(Screen):
         key = None if moving else engine.quality_key()
         if key is None or key != self._quality_key:  # at rest, measured once per layout:
             quality = engine.quality()  # a decoration nudged on a still page changes nothing
-            self._quality = (quality.summary(), quality_in_words(quality),
-                             engine.alignment().short())
+            words = quality_in_words(quality) if self.session.page.items else EMPTY_PAGE_WORDS
+            self._quality = (quality.summary(), words, engine.alignment().short())
             self._quality_key = key
             self.reasons = []
             if key is not None and not quality.ok:  # why, as `check` says it: off this thread
@@ -864,18 +872,52 @@ class EditorScreen(Screen):
         if not self.session.changed_on_disk():
             self.save_now(then)
             return
-        name = self.session.project.path.name
+        self.ask_about_changed_file(
+            "Since the editor opened or last saved {name}, another program changed it. Saving "
+            "replaces those changes; the file as it is now stays as {name}.bak. Opened as it "
+            "is now, the editor's unsaved edits and undo history go.",
+            then=then, highlighted=None)
+
+    def ask_about_changed_file(self, message: str, *, then=None, highlighted=None) -> None:
+        """The question for a project file another program changed (Ctrl+S's, and the one
+        `look_at_file` asks as soon as it sees the change): replace it, open it as it is
+        now, or keep editing."""
+        name = printable(self.session.project.path.name)
         self.ask(ChoiceDialog(f"{name} was changed by another program",
                               [("Replace it with the editor's version", "replace"),
                                ("Open the file as it is now", "reload"),
                                ("Keep editing (save nothing)", None)],
-                              message=f"Since the editor opened or last saved {name}, another "
-                              "program changed it. Saving replaces those changes; the file as "
-                              f"it is now stays as {name}.bak. Opened as it is now, the "
-                              "editor's unsaved edits and undo history go.", highlighted=None,
+                              message=message.format(name=name), highlighted=highlighted,
                               dialog_id="changed-on-disk-dialog"),
                  lambda choice: self.save_now(then) if choice == "replace"
                  else self.reload_from_disk())
+
+    def look_at_file(self) -> None:
+        """Every LOOK_AT_FILE_S: tell at once when another program (vim, `git checkout`, a
+        script) changed or removed the project file, instead of at
+        the next Ctrl+S, maybe an hour of edits later. Never in the middle of an edit: while a
+        dialog or form is open, or an item is held (nudged, dragged), the look waits, and the
+        change is told when the edit is done. Told once for each new state of the file."""
+        session = self.session
+        if session.project.path is None or not self.is_mounted \
+                or self.app.screen_stack[-1] is not self or session.held_id is not None \
+                or self.preview.dragging:
+            return
+        found = session.look_at_file()
+        name = printable(session.project.path.name)
+        if found == "gone":
+            self.notify(f"{name} was removed or renamed by another program; Ctrl+S writes the "
+                        "editor's version there again", title="Project file gone",
+                        severity="warning", timeout=10)
+        elif found == "changed":
+            unsaved = session.unsaved
+            self.ask_about_changed_file(
+                "Another program changed {name} just now. " + (
+                    "The editor has unsaved edits: replacing the file keeps it as it is now as "
+                    "{name}.bak; opened as it is now, the editor's edits and undo history go."
+                    if unsaved else "Nothing in the editor is unsaved: open it as it is now to "
+                    "go on from their version (the undo history goes)."),
+                highlighted=None if unsaved else "reload")
 
     def reload_from_disk(self) -> None:
         """The project as another program left it, in place of the editor's version."""

@@ -65,6 +65,11 @@ class PagePreview(Widget, can_focus=True):
         self.frames_drawn = 0
         self.unchanged_frames = 0  # frames in a row that changed no cell of the preview
 
+    @property
+    def dragging(self) -> bool:
+        """Whether the mouse holds an item (a button down on it, not yet up)."""
+        return self._drag is not None
+
     # -- drawing -------------------------------------------------------------------------
 
     def show(self, view: PageView) -> None:

@@ -36,6 +36,13 @@ def recovery_path(project_path: str | Path) -> Path:
 TYPED_NOTE = "# typed when the terminal went, not applied: "
 
 
+# The project file as the editor had read or saved it when the terminal went, as a digest on a
+# comment line at the top: another program (vim, `git checkout`) may have changed the file while
+# the editor had it open, before the hang-up, which the recovery question's dates cannot tell;
+# restored and saved, the edits replaced that change without a word (user-walk-9).
+BASE_NOTE = "# edited from the project file with sha256 "
+
+
 def comment_safe(text: str) -> str:
     """``text`` on one line a TOML comment may hold: line breaks as " ⏎ ", other control
     characters (which no comment may hold) and lone surrogates as \\uXXXX."""
@@ -55,18 +62,36 @@ def write_recovery(session, typed: list[str] | tuple[str, ...] = ()) -> Path | N
     except Exception:  # noqa: BLE001 - mid-step numbers: the model's last positions will do
         pass
     path = recovery_path(session.project.path)
-    notes = "".join(f"{TYPED_NOTE}{comment_safe(words)}\n" for words in typed)
+    base = getattr(session, "disk_digest", None)
+    notes = f"{BASE_NOTE}{base}\n" if base else ""
+    notes += "".join(f"{TYPED_NOTE}{comment_safe(words)}\n" for words in typed)
     atomic_write(path, (notes + dump_project(session.project)).encode("utf-8"), backup=False)
     return path
 
 
-def split_typed(text: str) -> tuple[list[str], str]:
-    """The typed notes at the top of a recovery file's text, and the rest of it."""
+def split_typed(text: str) -> tuple[list[str], str | None, str]:
+    """The typed notes at the top of a recovery file's text, the digest of the project file
+    the edits were made to (BASE_NOTE; None in a file written before it was kept), and the
+    rest of the text."""
     lines = text.splitlines(keepends=True)
-    notes = []
-    while lines and lines[0].startswith(TYPED_NOTE):
-        notes.append(lines.pop(0)[len(TYPED_NOTE):].rstrip("\r\n"))
-    return notes, "".join(lines)
+    notes, base = [], None
+    while lines and lines[0].startswith((TYPED_NOTE, BASE_NOTE)):
+        line = lines.pop(0).rstrip("\r\n")
+        if line.startswith(BASE_NOTE):
+            base = line[len(BASE_NOTE):].strip()
+        else:
+            notes.append(line[len(TYPED_NOTE):])
+    return notes, base, "".join(lines)
+
+
+def recovery_base(project_path: str | Path) -> str | None:
+    """The digest of the project file the kept edits were made to, or None if not known."""
+    try:
+        with recovery_path(project_path).open(encoding="utf-8", errors="replace") as file:
+            first = file.readline()  # write_recovery puts it first
+    except OSError:
+        return None
+    return split_typed(first)[1]
 
 
 def pending_recovery(project_path: str | Path) -> Path | None:
@@ -76,14 +101,16 @@ def pending_recovery(project_path: str | Path) -> Path | None:
 
 def load_recovered(project_path: str | Path, *, allow_outside_files: bool = False):
     """The project as the recovery file holds it, to be saved under the project's own name,
-    and the words that were in open forms when the terminal went (see TYPED_NOTE)."""
+    the words that were in open forms when the terminal went (see TYPED_NOTE) and the digest
+    of the project file the edits were made to (BASE_NOTE), or None."""
     project = load_project(recovery_path(project_path), allow_outside_files=allow_outside_files,
                            missing_pictures_ok=True)
     project.path = Path(project_path)
     typed: list[str] = []
+    base = None
     if project.source_text is not None:  # the notes are no part of the project, nor saved
-        typed, project.source_text = split_typed(project.source_text)
-    return project, typed
+        typed, base, project.source_text = split_typed(project.source_text)
+    return project, typed, base
 
 
 def discard_recovery(project_path: str | Path) -> None:

@@ -26,7 +26,7 @@ from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
 from floatpage.model.page_names import named_by_place, place_name, rename_by_place
 from floatpage.model.page_sizes import page_dimensions
-from floatpage.model.picture_files import is_merge_placeholder, read_header
+from floatpage.model.picture_files import is_merge_placeholder, read_header, upright_size
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
@@ -34,6 +34,11 @@ from floatpage.tui.history import History, Snapshot
 from floatpage.tui.reading_order import reading_order, step_through
 
 MIN_SIDE_MM = 3.0
+# The item fields the physics reads (model.layout.engine_for_page): an edit of any other
+# (words, colours, fonts, a calendar's month, another picture of the same shape) keeps the
+# engine and its rest, as `floatpage settle` of the edited file moves nothing either
+PHYSICAL_FIELDS = frozenset({"id", "x", "y", "w", "h", "decorative", "bleed", "anchor",
+                             "group", "region"})
 # How far an unmoved item's position as the engine has it may lie from the file's and still
 # be the file's (one step of the saved 0.01 mm, and the float error of the sum)
 ROUNDING_KEPT_MM = 0.0101
@@ -51,16 +56,22 @@ def file_digest(path: Path | None) -> str | None:
         return None
 
 
-def picture_aspect(path: Path) -> float | None:
-    """Height / width of a picture file, or None if Pillow cannot read it."""
+def file_stamp(path: Path | None) -> tuple[int, int, int] | None:
+    """What a cheap look at the file tells (size, modification time, inode), or None when
+    there is no such file: a change to any of them is worth reading the file for."""
     try:
-        from PIL import Image
-
-        with Image.open(path) as image:
-            width, height = image.size
-        return height / width if width else None
-    except Exception:  # unreadable: the item keeps the default shape
+        found = path.stat() if path is not None else None
+    except OSError:
         return None
+    return (found.st_size, found.st_mtime_ns, found.st_ino) if found is not None else None
+
+
+def picture_aspect(path: Path) -> float | None:
+    """Height / width of a picture file as it prints, or None if Pillow cannot read it (the
+    item keeps the default shape). A phone's portrait photo, stored sideways with an EXIF
+    turn, got a landscape box: the PDF, which turns it upright, cut off its top and bottom."""
+    size = upright_size(path)
+    return size[1] / size[0] if size and size[0] else None
 
 
 def inside(centre: float, size: float, page: float) -> float:
@@ -237,6 +248,8 @@ class EditSession:
         # (a text editor, `git checkout`) changed it meanwhile; the lock keeps out only
         # floatpage's own writers, and Ctrl+S replaced such changes without a word.
         self.disk_digest = file_digest(project.path)
+        self.disk_stamp = self.stamp_seen = file_stamp(project.path)  # see `look_at_file`
+        self.disk_told: str | None = None  # the digest (or "gone") `look_at_file` last told of
         self.read_text = project.source_text  # see `save`
         self._versions = itertools.count(1)
         self.held_id: str | None = None
@@ -714,7 +727,11 @@ class EditSession:
             item.anchor.gamma = gamma
         if resized:
             scale_follow_offsets(self.page, old_sizes, 1.0, 1.0)
-        self.rebuild_engine(sync=not resized)
+        if gamma_changes or not changes.keys().isdisjoint(PHYSICAL_FIELDS):
+            self.rebuild_engine(sync=not resized)
+        # else: words, colours, fonts, another picture of the same shape change no body the
+        # physics moves, so nothing is reheated: a price changed on the flyer reheated the
+        # page, and the save's settle moved every item up to 9 mm (user-walk-9)
 
     def refuse_bad_group_or_region(self, item, changes: dict) -> None:
         """Raise EditError for a group or region the project file could not hold (the loader's
@@ -983,6 +1000,8 @@ class EditSession:
         path = save_project(self.project)
         self.saved_version = self.version
         self.disk_digest = file_digest(path)
+        self.disk_stamp = self.stamp_seen = file_stamp(path)
+        self.disk_told = None
         return path
 
     def reload(self) -> None:
@@ -996,6 +1015,38 @@ class EditSession:
                                allow_outside_files=self.project.allow_outside_files,
                                missing_pictures_ok=True)
         self.open(project, self.page.id, self.page_index)
+
+    def look_at_file(self) -> str | None:
+        """A cheap look, for the editor's timer, at whether another program (a text editor,
+        `git checkout`, a script; floatpage's own writers wait for the editor's lock) changed
+        or removed the project file since the editor read or saved it: such changes were
+        found only at Ctrl+S.
+
+        The file is read (and hashed) only when its size, time or inode changed, and only
+        once they have stayed the same for one look (a `git checkout` or a slow write is
+        over, not read half done). Returns "changed" or "gone" once for each new state of the
+        file that differs from the editor's (a file changed back, or touched only, is no
+        change), and None otherwise."""
+        path = self.project.path
+        stamp = file_stamp(path)
+        if stamp == self.disk_stamp:
+            self.stamp_seen = stamp
+            return None
+        if stamp != self.stamp_seen:  # changed since the last look: still being written?
+            self.stamp_seen = stamp
+            return None
+        self.disk_stamp = stamp
+        now = file_digest(path) if stamp is not None else "gone"
+        if now is None:  # unreadable just now (a rename under way): look again next time
+            self.disk_stamp = self.stamp_seen = None
+            return None
+        if now == self.disk_digest:
+            self.disk_told = None
+            return None
+        if now == self.disk_told:
+            return None
+        self.disk_told = now
+        return "gone" if now == "gone" else "changed"
 
     def changed_on_disk(self) -> bool:
         """Whether another program changed the project file since the editor read or saved it

@@ -18,26 +18,51 @@ LEVEL_STEP = 17  # 16 levels a channel (0, 17, ..., 255): neighbouring cells sha
 # prints it (typeset.placed.framed_picture); nearer, cells rounding the box's size would
 # crop a picture of the very shape by a cell.
 CROP_ABOVE = 0.05
+PDF_DRAW_S = 5.0  # the longest pdftoppm may take to draw a PDF picture's thumbnail
 
 
 @lru_cache(maxsize=64)
 def _working_copy(path: str, mtime_ns: int):
     """The decoded copy, or None for a file the loader would refuse (the editor opens a
     project with such a picture, to mend it): a 200-megapixel PNG is never decoded here."""
-    from PIL import Image
+    from PIL import Image, ImageOps
 
     from floatpage.model.picture_files import read_header
 
-    if read_header(Path(path)).problem:
+    header = read_header(Path(path))
+    if header.problem:
         return None
+    if header.kind == "PDF":
+        return _pdf_working_copy(path)
     try:
         with Image.open(path) as image:
             image.draft("RGB", (WORKING_SIZE, WORKING_SIZE))  # JPEG: decode at reduced scale
+            if image.format == "JPEG":  # turned upright as the PDF prints it: a phone's
+                image = ImageOps.exif_transpose(image)  # portrait photo showed sideways
             image = image.convert("RGB")
             image.thumbnail((WORKING_SIZE, WORKING_SIZE))
             return image.copy()
     except Exception:  # a PDF, a JPEG cut short: remembered until the file changes, as a
         return None   # failure tried again every frame cost a header read and a decode
+
+
+def _pdf_working_copy(path: str):
+    """A PDF picture's first page, drawn by poppler's pdftoppm (installed with floatpage's
+    LaTeX tools), or None where it cannot be: a shop's logo as a PDF showed as "unreadable
+    pictures/logo.pdf" in the preview, as if the file were broken, while the PDF printed it."""
+    import io
+    import subprocess
+
+    from PIL import Image
+
+    try:
+        drawn = subprocess.run(["pdftoppm", "-f", "1", "-l", "1", "-singlefile", "-png",
+                                "-scale-to", str(WORKING_SIZE), path],
+                               capture_output=True, timeout=PDF_DRAW_S, check=True).stdout
+        with Image.open(io.BytesIO(drawn)) as image:
+            return image.convert("RGB")
+    except Exception:  # no pdftoppm, a PDF it cannot draw, too slow: the stand-in says so
+        return None
 
 
 @lru_cache(maxsize=512)

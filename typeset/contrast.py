@@ -104,43 +104,65 @@ def colour_at(layers: list, x: float, y: float) -> RGB | None:
 
 @dataclass(frozen=True)
 class Reading:
-    """A text's colour, the median colour behind it and their contrast."""
+    """A text's colour, the median colour behind it and their contrast; and the sampled lines
+    (numbered from 1 among ``lines``) whose own median contrast is below what is needed, with
+    the colour behind the first of them."""
 
     text: RGB
     behind: RGB
     ratio: float
     needed: float
+    faint_lines: tuple[int, ...] = ()
+    lines: int = 0
+    behind_faint: RGB | None = None
 
 
-def sample_points(placed) -> list[tuple[float, float, float, str, bool]]:
-    """(x, y, size pt, colour, bold) under the text's lines: along each line, at its x-height."""
+def sample_points(placed) -> list[tuple[float, float, float, str, bool, int]]:
+    """(x, y, size pt, colour, bold, line) under the text's lines: along each line, at its
+    x-height; ``line`` numbers the sampled lines in reading order, from 1."""
     points = []
+    line = 0
     for group in placed.groups:
         runs = group.runs
         step = max(1, -(-len(runs) // MAX_LINES))
         bold = "bold" in group.face.style
         for run in runs[::step]:
+            line += 1
             width = run.width_pt * MM_PER_PT
             left = run.x_mm - width if run.flush_right else run.x_mm
             y = run.y_mm - 0.3 * group.size_pt * MM_PER_PT  # within the letters, above the baseline
             for index in range(SAMPLES_PER_LINE):
                 x = left + width * (index + 0.5) / SAMPLES_PER_LINE
-                points.append((x, y, group.size_pt, group.color, bold))
+                points.append((x, y, group.size_pt, group.color, bold, line))
     return points
 
 
 def reading(placed, layers: list) -> Reading | None:
+    """The text's contrast as a whole (the median of its samples) and line by line: a text
+    half over a dark band passed as a whole, its cream half the median, while its last line
+    was unreadable in print (the flyer turned from A4 to DL: the prices 2.7 mm into the dark
+    footer, user-walk-9)."""
     points = sample_points(placed)
-    behind = [(colour_at(layers, x, y), size, colour, bold) for x, y, size, colour, bold in points]
+    behind = [(colour_at(layers, x, y), size, colour, bold, line)
+              for x, y, size, colour, bold, line in points]
     behind = [entry for entry in behind if entry[0] is not None]
     if not behind:
         return None
-    ratios = sorted(((contrast(hex_rgb(colour), under), under, colour, size, bold)
-                     for under, size, colour, bold in behind), key=lambda entry: entry[0])
-    ratio, under, colour, size, bold = ratios[len(ratios) // 2]
-    large = any(s >= LARGE_PT or (b and s >= LARGE_BOLD_PT) for _, _, _, s, b in ratios)
-    return Reading(hex_rgb(colour), under, median(r[0] for r in ratios),
-                   LARGE_RATIO if large else NORMAL_RATIO)
+    ratios = sorted(((contrast(hex_rgb(colour), under), under, colour, size, bold, line)
+                     for under, size, colour, bold, line in behind), key=lambda entry: entry[0])
+    ratio, under, colour, size, bold, _ = ratios[len(ratios) // 2]
+    large = any(s >= LARGE_PT or (b and s >= LARGE_BOLD_PT) for _, _, _, s, b, _ in ratios)
+    needed = LARGE_RATIO if large else NORMAL_RATIO
+    by_line: dict[int, list] = {}
+    for entry in ratios:
+        by_line.setdefault(entry[5], []).append(entry)
+    faint = []
+    for line, entries in sorted(by_line.items()):
+        if median(entry[0] for entry in entries) < needed:
+            faint.append((line, entries[len(entries) // 2][1]))
+    return Reading(hex_rgb(colour), under, median(r[0] for r in ratios), needed,
+                   tuple(line for line, _ in faint), max(by_line),
+                   faint[0][1] if faint else None)
 
 
 def hex_of(rgb: RGB) -> str:
@@ -155,7 +177,16 @@ def contrast_notes(document: PlacedDocument) -> list[str]:
             if not isinstance(placed, (PlacedText, PlacedCalendar)):
                 continue
             found = reading(placed, page.background + page.items[:index])
-            if found is None or found.ratio >= found.needed:
+            if found is None or not found.faint_lines and found.ratio >= found.needed:
+                continue
+            if found.ratio >= found.needed:  # readable as a whole, not on every line
+                noun = "text" if isinstance(placed, PlacedText) else "days and names"
+                notes.append(f"{placed.label}: {lines_named(found)} of its {noun} "
+                             f"({hex_of(found.text)}) lies over {hex_of(found.behind_faint)}, "
+                             f"where the contrast is below the {found.needed:g}:1 that text "
+                             "of its size needs to read easily (WCAG AA), while the rest "
+                             f"reads on {hex_of(found.behind)}: move it clear of what lies "
+                             "behind that part, or change its colour")
                 continue
             what = ("its text ({}) with {} behind it" if isinstance(placed, PlacedText)
                     else "its days and names ({}) with {} behind them")
@@ -165,3 +196,13 @@ def contrast_notes(document: PlacedDocument) -> list[str]:
                          "size needs to read easily (WCAG AA): change its colour or what lies "
                          "behind it")
     return notes
+
+
+def lines_named(found: Reading) -> str:
+    """"line 3 of 3", "lines 1 and 2 of 5", "3 of its 12 sampled lines"."""
+    faint = found.faint_lines
+    if found.lines > MAX_LINES - 1 or len(faint) > 2:
+        return f"{len(faint)} of {found.lines} sampled lines"
+    if len(faint) == 1:
+        return f"line {faint[0]} of {found.lines}"
+    return f"lines {faint[0]} and {faint[1]} of {found.lines}"

@@ -293,3 +293,55 @@ def test_a_key_a_save_added_can_be_changed_and_taken_out_by_the_next_save(tmp_pa
         text = path.read_text()
         assert text.count("group =") == (1 if group else 0)
         assert text.count('region = "top"') == (1 if region else 0)
+
+
+def test_tomlkit_is_bounded_to_the_releases_a_save_was_checked_against():
+    """tomlkit 0.15.0 and 0.15.1 write a control character in a title as `\\e` (TOML 1.1),
+    which the loader (tomllib, TOML 1.0) refuses: a project saved with them no longer opened
+    (`test_any_project_survives_dump_load_dump` fails there); 0.13-0.15.1 also wrote a blank
+    line too many before a page's first region, and `add_key` uses tomlkit's internal
+    `Container._insert_at`. `>=0.13` let pip pick any of those, and any later release."""
+    import tomllib
+    from importlib.metadata import version
+
+    from packaging.requirements import Requirement
+    from packaging.version import Version
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    spec = next(Requirement(line) for line in project["dependencies"]
+                if Requirement(line).name == "tomlkit").specifier
+    assert Version(version("tomlkit")) in spec
+    for refused in ("0.13.2", "0.14.0", "0.15.0", "0.15.1", "0.16.0", "1.0.0"):
+        assert Version(refused) not in spec, refused
+    from tomlkit.container import Container
+
+    assert hasattr(Container, "_insert_at")  # what add_key relies on, within the bound
+
+
+def test_an_anchor_taken_off_saved_and_put_back_keeps_its_place_in_the_file(tmp_path):
+    """The calendar's month names have `anchor` before `role`: taken off (the editor's `u`),
+    saved, then put back (`a`, or an undo) and saved again, the anchor came after `role`, a
+    diff nobody asked for (user-walk-8). Now it goes back where it was, and the file saved
+    with it back is the file as read."""
+    folder = tmp_path / "calendar"
+    shutil.copytree(ROOT / "sample_projects" / "calendar-2027", folder)
+    path = folder / "calendar-2027.toml"
+    original = path.read_text()
+    project = load_project(path)
+    month = project.pages[0].items[0]
+    assert month.anchor is not None and month.role
+    anchor = month.anchor
+    month.anchor = None
+    save_project(project)
+    assert path.read_text().count("anchor =") == original.count("anchor =") - 1
+    month.anchor = anchor
+    save_project(project)
+    assert path.read_text() == original
+    # a key taken out twice, and one whose follower went too, still come back whole
+    month.anchor, month.role = None, ""
+    save_project(project)
+    month.anchor, month.role = anchor, "month-name"
+    save_project(project)
+    again = load_project(path).pages[0].items[0]
+    assert (again.anchor, again.role) == (anchor, "month-name")
+    assert path.read_text() == original

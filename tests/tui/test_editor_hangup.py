@@ -323,3 +323,46 @@ def test_words_typed_into_a_form_when_the_terminal_went_are_kept_and_shown_again
     restore_save_and_quit(path, b"r", b"not applied", b"Hello over ssh")
     assert "typed when the terminal went" not in path.read_text()
     assert not recovery_path(path).exists()
+
+
+def test_a_change_another_program_made_before_the_hang_up_is_not_replaced_unasked(tmp_path):
+    """The title mended in vim while the editor had the card open with a nudge unsaved, then
+    the SSH link dropped: the recovery question compared dates only (the file was older than
+    the kept edits) and said nothing, and the restored edits, saved, replaced vim's change
+    without a word. The recovery file keeps the digest of the file the edits were made to:
+    the question says the project was changed, and Ctrl+S asks before replacing it."""
+    path = project_file(tmp_path)
+    editor = Editor(path)
+    try:
+        edit_something(editor)
+        path.write_text(path.read_text().replace('"Hello"', '"Hello from vim"'))
+        os.utime(path, (time.time() - 5, time.time() - 5))  # before the hang-up, surely
+        editor.drain(0.2)
+        os.close(editor.fd)  # the terminal goes
+        code, _ = editor.wait_exit(5.0)
+    finally:
+        editor.kill()
+    assert code == 129
+    assert "Hello from vim" in path.read_text()
+    again = Editor(path)
+    try:
+        again.read_until(b"[d]iscard them")
+        screen = again.screen.replace(b"\r\n", b" ")
+        assert b"The project itself was changed by another program" in screen, screen
+        again.send(b"r")
+        again.read_until(b"items")
+        again.drain(1.0)
+        again.send(b"\x13")  # Ctrl+S
+        again.read_until(b"was changed by another program")
+        assert "Hello from vim" in path.read_text()  # asked, not replaced
+        again.drain(0.5)
+        again.send(b"\x1b[H\r")  # Home, Enter: "Replace it with the editor's version"
+        deadline = time.monotonic() + 10
+        while "Hello from vim" in path.read_text() and time.monotonic() < deadline:
+            again.drain(0.2)
+    finally:
+        again.kill()
+        os.close(again.fd)
+    saved = path.read_text()
+    assert "Hello from vim" not in saved and "sha256" not in saved  # the note is not saved
+    assert "Hello from vim" in path.with_name("card.toml.bak").read_text()

@@ -243,7 +243,7 @@ async def test_a_page_too_small_for_a_photo_and_its_caption_shrinks_them_as_one(
                  anchor=ItemAnchor(to="photo", dx=-50.26, dy=115.04)),
     ])]), path)
     async with editor(path) as (app, pilot):
-        await keys(pilot, "S", *["down"] * 6, "enter")  # from A4 to Custom…
+        await keys(pilot, "S", "end", "enter")  # Custom…, the last
         assert app.screen.id == "custom-size-dialog"
         app.screen.query_one("#field-width_mm").value = "100"
         app.screen.query_one("#field-height_mm").value = "100"

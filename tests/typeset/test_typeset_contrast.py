@@ -88,3 +88,40 @@ def test_check_says_it_too_and_a_faint_text_is_a_note_not_a_failure(rendered):
     *_, check = rendered
     assert check.returncode == 0, check.stdout
     assert noted(check.stdout) == {"dark", "on-dark-half"}
+
+
+def test_a_text_whose_last_line_lies_over_a_dark_band_is_named(tmp_path):
+    """Readable as a whole, not on every line: the flyer turned from A4 to DL left its prices
+    2.7 mm into the dark footer band, and the median of the samples (the cream half) passed.
+    A three-line text whose last line lies over a charcoal band is named, with the line; a
+    text clear of the band is not; the PDF shows the last line's letters over the band."""
+    items = [BlockItem(id="band", x=52.5, y=133.0, w=105.0, h=30.0, color="#222222",
+                       decorative=True, z=-1),
+             TextItem(id="prices", x=52.5, y=112.0, w=60.0, h=18.0,
+                      text="Bread 2.40\nCroissant 1.20\nTart 3.10", font="sans",
+                      color="#000000"),
+             TextItem(id="title", x=52.5, y=30.0, w=60.0, h=18.0,
+                      text="Bread 2.40\nCroissant 1.20\nTart 3.10", font="sans",
+                      color="#000000")]
+    page = Page(id="p", size="A6", background=Background(color="#fdf4e6"), items=items)
+    path = tmp_path / "band.toml"
+    save_project(Project(pages=[page]), path)
+    check = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "check", "--strict",
+                            str(path)], capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert check.returncode == 0, check.stdout  # a note, as for the faint texts
+    named = [line for line in check.stdout.splitlines() if "of its text" in line]
+    assert len(named) == 1 and '"prices"' in named[0] and "line 3 of 3" in named[0], check.stdout
+    assert "#222222" in named[0]
+    out = tmp_path / "band.pdf"
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "render",
+                             "--no-settle", str(path), "-o", str(out)], capture_output=True,
+                            text=True, cwd=ROOT, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert "line 3 of 3" in result.stderr
+    with pdfplumber.open(out) as pdf:
+        chars = pdf.pages[0].chars
+    band_top_pt = (133.0 - 15.0) * PT_PER_MM
+    last = [c for c in chars if c["text"] == "T" and c["top"] > 60.0 * PT_PER_MM]
+    assert last and all(c["bottom"] > band_top_pt for c in last)  # "Tart" sits on the band
+    first = [c for c in chars if c["text"] == "B" and c["top"] > 60.0 * PT_PER_MM]
+    assert first and all(c["bottom"] < band_top_pt for c in first)  # "Bread" does not
