@@ -359,10 +359,122 @@ done:
     return result;
 }
 
+/* ---- the groups a move may take a line from (physics.rest_check.RestCheck.keeps_rest) ---- */
+
+PyDoc_STRVAR(line_mates_doc,
+"line_mates(members, axis, centres, halves, active_rows, roots, movable, on_line)\n"
+"    -> [root per group, sorted]\n\n"
+"The movable groups (``movable``: per row, whether it is a movable group's root) other than\n"
+"the groups of ``members`` with a feature on one of the members' lines on ``axis``: an edge\n"
+"of one of their rows within ``on_line`` of a member's edge, or its centre within it of a\n"
+"member's centre (physics.guides).  A move of ``members`` along the axis takes those lines\n"
+"away, and with them the hold of every group that nothing else holds, wherever it lies on\n"
+"the page: the rest check asks each of those again (a group held on a line with an item\n"
+"20 cm away lost its hold when that item moved, and drifted in the next probe).  Each line\n"
+"worked out as held_on_lines works it out (a centre less or plus its half).");
+
+static PyObject *line_mates(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 8) {
+        PyErr_SetString(PyExc_TypeError, "line_mates(members, axis, centres, halves, "
+                        "active_rows, roots, movable, on_line)");
+        return NULL;
+    }
+    int axis = PyLong_AsLong(args[1]);
+    double on_line = PyFloat_AsDouble(args[7]);
+    if (PyErr_Occurred())
+        return NULL;
+    if (axis != 0 && axis != 1) {
+        PyErr_SetString(PyExc_ValueError, "axis: 0 or 1");
+        return NULL;
+    }
+    Py_buffer views[6];
+    int held = 0;
+    PyObject *result = NULL;
+    char *found = NULL;
+    if (read_doubles(args[2], &views[0], 2, "centres") < 0)
+        goto done;
+    held++;
+    Py_ssize_t count = views[0].shape[0];
+    if (views[0].shape[1] != 2) {
+        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
+        goto done;
+    }
+    if (read_rows(args[0], &views[1], count) < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[3], &views[2], count, "halves") < 0)
+        goto done;
+    held++;
+    if (read_rows(args[4], &views[3], count) < 0)
+        goto done;
+    held++;
+    if (read_rows(args[5], &views[4], count) < 0)
+        goto done;
+    held++;
+    if (PyObject_GetBuffer(args[6], &views[5], PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        goto done;
+    held++;
+    if (views[4].shape[0] != count || views[5].ndim != 1 || views[5].shape[0] != count
+            || views[5].itemsize != 1) {
+        PyErr_SetString(PyExc_ValueError, "roots: one per item; movable: one bool per item");
+        goto done;
+    }
+    const double *centres = views[0].buf, *halves = views[2].buf;
+    const int64_t *members = views[1].buf, *active_rows = views[3].buf, *roots = views[4].buf;
+    const char *movable = views[5].buf;
+    Py_ssize_t member_count = views[1].shape[0], active = views[3].shape[0];
+    for (Py_ssize_t m = 0; m < member_count; m++)
+        if (roots[members[m]] < 0 || roots[members[m]] >= count) {
+            PyErr_SetString(PyExc_IndexError, "roots: a row outside the table");
+            goto done;
+        }
+    found = PyMem_Calloc(count + 1, 1); /* per root: 1 a mate, 2 a member's group */
+    if (found == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t m = 0; m < member_count; m++)
+        found[roots[members[m]]] = 2;
+    for (Py_ssize_t q = 0; q < active; q++) {
+        Py_ssize_t row = active_rows[q], root = roots[row];
+        if (root < 0 || root >= count || found[root] || !movable[root])
+            continue;
+        double at = centres[2 * row + axis], half = halves[2 * row + axis];
+        double low = at - half, high = at + half;
+        int on = 0;
+        for (Py_ssize_t m = 0; m < member_count && !on; m++) {
+            Py_ssize_t member = members[m];
+            double mine = centres[2 * member + axis], mine_half = halves[2 * member + axis];
+            double mine_low = mine - mine_half, mine_high = mine + mine_half;
+            on = fabs(low - mine_low) <= on_line || fabs(low - mine_high) <= on_line
+                 || fabs(high - mine_low) <= on_line || fabs(high - mine_high) <= on_line
+                 || fabs(at - mine) <= on_line;
+        }
+        if (on)
+            found[root] = 1;
+    }
+    result = PyList_New(0);
+    for (Py_ssize_t root = 0; result != NULL && root < count; root++) {
+        if (found[root] != 1)
+            continue;
+        PyObject *value = PyLong_FromSsize_t(root);
+        if (value == NULL || PyList_Append(result, value) < 0)
+            Py_CLEAR(result);
+        Py_XDECREF(value);
+    }
+done:
+    PyMem_Free(found);
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"rest_net", (PyCFunction)(void (*)(void))rest_net, METH_FASTCALL, rest_net_doc},
     {"held_on_lines", (PyCFunction)(void (*)(void))held_on_lines, METH_FASTCALL,
      held_on_lines_doc},
+    {"line_mates", (PyCFunction)(void (*)(void))line_mates, METH_FASTCALL, line_mates_doc},
     {NULL, NULL, 0, NULL},
 };
 

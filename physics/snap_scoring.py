@@ -17,7 +17,11 @@ import numpy as np
 
 from floatpage.physics.alignment import NEAR_MM
 
-ALIGNED_MM = 0.05  # features this close are aligned (positions are saved to 0.01 mm)
+# features this close are aligned (positions are saved to 0.01 mm); and a millionth more: on
+# the save's grid (physics.save_grid) two centres are often exactly 0.05 apart, which the
+# snap's floats (a sum of moves) put at 0.04999999999995 and the file's at 0.05000000000001,
+# a near miss the next probe's snap closed by moving an item 4.2 mm (fresh seed 2003)
+ALIGNED_MM = 0.05 + 1e-6
 ESCAPE_MM = NEAR_MM + 0.05  # a near miss that cannot close opens to this
 ALIGN_GAIN = 0.5  # an exact alignment is worth half a near miss
 MAX_CANDIDATES = 64  # moves scored per item and axis: on a crowded page, the 64 shortest
@@ -60,26 +64,36 @@ def distance_bounds(reach: float, farthest: float) -> np.ndarray:
 
 
 def scoring_ranges(reach: float, farthest: float, window: float,
-                   relevant: float | None = None) -> np.ndarray:
+                   relevant: float | None = None, grid: float = 0.0) -> np.ndarray:
     """What the kernel's scoring (snap_scoring_kernel.score_moves) reads besides the table, worked
-    out once per page, as the one array of 19 floats it takes: the twelve needles of
+    out once per page, as the one array of 20 floats it takes: the twelve needles of
     distance_bounds (moves onto lines within ``reach``, escape moves at most ``farthest``
     long), WINDOW_ENDS, ``ESCAPE_MM``, the ``window`` around a body within which lines are
-    near it, and the distance past which none is read (relevant_distance, unless given)."""
+    near it, the distance past which none is read (relevant_distance, unless given) and the
+    ``grid`` every candidate shift is rounded onto, in steps per mm (on_grid; 0: none; the snap
+    passes physics.save_grid.STEPS_PER_MM).  Which distances make candidates is decided before
+    the rounding, on the floats."""
     if relevant is None:
         relevant = relevant_distance(farthest)
-    key = (reach, farthest, window, relevant)
+    key = (reach, farthest, window, relevant, grid)
     found = _RANGES.get(key)
     if found is None:  # a page size's ranges, worked out once (first_where's float walks)
         found = np.concatenate([distance_bounds(reach, farthest), WINDOW_ENDS,
-                                [ESCAPE_MM, window, relevant]])
+                                [ESCAPE_MM, window, relevant, grid]])
         found.flags.writeable = False  # kept and shared: the kernels only read it
         if len(_RANGES) < 64:
             _RANGES[key] = found
     return found
 
 
-_RANGES: dict[tuple[float, float, float, float], np.ndarray] = {}
+_RANGES: dict[tuple[float, float, float, float, float], np.ndarray] = {}
+
+
+def on_grid(shift: float, grid: float) -> float:
+    """A candidate shift rounded onto ``grid`` steps per mm, as the kernel rounds it (0: as it
+    is): shift * grid to the nearest whole number (ties to even), times 1 / grid; monotone, so
+    the sorted candidates stay sorted.  (Candidate shifts are at most a few centimetres.)"""
+    return round(shift * grid) * (1.0 / grid) if grid > 0 else shift
 
 
 def relevant_distance(farthest: float) -> float:

@@ -16,7 +16,9 @@
 #define ESCAPE 16      /* the escape move, ESCAPE_MM */
 #define WINDOW 17      /* how far beyond a body's edges its near lines reach */
 #define RELEVANT 18    /* relevant_distance: no range reads a distance this far */
-#define RANGES 19
+#define GRID 19        /* steps per mm every candidate shift is rounded to (0: none) */
+#define RANGES 20
+#define ROUNDING_MAGIC 6755399441055744.0 /* 1.5 * 2^52: x + it - it is x rounded, ties to even */
 
 /* ---- sorting doubles (no NaN reaches here: the cut to the relevant drops them) ---- */
 
@@ -185,7 +187,7 @@ static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
     for (int k = 0; k < 12; k++)
         found[k] = below(ordered, count, ranges[BOUNDS + k]);
     const Py_ssize_t *low = found, *high = found + 4;
-    double escape = ranges[ESCAPE];
+    double escape = ranges[ESCAPE], grid = ranges[GRID], step = grid > 0.0 ? 1.0 / grid : 0.0;
     Candidates made;
     /* the runs in spare, each followed by +inf (below no value: a run used up is never
        taken again): staying and |distance| <= reach, staying placed where a merge puts it
@@ -228,6 +230,15 @@ static Candidates candidate_shifts(const double *ordered, Py_ssize_t count,
         int take_x = (x <= y) & (x <= z);
         int take_y = !take_x & (y <= z);
         double value = take_x ? x : (take_y ? y : z);
+        /* onto the save's grid (ranges[GRID]: physics.save_grid.STEPS_PER_MM): a body the
+           snap put on it stays on it, so the layout saved is the layout the snap scored.
+           Rounded to the nearest step (ties to even: adding and taking away 1.5 * 2^52, no
+           call of floor), times the step.  Monotone, so the merged values stay sorted and
+           repeats stay together */
+        if (grid > 0.0) {
+            double steps = value * grid + ROUNDING_MAGIC;
+            value = (steps - ROUNDING_MAGIC) * step;
+        }
         from_staying += take_x;
         from_down += take_y;
         from_up += !(take_x | take_y);

@@ -542,6 +542,251 @@ done:
     return result;
 }
 
+/* ---- the snap's putting its movers on the save's grid (physics.snapping._Snapper.onto_grid) ---- */
+
+/* save_grid.on_save_grid of one centre, the same operations in the same order */
+static double save_grid_centre(double centre, double half, double page, double steps)
+{
+    double step = 1.0 / steps;
+    double nearest = floor(centre * steps + 0.5) / steps;
+    int inside = centre - half >= -1e-9 && centre + half <= page + 1e-9 && 2 * half <= page;
+    if (inside && nearest - half < 0)
+        nearest = ceil(rint(half / step * 1e6) / 1e6) / steps;
+    if (inside && nearest + half > page)
+        nearest = floor(rint((page - half) / step * 1e6) / 1e6) / steps;
+    return nearest + 0.0;
+}
+
+/* save_grid.fitting_grid_shifts on raw arrays: ``kept`` (per row, this axis's shifts) less
+   those of the groups they do not fit for, all at once, until none fails.  ``dropped`` (per
+   root) marks the groups that lost theirs.  Returns 0, or -1 out of memory. */
+static int fitting_grid(const double *centres, const double *halves, const char *active,
+                        const int64_t *roots, Py_ssize_t count, int axis, const double *lowest,
+                        const double *highest, double clearance, double tolerance,
+                        double steps, double *kept, char *dropped)
+{
+    int across = 1 - axis;
+    double margin = clearance + 3.0 / steps;
+    Py_ssize_t room = 16, found = 0;
+    Py_ssize_t *pairs = PyMem_Malloc(2 * room * sizeof(Py_ssize_t));
+    double *tests = PyMem_Malloc(4 * room * sizeof(double));
+    if (pairs == NULL || tests == NULL) {
+        PyMem_Free(pairs);
+        PyMem_Free(tests);
+        return -1;
+    }
+    for (Py_ssize_t i = 0; i < count; i++) {
+        if (!active[i])
+            continue;
+        for (Py_ssize_t j = i + 1; j < count; j++) {
+            if (!active[j] || roots[i] == roots[j])
+                continue;
+            double gap_x = fabs(centres[2 * i] - centres[2 * j]) - halves[2 * i] - halves[2 * j];
+            double gap_y = fabs(centres[2 * i + 1] - centres[2 * j + 1]) - halves[2 * i + 1]
+                           - halves[2 * j + 1];
+            if (!(gap_x < margin && gap_y < margin))
+                continue;
+            double gap_across = fabs(centres[2 * i + across] - centres[2 * j + across])
+                                - halves[2 * i + across] - halves[2 * j + across];
+            double reach = halves[2 * i + axis] + halves[2 * j + axis];
+            double along = centres[2 * i + axis] - centres[2 * j + axis];
+            double now = fabs(along) - reach;
+            double needed = now > gap_across ? now : gap_across;
+            needed = clearance < needed ? clearance : needed;
+            needed -= tolerance;
+            if (gap_across >= needed)
+                continue; /* no shift along this axis brings them closer than needed */
+            if (found == room) {
+                room *= 2;
+                Py_ssize_t *more_pairs = PyMem_Realloc(pairs, 2 * room * sizeof(Py_ssize_t));
+                double *more_tests = more_pairs ? PyMem_Realloc(tests, 4 * room * sizeof(double))
+                                                : NULL;
+                if (more_pairs) pairs = more_pairs;
+                if (more_tests) tests = more_tests;
+                if (more_pairs == NULL || more_tests == NULL) {
+                    PyMem_Free(pairs);
+                    PyMem_Free(tests);
+                    return -1;
+                }
+            }
+            pairs[2 * found] = i;
+            pairs[2 * found + 1] = j;
+            tests[4 * found] = along;
+            tests[4 * found + 1] = reach;
+            tests[4 * found + 2] = gap_across;
+            tests[4 * found + 3] = needed;
+            found++;
+        }
+    }
+    for (;;) {
+        int any = 0;
+        for (Py_ssize_t row = 0; row < count; row++) {
+            if (!active[row] || kept[row] == 0.0)
+                continue;
+            double at = centres[2 * row + axis], after = at + kept[row];
+            double low = lowest[2 * row + axis], high = highest[2 * row + axis];
+            low = (at < low ? at : low) - tolerance;
+            high = (at > high ? at : high) + tolerance;
+            if (after < low || after > high) {
+                dropped[roots[row]] = 2; /* failing now */
+                any = 1;
+            }
+        }
+        for (Py_ssize_t p = 0; p < found; p++) {
+            Py_ssize_t i = pairs[2 * p], j = pairs[2 * p + 1];
+            const double *test = tests + 4 * p;
+            double gap = fabs(test[0] + kept[i] - kept[j]) - test[1];
+            gap = gap > test[2] ? gap : test[2];
+            if (gap < test[3]) {
+                if (kept[i] != 0.0) { dropped[roots[i]] = 2; any = 1; }
+                if (kept[j] != 0.0) { dropped[roots[j]] = 2; any = 1; }
+            }
+        }
+        if (!any)
+            break;
+        for (Py_ssize_t row = 0; row < count; row++)
+            if (dropped[roots[row]] == 2)
+                kept[row] = 0.0;
+        for (Py_ssize_t row = 0; row < count; row++)
+            if (dropped[row] == 2)
+                dropped[row] = 1;
+    }
+    PyMem_Free(pairs);
+    PyMem_Free(tests);
+    return 0;
+}
+
+PyDoc_STRVAR(grid_shifts_doc,
+"grid_shifts(centres, halves, active, roots, movers, lowest, highest, page, clearance,\n"
+"            tolerance, steps) -> bytes\n\n"
+"_Snapper.onto_grid_numpy's shifts, compiled: per axis (x, then y with x's made), the movers'\n"
+"shifts onto the save's grid (save_grid.on_save_grid; ``movers``: per row, whether it is a\n"
+"mover's root; a group's rows take its root's), those that fit (fitting_grid_shifts), then\n"
+"for the groups that did not, the step on their other side, those that fit: as float64\n"
+"(rows, 2 axes, 2 passes), to be added pass by pass.  ``centres`` is not changed.");
+
+static PyObject *grid_shifts(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 11) {
+        PyErr_SetString(PyExc_TypeError, "grid_shifts(centres, halves, active, roots, movers, "
+                        "lowest, highest, page, clearance, tolerance, steps)");
+        return NULL;
+    }
+    double page[2];
+    double clearance = PyFloat_AsDouble(args[8]), tolerance = PyFloat_AsDouble(args[9]);
+    double steps = PyFloat_AsDouble(args[10]);
+    if (!PyArg_ParseTuple(args[7], "dd", &page[0], &page[1]) || PyErr_Occurred())
+        return NULL;
+    Py_buffer views[7];
+    int held = 0;
+    PyObject *result = NULL;
+    double *at = NULL, *kept = NULL, *wanted = NULL;
+    char *dropped = NULL;
+    if (read_doubles(args[0], &views[0], 2, "centres") < 0)
+        goto done;
+    held++;
+    Py_ssize_t count = views[0].shape[0];
+    if (views[0].shape[1] != 2) {
+        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
+        goto done;
+    }
+    if (read_pairs_of(args[1], &views[1], count, "halves") < 0)
+        goto done;
+    held++;
+    if (read_flags(args[2], &views[2], count) < 0)
+        goto done;
+    held++;
+    if (read_rows(args[3], &views[3], count) < 0)
+        goto done;
+    held++;
+    if (read_flags(args[4], &views[4], count) < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[5], &views[5], count, "lowest") < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[6], &views[6], count, "highest") < 0)
+        goto done;
+    held++;
+    if (views[3].shape[0] != count) {
+        PyErr_SetString(PyExc_ValueError, "roots: one per row");
+        goto done;
+    }
+    const double *halves = views[1].buf, *lowest = views[5].buf, *highest = views[6].buf;
+    const char *active = views[2].buf, *movers = views[4].buf;
+    const int64_t *roots = views[3].buf;
+    result = PyBytes_FromStringAndSize(NULL, 4 * count * sizeof(double));
+    at = PyMem_Malloc((2 * count + 1) * sizeof(double));
+    kept = PyMem_Malloc((count + 1) * sizeof(double));
+    wanted = PyMem_Malloc((count + 1) * sizeof(double));
+    dropped = PyMem_Malloc(count + 1);
+    if (result == NULL || at == NULL || kept == NULL || wanted == NULL || dropped == NULL) {
+        Py_CLEAR(result);
+        if (!PyErr_Occurred())
+            PyErr_NoMemory();
+        goto done;
+    }
+    double *out = (double *)PyBytes_AS_STRING(result); /* [row][axis][pass] */
+    memset(out, 0, 4 * count * sizeof(double));
+    memcpy(at, views[0].buf, 2 * count * sizeof(double));
+    for (int axis = 0; axis < 2; axis++) {
+        int any = 0;
+        for (Py_ssize_t row = 0; row < count; row++) {
+            wanted[row] = 0.0;
+            if (movers[row]) {
+                double here = at[2 * row + axis];
+                double shift = save_grid_centre(here, halves[2 * row + axis], page[axis],
+                                                steps) - here;
+                wanted[row] = fabs(shift) <= tolerance ? 0.0 : shift;
+            }
+        }
+        for (Py_ssize_t row = 0; row < count; row++) {
+            Py_ssize_t root = roots[row];
+            kept[row] = active[row] && movers[root] ? wanted[root] : 0.0;
+            any |= kept[row] != 0.0;
+        }
+        for (int pass = 0; pass < 2 && any; pass++) {
+            memset(dropped, 0, count + 1);
+            if (fitting_grid(at, halves, active, roots, count, axis, lowest, highest,
+                             clearance, tolerance, steps, kept, dropped) < 0) {
+                Py_CLEAR(result);
+                PyErr_NoMemory();
+                goto done;
+            }
+            for (Py_ssize_t row = 0; row < count; row++) {
+                if (kept[row] != 0.0) {
+                    out[4 * row + 2 * axis + pass] = kept[row];
+                    at[2 * row + axis] += kept[row];
+                }
+            }
+            /* the other step for the groups that kept nothing: their shift less its sign's step */
+            any = 0;
+            for (Py_ssize_t row = 0; row < count; row++) {
+                Py_ssize_t root = roots[row];
+                double shift = active[row] && movers[root] ? wanted[root] : 0.0;
+                double other = 0.0;
+                if (kept[row] == 0.0 && shift != 0.0) {
+                    other = shift - (shift > 0 ? 1.0 : -1.0) / steps;
+                    if (fabs(other) <= tolerance)
+                        other = 0.0;
+                }
+                kept[row] = other;
+                any |= other != 0.0;
+            }
+            for (Py_ssize_t root = 0; root < count; root++)
+                wanted[root] = 0.0; /* a second pass tries each once */
+        }
+    }
+done:
+    PyMem_Free(at);
+    PyMem_Free(kept);
+    PyMem_Free(wanted);
+    PyMem_Free(dropped);
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"fill_feature_table", (PyCFunction)(void (*)(void))fill_feature_table, METH_FASTCALL,
      fill_feature_table_doc},
@@ -550,6 +795,7 @@ static PyMethodDef methods[] = {
     {"inverse_masses", (PyCFunction)(void (*)(void))inverse_masses, METH_FASTCALL,
      inverse_masses_doc},
     {"row_table", (PyCFunction)(void (*)(void))row_table, METH_FASTCALL, row_table_doc},
+    {"grid_shifts", (PyCFunction)(void (*)(void))grid_shifts, METH_FASTCALL, grid_shifts_doc},
     {NULL, NULL, 0, NULL},
 };
 

@@ -21,6 +21,9 @@
 #include "snap_sweep_state.h" /* the Sweep, Moves, Span; snap_kernel_support.h */
 #include "snap_scoring_core.h" /* score_body: the scoring, called without Python */
 #include "snap_fit_core.h"     /* fit_body: the fit test, the same */
+/* the ranges' copy holds every double of scoring_ranges (RANGES, snap_scoring_core.h) */
+_Static_assert(sizeof(((Sweep *)0)->range_values) == RANGES * sizeof(double),
+               "Sweep.range_values: scoring_ranges' RANGES doubles");
 
 static void moves_clear(Moves *moves)
 {
@@ -785,9 +788,12 @@ static void sweep_dealloc(Sweep *self)
     Py_CLEAR(self->root_list);
     Py_CLEAR(self->group_rows);
     Py_CLEAR(self->pairs_of);
+    Py_CLEAR(self->line_mates);
+    Py_CLEAR(self->mate_args);
     PyMem_Free(self->before_known);
     PyMem_Free(self->before_held);
     PyMem_Free(self->before_push);
+    PyMem_Free(self->before_net);
     Py_CLEAR(self->line_members);
     Py_CLEAR(self->moved_from);
     Py_CLEAR(self->centres);
@@ -816,20 +822,22 @@ static int take_tables(PyObject *pair, PyObject **tables)
 static int take_rest(Sweep *self, PyObject *parts)
 {
     PyObject *reached_by, *rest_net, *net_args, *held_on_lines, *hold_args, *no_rows,
-        *root_list, *group_rows, *pairs_of, *scratch_rows, *scratch_owner;
+        *root_list, *group_rows, *pairs_of, *scratch_rows, *scratch_owner, *mates, *mate_args;
     int grouped;
     Py_ssize_t count = self->count;
     if (!PyTuple_Check(parts)) {
         PyErr_SetString(PyExc_TypeError, "rest: the parts as a tuple");
         return -1;
     }
-    if (!PyArg_ParseTuple(parts, "OOO!OO!OOOO!O!O!pdd:rest", &reached_by, &rest_net,
+    if (!PyArg_ParseTuple(parts, "OOO!OO!OOOO!O!O!pddOO!:rest", &reached_by, &rest_net,
                           &PyTuple_Type, &net_args, &held_on_lines, &PyTuple_Type,
                           &hold_args, &no_rows, &scratch_rows, &scratch_owner,
                           &PyList_Type, &root_list, &PyList_Type, &group_rows,
-                          &PyList_Type, &pairs_of, &grouped, &self->limit, &self->hold))
+                          &PyList_Type, &pairs_of, &grouped, &self->limit, &self->hold,
+                          &mates, &PyTuple_Type, &mate_args))
         return -1;
     if (PyTuple_GET_SIZE(net_args) != 5 || PyTuple_GET_SIZE(hold_args) != 7
+            || PyTuple_GET_SIZE(mate_args) != 6
             || PyList_GET_SIZE(root_list) != count
             || PyList_GET_SIZE(group_rows) != count || PyList_GET_SIZE(pairs_of) != count) {
         PyErr_SetString(PyExc_ValueError, "rest: five net arguments, lists per row");
@@ -847,6 +855,8 @@ static int take_rest(Sweep *self, PyObject *parts)
     self->root_list = Py_NewRef(root_list);
     self->group_rows = Py_NewRef(group_rows);
     self->pairs_of = Py_NewRef(pairs_of);
+    self->line_mates = Py_NewRef(mates);
+    self->mate_args = Py_NewRef(mate_args);
     self->zero = PyFloat_FromDouble(0.0);
     if (self->zero == NULL)
         return -1;
@@ -1013,7 +1023,9 @@ static PyObject *sweep_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
         self->before_known = PyMem_Calloc(count + 1, 1);
         self->before_held = PyMem_Calloc(2 * count + 2, 1);
         self->before_push = PyMem_Calloc(count + 1, sizeof(double));
-        if (self->before_known == NULL || self->before_held == NULL || self->before_push == NULL)
+        self->before_net = PyMem_Calloc(2 * count + 2, sizeof(double));
+        if (self->before_known == NULL || self->before_held == NULL || self->before_push == NULL
+                || self->before_net == NULL)
             goto no_memory;
         if (PyTuple_Check(keeps_rest) && take_rest(self, keeps_rest) < 0)
             goto failed;

@@ -220,6 +220,8 @@ static int as_it_is(Sweep *self, const Py_ssize_t *groups, Py_ssize_t count)
         self->before_held[2 * group + 1] = held[2 * g + 1];
         self->before_push[group] = unheld(self, sums + 2 * g,
                                           self->hold > 0 ? held + 2 * g : NULL);
+        self->before_net[2 * group] = sums[2 * g];
+        self->before_net[2 * group + 1] = sums[2 * g + 1];
     }
     status = 0;
 done:
@@ -232,6 +234,88 @@ done:
     Py_XDECREF(pairs);
     return status;
 }
+
+/* RestCheck.keeps_holds(members, axis, shift, reached): the groups held on the members' lines
+   (line_mates), but those of ``reached``, each pushed within the limit or no harder than it
+   was once the move has taken its line away; 1 if so, 0 if not, -1 on an error */
+static int keeps_holds(Sweep *self, PyObject *members, int axis, PyObject *shift,
+                       const Py_ssize_t *reached, Py_ssize_t reached_count)
+{
+    if (!(self->hold > 0))
+        return 1;
+    PyObject *axis_now = PyLong_FromLong(axis);
+    if (axis_now == NULL)
+        return -1;
+    PyObject *parts = self->mate_args;
+    PyObject *args[8] = {members, axis_now, PyTuple_GET_ITEM(parts, 0),
+                         PyTuple_GET_ITEM(parts, 1), PyTuple_GET_ITEM(parts, 2),
+                         PyTuple_GET_ITEM(parts, 3), PyTuple_GET_ITEM(parts, 4),
+                         PyTuple_GET_ITEM(parts, 5)};
+    PyObject *found = PyObject_Vectorcall(self->line_mates, args, 8, NULL);
+    Py_DECREF(axis_now);
+    if (found == NULL)
+        return -1;
+    if (!PyList_Check(found)) {
+        Py_DECREF(found);
+        PyErr_SetString(PyExc_TypeError, "line_mates: a list");
+        return -1;
+    }
+    Py_ssize_t total = PyList_GET_SIZE(found), count = 0;
+    Py_ssize_t *mates = PyMem_Malloc((total + 1) * sizeof(Py_ssize_t));
+    char *after = PyMem_Calloc(total + 1, 1);
+    int status = -1;
+    if (mates == NULL || after == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t k = 0; k < total; k++) {
+        Py_ssize_t group = PyLong_AsSsize_t(PyList_GET_ITEM(found, k));
+        if (group < 0 || group >= self->count) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_IndexError, "line_mates: a group outside the page");
+            goto done;
+        }
+        int known = 0;
+        for (Py_ssize_t r = 0; r < reached_count && !known; r++)
+            known = reached[r] == group;
+        if (!known)
+            mates[count++] = group;
+    }
+    status = 1;
+    if (count == 0)
+        goto done;
+    status = -1;
+    /* which still have a line after the move (held on the members' line, each was held) */
+    if (held_of(self, mates, count, axis, members, shift, after) < 0)
+        goto done;
+    Py_ssize_t losing = 0;
+    for (Py_ssize_t g = 0; g < count; g++)
+        if (!after[g])
+            mates[losing++] = mates[g];
+    status = 1;
+    if (losing == 0)
+        goto done;
+    status = -1;
+    if (as_it_is(self, mates, losing) < 0)
+        goto done;
+    status = 1;
+    for (Py_ssize_t g = 0; g < losing && status; g++) {
+        Py_ssize_t group = mates[g];
+        if (!self->before_held[2 * group + axis])
+            continue; /* not losing a hold it had on this axis */
+        char held[2];
+        held[axis] = 0;
+        held[1 - axis] = self->before_held[2 * group + 1 - axis];
+        double push = unheld(self, self->before_net + 2 * group, held);
+        status = push <= larger(self->before_push[group], self->limit) + 1e-9;
+    }
+done:
+    Py_DECREF(found);
+    PyMem_Free(mates);
+    PyMem_Free(after);
+    return status;
+}
+
 
 /* RestCheck.keeps_rest(members, axis, shift) */
 static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
@@ -267,7 +351,7 @@ static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
         goto done;
     }
     if (count == 0) {
-        status = 1;
+        status = keeps_holds(self, members, axis, shift, NULL, 0);
         goto done;
     }
     groups = PyMem_Malloc(count * sizeof(Py_ssize_t));
@@ -299,7 +383,7 @@ static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
         }
     }
     if (over == 0) { /* within the limit with no hold at all: which lines hold is moot */
-        status = 1;
+        status = keeps_holds(self, members, axis, shift, groups, count);
         goto done;
     }
     /* only a group over the limit may fail: the hold only lowers a push */
@@ -321,6 +405,8 @@ static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
         double before = larger(self->before_push[failing[g]], self->limit);
         status = push <= before + 1e-9;
     }
+    if (status == 1)
+        status = keeps_holds(self, members, axis, shift, groups, count);
 done:
     PyBuffer_Release(&view);
     Py_DECREF(found);

@@ -56,14 +56,15 @@ typedef struct {
     PyObject *reached_by, *rest_net, *net_args, *held_on_lines, *hold_args, *no_rows, *zero;
     PyObject *scratch_rows, *scratch_owner; /* int64, one per row: held_of's rows, owners */
     PyObject *root_list, *group_rows, *pairs_of;
+    PyObject *line_mates, *mate_args; /* RestCheck.keeps_holds: the function, its arguments */
     char *before_known, *before_held; /* per group: RestCheck.as_it_is's, until a move */
-    double *before_push;
+    double *before_push, *before_net; /* per group: its push, its net (x, y) */
     /* what the scoring (snap_scoring_core.h, called directly) reads, read once in sweep_new:
-       each table's cells (held until the Sweep goes), scoring_ranges' 19 doubles, each mover's
+       each table's cells (held until the Sweep goes), scoring_ranges' 20 doubles, each mover's
        rows, and room for a line's rows */
     Py_buffer table_views[2][2];
     int table_held[2][2];
-    double range_values[19];
+    double range_values[20];
     int64_t **member_rows;
     Py_ssize_t *member_sizes;
     int64_t *line_room_rows;

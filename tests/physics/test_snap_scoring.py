@@ -15,9 +15,10 @@ from hypothesis import strategies as st
 
 from floatpage.physics.guides import CENTRE, HIGH, LOW, features
 from floatpage.physics.alignment import NEAR_MM
+from floatpage.physics.save_grid import STEPS_PER_MM
 from floatpage.physics.snap_scoring_kernel import line_of, score_moves, scored_candidates
 from floatpage.physics.snap_scoring import (
-    ALIGNED_MM, ESCAPE_MM, MAX_CANDIDATES, MAX_TRIES, scoring_ranges,
+    ALIGNED_MM, ESCAPE_MM, MAX_CANDIDATES, MAX_TRIES, on_grid, scoring_ranges,
 )
 from floatpage.physics.snapping import (
     EVERY_MOVE, HIGHS_COLUMN, LOWS_COLUMN, MINE, MINE_COLUMNS, THEIRS, THEIRS_COLUMNS,
@@ -140,12 +141,14 @@ def test_the_page_lines_as_rows_give_the_distances_to_each_line(items, edges, mi
 
 
 def plain_scoring(table: np.ndarray, members: list[int], reach: float, farthest: float,
-                  window: float, tries: int) -> tuple:
+                  window: float, tries: int, grid: float = 0.0) -> tuple:
     """What the snap's scoring of the rigid body ``members`` means, in plain Python floats:
     every distance from a feature of a member to a line of the same kind of a row near the
     body (reaching into its extent widened by ``window``) that is not its own; the moves onto
     a line within ``reach`` and out of a near miss at most ``farthest`` long, and staying; of
-    more than MAX_CANDIDATES of them, the distinct ones nearest 0 (of two as near, the lower);
+    more than MAX_CANDIDATES of them (each rounded onto ``grid`` steps per mm first, if
+    any: to the nearest whole number of steps, ties to even, times the step), the distinct
+    ones nearest 0 (of two as near, the lower);
     each scored as twice its near misses less three times its alignments; those scoring below
     staying, by score, length, value, each once, at most ``tries``."""
     rows = table.tolist()
@@ -167,6 +170,8 @@ def plain_scoring(table: np.ndarray, members: list[int], reach: float, farthest:
     shifts = ([0.0] + [d for d in distances if abs(d) <= reach]
               + [d - ESCAPE_MM for d in escaping if abs(d - ESCAPE_MM) <= farthest]
               + [d + ESCAPE_MM for d in escaping if abs(d + ESCAPE_MM) <= farthest])
+    if grid:
+        shifts = [on_grid(shift, grid) for shift in shifts]
     if len(shifts) > MAX_CANDIDATES:
         shifts = sorted(sorted(set(shifts), key=lambda v: (abs(v), v))[:MAX_CANDIDATES])
     now = score(0.0)
@@ -181,12 +186,15 @@ def plain_scoring(table: np.ndarray, members: list[int], reach: float, farthest:
 @settings(max_examples=300, deadline=None)
 @given(st.integers(2, 40), st.integers(0, 2 ** 32 - 1), st.sampled_from([0.05, 0.25, None]),
        st.integers(1, 4), st.sampled_from([1, MAX_TRIES, EVERY_MOVE]),
-       st.sampled_from([(4.0, 12.0), (1.0 / 3.0, 1.0), (8.0, 12.0)]))
-def test_the_kernel_scores_as_the_plain_definition(count, seed, grid, body, tries, reaches):
+       st.sampled_from([(4.0, 12.0), (1.0 / 3.0, 1.0), (8.0, 12.0)]),
+       st.sampled_from([0.0, STEPS_PER_MM]))
+def test_the_kernel_scores_as_the_plain_definition(count, seed, grid, body, tries, reaches,
+                                                   steps):
     """Random pages made as the snap makes its tables (feature_table: inactive rows, the page's
     edge and middle lines as rows), items crowded into a strip so that most lines are near and
     crowded pages cut to the nearest candidates; on a grid of 0.05 or 0.25 mm (ties, exact
-    alignments, a shift and its opposite) or anywhere; a body of 1-4 rows."""
+    alignments, a shift and its opposite) or anywhere; a body of 1-4 rows; the candidate
+    shifts as they are or rounded onto the save's grid (``steps`` per mm, as the snap asks)."""
     rng = np.random.default_rng(seed)
     if grid is None:
         centres = rng.uniform(0.0, 60.0, (count, 2))
@@ -199,13 +207,14 @@ def test_the_kernel_scores_as_the_plain_definition(count, seed, grid, body, trie
     edges, middles = np.array([10.0, 50.0]), np.array([30.0])
     reach, farthest = reaches
     window = max(farthest, NEAR_MM) + NEAR_MM
-    ranges = scoring_ranges(reach, farthest, window)
+    ranges = scoring_ranges(reach, farthest, window, grid=steps)
     movable = np.flatnonzero(active)
     members = rng.choice(movable, size=min(body, len(movable)), replace=False)
     for axis in (0, 1):
         table = feature_table(centres, halves, active, axis, edges, middles)
         found = score_moves(table, members, ranges, MAX_CANDIDATES, tries)
-        assert found == plain_scoring(table, members.tolist(), reach, farthest, window, tries)
+        assert found == plain_scoring(table, members.tolist(), reach, farthest, window, tries,
+                                      steps)
 
 
 def test_the_kernel_refuses_what_is_not_a_table():
