@@ -42,14 +42,10 @@ static PyObject *held_on_lines(PyObject *module, PyObject *const *args, Py_ssize
     PyObject *result = NULL;
     double *lines = NULL;
     char *found = NULL;
-    if (read_doubles(args[3], &views[0], 2, "centres") < 0)
+    if (read_row_pairs(args[3], &views[0], "centres") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[0].shape[0];
-    if (views[0].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
-        goto done;
-    }
     if (read_rows(args[0], &views[1], count) < 0)
         goto done;
     held++;
@@ -392,14 +388,10 @@ static PyObject *line_mates(PyObject *module, PyObject *const *args, Py_ssize_t 
     int held = 0;
     PyObject *result = NULL;
     char *found = NULL;
-    if (read_doubles(args[2], &views[0], 2, "centres") < 0)
+    if (read_row_pairs(args[2], &views[0], "centres") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[0].shape[0];
-    if (views[0].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
-        goto done;
-    }
     if (read_rows(args[0], &views[1], count) < 0)
         goto done;
     held++;

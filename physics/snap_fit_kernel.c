@@ -43,14 +43,10 @@ static PyObject *fitting_shifts(PyObject *module, PyObject *const *args, Py_ssiz
     Py_buffer views[8];
     int held = 0;
     PyObject *result = NULL;
-    if (read_doubles(args[3], &views[0], 2, "centres") < 0)
+    if (read_row_pairs(args[3], &views[0], "centres") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[0].shape[0];
-    if (views[0].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
-        goto done;
-    }
     if (read_rows(args[0], &views[1], count) < 0)
         goto done;
     held++;

@@ -121,6 +121,19 @@ static inline int read_flags(PyObject *object, Py_buffer *view, Py_ssize_t count
     return 0;
 }
 
+/* A float64 (rows, 2) array: centres, sizes, halves; its rows are view->shape[0] */
+static inline int read_row_pairs(PyObject *object, Py_buffer *view, const char *name)
+{
+    if (read_doubles(object, view, 2, name) < 0)
+        return -1;
+    if (view->shape[1] != 2) {
+        PyErr_Format(PyExc_ValueError, "%s: (rows, 2)", name);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    return 0;
+}
+
 static inline int read_pairs_of(PyObject *object, Py_buffer *view, Py_ssize_t rows,
                                 const char *name)
 {

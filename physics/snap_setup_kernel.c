@@ -48,14 +48,10 @@ static PyObject *fill_feature_table(PyObject *module, PyObject *const *args, Py_
         PyErr_SetString(PyExc_TypeError, "table: a writable C-contiguous float64 (rows, 15)");
         goto done;
     }
-    if (read_doubles(args[1], &views[1], 2, "centres") < 0)
+    if (read_row_pairs(args[1], &views[1], "centres") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[1].shape[0];
-    if (views[1].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
-        goto done;
-    }
     if (read_pairs_of(args[2], &views[2], count, "halves") < 0)
         goto done;
     held++;
@@ -155,14 +151,10 @@ static PyObject *sweep_pairs(PyObject *module, PyObject *const *args, Py_ssize_t
     PyObject *result = NULL;
     Entry *order = NULL;
     int64_t *pairs = NULL;
-    if (read_doubles(args[0], &views[0], 2, "centres") < 0)
+    if (read_row_pairs(args[0], &views[0], "centres") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[0].shape[0];
-    if (views[0].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
-        goto done;
-    }
     if (read_pairs_of(args[1], &views[1], count, "halves") < 0)
         goto done;
     held++;
@@ -285,14 +277,10 @@ static PyObject *pair_tables(PyObject *module, PyObject *const *args, Py_ssize_t
     int held = 0;
     PyObject *result = NULL, *table = NULL, *lists = NULL;
     Py_ssize_t *counts = NULL;
-    if (read_doubles(args[1], &views[0], 2, "sizes") < 0)
+    if (read_row_pairs(args[1], &views[0], "sizes") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[0].shape[0];
-    if (views[0].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "sizes: (rows, 2)");
-        goto done;
-    }
     if (PyObject_GetBuffer(args[0], &views[1], PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
         goto done;
     held++;
@@ -415,14 +403,10 @@ static PyObject *inverse_masses(PyObject *module, PyObject *const *args, Py_ssiz
     int held = 0;
     PyObject *result = NULL;
     double *mass = NULL;
-    if (read_doubles(args[0], &views[0], 2, "sizes") < 0)
+    if (read_row_pairs(args[0], &views[0], "sizes") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[0].shape[0];
-    if (views[0].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "sizes: (rows, 2)");
-        goto done;
-    }
     if (read_rows(args[1], &views[1], count) < 0)
         goto done;
     held++;
@@ -485,14 +469,10 @@ static PyObject *row_table(PyObject *module, PyObject *const *args, Py_ssize_t n
     Py_buffer views[6];
     int held = 0;
     PyObject *result = NULL;
-    if (read_doubles(args[0], &views[0], 2, "halves") < 0)
+    if (read_row_pairs(args[0], &views[0], "halves") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[0].shape[0];
-    if (views[0].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "halves: (rows, 2)");
-        goto done;
-    }
     if (read_pairs_of(args[1], &views[1], count, "near") < 0)
         goto done;
     held++;
@@ -682,14 +662,10 @@ static PyObject *grid_shifts(PyObject *module, PyObject *const *args, Py_ssize_t
     PyObject *result = NULL;
     double *at = NULL, *kept = NULL, *wanted = NULL;
     char *dropped = NULL;
-    if (read_doubles(args[0], &views[0], 2, "centres") < 0)
+    if (read_row_pairs(args[0], &views[0], "centres") < 0)
         goto done;
     held++;
     Py_ssize_t count = views[0].shape[0];
-    if (views[0].shape[1] != 2) {
-        PyErr_SetString(PyExc_ValueError, "centres: (rows, 2)");
-        goto done;
-    }
     if (read_pairs_of(args[1], &views[1], count, "halves") < 0)
         goto done;
     held++;
