@@ -39,51 +39,21 @@ EXIF_ORIENTATION = 0x0112
 QUARTER_TURNS = (5, 6, 7, 8)  # EXIF orientations that turn the picture a quarter turn
 
 
-def upright_size(path: Path) -> tuple[int, int] | None:
-    """A raster picture's pixel size as it prints, or None if Pillow cannot read it: a JPEG
-    whose EXIF tag turns it a quarter turn (every phone's portrait photo, stored sideways)
-    prints turned upright (typeset.pictures), so its width and height swap."""
-    from PIL import Image
-
-    if is_pdf(path):
-        return pdf_size(path)
+def quarter_turned(image) -> bool:
+    """Whether a JPEG's EXIF tag turns it a quarter turn (a broken EXIF block: no turn, as
+    TeX ignores EXIF and typeset.pictures reads the same tag)."""
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
-            with Image.open(path) as image:
-                width, height = image.size
-                if image.format == "JPEG" \
-                        and image.getexif().get(EXIF_ORIENTATION) in QUARTER_TURNS:
-                    width, height = height, width
-        return width, height
-    except Exception:  # unreadable, or no raster picture (a PDF): the caller's default
-        return None
-
-
-def is_pdf(path: Path) -> bool:
-    try:
-        with open(path, "rb") as handle:
-            return handle.read(5) == b"%PDF-"
-    except OSError:
+        return image.getexif().get(EXIF_ORIENTATION) in QUARTER_TURNS
+    except Exception:
         return False
 
 
-def pdf_size(path: Path) -> tuple[int, int] | None:
-    """A PDF picture's first page as LuaTeX places it (its crop box, turned by its /Rotate),
-    in PDF units rounded, or None for a PDF that does not open: only its shape is used."""
-    import pikepdf
-
+def quarter_turns(rotate) -> int:
+    """A PDF page's /Rotate in quarter turns (an odd value: none)."""
     try:
-        with pikepdf.open(path) as pdf:
-            page = pdf.pages[0]
-            box = [float(v) for v in page.cropbox]
-            turns = int(page.obj.get("/Rotate", 0)) // 90 % 2
-    except Exception:
-        return None
-    width, height = round(abs(box[2] - box[0])), round(abs(box[3] - box[1]))
-    if not (width and height):
-        return None
-    return (height, width) if turns else (width, height)
+        return int(rotate) // 90
+    except (TypeError, ValueError):
+        return 0
 
 
 @dataclass(frozen=True)
@@ -91,6 +61,9 @@ class PictureHeader:
     """A picture as its header describes it; ``problem`` says why it cannot be used."""
 
     kind: str = ""  # "PDF" or a Pillow format name
+    # as it prints: a JPEG whose EXIF tag turns it a quarter turn (every phone's portrait
+    # photo, stored sideways) prints upright (typeset.pictures), its width and height swapped;
+    # a PDF's first page is its crop box in PDF units, rounded, turned by its /Rotate
     size: tuple[int, int] = (0, 0)
     problem: str = ""
     hint: str = ""
@@ -118,6 +91,8 @@ def read_header(path: Path) -> PictureHeader:
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)
             with Image.open(path) as image:
                 kind, size = image.format or "", image.size
+                if kind == "JPEG" and quarter_turned(image):
+                    size = (size[1], size[0])
     except Image.DecompressionBombError as error:  # Pillow's own, far higher, limit
         claimed = re.search(r"\((\d+) pixels\)", str(error))
         return too_many_pixels(f"{int(claimed.group(1)) // 1_000_000:,} megapixels" if claimed
@@ -146,6 +121,7 @@ def pdf_header(path: Path) -> PictureHeader:
             page = pdf.pages[0]
             # LuaTeX places the crop box (the media box when there is none)
             boxes = [[float(v) for v in page.mediabox], [float(v) for v in page.cropbox]]
+            turned = quarter_turns(page.obj.get("/Rotate", 0)) % 2
     except Exception as error:  # pikepdf raises its own errors, and IndexError for no pages
         reason = str(error).splitlines()[0][:120] if str(error) else type(error).__name__
         return PictureHeader(kind="PDF", problem=f"is not a PDF floatpage can read ({reason})",
@@ -165,7 +141,9 @@ def pdf_header(path: Path) -> PictureHeader:
                                  "cannot place (0.35 mm to 5 m a side)",
                                  hint="export it again at the size it should print, or use "
                                       "PNG or JPEG")
-    return PictureHeader(kind="PDF")
+    crop = boxes[1]
+    size = (round(crop[2] - crop[0]), round(crop[3] - crop[1]))
+    return PictureHeader(kind="PDF", size=(size[1], size[0]) if turned else size)
 
 
 def pdf_damage(path: Path) -> str:

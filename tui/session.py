@@ -26,7 +26,7 @@ from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import copy_of, engine_for_page, settle_page, write_back
 from floatpage.model.page_names import named_by_place, place_name, rename_by_place
 from floatpage.model.page_sizes import page_dimensions
-from floatpage.model.picture_files import is_merge_placeholder, read_header, upright_size
+from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
@@ -70,8 +70,9 @@ def picture_aspect(path: Path) -> float | None:
     """Height / width of a picture file as it prints, or None if Pillow cannot read it (the
     item keeps the default shape). A phone's portrait photo, stored sideways with an EXIF
     turn, got a landscape box: the PDF, which turns it upright, cut off its top and bottom."""
-    size = upright_size(path)
-    return size[1] / size[0] if size and size[0] else None
+    header = read_header(path)
+    width, height = header.size
+    return height / width if not header.problem and width else None
 
 
 def inside(centre: float, size: float, page: float) -> float:

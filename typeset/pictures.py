@@ -24,7 +24,9 @@ from pathlib import Path
 
 from PIL import Image, ImageOps, UnidentifiedImageError
 
-from floatpage.model.picture_files import decode_warning, pdf_damage
+from floatpage.model.picture_files import (
+    EXIF_ORIENTATION, QUARTER_TURNS, decode_warning, pdf_damage,
+)
 from floatpage.model.save import atomic_write
 from floatpage.typeset.errors import RenderError
 
@@ -32,7 +34,6 @@ PRINT_DPI = 300
 DOWNSAMPLE_ABOVE = 1.5  # only shrink pictures with more than 1.5x the pixels print needs
 NATIVE = {"PNG": ".png", "JPEG": ".jpg"}
 CONVERTED = {"WEBP", "GIF", "BMP", "TIFF"}
-EXIF_ORIENTATION = 0x0112
 EXIF_RESOLUTION = (0x011A, 0x011B, 0x0128)  # XResolution, YResolution, ResolutionUnit
 # TeX reads a picture's own size from its pixels and the resolution in its file (72 dpi when
 # none), and stops with "Dimension too large" past 16,384 pt: a 20,000-pixel panorama, or a
@@ -143,7 +144,7 @@ def plan_picture(source: Path, w_mm: float, h_mm: float, label: str,
     if kind not in NATIVE and kind not in CONVERTED:
         raise RenderError(f'{label}: "{source}" is a {kind} picture; '
                           "use PNG, JPEG, PDF, WebP, GIF, BMP or TIFF")
-    if orientation in (5, 6, 7, 8):
+    if orientation in QUARTER_TURNS:
         size = (size[1], size[0])
     ext = NATIVE.get(kind, ".png")
     aspect = w_mm / h_mm
