@@ -178,7 +178,7 @@ def remember_places(table: Table, keys: list[str]) -> None:
 
 
 def add_key(table: Table, key: str, value: Any) -> None:
-    """Add ``key`` to ``table`` where it was before a save took it out (`remember_place`),
+    """Add ``key`` to ``table`` where it was before a save took it out (`remember_places`),
     else before the blank line that ends the table: put after it, a group joined in the
     editor was written apart from its item's other keys (user walk 5).
 
@@ -190,11 +190,10 @@ def add_key(table: Table, key: str, value: Any) -> None:
     place = next((index for index, (entry, item) in enumerate(body)
                   if entry is not None and entry.key == follower
                   and not isinstance(item, (TableItem, AoT))), None) if follower else None
+    if place is None and trailing_space(table):
+        place = len(body) - 1
     if place is not None and hasattr(table.value, "_insert_at"):
         table.value._insert_at(place, key, value)
-        dict.__setitem__(table, key, table.value[key])  # see below
-    elif trailing_space(table) and hasattr(table.value, "_insert_at"):
-        table.value._insert_at(len(body) - 1, key, value)
         # The container holds the key now, but the Table (a dict) keeps its own copy of the
         # keys, which tomlkit's Table.append updates and `_insert_at` does not: the editor
         # saves into the same document again, and taking the key out there (an undo, a
