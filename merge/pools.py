@@ -15,6 +15,7 @@ from typing import Iterator
 
 from floatpage.merge.chunk_job import ChunkTask, RecordResult, run_chunk
 from floatpage.model.errors import FloatpageError
+from floatpage.model.page_pool import stop_pool
 
 IN_FLIGHT_PER_WORKER = 2
 
@@ -44,13 +45,11 @@ def local_results(tasks: Iterator[ChunkTask], workers: int) -> Iterator[list[Rec
                 yield future.result()
     finally:
         # Interrupted (Ctrl+C): stop the workers now, rather than finishing their chunks;
-        # their LuaLaTeX dies with them (PR_SET_PDEATHSIG). The pool has no public handle on
-        # its processes, hence the private one, read before shutdown() clears it.
-        workers_now = list((getattr(executor, "_processes", None) or {}).values())
-        executor.shutdown(wait=not pending, cancel_futures=True)
+        # their LuaLaTeX dies with them (PR_SET_PDEATHSIG).
         if pending:
-            for process in workers_now:
-                process.kill()
+            stop_pool(executor)
+        else:
+            executor.shutdown()
 
 
 def dask_client(address: str, workers: int):

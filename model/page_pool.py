@@ -18,6 +18,7 @@ from __future__ import annotations
 import multiprocessing
 import os
 import signal
+import threading
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 
@@ -90,7 +91,21 @@ def stop_pool(pool: ProcessPoolExecutor) -> None:
     for process in list((getattr(pool, "_processes", None) or {}).values()):
         if process.is_alive():
             process.terminate()
+    manager = getattr(pool, "_executor_manager_thread", None)
     pool.shutdown(wait=False, cancel_futures=True)
+    wait_for_the_pools_thread(manager)
+
+
+def wait_for_the_pools_thread(manager: threading.Thread | None) -> None:
+    """Let the pool's manager thread finish before the command exits.  On a shutdown without
+    waiting it is still closing its wake-up pipe when the interpreter's exit hook
+    (concurrent.futures' ``_python_exit``, Python 3.8-3.11) writes to that pipe to wake it: one
+    Ctrl+C in a few hundred printed "OSError: [Errno 9] Bad file descriptor" with a traceback
+    under "floatpage: interrupted" (a fresh-clone CI run).  With its workers terminated the
+    thread sees them gone and ends in milliseconds; the bound only keeps a wedged thread from
+    holding the exit, which then risks the old message and nothing worse."""
+    if manager is not None and manager is not threading.current_thread():
+        manager.join(timeout=5.0)
 
 
 def settle_here(pages: list[Page], settings: PhysicsSettings,

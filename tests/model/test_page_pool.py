@@ -124,6 +124,32 @@ def test_ctrl_c_stops_a_pooled_settle_with_one_message_and_the_file_untouched(tm
     assert path.read_bytes() == before
 
 
+def sleep_for(seconds: float) -> None:
+    """A worker's task that is still running when the pool is stopped."""
+    time.sleep(seconds)
+
+
+def test_a_stopped_pool_leaves_no_thread_for_the_exit_to_wake():
+    """After a Ctrl+C the pool's manager thread must be gone before the command exits: the
+    interpreter's exit hook wakes it through a pipe the thread is closing, and the race printed
+    "OSError: [Errno 9] Bad file descriptor" with a traceback under "interrupted" (one
+    fresh-clone CI run in several)."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    from floatpage.model.page_pool import stop_pool
+
+    pool = ProcessPoolExecutor(max_workers=2, mp_context=multiprocessing.get_context("forkserver"))
+    futures = [pool.submit(sleep_for, 30) for _ in range(4)]
+    started = time.monotonic()
+    while not any(future.running() for future in futures) and time.monotonic() - started < 30:
+        time.sleep(0.05)
+    manager = pool._executor_manager_thread
+    assert manager is not None and manager.is_alive()
+    stop_pool(pool)
+    assert not manager.is_alive()
+
+
 def test_where_no_worker_process_can_start_the_pages_settle_here(monkeypatch):
     """A sandbox without POSIX semaphores refuses a process pool (OSError): the pages settle
     one by one in this process, to the same positions, instead of failing."""
