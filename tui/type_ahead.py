@@ -52,9 +52,18 @@ class TypeAhead:
         screen.call_after_refresh(self.opened, screen)
 
     def opened(self, screen: Screen) -> None:
+        """``screen`` is mounted: its keys go to it once the focus its on_mount asked for is
+        given.  A widget's focus() is a message at the back of the App's queue, so the keys
+        wait behind it there (``let_keys_in``), still held: on a loaded machine a drain
+        already queued ran before that focus and handed the "Ok" typed ahead through the
+        insert and text dialogs to the form's scroll container, which dropped it."""
+        if self.opening is screen:
+            self.app.call_later(self.let_keys_in, screen)
+
+    async def let_keys_in(self, screen: Screen) -> None:
         if self.opening is screen:
             self.opening = None
-            self.app.call_next(self.drain)
+            await self.drain()
 
     def holds(self, event: events.Key) -> bool:
         """Queue `event` if a screen is opening or keys before it still wait; True if queued."""

@@ -33,6 +33,16 @@ async def editor(path: Path, size: tuple[int, int] = SIZE, *, autostart: bool = 
         yield app, pilot
 
 
+async def until(pilot, condition, seconds: float = 10.0) -> bool:
+    """Wait, a tenth of a second at a time, until ``condition()`` holds, at most ``seconds``:
+    a fixed pause that suits an idle machine is too short on a loaded CI runner."""
+    for _ in range(int(seconds / 0.1)):
+        if condition():
+            return True
+        await pilot.pause(0.1)
+    return condition()
+
+
 def screen_of(app: FloatpageApp) -> EditorScreen:
     return app.editor
 

@@ -3,6 +3,7 @@ keys typed ahead of a dialog, a new page's name, and a template's placeholder in
 
 from __future__ import annotations
 
+import asyncio
 import re
 import shutil
 import subprocess
@@ -16,7 +17,7 @@ from floatpage.model import load_project, save_project
 from floatpage.model.document import Page, PictureItem, Project, TextItem
 from floatpage.tui.cell_text import wrap_cells
 
-from editor_helpers import editor, position, preview_text, screen_of
+from editor_helpers import editor, position, preview_text, screen_of, until
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -39,8 +40,7 @@ async def test_keys_typed_ahead_of_a_dialog_go_to_the_dialog(project_path):
         chosen = screen_of(app).selected_id
         before = position(app, chosen)
         type_ahead(app, "p", "l")
-        await pilot.pause(0.3)
-        assert app.screen.id == "picture-dialog"
+        assert await until(pilot, lambda: keys_taken(app) and app.screen.id == "picture-dialog")
         assert position(app, chosen) == before
 
 
@@ -53,8 +53,7 @@ async def test_words_typed_ahead_of_a_form_are_typed_into_it_in_order(project_pa
         chosen = screen_of(app).selected_id
         before = position(app, chosen)
         type_ahead(app, "t", "H", "e", "l", "l", "o", "space", "h", "i")
-        await pilot.pause(0.3)
-        assert app.screen.id == "text-dialog"
+        assert await until(pilot, lambda: keys_taken(app) and app.screen.id == "text-dialog")
         assert app.screen.focused.text == "Hello hi"
         assert position(app, chosen) == before
 
@@ -64,9 +63,38 @@ async def test_a_choice_typed_ahead_reaches_the_dialog_the_one_before_opened(pro
     to the screen the key before it opened, through two dialogs."""
     async with editor(project_path) as (app, pilot):
         type_ahead(app, "i", "enter", "O", "k")
-        await pilot.pause(0.3)
-        assert app.screen.id == "text-dialog"
+        assert await until(pilot, lambda: keys_taken(app) and app.screen.id == "text-dialog")
         assert app.screen.focused.text == "Ok"
+
+
+async def test_keys_typed_ahead_wait_for_the_focus_the_new_dialog_asks_for(project_path,
+                                                                        monkeypatch):
+    """The same keys while the App is busy (a loaded machine): the text form mounted, and a
+    drain of the waiting keys already in the App's queue ran before the focus the form's
+    on_mount asked for, handing "Ok" to the form's scroll container, which dropped it (a
+    fresh-clone CI run, and every run at load 8).  The App is kept busy here by a message
+    that waits, as a slow turn of the App does, while the form mounts."""
+    from floatpage.tui.editor_screen import EditorScreen
+
+    choose = EditorScreen.action_insert_kind
+
+    def choose_while_the_app_is_busy(self, kind):
+        async def busy():
+            await asyncio.sleep(0.3)
+        self.app.call_later(busy)
+        choose(self, kind)
+
+    monkeypatch.setattr(EditorScreen, "action_insert_kind", choose_while_the_app_is_busy)
+    async with editor(project_path) as (app, pilot):
+        type_ahead(app, "i", "enter", "O", "k")
+        assert await until(pilot, lambda: keys_taken(app) and app.screen.id == "text-dialog")
+        assert app.screen.focused.text == "Ok"
+
+
+def keys_taken(app) -> bool:
+    """Every key typed ahead has gone to a screen (none waits in the App's queue)."""
+    type_ahead = app.type_ahead
+    return not type_ahead.waiting and type_ahead.opening is None and not type_ahead.answering
 
 
 def top_bar(app) -> str:
