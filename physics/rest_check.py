@@ -33,7 +33,7 @@ from floatpage.physics.force_terms import (
 )
 from floatpage.physics.line_hold import LineHold
 from floatpage.physics.guides import ON_LINE_MM
-from floatpage.physics.rest_check_kernel import held_on_lines, line_mates, rest_net
+from floatpage.physics.rest_check_kernel import held_on_lines, line_mates, reach_of, rest_net
 from floatpage.physics.snap_setup_kernel import (
     inverse_masses, pair_tables, row_table, sweep_pairs,
 )
@@ -222,23 +222,31 @@ class RestCheck:
     def reached_by(self, members: np.ndarray) -> tuple[np.ndarray, list[int], list[int]]:
         """The movable groups that the rigid body ``members`` touches (itself among them), their
         rows and every pair that touches those: fixed by the pairs found at the start, so
-        worked out once per body, in Python sets (a body touches a handful of groups, and
-        half the bodies a snap checks are checked once)."""
+        worked out once per body (half the bodies a snap checks are checked once), compiled
+        (rest_check_kernel.reach_of; ``reach_python`` is the definition)."""
         key = members.tobytes()
         found = self.reach_of.get(key)
         if found is None:
-            ends_i, ends_j = self.pair_ends_lists
-            pairs_of, roots, movable = self.pair_lists_of, self.root_list, self.movable_list
-            touched = set(members.tolist())
-            for member in members.tolist():
-                for pair in pairs_of[member]:
-                    touched.add(ends_i[pair])
-                    touched.add(ends_j[pair])
-            groups = sorted({roots[row] for row in touched if movable[roots[row]]})
-            rows = [row for group in groups for row in self.group_row_lists[group]]
-            pairs = sorted({pair for row in rows for pair in pairs_of[row]})
-            found = self.reach_of[key] = (np.array(groups, dtype=self.roots.dtype), rows, pairs)
+            groups, rows, pairs = reach_of(members, self.pair_lists_of, self.pair_ends,
+                                           self.roots_int, self.movable, self.group_row_lists)
+            found = self.reach_of[key] = (np.frombuffer(groups, dtype=np.int64).astype(
+                self.roots.dtype, copy=False), rows, pairs)
         return found
+
+    def reach_python(self, members: np.ndarray) -> tuple[np.ndarray, list[int], list[int]]:
+        """What reached_by answers, in Python sets: the definition its compiled twin is held
+        to (tests/physics/test_rest_reach.py)."""
+        ends_i, ends_j = self.pair_ends_lists
+        pairs_of, roots, movable = self.pair_lists_of, self.root_list, self.movable_list
+        touched = set(members.tolist())
+        for member in members.tolist():
+            for pair in pairs_of[member]:
+                touched.add(ends_i[pair])
+                touched.add(ends_j[pair])
+        groups = sorted({roots[row] for row in touched if movable[roots[row]]})
+        rows = [row for group in groups for row in self.group_row_lists[group]]
+        pairs = sorted({pair for row in rows for pair in pairs_of[row]})
+        return np.array(groups, dtype=self.roots.dtype), rows, pairs
 
     def as_it_is(self, groups: np.ndarray) -> tuple[np.ndarray | None, np.ndarray]:
         """For ``groups``, with the page as it is: whether a line holds each on each axis (None
