@@ -631,12 +631,158 @@ done:
     return result;
 }
 
+PyDoc_STRVAR(unlisted_near_doc,
+"unlisted_near(members, axis, shift, centres, found_at, halves, active_rows, roots,\n"
+"              pair_lists, pair_ends, gap, margin) -> bool\n\n"
+"Whether the rigid body ``members`` moved by ``shift`` along ``axis`` would touch (within\n"
+"``gap``, edge to edge on both axes) an active row its pairs do not list.  The pairs were found\n"
+"at ``found_at`` within ``gap`` + ``margin``: none can be missing unless the members' travel\n"
+"from there (this move included) and the farthest any active row has travelled add up to more\n"
+"than ``margin``, the larger of |dx| and |dy| each; only then are the rows looked at.  The rest\n"
+"check's sums read the listed pairs alone, so a body that travelled past them could be pushed\n"
+"beyond the limit unseen (RestCheck.keeps_rest).");
+
+static PyObject *unlisted_near(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 12 || !PyList_Check(args[8])) {
+        PyErr_SetString(PyExc_TypeError, "unlisted_near(members, axis, shift, centres, found_at, "
+                        "halves, active_rows, roots, pair_lists: list, pair_ends, gap, margin)");
+        return NULL;
+    }
+    int axis = PyLong_AsLong(args[1]);
+    double shift = PyFloat_AsDouble(args[2]);
+    double gap = PyFloat_AsDouble(args[10]), margin = PyFloat_AsDouble(args[11]);
+    if (PyErr_Occurred())
+        return NULL;
+    if (axis != 0 && axis != 1) {
+        PyErr_SetString(PyExc_ValueError, "axis: 0 or 1");
+        return NULL;
+    }
+    PyObject *pair_lists = args[8];
+    Py_buffer views[7];
+    int held = 0, near = 0;
+    char *listed = NULL;
+    PyObject *result = NULL;
+    if (read_row_pairs(args[3], &views[0], "centres") < 0)
+        goto done;
+    held++;
+    Py_ssize_t count = views[0].shape[0];
+    if (PyList_GET_SIZE(pair_lists) != count) {
+        PyErr_SetString(PyExc_ValueError, "pair_lists: one list per row");
+        goto done;
+    }
+    if (read_rows(args[0], &views[1], count) < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[4], &views[2], count, "found_at") < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[5], &views[3], count, "halves") < 0)
+        goto done;
+    held++;
+    if (read_rows(args[6], &views[4], count) < 0)
+        goto done;
+    held++;
+    if (read_rows(args[7], &views[5], count) < 0)
+        goto done;
+    held++;
+    if (views[5].shape[0] != count) {
+        PyErr_SetString(PyExc_ValueError, "roots: one per row");
+        goto done;
+    }
+    if (PyObject_GetBuffer(args[9], &views[6], PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        goto done;
+    held++;
+    if (views[6].itemsize != 8 || (views[6].ndim != 2 && views[6].len != 0)
+            || (views[6].ndim == 2 && views[6].shape[1] != 2)) {
+        PyErr_SetString(PyExc_TypeError, "pair_ends: a contiguous (pairs, 2) int64 array");
+        goto done;
+    }
+    const double *centres = views[0].buf, *found_at = views[2].buf, *halves = views[3].buf;
+    const int64_t *members = views[1].buf, *active_rows = views[4].buf, *ends = views[6].buf;
+    Py_ssize_t member_count = views[1].shape[0], active = views[4].shape[0];
+    Py_ssize_t pair_count = views[6].len / 16;
+    double others = 0.0, mine = 0.0;
+    for (Py_ssize_t q = 0; q < active; q++) {
+        Py_ssize_t row = active_rows[q];
+        for (int a = 0; a < 2; a++) {
+            double travel = fabs(centres[2 * row + a] - found_at[2 * row + a]);
+            others = travel > others ? travel : others;
+        }
+    }
+    for (Py_ssize_t m = 0; m < member_count; m++) {
+        Py_ssize_t row = members[m];
+        for (int a = 0; a < 2; a++) {
+            double at = a == axis ? centres[2 * row + a] + shift : centres[2 * row + a];
+            double travel = fabs(at - found_at[2 * row + a]);
+            mine = travel > mine ? travel : mine;
+        }
+    }
+    if (mine + others <= margin)
+        goto answer;
+    listed = PyMem_Calloc(count + 1, 1); /* 1: a member; 2: a listed partner of this member */
+    if (listed == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t m = 0; m < member_count; m++)
+        listed[members[m]] = 1;
+    for (Py_ssize_t m = 0; m < member_count && !near; m++) {
+        Py_ssize_t row = members[m];
+        PyObject *list = PyList_GET_ITEM(pair_lists, row);
+        if (!PyList_Check(list)) {
+            PyErr_SetString(PyExc_TypeError, "pair_lists: a list per row");
+            goto done;
+        }
+        Py_ssize_t size = PyList_GET_SIZE(list);
+        for (int mark = 2; mark >= 0; mark -= 2) { /* mark the partners, look, unmark them */
+            if (mark == 0) {
+                double x = centres[2 * row] + (axis == 0 ? shift : 0.0);
+                double y = centres[2 * row + 1] + (axis == 1 ? shift : 0.0);
+                for (Py_ssize_t q = 0; q < active && !near; q++) {
+                    Py_ssize_t other = active_rows[q];
+                    if (listed[other])
+                        continue;
+                    near = fabs(centres[2 * other] - x) < halves[2 * row] + halves[2 * other] + gap
+                           && fabs(centres[2 * other + 1] - y)
+                              < halves[2 * row + 1] + halves[2 * other + 1] + gap;
+                }
+            }
+            for (Py_ssize_t k = 0; k < size; k++) {
+                Py_ssize_t pair = PyLong_AsSsize_t(PyList_GET_ITEM(list, k));
+                if (pair == -1 && PyErr_Occurred())
+                    goto done;
+                if (pair < 0 || pair >= pair_count) {
+                    PyErr_SetString(PyExc_IndexError, "pair_lists: a pair outside the table");
+                    goto done;
+                }
+                int64_t other = ends[2 * pair] == row ? ends[2 * pair + 1] : ends[2 * pair];
+                if (other < 0 || other >= count) {
+                    PyErr_SetString(PyExc_IndexError, "pair_ends: a row outside the table");
+                    goto done;
+                }
+                if (listed[other] != 1)
+                    listed[other] = (char)mark;
+            }
+        }
+    }
+answer:
+    result = PyBool_FromLong(near);
+done:
+    PyMem_Free(listed);
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"rest_net", (PyCFunction)(void (*)(void))rest_net, METH_FASTCALL, rest_net_doc},
     {"held_on_lines", (PyCFunction)(void (*)(void))held_on_lines, METH_FASTCALL,
      held_on_lines_doc},
     {"line_mates", (PyCFunction)(void (*)(void))line_mates, METH_FASTCALL, line_mates_doc},
     {"reach_of", (PyCFunction)(void (*)(void))reach_of, METH_FASTCALL, reach_of_doc},
+    {"unlisted_near", (PyCFunction)(void (*)(void))unlisted_near, METH_FASTCALL,
+     unlisted_near_doc},
     {NULL, NULL, 0, NULL},
 };
 
