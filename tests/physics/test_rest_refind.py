@@ -82,3 +82,51 @@ def test_a_body_that_travels_past_its_pairs_is_checked_with_its_pairs_found_agai
     limit = REST_ACC * page_scale(page_w, page_h)
     assert (after <= np.maximum(before, limit) + 1e-6).all(), after.max()
     assert np.abs(bodies.centres - start).max() > 8.0  # beyond the pairs' margin (2 snap ranges)
+
+
+def unlisted_near_numpy(rest, members: np.ndarray, axis: int, shift: float) -> bool:
+    """rest_check_kernel.unlisted_near's definition in NumPy: the members' travel (this move
+    included) and the farthest any active row went, against the pairs' margin; then any active
+    row not a member, not a listed partner, within the gap on both axes."""
+    centres, found = rest.bodies.centres, rest.found_at
+    moved = centres[members].copy()
+    moved[:, axis] += shift
+    mine = np.abs(moved - found[members]).max()
+    others = np.abs(centres[rest.active_rows] - found[rest.active_rows]).max()
+    if mine + others <= rest.pair_margin:
+        return False
+    for member, at in zip(members.tolist(), moved, strict=True):
+        listed = set(members.tolist())
+        for pair in rest.pair_lists_of[member]:
+            listed.update(rest.pair_ends[pair].tolist())
+        for row in rest.active_rows.tolist():
+            if row in listed:
+                continue
+            reach = rest.halves[member] + rest.halves[row] + rest.gap
+            if (np.abs(centres[row] - at) < reach).all():
+                return True
+    return False
+
+
+def test_unlisted_near_is_its_numpy_definition():
+    """On file 30's page as its full run's snap gets it, the check's pairs found there, then
+    the items moved as the snap moved them (far past the pairs): single rows moved by shifts
+    from nothing to beyond the pairs' margin, on both axes; some of each answer."""
+    from floatpage.physics.snapping import snap_limits
+
+    bodies, page_w, page_h, params = full_run_snap_input(30)
+    _, _, rest = snap_limits(bodies, page_w, page_h, params)
+    snapped = copy.deepcopy(bodies)
+    snap_page(snapped, page_w, page_h, params)
+    rng = np.random.default_rng(30)
+    answers = []
+    for centres in (bodies.centres.copy(), snapped.centres):
+        bodies.centres[:] = centres  # the check reads the centres live
+        for row in rest.active_rows.tolist():
+            members = np.array([row], dtype=np.int64)
+            for axis in (0, 1):
+                for shift in (0.0, *rng.uniform(-30.0, 30.0, 4)):
+                    found = rest.unlisted_near(members, axis, float(shift))
+                    assert found == unlisted_near_numpy(rest, members, axis, float(shift))
+                    answers.append(found)
+    assert any(answers) and not all(answers)
