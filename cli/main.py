@@ -422,20 +422,31 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     from floatpage.model.page_report import (
-        empty_page_notes, page_report, settle_may_help, tiny_items, what_settle_fixes,
+        MAKE_ROOM, empty_page_notes, page_report, settle_may_help, settle_mends, tiny_items,
+        what_settle_fixes,
     )
     from floatpage.model.layout import engine_for_page
 
     print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
     settle_lines: list[str] = []  # the lines that send the user to `settle`
+    stuck: list[str] = []  # pages with problems no settle mends
     for page in project.pages:
         lines, problems = page_report(page, engine_for_page(page, project.physics),
                                       project.physics.gutter_mm)
+        if settle_may_help(lines):
+            with progress_line(not sys.stdout.isatty()) as show:
+                show(f"page {printable(page.id)}: trying whether a settle mends it…")
+                mends = settle_mends(page, project.physics)
+            if not mends:
+                lines, problems = page_report(page, engine_for_page(page, project.physics),
+                                              project.physics.gutter_mm, stuck=True)
         print("\n".join(lines))
         issues += problems
         if settle_may_help(lines):
             settle_lines += lines
+        elif problems:
+            stuck.append(page.id)
     from floatpage.typeset import text_fit_warnings
     from floatpage.typeset.render import (
         document_fits, faint_text_notes, picture_warnings, resolution_notes,
@@ -453,10 +464,12 @@ def cmd_check(args: argparse.Namespace) -> int:
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
-        print(f"{printable(args.path)}: {issues} layout problem(s); " + (
-            f"run `floatpage settle {typed_path(args.path)}` to fix "
-            f"{what_settle_fixes(settle_lines)}" if settle_lines
-            else "no settle fixes them: see the reasons above"))
+        print(f"{printable(args.path)}: {issues} layout problem(s); " + "; ".join(
+            ([f"run `floatpage settle {typed_path(args.path)}` to fix "
+              f"{what_settle_fixes(settle_lines)}"] if settle_lines else [])
+            + ([("no settle fixes them" if not settle_lines else "no settle fixes those on "
+                 + ", ".join(f"page {printable(page_id)}" for page_id in stuck))
+                + f": see the reasons above, or {MAKE_ROOM}"] if stuck else [])))
         return EXIT_USER_ERROR
     return EXIT_OK
 
