@@ -11,6 +11,7 @@ from typing import Any, Callable, Generic, Literal, TypeVar
 
 from textual.app import ComposeResult
 from textual.binding import Binding
+from textual.geometry import Region
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Button, Checkbox, Input, Label, Select, TextArea
 
@@ -99,6 +100,24 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
         first = self.query(".form-fields > Input, .form-fields > TextArea, "
                            ".form-fields > Select, .form-fields > Checkbox").first()
         first.focus()
+        self.call_after_refresh(self._cursor_to_end)
+
+    def _cursor_to_end(self) -> None:
+        """Put each text field's cursor after its words, as a form field opens in every
+        common editor: at their start (Textual's default), "Deine Anna" typed after a card's
+        message landed before it (user-walk-9, user-walk-10).  A line field selects all its
+        text on focus.  Once laid out (the field's wrapping is known only then), with the
+        fields scrolled so the cursor shows: a 20 x 6 form shows one row of its 3."""
+        for area in self.query(TextArea):
+            area.move_cursor(area.document.end)
+        area = self.focused
+        if not isinstance(area, TextArea):
+            return
+        fields = self.query_one(".form-fields", VerticalScroll)
+        cursor, box = area.cursor_screen_offset, fields.content_region
+        fields.scroll_to_region(
+            Region(cursor.x - box.x + int(fields.scroll_x), cursor.y - box.y
+                   + int(fields.scroll_y), 1, 1), animate=False, immediate=True)
 
     def values(self) -> dict[str, Any]:
         """What the fields hold now, as typed."""
