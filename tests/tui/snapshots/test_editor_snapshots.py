@@ -71,9 +71,10 @@ def test_insert_dialog_at_40x12(project_path, snap_compare):
 
 
 def test_edit_form_at_20x6(project_path, snap_compare):
-    """The title's edit form on a 20 x 6 terminal: 'Edit title (text)', the 'Text' label, one
-    two rows, 'Birthday' and 'Anna' with the cursor after its last a (the form opens with the
-    cursor after the words, scrolled to show it; a scroll bar at the right; user-walk-10),
+    """The title's edit form on a 20 x 6 terminal: 'Edit title (text)', then the field's
+    last two rows, 'Birthday' and 'Anna', with the cursor after its last a (the form opens
+    with the cursor after the words, scrolled past the 'Text' label to show it; a scroll bar
+    at the right; user-walk-10),
     'Esc cancels' alone as the hint, and the OK and Cancel buttons on the last row."""
     async def run_before(pilot) -> None:
         pilot.app.editor.selected_id = "title"
