@@ -68,3 +68,21 @@ def test_check_sends_to_settle_only_the_page_a_settle_mends(tmp_path):
     assert "no settle fixes those on page front: see the reasons above" in closing, closing
     front = checked.stdout.split("page inside:")[0]
     assert "floatpage settle" not in front, front
+
+
+def test_new_album_says_a_pdf_among_the_photos_was_left_out(tmp_path):
+    """A logo.pdf in the photos folder: `new album --photos` left it out without a word (a
+    phone's .HEIC got one), and the user looked for it on the page."""
+    from PIL import Image
+
+    photos = tmp_path / "photos"
+    photos.mkdir()
+    Image.new("RGB", (60, 40), (200, 40, 40)).save(photos / "sun.png")
+    Image.new("RGB", (80, 20), (255, 255, 255)).save(photos / "logo.pdf")
+    made = floatpage("new", "album", "album.toml", "--photos", "photos", "-j", "1",
+                     cwd=tmp_path)
+    assert made.returncode == 0, made.stderr
+    assert ("note: photos/logo.pdf was left out: a PDF is no photo for the starter to lay "
+            "out; a logo or a drawing goes in with `p` in the editor") in made.stderr, \
+        made.stderr
+    assert "logo.pdf" not in (tmp_path / "album.toml").read_text()
