@@ -20,6 +20,16 @@ from floatpage.tui.dialogs.base import Dialog, Hint
 FieldKind = Literal["line", "text", "choice", "bool"]
 
 
+class WordsField(TextArea):
+    """A form's text field, whose cursor the form keeps in sight: the words wrap anew when
+    the field is laid out or resized, which moves the cursor's row (on a loaded machine after
+    the form had scrolled to it, so a 20 x 6 form showed the rows above it)."""
+
+    def on_resize(self) -> None:  # after TextArea's own _on_resize has wrapped the words
+        if self.has_focus and isinstance(self.screen, FormDialog):
+            self.screen.show_cursor()
+
+
 @dataclass(frozen=True)
 class Field:
     """One form field: a line of text, several lines, a choice or a yes/no."""
@@ -88,8 +98,8 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
         if field.kind == "line":
             yield Input(str(field.value), id=widget_id, compact=True)
         elif field.kind == "text":
-            yield TextArea(str(field.value), id=widget_id, tab_behavior="focus",
-                           classes="field-text")
+            yield WordsField(str(field.value), id=widget_id, tab_behavior="focus",
+                             classes="field-text")
         else:
             yield Select(list(field.choices), value=field.value, allow_blank=False, id=widget_id,
                          compact=True)
@@ -110,14 +120,20 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
         fields scrolled so the cursor shows: a 20 x 6 form shows one row of its 3."""
         for area in self.query(TextArea):
             area.move_cursor(area.document.end)
+        self.show_cursor()
+
+    def show_cursor(self) -> None:
+        """Scroll the fields so that the focused text field's cursor shows."""
         area = self.focused
         if not isinstance(area, TextArea):
             return
         fields = self.query_one(".form-fields", VerticalScroll)
-        cursor, box = area.cursor_screen_offset, fields.content_region
-        fields.scroll_to_region(
-            Region(cursor.x - box.x + int(fields.scroll_x), cursor.y - box.y
-                   + int(fields.scroll_y), 1, 1), animate=False, immediate=True)
+        # where the cursor is in the fields' scrolled space, from the field's place in it and
+        # the cursor's wrapped row (the screen offsets lag a scroll just asked for)
+        row = area.wrapped_document.location_to_offset(area.cursor_location).y
+        top = area.virtual_region.y + area.content_region.y - area.region.y
+        fields.scroll_to_region(Region(0, top + row - int(area.scroll_y), 1, 1),
+                                animate=False, immediate=True)
 
     def values(self) -> dict[str, Any]:
         """What the fields hold now, as typed."""
