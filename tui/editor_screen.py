@@ -880,7 +880,9 @@ class EditorScreen(Screen):
         offered; "Every page" is highlighted where every page now has this one's size."""
         session = self.session
         pages, page = session.project.pages, session.page
-        if len(pages) == 1:
+        others = {index for index, *_ in session.size_changes(
+            size, orientation, width_mm, height_mm, every_page=True)} - {session.page_index}
+        if not others:  # one page, or the others have the size already: nothing to ask
             self.attempt(session.set_page_size, size, orientation, width_mm, height_mm)
             return
         alike = all((other.width_mm, other.height_mm) == (page.width_mm, page.height_mm)

@@ -876,18 +876,8 @@ class EditSession:
         a named size; one undo step, and room is searched for on each page changed.
         """
         pages = self.project.pages
-        changes = []  # (index, size, orientation, width, height)
-        for index in (range(len(pages)) if every_page else [self.page_index]):
-            page = pages[index]
-            own = orientation if index == self.page_index or size == "custom" \
-                else page.orientation
-            width, height = page_dimensions(size, own, width_mm or page.width_mm,
-                                            height_mm or page.height_mm)
-            if size == "custom":
-                own = "landscape" if width > height else "portrait"
-            if (size, own, width, height) != (page.size, page.orientation, page.width_mm,
-                                              page.height_mm):
-                changes.append((index, own, width, height))
+        changes = self.size_changes(size, orientation, width_mm, height_mm,
+                                    every_page=every_page)
         if not changes:
             return
         self.checkpoint(label)
@@ -912,6 +902,25 @@ class EditSession:
                 self.status_note)))
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
+
+    def size_changes(self, size: str, orientation: str, width_mm: float | None = None,
+                     height_mm: float | None = None, *, every_page: bool = False
+                     ) -> list[tuple[int, str, float, float]]:
+        """(index, orientation, width, height) of each page the size would change: the page on
+        screen, or every page (each in its own orientation, for a named size)."""
+        pages, changes = self.project.pages, []
+        for index in (range(len(pages)) if every_page else [self.page_index]):
+            page = pages[index]
+            own = orientation if index == self.page_index or size == "custom" \
+                else page.orientation
+            width, height = page_dimensions(size, own, width_mm or page.width_mm,
+                                            height_mm or page.height_mm)
+            if size == "custom":
+                own = "landscape" if width > height else "portrait"
+            if (size, own, width, height) != (page.size, page.orientation, page.width_mm,
+                                              page.height_mm):
+                changes.append((index, own, width, height))
+        return changes
 
     def margin_keepers(self) -> frozenset[str]:
         """The ids of the page's items that keep their print-safe margin now."""

@@ -88,3 +88,13 @@ async def test_this_page_only_keeps_the_others_and_is_offered_first_where_sizes_
         await pilot.press("escape")
         await pilot.pause()
         assert sizes(app.session.project) == [("A6", 105.0, 148.0), ("A5", 148.0, 210.0)]
+
+
+async def test_the_size_every_page_has_already_asks_nothing(project_path):
+    """Enter on the size the pages already have (the list opens on it) asked "Every page or
+    this page only?" of a change that changed nothing; it asks nothing now, and nothing
+    changes (no undo step, nothing unsaved)."""
+    async with editor(project_path) as (app, pilot):
+        await choose_size(app, pilot, "A5")
+        assert app.screen is app.editor
+        assert not app.session.unsaved and not app.session.history.undo_stack
