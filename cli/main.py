@@ -318,8 +318,8 @@ def cmd_render(args: argparse.Namespace) -> int:
                             progress=show,
                             print_bleed_mm=(3.0 if args.bleed is None else args.bleed)
                             if args.print else None)
-    for warning in report.warnings + (unsettled_warnings(project, args.path)
-                                      if args.no_settle else []):
+    for warning in report.warnings + unsettled_warnings(project, args.path,
+                                                        settled=not args.no_settle):
         print(f"warning: {printable(warning)}", file=sys.stderr)
     from floatpage.model.page_report import empty_page_notes
     from floatpage.typeset.render import resolution_notes
@@ -330,10 +330,13 @@ def cmd_render(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def unsettled_warnings(project, path: str) -> list[str]:
+def unsettled_warnings(project, path: str, *, settled: bool = False) -> list[str]:
     """What `render --no-settle` printed that a settle may have mended: overlapping items and
     items past the page's edge went into the PDF without a word.  Check, not settle, is named:
-    on a page too full for its items no settle mends them, and check says so."""
+    on a page too full for its items no settle mends them, and check says so.  ``settled``:
+    what the settle before the PDF left (a card's size typed down to A6 printed its greeting
+    past the page and its inside's words cut at the edge, and render said only "wrote
+    card.pdf", user-walk-10)."""
     from floatpage.model.layout import engine_for_page
 
     warnings = []
@@ -348,10 +351,15 @@ def unsettled_warnings(project, path: str) -> list[str]:
                  for a, b in quality.overlapping_pairs[:3]]
         named += [f'"{printable(ids[k].id)}"' for k in quality.off_page[:3]]
         more = ", …" if quality.overlap_count + len(quality.off_page) > len(named) else ""
-        warnings.append(f'page "{printable(page.id)}" was printed as saved (--no-settle) with '
+        warnings.append(f'page "{printable(page.id)}" was printed '
+                        + ("" if settled else "as saved (--no-settle) ") + "with "
                         f"{' and '.join(part for part in found if part)} "
-                        f"({', '.join(named)}{more}); `floatpage check {typed_path(path)}` "
-                        "says why and what to do (most often: settle first)")
+                        f"({', '.join(named)}{more})"
+                        + (", which a settle leaves there" if settled else "")
+                        + f"; `floatpage check {typed_path(path)}` says why and what to do"
+                        + (" (most often the page is too full: make items smaller, choose a "
+                           "larger page size, or move some to another page)" if settled
+                           else " (most often: settle first)"))
     return warnings
 
 

@@ -86,3 +86,30 @@ def test_new_album_says_a_pdf_among_the_photos_was_left_out(tmp_path):
             "out; a logo or a drawing goes in with `p` in the editor") in made.stderr, \
         made.stderr
     assert "logo.pdf" not in (tmp_path / "album.toml").read_text()
+
+
+def test_render_warns_of_items_a_settle_leaves_past_the_edge(tmp_path):
+    """The card typed down to A6: `render` settled it and printed the front's greeting past
+    the page and the inside's words cut at its edge (read back from the PDF), and said only
+    "wrote card.pdf".  It warns now, per page, naming the items; a card that fits gets no
+    warning."""
+    import pdfplumber
+
+    path = card_typed_down_to_a6(tmp_path / "card", pages=2)
+    rendered = floatpage("render", "card.toml", "-o", "card.pdf", cwd=path.parent)
+    assert rendered.returncode == 0, rendered.stderr
+    with pdfplumber.open(path.parent / "card.pdf") as pdf:
+        inside = pdf.pages[1]
+        cut = [char for char in inside.chars if char["x1"] > inside.width]
+    assert cut, "the inside's words reach past the page's edge in the PDF"
+    warnings = [line for line in rendered.stderr.splitlines() if line.startswith("warning:")]
+    assert len(warnings) == 2, rendered.stderr
+    assert warnings[0].startswith('warning: page "front" was printed with 3 item(s) past its '
+                                  'edge ("front-band", "front-picture", "front-greeting"), '
+                                  "which a settle leaves there; `floatpage check card.toml`")
+    assert "choose a larger page size" in warnings[1]
+    fits = tmp_path / "fits"
+    fits.mkdir()
+    assert floatpage("new", "card", "card.toml", cwd=fits).returncode == 0
+    clean = floatpage("render", "card.toml", "-o", "card.pdf", cwd=fits)
+    assert clean.returncode == 0 and "warning" not in clean.stderr, clean.stderr
