@@ -25,9 +25,11 @@ class WordsField(TextArea):
     the field is laid out or resized, which moves the cursor's row (on a loaded machine after
     the form had scrolled to it, so a 20 x 6 form showed the rows above it)."""
 
-    def on_resize(self) -> None:  # after TextArea's own _on_resize has wrapped the words
-        if self.has_focus and isinstance(self.screen, FormDialog):
-            self.screen.show_cursor()
+    def on_resize(self) -> None:
+        # runs before TextArea's own _on_resize (this class comes first in the MRO), which
+        # wraps the words anew: the cursor's row is known once it has run
+        if isinstance(self.screen, FormDialog):
+            self.call_later(self.screen.show_cursor)
 
 
 @dataclass(frozen=True)
@@ -107,10 +109,12 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
     def on_mount(self) -> None:
         for widget in self.query("Input, TextArea"):
             widget.cursor_blink = getattr(self.app, "cursor_blink", True)
-        first = self.query(".form-fields > Input, .form-fields > TextArea, "
-                           ".form-fields > Select, .form-fields > Checkbox").first()
-        first.focus()
+        self.first_field().focus()
         self.call_after_refresh(self._cursor_to_end)
+
+    def first_field(self):
+        return self.query(".form-fields > Input, .form-fields > TextArea, "
+                          ".form-fields > Select, .form-fields > Checkbox").first()
 
     def _cursor_to_end(self) -> None:
         """Put each text field's cursor after its words, as a form field opens in every
@@ -123,8 +127,9 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
         self.show_cursor()
 
     def show_cursor(self) -> None:
-        """Scroll the fields so that the focused text field's cursor shows."""
-        area = self.focused
+        """Scroll the fields so that the focused text field's cursor shows (or the first
+        field's, while the focus given it on mount is still on its way)."""
+        area = self.focused or self.first_field()
         if not isinstance(area, TextArea):
             return
         fields = self.query_one(".form-fields", VerticalScroll)

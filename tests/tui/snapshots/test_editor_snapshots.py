@@ -81,6 +81,10 @@ def test_edit_form_at_20x6(project_path, snap_compare):
         await pilot.pause()
         await pilot.press("enter")
         await pilot.pause()
+        for _ in range(30):  # the form scrolls to the cursor once its words are wrapped
+            if pilot.app.screen.query_one(".form-fields").scroll_y > 0:
+                break
+            await pilot.pause(0.1)
 
     assert snap_compare(frozen_app(project_path), run_before=run_before, terminal_size=(20, 6))
 
