@@ -650,8 +650,9 @@ class EditSession:
         self.rebuild_engine(sync=False)
         return w, h
 
-    def update_item(self, item_id: str, changes: dict) -> None:
-        """Set fields of an item (text, font, colour, decorative, anchor gamma...) in one edit."""
+    def update_item(self, item_id: str, changes: dict, *, label: str | None = None) -> None:
+        """Set fields of an item (text, font, colour, decorative, anchor gamma...) in one edit,
+        undone as ``label`` ("edit ITEM" unless given)."""
         item = self.page.item(item_id)
         gamma = changes.pop("gamma", None)
         changes = {key: value for key, value in changes.items() if getattr(item, key) != value}
@@ -660,7 +661,7 @@ class EditSession:
         if not changes and not gamma_changes:
             return
         self.refuse_bad_group_or_region(item, changes)
-        self.checkpoint(f"edit {item_id}")
+        self.checkpoint(label or f"edit {item_id}")
         if "path" in changes and isinstance(item, PictureItem) \
                 and changes.get("lock_aspect", item.lock_aspect):
             aspect = picture_aspect(self.project.base_dir / changes["path"])
@@ -712,7 +713,8 @@ class EditSession:
         group = group.strip()
         if group == item.group:
             return f'"{item.id}" is already ' + (f'in group "{group}"' if group else "in no group")
-        self.update_item(item.id, {"group": group})
+        # undone as "group ITEM": "undid edit picture-1" did not say which edit (user-walk-10)
+        self.update_item(item.id, {"group": group}, label=f"group {item.id}")
         return (f'"{item.id}" joined group "{group}": its members move as one' if group
                 else f'"{item.id}" left its group')
 

@@ -98,3 +98,25 @@ async def test_the_size_every_page_has_already_asks_nothing(project_path):
         await choose_size(app, pilot, "A5")
         assert app.screen is app.editor
         assert not app.session.unsaved and not app.session.history.undo_stack
+
+
+async def test_undoing_a_group_says_it_was_the_group(project_path):
+    """`G` put a picture in a group, and Ctrl+Z said "undid edit photo": which edit, the
+    user could not tell.  It says "undid group photo", and Ctrl+Y "redid group photo"."""
+    async with editor(project_path) as (app, pilot):
+        app.editor.selected_id = "photo"
+        await pilot.pause()
+        await pilot.press("G")
+        await pilot.pause()
+        await type_text(pilot, "pics")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert item(app, "photo").group == "pics"
+        await pilot.press("ctrl+z")
+        await pilot.pause()
+        assert item(app, "photo").group == ""
+        notes = [note.message for note in app._notifications]
+        assert notes[-1] == "undid group photo", notes
+        await pilot.press("ctrl+y")
+        await pilot.pause()
+        assert [note.message for note in app._notifications][-1] == "redid group photo"
