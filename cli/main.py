@@ -318,8 +318,8 @@ def cmd_render(args: argparse.Namespace) -> int:
                             progress=show,
                             print_bleed_mm=(3.0 if args.bleed is None else args.bleed)
                             if args.print else None)
-    for warning in report.warnings + (unsettled_warnings(project, args.path)
-                                      if args.no_settle else []):
+    for warning in report.warnings + unsettled_warnings(project, args.path,
+                                                        settled=not args.no_settle):
         print(f"warning: {printable(warning)}", file=sys.stderr)
     from floatpage.model.page_report import empty_page_notes
     from floatpage.typeset.render import resolution_notes
@@ -330,10 +330,13 @@ def cmd_render(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def unsettled_warnings(project, path: str) -> list[str]:
+def unsettled_warnings(project, path: str, *, settled: bool = False) -> list[str]:
     """What `render --no-settle` printed that a settle may have mended: overlapping items and
     items past the page's edge went into the PDF without a word.  Check, not settle, is named:
-    on a page too full for its items no settle mends them, and check says so."""
+    on a page too full for its items no settle mends them, and check says so.  ``settled``:
+    what the settle before the PDF left (a card's size typed down to A6 printed its greeting
+    past the page and its inside's words cut at the edge, and render said only "wrote
+    card.pdf", user-walk-10)."""
     from floatpage.model.layout import engine_for_page
 
     warnings = []
@@ -348,10 +351,15 @@ def unsettled_warnings(project, path: str) -> list[str]:
                  for a, b in quality.overlapping_pairs[:3]]
         named += [f'"{printable(ids[k].id)}"' for k in quality.off_page[:3]]
         more = ", …" if quality.overlap_count + len(quality.off_page) > len(named) else ""
-        warnings.append(f'page "{printable(page.id)}" was printed as saved (--no-settle) with '
+        warnings.append(f'page "{printable(page.id)}" was printed '
+                        + ("" if settled else "as saved (--no-settle) ") + "with "
                         f"{' and '.join(part for part in found if part)} "
-                        f"({', '.join(named)}{more}); `floatpage check {typed_path(path)}` "
-                        "says why and what to do (most often: settle first)")
+                        f"({', '.join(named)}{more})"
+                        + (", which a settle leaves there" if settled else "")
+                        + f"; `floatpage check {typed_path(path)}` says why and what to do"
+                        + (" (most often the page is too full: make items smaller, choose a "
+                           "larger page size, or move some to another page)" if settled
+                           else " (most often: settle first)"))
     return warnings
 
 
@@ -422,20 +430,31 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     project = load_project(args.path, allow_outside_files=args.allow_outside_files)
     from floatpage.model.page_report import (
-        empty_page_notes, page_report, settle_may_help, tiny_items, what_settle_fixes,
+        MAKE_ROOM, empty_page_notes, page_report, settle_may_help, settle_mends, tiny_items,
+        what_settle_fixes,
     )
     from floatpage.model.layout import engine_for_page
 
     print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
     settle_lines: list[str] = []  # the lines that send the user to `settle`
+    stuck: list[str] = []  # pages with problems no settle mends
     for page in project.pages:
         lines, problems = page_report(page, engine_for_page(page, project.physics),
                                       project.physics.gutter_mm)
+        if settle_may_help(lines):
+            with progress_line(not sys.stdout.isatty()) as show:
+                show(f"page {printable(page.id)}: trying whether a settle mends it…")
+                mends = settle_mends(page, project.physics)
+            if not mends:
+                lines, problems = page_report(page, engine_for_page(page, project.physics),
+                                              project.physics.gutter_mm, stuck=True)
         print("\n".join(lines))
         issues += problems
         if settle_may_help(lines):
             settle_lines += lines
+        elif problems:
+            stuck.append(page.id)
     from floatpage.typeset import text_fit_warnings
     from floatpage.typeset.render import (
         document_fits, faint_text_notes, picture_warnings, resolution_notes,
@@ -453,10 +472,12 @@ def cmd_check(args: argparse.Namespace) -> int:
     for where, picture in pictures_outside(project):
         print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
-        print(f"{printable(args.path)}: {issues} layout problem(s); " + (
-            f"run `floatpage settle {typed_path(args.path)}` to fix "
-            f"{what_settle_fixes(settle_lines)}" if settle_lines
-            else "no settle fixes them: see the reasons above"))
+        print(f"{printable(args.path)}: {issues} layout problem(s); " + "; ".join(
+            ([f"run `floatpage settle {typed_path(args.path)}` to fix "
+              f"{what_settle_fixes(settle_lines)}"] if settle_lines else [])
+            + ([("no settle fixes them" if not settle_lines else "no settle fixes those on "
+                 + ", ".join(f"page {printable(page_id)}" for page_id in stuck))
+                + f": see the reasons above, or {MAKE_ROOM}"] if stuck else [])))
         return EXIT_USER_ERROR
     return EXIT_OK
 

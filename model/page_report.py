@@ -23,6 +23,9 @@ from floatpage.physics.quality import GAP_TOLERANCE_MM
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
 SETTLE = "run `floatpage settle`"  # the advice for a miss a settle may fix (and only for one)
+# what helps a page a settle cannot mend (page_reasons' ``stuck``, and check's closing line)
+MAKE_ROOM = ("make room: make items smaller, choose a larger page size (S in the editor), or "
+             "move some items to another page")
 
 
 TINY_MM = 1.0  # a side shorter than this: a box no one sees, nor prints legibly
@@ -60,20 +63,44 @@ def empty_page_notes(project) -> list[str]:
     return notes
 
 
-def page_report(page, engine, gutter_mm: float) -> tuple[list[str], int]:
+def page_report(page, engine, gutter_mm: float, *, stuck: bool = False
+                ) -> tuple[list[str], int]:
     """The lines `check` prints for ``page`` (settled or not, as it lies in the file) and the
     number of layout problems it counts for ``--strict``.  Only the misses no reason explains
-    carry the advice SETTLE (``settle_may_help``)."""
-    lines, problems, _ = page_reasons(page, engine, gutter_mm)
+    carry the advice SETTLE (``settle_may_help``), and only where a settle mends some of
+    them: ``stuck`` (``settle_mends`` found it does not) gives what helps instead."""
+    lines, problems, _ = page_reasons(page, engine, gutter_mm, stuck=stuck)
     return lines, problems
 
 
-def page_reasons(page, engine, gutter_mm: float) -> tuple[list[str], int, str]:
+def settle_mends(page, physics) -> bool:
+    """Whether a settle of ``page`` (on a copy: the page is left as it is) leaves fewer of the
+    problems `check` counts.  A page a settle leaves as it is (a card's size typed down to A6,
+    settled: items off it), or moves without mending (too full), was sent back to `settle` by
+    every line and by `check --strict`'s closing line, and settle then said "another settle
+    changes nothing" (user-walk-9, user-walk-10).  As costly as a settle of the page; `check`
+    asks only of a page whose lines would send the user to settle."""
+    from floatpage.model.errors import FloatpageError
+    from floatpage.model.layout import copy_of, engine_for_page, settle_page
+
+    before = page_report(page, engine_for_page(page, physics), physics.gutter_mm)[1]
+    trial = copy_of(page)
+    try:
+        settle_page(trial, physics)
+    except FloatpageError:  # settle refuses the page (items piled up): it says why itself
+        return True
+    after = page_report(trial, engine_for_page(trial, physics), physics.gutter_mm)[1]
+    return after < before
+
+
+def page_reasons(page, engine, gutter_mm: float, *, stuck: bool = False
+                 ) -> tuple[list[str], int, str]:
     """``page_report``'s lines and count, and the same reason in a few words for the
     editor's status line: which guarantee gave way (the gutter, then the margin, then
     overlap) and why, e.g. "gutter 1.2 of 3 mm: page too full (94 % of the room)".  The
     editor said "some gaps narrow" and left the why to `check` (user-walk-6).  Empty
-    when nothing gave way."""
+    when nothing gave way.  ``stuck``: a settle mends none of it (``settle_mends``), so no
+    line sends the user to settle; each says what helps instead."""
     quality = engine.quality()
     if not page.items:  # no measure means anything here: "even 1.00 · balance 1.00" of nothing
         return [f"page {page.id}: no items"], 0, ""
@@ -98,14 +125,17 @@ def page_reasons(page, engine, gutter_mm: float) -> tuple[list[str], int, str]:
         if k in oversized:  # named below, with what to do: settle cannot
             continue
         lines.append(f'  item "{printable(item.id)}" is not wholly inside its region '
-                     f'"{printable(item.region)}": {SETTLE}, or make the region larger')
+                     f'"{printable(item.region)}": '
+                     + ("a settle leaves it there: make the region larger, or the item "
+                        "smaller, or move the items in its way" if stuck
+                        else f"{SETTLE}, or make the region larger"))
     if quality.in_margin:
         shown = _some([name(k) for k in quality.in_margin[:SHOWN]], len(quality.in_margin))
         lines.append(f"  {len(quality.in_margin)} item(s) inside the {quality.margin_mm:.1f} mm "
                      f"print-safe margin: {shown}; where a page is too full the gutter gives "
                      "way first, then the margin: "
-                     + ("" if binding(limits) or engine.grown_cover() > GUTTER_FITS_COVER
-                        else f"{SETTLE}, ")
+                     + ("" if stuck or binding(limits)
+                        or engine.grown_cover() > GUTTER_FITS_COVER else f"{SETTLE}, ")
                      + "make items smaller, mark items that may touch the edge `bleed = true`, "
                      "or lower margin_mm in [physics]")
     lines += _explain(limits, name, gutter_mm, engine.margin_mm, page)
@@ -114,8 +144,9 @@ def page_reasons(page, engine, gutter_mm: float) -> tuple[list[str], int, str]:
     off = [k for k in quality.off_page if k not in named]
     if off:  # every item off the page is named, by a limit or here: never a bare count
         lines.append(f"  {len(off)} item(s) reach past the page's edge: "
-                     f"{_some([name(k) for k in off[:SHOWN]], len(off))}; {SETTLE}, or move "
-                     "them onto the page")
+                     f"{_some([name(k) for k in off[:SHOWN]], len(off))}; "
+                     + (f"a settle leaves them there: move them (or their anchors) onto the "
+                        f"page, or {MAKE_ROOM}" if stuck else f"{SETTLE}, or move them onto the page"))
     loose = unexplained_pairs(bodies, limits, gutter_mm) if not quality.ok else []
     overlapping = [(a, b) for a, b, gap in loose if gap < 0]
     if overlapping:
@@ -130,9 +161,12 @@ def page_reasons(page, engine, gutter_mm: float) -> tuple[list[str], int, str]:
                 "seldom pack tighter than; make items smaller, or move some to another page")
         else:
             why = why or "anchors box them in, or r (reheat) parts them"
-            lines.append(f"  overlapping: {pairs}; {SETTLE}; if they still "
-                         "overlap after it, hard anchors or anchored groups box them in: move "
-                         "an anchor, make items smaller, or move some to another page")
+            lines.append(f"  overlapping: {pairs}; " + (
+                "a settle leaves them overlapping, so hard anchors or anchored groups box "
+                "them in: move an anchor, or " + MAKE_ROOM if stuck else
+                f"{SETTLE}; if they still overlap after it, hard anchors or anchored groups "
+                "box them in: move an anchor, make items smaller, or move some to another "
+                "page"))
     elif loose:
         need, room = _tightest_room(page, engine, gutter_mm)
         if need > GUTTER_FITS_COVER:
@@ -147,10 +181,13 @@ def page_reasons(page, engine, gutter_mm: float) -> tuple[list[str], int, str]:
             why = why or "it fits: r (reheat) may mend it"
             lines.append(
                 f"  the {gutter_mm:g} mm gutter fits on page {page.id} (its items grown by it "
-                f"need {need:.0%} of {room}) but is not kept: {SETTLE}; "
-                f"if a settled page still misses it, its anchors or the "
-                f"order its items lie in jam it: move an anchored item or nudge items apart, "
-                f"and settle again")
+                f"need {need:.0%} of {room}) but is not kept" + (
+                    ", and a settle does not mend it: its anchors or the order its items lie "
+                    "in jam it: move an anchored item or nudge items apart, then settle "
+                    "again" if stuck else
+                    f": {SETTLE}; if a settled page still misses it, its anchors or the "
+                    f"order its items lie in jam it: move an anchored item or nudge items "
+                    f"apart, and settle again"))
             problems += 1
     return lines, problems, _short(quality, why or "r (reheat) may mend it")
 

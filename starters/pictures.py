@@ -130,6 +130,10 @@ def left_out_photos(folder: Path) -> list[tuple[Path, str]]:
                                "to lay out (crop it)"))
         elif suffix in OTHER_PICTURE_SUFFIXES:
             left.append((path, f"floatpage reads {accepted_formats()}; convert it to JPG or PNG"))
+        elif suffix == ".pdf":  # a logo among the photos was left out without a word
+            left.append((path, "a PDF is no photo for the starter to lay out; a logo or a "
+                               "drawing goes in with `p` in the editor (or as a picture's "
+                               "path), drawn at its own shape"))
     return left
 
 

@@ -512,10 +512,12 @@ class EditorScreen(Screen):
         note, self.session.status_note = self.session.status_note, None
         if note is not None or not keep_note:
             self.note = note or ""
-        request, self.session.room_wanted = self.session.room_wanted, None
-        if request is not None:  # an insert or a page change: room is found off this thread
-            self.room_searches += 1
-            self.room_worker(request, copy_of(self.session.page))
+        requests, self.session.room_wanted = self.session.room_wanted, []
+        if requests:  # an insert or a page change: room is found off this thread
+            self.room_searches += len(requests)
+            pages = self.session.project.pages
+            self.room_worker([(request, copy_of(pages[request.page_index]))
+                              for request in requests])
         if self.running and not self.session.engine.settled and not self.pacer.may_draw():
             self.wake()
             return
@@ -540,20 +542,30 @@ class EditorScreen(Screen):
         return True
 
     @work(thread=True, group="room")
-    def room_worker(self, request, page) -> None:
-        """`EditSession.room_scale` on a copy of the page, in a thread (see `want_room`)."""
-        scale = 1.0
-        try:
-            scale = self.session.room_scale(page, request)
-        finally:
-            self.app.call_from_thread(self.adopt_room, request, scale)
+    def room_worker(self, requests) -> None:
+        """`EditSession.room_scale` on a copy of each page, in a thread (see `want_room`):
+        one page after another (`S` on every page of a calendar asks for 12), the page on
+        screen first."""
+        current = self.session.page_index
+        for request, page in sorted(requests, key=lambda pair: pair[0].page_index != current):
+            scale = 1.0
+            try:
+                scale = self.session.room_scale(page, request)
+            finally:
+                self.app.call_from_thread(self.adopt_room, request, scale)
 
     def adopt_room(self, request, scale: float) -> None:
         self.room_searches -= 1
+        on_screen = request.page_index == self.session.page_index
         if self.session.make_room(request, scale):
-            self.notify(f"made {1 - scale:.0%} smaller so that everything fits the page "
+            page = self.session.project.pages[request.page_index]
+            where = "the page" if on_screen else f"page {page.id}"
+            self.notify(f"made {1 - scale:.0%} smaller so that everything fits {where} "
                         "without overlap (Ctrl+Z undoes it)", timeout=4)
-            self.after_edit(keep_note=True)
+            if on_screen:
+                self.after_edit(keep_note=True)
+            else:
+                self.redraw()
         else:
             self.redraw()
 
@@ -849,7 +861,7 @@ class EditorScreen(Screen):
     def choose_page_size(self, size: str) -> None:
         page = self.session.page
         if size != "custom":
-            self.attempt(self.session.set_page_size, size, page.orientation)
+            self.ask_which_pages(size, page.orientation)
             return
         self.ask(FormDialog("Custom page size", item_forms.custom_size_fields(page.width_mm,
                                                                              page.height_mm),
@@ -857,8 +869,37 @@ class EditorScreen(Screen):
                  self.set_custom_size)
 
     def set_custom_size(self, size: dict) -> None:
-        self.attempt(self.session.set_page_size, "custom", self.session.page.orientation,
-                     size["width_mm"], size["height_mm"])
+        self.ask_which_pages("custom", self.session.page.orientation, size["width_mm"],
+                             size["height_mm"])
+
+    def ask_which_pages(self, size: str, orientation: str, width_mm: float | None = None,
+                        height_mm: float | None = None) -> None:
+        """In a project of several pages, ask whether the size is for every page or this one:
+        `S` resized only the page on screen, and a calendar or an album made A5 kept eleven
+        A4 pages (user-walk-9).  A card's inside may differ from its front, so both are
+        offered; "Every page" is highlighted where every page now has this one's size."""
+        session = self.session
+        pages, page = session.project.pages, session.page
+        others = {index for index, *_ in session.size_changes(
+            size, orientation, width_mm, height_mm, every_page=True)} - {session.page_index}
+        if not others:  # one page, or the others have the size already: nothing to ask
+            self.attempt(session.set_page_size, size, orientation, width_mm, height_mm)
+            return
+        alike = all((other.width_mm, other.height_mm) == (page.width_mm, page.height_mm)
+                    for other in pages)
+        named = f"{width_mm:g} × {height_mm:g} mm" if size == "custom" else size
+        self.ask(ChoiceDialog(
+            f"Page size {named}", [(f"Every page ({len(pages)})", True),
+                                   (f"This page only ({page.id})", False)],
+            message="Each page keeps its own orientation." if size != "custom" else "",
+            highlighted=alike, dialog_id="which-pages-dialog"),
+            lambda every: self.attempt(self.resize_pages, size, orientation, width_mm,
+                                       height_mm, every))
+
+    def resize_pages(self, size: str, orientation: str, width_mm: float | None,
+                     height_mm: float | None, every_page: bool) -> None:
+        self.session.set_page_size(size, orientation, width_mm, height_mm,
+                                   every_page=every_page)
 
     def action_toggle_orientation(self) -> None:
         self.attempt(self.session.toggle_orientation)

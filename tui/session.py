@@ -31,6 +31,9 @@ from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
 from floatpage.tui.history import History, Snapshot
+from floatpage.tui.page_resize import (  # noqa: F401  (keep_inside_margin: its old home)
+    keep_inside_margin, keepers_of, resize_page, scale_follow_offsets, size_words,
+)
 from floatpage.tui.reading_order import reading_order, step_through
 
 MIN_SIDE_MM = 3.0
@@ -129,66 +132,6 @@ def layout_of(page: Page) -> dict[str, tuple[float, float]]:
     return {item.id: (item.x, item.y) for item in page.items}
 
 
-def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float) -> None:
-    """Move the item, and its point anchor, just far enough that the item keeps the print-safe
-    margin where it fits inside it (centred where it does not). Scaled with a turned page, a
-    footer hard-anchored 5 mm above the bottom of an A4 flyer ended 2.9 mm above it, and no
-    settle could move it (issue 16)."""
-    def kept(centre: float, size: float, page: float) -> float:
-        low, high = margin_mm + size / 2, page - margin_mm - size / 2
-        return page / 2 if low > high else min(max(centre, low), high)
-
-    item.x, item.y = kept(item.x, item.w, width_mm), kept(item.y, item.h, height_mm)
-    if isinstance(item.anchor, PointAnchor):
-        item.anchor.x = kept(item.anchor.x, item.w, width_mm)
-        item.anchor.y = kept(item.anchor.y, item.h, height_mm)
-
-
-def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], sx: float,
-                         sy: float) -> None:
-    """Scale each follower's offset from its target with a new page size, as positions scale,
-    and put it there; the members of a group keep to their lead the same way.  Left as it was,
-    a follower 160 mm below its target on A4 stood past the bottom of an A6 page, and the
-    saved offsets no longer matched the saved positions; a group's members, their centres
-    scaled but not their sizes, came to overlap one another for good.  Item sizes do not
-    scale, so on an axis where two stand apart the space between their edges scales (a caption
-    2.5 mm below its photo keeps clear of it); where they overlap on an axis (a caption centred
-    under its photo, a label on a picture), the centres' offset scales.  Positions are set
-    target first, down each chain.  Called with positions already scaled by (sx, sy)."""
-    by_id = {item.id: item for item in page.items}
-    leads = {item.group: page.group_lead(item.group) for item in page.items if item.group}
-    done: set[str] = set()
-
-    def scaled(offset: float, scale: float, axis: int, item, target) -> float:
-        old_half = (old_sizes[item.id][axis] + old_sizes[target.id][axis]) / 2
-        new_half = ((item.w, item.h)[axis] + (target.w, target.h)[axis]) / 2
-        gap = abs(offset) - old_half
-        size = new_half + gap * scale if gap >= 0 else abs(offset) * scale
-        return round(size if offset >= 0 else -size, 2) + 0.0
-
-    def place(item) -> None:
-        if item.id in done:
-            return
-        done.add(item.id)
-        anchor = item.anchor
-        if isinstance(anchor, ItemAnchor) and anchor.to in by_id:
-            target = by_id[anchor.to]
-            place(target)
-            anchor.dx = scaled(anchor.dx, sx, 0, item, target)
-            anchor.dy = scaled(anchor.dy, sy, 1, item, target)
-            item.x, item.y = target.x + anchor.dx, target.y + anchor.dy
-        elif item.group and leads.get(item.group) is not None \
-                and leads[item.group] is not item and not isinstance(anchor, ItemAnchor):
-            lead = leads[item.group]
-            dx, dy = (item.x - lead.x) / sx, (item.y - lead.y) / sy  # as it was
-            place(lead)
-            item.x = lead.x + scaled(dx, sx, 0, item, lead)
-            item.y = lead.y + scaled(dy, sy, 1, item, lead)
-
-    for item in page.items:
-        place(item)
-
-
 def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
     """Shrink the page's items of ``ids`` (all that take part, if None) by ``scale`` to make
     room; a follower shrunk with its target, or a member with its group's lead, comes closer
@@ -255,7 +198,7 @@ class EditSession:
         self._versions = itertools.count(1)
         self.held_id: str | None = None
         self.status_note: str | None = None  # what a release or a page size did, in words
-        self.room_wanted: RoomRequest | None = None  # see want_room
+        self.room_wanted: list[RoomRequest] = []  # see want_room
         self.engine: Engine = self._build_engine()
 
     # -- what is on screen ---------------------------------------------------------------
@@ -455,13 +398,15 @@ class EditSession:
         return item.id
 
     def want_room(self, ids: frozenset[str] | None = None,
-                  margin_kept: frozenset[str] = frozenset()) -> None:
+                  margin_kept: frozenset[str] = frozenset(),
+                  page_index: int | None = None) -> None:
         """Ask for room for the items ``ids`` (all that take part, if None) after an insert or
-        a page change: the caller runs ``room_scale`` on a copy of the page, off the UI
-        thread, and hands the answer to ``make_room`` (issue 11: a fair start).  Run in the
-        key's answer, it froze the editor for 0.8-2.3 s on an insert and 2.6-5.6 s on `o`
-        (the calendar, load 7)."""
-        self.room_wanted = RoomRequest(self.version, self.page_index, ids, margin_kept)
+        a page change (of the page on screen, or of ``page_index``): the caller runs
+        ``room_scale`` on a copy of the page, off the UI thread, and hands the answer to
+        ``make_room`` (issue 11: a fair start).  Run in the key's answer, it froze the editor
+        for 0.8-2.3 s on an insert and 2.6-5.6 s on `o` (the calendar, load 7)."""
+        index = self.page_index if page_index is None else page_index
+        self.room_wanted.append(RoomRequest(self.version, index, ids, margin_kept))
 
     def room_scale(self, page: Page, request: "RoomRequest") -> float:
         """How much the items of ``request`` must shrink for ``page`` (a copy: it is changed)
@@ -485,9 +430,15 @@ class EditSession:
         """Shrink the items of ``request`` by ``scale`` and start the physics again, if the
         document is still the one it was asked for (an edit since leaves the page as it is:
         its own rest mends what it can).  Returns whether it did."""
-        if scale >= 1.0 or request.version != self.version \
-                or request.page_index != self.page_index or self.held_id is not None:
+        if scale >= 1.0 or request.version != self.version or self.held_id is not None:
             return False
+        if request.page_index != self.page_index:  # another page resized with this one
+            page = self.project.pages[request.page_index]
+            shrink_items(page, request.ids, scale)
+            self.pages_edited.add(page.id)
+            if self.saved_version == self.version:
+                self.mark_unsaved()
+            return True
         self.sync_positions()
         shrink_items(self.page, request.ids, scale)
         if self.saved_version == self.version:  # saved meanwhile: this is a change to save
@@ -699,8 +650,9 @@ class EditSession:
         self.rebuild_engine(sync=False)
         return w, h
 
-    def update_item(self, item_id: str, changes: dict) -> None:
-        """Set fields of an item (text, font, colour, decorative, anchor gamma...) in one edit."""
+    def update_item(self, item_id: str, changes: dict, *, label: str | None = None) -> None:
+        """Set fields of an item (text, font, colour, decorative, anchor gamma...) in one edit,
+        undone as ``label`` ("edit ITEM" unless given)."""
         item = self.page.item(item_id)
         gamma = changes.pop("gamma", None)
         changes = {key: value for key, value in changes.items() if getattr(item, key) != value}
@@ -709,7 +661,7 @@ class EditSession:
         if not changes and not gamma_changes:
             return
         self.refuse_bad_group_or_region(item, changes)
-        self.checkpoint(f"edit {item_id}")
+        self.checkpoint(label or f"edit {item_id}")
         if "path" in changes and isinstance(item, PictureItem) \
                 and changes.get("lock_aspect", item.lock_aspect):
             aspect = picture_aspect(self.project.base_dir / changes["path"])
@@ -761,7 +713,8 @@ class EditSession:
         group = group.strip()
         if group == item.group:
             return f'"{item.id}" is already ' + (f'in group "{group}"' if group else "in no group")
-        self.update_item(item.id, {"group": group})
+        # undone as "group ITEM": "undid edit picture-1" did not say which edit (user-walk-10)
+        self.update_item(item.id, {"group": group}, label=f"group {item.id}")
         return (f'"{item.id}" joined group "{group}": its members move as one' if group
                 else f'"{item.id}" left its group')
 
@@ -914,69 +867,66 @@ class EditSession:
         self.pages_edited = {renamed.get(page_id, page_id) for page_id in self.pages_edited}
 
     def set_page_size(self, size: str, orientation: str, width_mm: float | None = None,
-                      height_mm: float | None = None, *, label: str = "page size") -> None:
+                      height_mm: float | None = None, *, label: str = "page size",
+                      every_page: bool = False) -> None:
         """Change size and orientation; items keep their relative place on the page.
 
         A named size takes the orientation; a custom one takes width and height (default: the
-        page's own), and its orientation follows from them.
+        page's own), and its orientation follows from them.  ``every_page``: every page of
+        the project takes the size (a calendar's or an album's pages are one size; `S` on a
+        12-page calendar resized January only, user-walk-9), each in its own orientation for
+        a named size; one undo step, and room is searched for on each page changed.
         """
-        page = self.page
-        width, height = page_dimensions(size, orientation, width_mm or page.width_mm,
-                                        height_mm or page.height_mm)
-        if size == "custom":
-            orientation = "landscape" if width > height else "portrait"
-        if (size, orientation, width, height) == (page.size, page.orientation, page.width_mm,
-                                                 page.height_mm):
+        pages = self.project.pages
+        changes = self.size_changes(size, orientation, width_mm, height_mm,
+                                    every_page=every_page)
+        if not changes:
             return
         self.checkpoint(label)
-        margin_kept = self.margin_keepers()
-        sx, sy = width / page.width_mm, height / page.height_mm
-        margin = page_margin(self.project.physics.margin_mm, width, height)
-        # Regions keep their share of the page, as items keep their place: one left as it
-        # was reached past a smaller page, and the file saved was one no command would open.
-        for region in page.regions:
-            left, top = round(region.left * sx, 2), round(region.top * sy, 2)
-            region.w = min(round((region.left + region.w) * sx, 2), width) - left
-            region.h = min(round((region.top + region.h) * sy, 2), height) - top
-            region.left, region.top = left, top
-        old_sizes = {item.id: (item.w, item.h) for item in page.items}
-        too_large = [item.id for item in page.items
-                     if not item.decorative and (item.w > width or item.h > height)]
-        for item in page.items:
-            item.x, item.y = item.x * sx, item.y * sy
-            if item.decorative:  # a band across the page keeps spanning it: it stretches
-                item.w, item.h = item.w * sx, item.h * sy
-            if isinstance(item, PictureItem) and item.lock_aspect:
-                # shape kept, as `+` and `-` keep it: clamped side by side, the album's 3:2
-                # photos came out 1.08:1 on a 60 mm wide page, and printed stretched
-                fit = min(1.0, width / item.w, height / item.h)
-                item.w, item.h = item.w * fit, item.h * fit
-            item.w, item.h = min(item.w, width), min(item.h, height)
-            if item.region:  # no larger than its region (the loader's rule), shape kept
-                room = page.region(item.region)
-                fit = min(1.0, room.w / item.w, room.h / item.h)
-                item.w, item.h = item.w * fit, item.h * fit
-            if isinstance(item.anchor, PointAnchor):
-                item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
-            if not (item.decorative or item.group or getattr(item, "bleed", False)):
-                keep_inside_margin(item, width, height, margin)
-        scale_follow_offsets(page, old_sizes, sx, sy)
-        page.size, page.orientation = size, orientation
-        page.width_mm, page.height_mm = width, height
+        too_large: list[str] = []
+        for index, own, width, height in changes:
+            page = pages[index]
+            margin_kept = (self.margin_keepers() if index == self.page_index else
+                           keepers_of(engine_for_page(page, self.project.physics)))
+            too_large += resize_page(page, size, own, width, height,
+                                     page_margin(self.project.physics.margin_mm, width, height))
+            self.pages_edited.add(page.id)
+            self.want_room(margin_kept=margin_kept, page_index=index)
         self.held_id = None
         if too_large:  # said, as the room search's smaller shrink is: "10 % smaller" was all
             # a user read when a 150 mm title became 9 mm wide on a 10 mm page
             self.status_note = (f"{too_large[0]} was larger than the new page: made smaller"
                                 if len(too_large) == 1 else f"{len(too_large)} items larger "
                                 "than the new page were made smaller")
-        self.want_room(margin_kept=margin_kept)
+        if len(changes) > 1:
+            self.status_note = "; ".join(filter(None, (
+                f"{len(changes)} pages made {size_words(size, width, height)}",
+                self.status_note)))
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
 
+    def size_changes(self, size: str, orientation: str, width_mm: float | None = None,
+                     height_mm: float | None = None, *, every_page: bool = False
+                     ) -> list[tuple[int, str, float, float]]:
+        """(index, orientation, width, height) of each page the size would change: the page on
+        screen, or every page (each in its own orientation, for a named size)."""
+        pages, changes = self.project.pages, []
+        for index in (range(len(pages)) if every_page else [self.page_index]):
+            page = pages[index]
+            own = orientation if index == self.page_index or size == "custom" \
+                else page.orientation
+            width, height = page_dimensions(size, own, width_mm or page.width_mm,
+                                            height_mm or page.height_mm)
+            if size == "custom":
+                own = "landscape" if width > height else "portrait"
+            if (size, own, width, height) != (page.size, page.orientation, page.width_mm,
+                                              page.height_mm):
+                changes.append((index, own, width, height))
+        return changes
+
     def margin_keepers(self) -> frozenset[str]:
         """The ids of the page's items that keep their print-safe margin now."""
-        engine = self.engine
-        return frozenset(engine.ids) - {engine.ids[k] for k in engine.quality().in_margin}
+        return keepers_of(self.engine)
 
     def toggle_orientation(self) -> str:
         page = self.page

@@ -359,6 +359,9 @@ async def test_a_smaller_page_size_ends_with_no_overlap_and_nothing_off_it(tmp_p
         assert app.screen.id == "page-size-dialog"
         await pilot.press("home", *["down"] * target, "enter")
         await pilot.pause()
+        assert app.screen.id == "which-pages-dialog"
+        await pilot.press("down", "enter")  # this page only
+        await pilot.pause()
         assert app.session.page.size == "4x6in"
         await settle_live(app, pilot)
         quality = app.session.engine.quality()
@@ -570,6 +573,9 @@ async def test_a_page_narrower_than_a_photo_keeps_the_photos_shape_and_says_so(t
         app.screen.query_one("#field-width_mm").value = "60"
         app.screen.query_one("#field-height_mm").value = "200"
         await pilot.press("ctrl+s")
+        await pilot.pause()
+        if app.screen.id == "which-pages-dialog":  # an album of several pages
+            await pilot.press("end", "enter")  # this page only
         await app.workers.wait_for_complete()
         await pilot.pause()
         page = app.session.page

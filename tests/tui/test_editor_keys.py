@@ -497,6 +497,8 @@ async def test_pages_add_switch_resize_reorient_and_remove(project_path):
         current = next(i for i, o in enumerate(options) if o.startswith("A5"))
         await pilot.press(*(["down"] * (index - current) if index > current
                             else ["up"] * (current - index)), "enter")
+        assert app.screen.id == "which-pages-dialog"
+        await pilot.press("down", "enter")  # this page only
         assert (session.page.size, session.page.width_mm, session.page.height_mm) == ("A4", 210, 297)
         await pilot.press("o")
         assert (session.page.orientation, session.page.width_mm) == ("landscape", 297)
@@ -528,6 +530,8 @@ async def test_a_custom_page_size_and_its_orientation(project_path):
         app.screen.query_one("#field-width_mm").value = "200"
         app.screen.query_one("#field-height_mm").value = "100"
         await pilot.press("ctrl+s")
+        assert app.screen.id == "which-pages-dialog"
+        await pilot.press("down", "enter")  # this page only
         page = app.session.page
         assert (page.size, page.width_mm, page.height_mm, page.orientation) == (
             "custom", 200, 100, "landscape")

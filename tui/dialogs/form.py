@@ -11,12 +11,25 @@ from typing import Any, Callable, Generic, Literal, TypeVar
 
 from textual.app import ComposeResult
 from textual.binding import Binding
+from textual.geometry import Region
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.widgets import Button, Checkbox, Input, Label, Select, TextArea
 
 from floatpage.tui.dialogs.base import Dialog, Hint
 
 FieldKind = Literal["line", "text", "choice", "bool"]
+
+
+class WordsField(TextArea):
+    """A form's text field, whose cursor the form keeps in sight: the words wrap anew when
+    the field is laid out or resized, which moves the cursor's row (on a loaded machine after
+    the form had scrolled to it, so a 20 x 6 form showed the rows above it)."""
+
+    def on_resize(self) -> None:
+        # runs before TextArea's own _on_resize (this class comes first in the MRO), which
+        # wraps the words anew: the cursor's row is known once it has run
+        if isinstance(self.screen, FormDialog):
+            self.call_later(self.screen.show_cursor)
 
 
 @dataclass(frozen=True)
@@ -87,8 +100,8 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
         if field.kind == "line":
             yield Input(str(field.value), id=widget_id, compact=True)
         elif field.kind == "text":
-            yield TextArea(str(field.value), id=widget_id, tab_behavior="focus",
-                           classes="field-text")
+            yield WordsField(str(field.value), id=widget_id, tab_behavior="focus",
+                             classes="field-text")
         else:
             yield Select(list(field.choices), value=field.value, allow_blank=False, id=widget_id,
                          compact=True)
@@ -96,9 +109,36 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
     def on_mount(self) -> None:
         for widget in self.query("Input, TextArea"):
             widget.cursor_blink = getattr(self.app, "cursor_blink", True)
-        first = self.query(".form-fields > Input, .form-fields > TextArea, "
-                           ".form-fields > Select, .form-fields > Checkbox").first()
-        first.focus()
+        self.first_field().focus()
+        self.call_after_refresh(self._cursor_to_end)
+
+    def first_field(self):
+        return self.query(".form-fields > Input, .form-fields > TextArea, "
+                          ".form-fields > Select, .form-fields > Checkbox").first()
+
+    def _cursor_to_end(self) -> None:
+        """Put each text field's cursor after its words, as a form field opens in every
+        common editor: at their start (Textual's default), "Deine Anna" typed after a card's
+        message landed before it (user-walk-9, user-walk-10).  A line field selects all its
+        text on focus.  Once laid out (the field's wrapping is known only then), with the
+        fields scrolled so the cursor shows: a 20 x 6 form shows one row of its 3."""
+        for area in self.query(TextArea):
+            area.move_cursor(area.document.end)
+        self.show_cursor()
+
+    def show_cursor(self) -> None:
+        """Scroll the fields so that the focused text field's cursor shows (or the first
+        field's, while the focus given it on mount is still on its way)."""
+        area = self.focused or self.first_field()
+        if not isinstance(area, TextArea):
+            return
+        fields = self.query_one(".form-fields", VerticalScroll)
+        # where the cursor is in the fields' scrolled space, from the field's place in it and
+        # the cursor's wrapped row (the screen offsets lag a scroll just asked for)
+        row = area.wrapped_document.location_to_offset(area.cursor_location).y
+        top = area.virtual_region.y + area.content_region.y - area.region.y
+        fields.scroll_to_region(Region(0, top + row - int(area.scroll_y), 1, 1),
+                                animate=False, immediate=True)
 
     def values(self) -> dict[str, Any]:
         """What the fields hold now, as typed."""

@@ -71,14 +71,20 @@ def test_insert_dialog_at_40x12(project_path, snap_compare):
 
 
 def test_edit_form_at_20x6(project_path, snap_compare):
-    """The title's edit form on a 20 x 6 terminal: 'Edit title (text)', the 'Text' label, one
-    row of 'Happy…' with the cursor on its H (the field scrolls; a scroll bar at the right),
+    """The title's edit form on a 20 x 6 terminal: 'Edit title (text)', then the field's
+    last two rows, 'Birthday' and 'Anna', with the cursor after its last a (the form opens
+    with the cursor after the words, scrolled past the 'Text' label to show it; a scroll bar
+    at the right; user-walk-10),
     'Esc cancels' alone as the hint, and the OK and Cancel buttons on the last row."""
     async def run_before(pilot) -> None:
         pilot.app.editor.selected_id = "title"
         await pilot.pause()
         await pilot.press("enter")
         await pilot.pause()
+        for _ in range(30):  # the form scrolls to the cursor once its words are wrapped
+            if pilot.app.screen.query_one(".form-fields").scroll_y > 0:
+                break
+            await pilot.pause(0.1)
 
     assert snap_compare(frozen_app(project_path), run_before=run_before, terminal_size=(20, 6))
 
