@@ -18,7 +18,7 @@ from floatpage.physics.page_limits import (
     WIDEST_GAP_SLACK_MM, capping, page_limits, room_caps, unexplained_pairs,
 )
 from floatpage.physics.relocation import (
-    MAX_ITEMS as RELOCATE_MAX_ITEMS, placed_anew, relocate_jammed,
+    MAX_ITEMS as RELOCATE_MAX_ITEMS, movable_units, placed_anew, relocate_jammed,
 )
 from floatpage.physics.unit_arrangements import search_of, widest_bracket
 
@@ -59,7 +59,8 @@ class RoomRelocation:
         on fresh_projects seed 7129 five units among a hard-anchored header and a photo with
         its caption on a 55 x 85 mm card kept six overlaps of up to 15.6 mm where they can
         all stand touching, and on seeds 7031 and 7062 the moves left overlaps of 28.8 mm and
-        29.5 mm where 4.8 mm and 0.8 mm are the least.  Whether the gutter is kept."""
+        29.5 mm where 4.8 mm and 0.8 mm are the least.  Where the page's units are too many
+        for one search, room by room (``_arrange_rooms``).  Whether the gutter is kept."""
         bodies = self._bodies
         gutter = self.params.gutter_mm
         roots, _ = bodies.group_roots()
@@ -67,11 +68,46 @@ class RoomRelocation:
         search = search_of(bodies, pinned, self.margin_mm, self.page_w_mm, self.page_h_mm,
                            gutter)
         if search is None:
-            return False
+            return self._arrange_rooms()
+        placed = self._set_down(search, self._closest_gap())
+        return placed is not None and placed >= gutter - ROUNDING_MM
+
+    def _arrange_rooms(self) -> bool:
+        """``_arrange_units`` for a page whose units are too many for one search: the units
+        of each room (geometry.rooms_of: each region, then the free items) set down at the
+        widest gap they keep from one another and from every other item where it stands,
+        where that is wider than the room's closest pair now.  Sound: the other items stay,
+        so every pair the room's units are not in keeps its gap, and every pair they are in
+        keeps the wider one.  fresh_projects seed 9614, p4: ten members of a photos region
+        around a hard-anchored photo with its caption can keep 2.2 mm (check's limit, room
+        by room), and the settle kept 0.02 mm, since the page's sixteen items were too many
+        for the whole page's search.  Whether the page keeps the gutter in the end."""
+        bodies = self._bodies
+        gutter = self.params.gutter_mm
+        rooms = rooms_of(bodies)
+        units = movable_units(bodies)
+        for room in [*range(1, int(rooms.max(initial=0)) + 1), 0]:
+            taken = rooms == room
+            members = [unit.members for unit in units if taken[unit.root]]
+            if not members:
+                continue
+            mine = np.zeros(bodies.count, dtype=bool)
+            mine[np.concatenate(members)] = True
+            search = search_of(bodies, bodies.active & ~mine, self.margin_mm, self.page_w_mm,
+                               self.page_h_mm, gutter, taken=taken)
+            if search is not None:
+                self._set_down(search, self._closest_gap(mine))
+        return not unexplained_pairs(bodies, [], gutter)
+
+    def _set_down(self, search, closest_mm: float) -> float | None:
+        """``search``'s units set down at the widest gap it finds (see ``_arrange_units``),
+        where that is wider than ``closest_mm``: that gap, or None where they stay."""
+        bodies = self._bodies
+        gutter = self.params.gutter_mm
         obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
         decided = widest_bracket(search.walls, *obstacles, gutter)
         if decided is None:
-            return False
+            return None
         if decided.low < 0:  # the margin gives way before overlap does
             on_page = widest_bracket(search.page_walls, *obstacles, gutter)
             if on_page is not None and on_page.low > decided.low + WIDEST_GAP_SLACK_MM:
@@ -80,16 +116,17 @@ class RoomRelocation:
         # found is still one the units can be set down in (seed 51 p1: 18.0 mm into each
         # other where the pass left 18.8 mm)
         widest, spots = decided.low, decided.layout
-        if spots is None or widest <= self._closest_gap() + WIDEST_GAP_SLACK_MM:
-            return False
+        if spots is None or widest <= closest_mm + WIDEST_GAP_SLACK_MM:
+            return None
         for unit, spot in zip(search.units, spots):
             unit.place(bodies.centres, spot)
             bodies.velocities[unit.carried] = 0.0
-        return widest >= gutter - ROUNDING_MM
+        return widest
 
-    def _closest_gap(self) -> float:
+    def _closest_gap(self, among: np.ndarray | None = None) -> float:
         """The page's closest pair of items of different groups, not both pinned (negative:
-        the deepest overlap); inf with none."""
+        the deepest overlap), or the closest with an item ``among`` (n,) bool in it; inf with
+        none."""
         bodies = self._bodies
         roots, _ = bodies.group_roots()
         pinned = pinned_items(bodies, roots)
@@ -97,6 +134,8 @@ class RoomRelocation:
         i, j = np.triu_indices(len(rows), 1)
         i, j = rows[i], rows[j]
         keep = (roots[i] != roots[j]) & ~(pinned[i] & pinned[j])
+        if among is not None:
+            keep &= among[i] | among[j]
         gaps = pair_clearances(bodies.centres, bodies.sizes / 2, i[keep], j[keep])
         return float(gaps.min(initial=np.inf))
 

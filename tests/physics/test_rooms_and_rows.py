@@ -17,7 +17,8 @@ from floatpage.physics import Engine
 from floatpage.physics import pinned_rows
 from floatpage.physics.params import Params
 from floatpage.physics.page_limits import (
-    Crossing, PinnedStack, Stack, page_limits, room_caps, rooms_of, unexplained_pairs,
+    Crossing, PinnedStack, Stack, close_pairs, page_limits, room_caps, rooms_of,
+    unexplained_pairs,
 )
 
 
@@ -272,3 +273,61 @@ def test_a_column_across_rooms_is_named_exactly(seed):
                      for a, b in itertools.combinations(rows, 2))
         assert (beside or brute_column_fits(heights[rows], [tops[k] for k in rows], gap)
                 ) == expected
+
+
+def room_gaps(engine: Engine) -> list[tuple[float, float]]:
+    """For each room with free units that one search can take: the closest pair its units
+    are in, and the widest gap the search finds for them among every other item where it
+    stands (inside the margins)."""
+    from floatpage.physics.geometry import pinned_items
+    from floatpage.physics.relocation import movable_units
+    from floatpage.physics.unit_arrangements import search_of, widest_bracket
+    bodies = engine.bodies
+    gutter = engine.params.gutter_mm
+    rooms = rooms_of(bodies)
+    roots, _ = bodies.group_roots()
+    pinned = pinned_items(bodies, roots)
+    found = []
+    for room in np.unique(rooms[bodies.active]):
+        units = [unit for unit in movable_units(bodies) if rooms[unit.root] == room]
+        if not units:
+            continue
+        mine = np.zeros(bodies.count, dtype=bool)
+        mine[np.concatenate([unit.members for unit in units])] = True
+        search = search_of(bodies, bodies.active & ~mine, engine.margin_mm, engine.page_w_mm,
+                           engine.page_h_mm, gutter, taken=rooms == room)
+        if search is None:
+            continue
+        obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
+        widest = widest_bracket(search.walls, *obstacles, gutter)
+        rows = np.flatnonzero(bodies.active)
+        closest = min(
+            (gap for a, b, gap in close_pairs(bodies, rows, roots, gutter)
+             if (mine[a] or mine[b]) and not (pinned[a] and pinned[b])), default=gutter)
+        found.append((closest, widest.low))
+    return found
+
+
+def test_a_room_too_many_for_the_whole_pages_search_is_set_down_on_its_own(tmp_path):
+    """fresh_projects seed 9614, p4: the photos region's ten members could stand wider apart
+    around the rest of the page where it stands than the 0.02 mm the settle left them (the
+    whole page's sixteen items were too many for one search, and its rooms were never
+    searched alone).  Settled, no room's units can be set down wider, and the file is a
+    fixed point."""
+    path = tmp_path / "rooms-9614.toml"
+    shutil.copy(ROOMS / "rooms-9614.toml", path)
+    project = load_project(path)
+    settle_project(project)
+    save_project(project)
+    (page,) = project.pages
+    engine = engine_for_page(page, project.physics)
+    gaps = room_gaps(engine)
+    assert gaps, "the photos region is one search"
+    for closest, widest in gaps:
+        assert widest <= closest + 0.05
+    assert engine.quality().overlap_count == 0
+    settled = path.read_bytes()
+    again = load_project(path)
+    settle_project(again)
+    save_project(again)
+    assert path.read_bytes() == settled
