@@ -331,3 +331,24 @@ def test_a_room_too_many_for_the_whole_pages_search_is_set_down_on_its_own(tmp_p
     settle_project(again)
     save_project(again)
     assert path.read_bytes() == settled
+
+
+def test_check_speaks_of_the_gap_a_limit_leaves_not_of_a_gutter_that_fits():
+    """The page as main's settle left it: check named the photos region's NoArrangement (the
+    widest gap they can all keep is 2.2 mm) and, of the same pairs, that "the 3 mm gutter
+    fits ... but is not kept".  The advice now speaks of the 2.2 mm the limit leaves and
+    the gap the page keeps."""
+    from floatpage.model.page_report import page_report
+    project = load_project(ROOMS / "rooms-9614.toml")
+    (page,) = project.pages
+    engine = engine_for_page(page, project.physics)
+    gutter = project.physics.gutter_mm
+    lines, problems = page_report(page, engine, gutter)
+    text = "\n".join(lines)
+    (limit,) = limits_of(engine)
+    closest = engine.quality().min_gap_mm
+    assert f"the widest gap they can all keep is {limit.widest_gap_mm:.1f} mm" in text
+    assert "gutter fits" not in text
+    assert (f"they can keep {limit.widest_gap_mm:.1f} mm, not the {gutter:g} mm gutter, but "
+            f"page {page.id} keeps {closest:.1f} mm") in text
+    assert problems == 1
