@@ -14,14 +14,16 @@ from floatpage.physics.finalize import (
     project_within,
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER, pinned_items, room_covers, rooms_of
+from floatpage.physics.near_arrangement import near_search
 from floatpage.physics.page_limits import (
-    WIDEST_GAP_SLACK_MM, capping, page_limits, room_caps, unexplained_pairs,
+    WIDEST_GAP_SLACK_MM, capping, close_pairs, page_limits, room_caps, unexplained_pairs,
 )
 from floatpage.physics.relocation import (
     MAX_ITEMS as RELOCATE_MAX_ITEMS, movable_units, placed_anew, relocate_jammed,
 )
 from floatpage.physics.unit_arrangements import search_of, widest_bracket
 
+NEAR_ROUNDS = 4  # closest pairs whose units _arrange_near sets down, at most
 RELOCATED_RUN_STEPS = 20_000  # the gentle run from items set down anew (_relocate_jammed)
 
 
@@ -68,7 +70,7 @@ class RoomRelocation:
         search = search_of(bodies, pinned, self.margin_mm, self.page_w_mm, self.page_h_mm,
                            gutter)
         if search is None:
-            return self._arrange_rooms()
+            return self._arrange_rooms() or self._arrange_near()
         placed = self._set_down(search, self._closest_gap())
         return placed is not None and placed >= gutter - ROUNDING_MM
 
@@ -97,6 +99,33 @@ class RoomRelocation:
                                self.page_h_mm, gutter, taken=taken)
             if search is not None:
                 self._set_down(search, self._closest_gap(mine))
+        return not unexplained_pairs(bodies, [], gutter)
+
+    def _arrange_near(self) -> bool:
+        """The units around the page's closest pair set down by the search of
+        physics.near_arrangement (each inside a window around where they stand, every other
+        item an obstacle where it stands), where that beats their closest pair, up to
+        NEAR_ROUNDS times: a page whose rooms are each too many for one search (see that
+        module).  Whether the page keeps the gutter in the end."""
+        bodies = self._bodies
+        gutter = self.params.gutter_mm
+        roots, _ = bodies.group_roots()
+        pinned = pinned_items(bodies, roots)
+        units = movable_units(bodies)
+        for _ in range(NEAR_ROUNDS):
+            closest = close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter,
+                                  lambda a, b, gaps: ~(pinned[a] & pinned[b]))
+            if not closest:
+                return True
+            a, b, _ = closest[0]
+            search = near_search(bodies, units, (a, b), self.margin_mm, self.page_w_mm,
+                                 self.page_h_mm, gutter)
+            if search is None:
+                break
+            mine = np.zeros(bodies.count, dtype=bool)
+            mine[search.rows] = True
+            if self._set_down(search, self._closest_gap(mine)) is None:
+                break
         return not unexplained_pairs(bodies, [], gutter)
 
     def _set_down(self, search, closest_mm: float) -> float | None:
