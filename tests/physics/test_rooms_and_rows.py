@@ -308,17 +308,25 @@ def room_gaps(engine: Engine) -> list[tuple[float, float]]:
     return found
 
 
-def test_a_room_too_many_for_the_whole_pages_search_is_set_down_on_its_own(tmp_path):
+@pytest.fixture(scope="module")
+def settled_9614(tmp_path_factory):
+    """rooms-9614.toml settled (its path, and the page's bytes after one settle)."""
+    path = tmp_path_factory.mktemp("rooms") / "rooms-9614.toml"
+    shutil.copy(ROOMS / "rooms-9614.toml", path)
+    project = load_project(path)
+    settle_project(project)
+    save_project(project)
+    return path, path.read_bytes()
+
+
+def test_a_room_too_many_for_the_whole_pages_search_is_set_down_on_its_own(settled_9614):
     """fresh_projects seed 9614, p4: the photos region's ten members could stand wider apart
     around the rest of the page where it stands than the 0.02 mm the settle left them (the
     whole page's sixteen items were too many for one search, and its rooms were never
     searched alone).  Settled, no room's units can be set down wider, and the file is a
     fixed point."""
-    path = tmp_path / "rooms-9614.toml"
-    shutil.copy(ROOMS / "rooms-9614.toml", path)
+    path, settled = settled_9614
     project = load_project(path)
-    settle_project(project)
-    save_project(project)
     (page,) = project.pages
     engine = engine_for_page(page, project.physics)
     gaps = room_gaps(engine)
@@ -326,11 +334,35 @@ def test_a_room_too_many_for_the_whole_pages_search_is_set_down_on_its_own(tmp_p
     for closest, widest in gaps:
         assert widest <= closest + 0.05
     assert engine.quality().overlap_count == 0
-    settled = path.read_bytes()
-    again = load_project(path)
-    settle_project(again)
-    save_project(again)
+    settle_project(project)
+    save_project(project)
     assert path.read_bytes() == settled
+
+
+def test_the_units_around_the_closest_pair_are_set_down_in_their_window(settled_9614):
+    """The same page: set down room by room, the photos region kept 0.3 mm where a free
+    text of the page reaches into it; the units around the closest pair, searched inside a
+    window around them with the rest where it stands (physics.near_arrangement), find no
+    wider gap once settled."""
+    from floatpage.physics.geometry import pinned_items
+    from floatpage.physics.near_arrangement import near_search
+    from floatpage.physics.relocation import movable_units
+    from floatpage.physics.unit_arrangements import widest_bracket
+    path, _ = settled_9614
+    project = load_project(path)
+    (page,) = project.pages
+    engine = engine_for_page(page, project.physics)
+    bodies, gutter = engine.bodies, engine.params.gutter_mm
+    roots, _ = bodies.group_roots()
+    pinned = pinned_items(bodies, roots)
+    rows = np.flatnonzero(bodies.active)
+    (a, b, closest), *_ = close_pairs(bodies, rows, roots, gutter,
+                                      lambda a, b, gaps: ~(pinned[a] & pinned[b]))
+    search = near_search(bodies, movable_units(bodies), (a, b), engine.margin_mm,
+                         engine.page_w_mm, engine.page_h_mm, gutter)
+    assert search is not None
+    obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
+    assert widest_bracket(search.walls, *obstacles, gutter).low <= closest + 0.05
 
 
 def test_check_speaks_of_the_gap_a_limit_leaves_not_of_a_gutter_that_fits():
