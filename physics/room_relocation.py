@@ -21,8 +21,13 @@ from floatpage.physics.page_limits import (
 from floatpage.physics.relocation import (
     MAX_ITEMS as RELOCATE_MAX_ITEMS, movable_units, placed_anew, relocate_jammed,
 )
-from floatpage.physics.unit_arrangements import search_of, widest_bracket
+from floatpage.physics.unit_arrangements import search_of, wider_than, widest_bracket
 
+# relations a search of _arrange_rooms and _arrange_near tries (a tenth of the search's own
+# budget, unit_arrangements.NODE_BUDGET): they look for a wider gap on a page the pushes left
+# short of it, each finalize of every probe, and with the whole budget fresh_projects seed
+# 9616 (three pages of 18, 19 and 4 items) took 31 s of CPU to settle where it took 2.4 s
+SET_DOWN_BUDGET = 10_000
 NEAR_ROUNDS = 4  # closest pairs whose units _arrange_near sets down, at most
 RELOCATED_RUN_STEPS = 20_000  # the gentle run from items set down anew (_relocate_jammed)
 
@@ -62,7 +67,8 @@ class RoomRelocation:
         its caption on a 55 x 85 mm card kept six overlaps of up to 15.6 mm where they can
         all stand touching, and on seeds 7031 and 7062 the moves left overlaps of 28.8 mm and
         29.5 mm where 4.8 mm and 0.8 mm are the least.  Where the page's units are too many
-        for one search, room by room (``_arrange_rooms``).  Whether the gutter is kept."""
+        for one search, room by room (``_arrange_rooms``) and around the closest pairs
+        (``_arrange_near``).  Whether the gutter is kept."""
         bodies = self._bodies
         gutter = self.params.gutter_mm
         roots, _ = bodies.group_roots()
@@ -70,9 +76,12 @@ class RoomRelocation:
         search = search_of(bodies, pinned, self.margin_mm, self.page_w_mm, self.page_h_mm,
                            gutter)
         if search is None:
+            self._arrange_rooms()
             # the rooms again after the pairs: a room whose units a free item crowded may
             # have room now (seed 9614 p4: a words region 2.29 mm from a free text, 3 mm after)
-            return self._arrange_rooms() or self._arrange_near() or self._arrange_rooms()
+            if self._arrange_near():
+                self._arrange_rooms()
+            return not unexplained_pairs(bodies, [], gutter)
         placed = self._set_down(search, self._closest_gap())
         return placed is not None and placed >= gutter - ROUNDING_MM
 
@@ -85,11 +94,12 @@ class RoomRelocation:
         keeps the wider one.  fresh_projects seed 9614, p4: ten members of a photos region
         around a hard-anchored photo with its caption can keep 2.2 mm (check's limit, room
         by room), and the settle kept 0.02 mm, since the page's sixteen items were too many
-        for the whole page's search.  Whether the page keeps the gutter in the end."""
+        for the whole page's search.  Whether any room's units moved."""
         bodies = self._bodies
         gutter = self.params.gutter_mm
         rooms = rooms_of(bodies)
         units = movable_units(bodies)
+        moved = False
         for room in [*range(1, int(rooms.max(initial=0)) + 1), 0]:
             taken = rooms == room
             members = [unit.members for unit in units if taken[unit.root]]
@@ -100,25 +110,26 @@ class RoomRelocation:
             search = search_of(bodies, bodies.active & ~mine, self.margin_mm, self.page_w_mm,
                                self.page_h_mm, gutter, taken=taken)
             if search is not None:
-                self._set_down(search, self._closest_gap(mine))
-        return not unexplained_pairs(bodies, [], gutter)
+                moved |= self._set_down(search, self._closest_gap(mine), quick=True) is not None
+        return moved
 
     def _arrange_near(self) -> bool:
         """The units around the page's closest pair set down by the search of
         physics.near_arrangement (each inside a window around where they stand, every other
         item an obstacle where it stands), where that beats their closest pair, up to
         NEAR_ROUNDS times: a page whose rooms are each too many for one search (see that
-        module).  Whether the page keeps the gutter in the end."""
+        module).  Whether any unit moved."""
         bodies = self._bodies
         gutter = self.params.gutter_mm
         roots, _ = bodies.group_roots()
         pinned = pinned_items(bodies, roots)
         units = movable_units(bodies)
+        moved = False
         for _ in range(NEAR_ROUNDS):
             closest = close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter,
                                   lambda a, b, gaps: ~(pinned[a] & pinned[b]))
             if not closest:
-                return True
+                break
             a, b, _ = closest[0]
             search = near_search(bodies, units, (a, b), self.margin_mm, self.page_w_mm,
                                  self.page_h_mm, gutter)
@@ -126,16 +137,27 @@ class RoomRelocation:
                 break
             mine = np.zeros(bodies.count, dtype=bool)
             mine[search.rows] = True
-            if self._set_down(search, self._closest_gap(mine)) is None:
+            if self._set_down(search, self._closest_gap(mine), quick=True) is None:
                 break
-        return not unexplained_pairs(bodies, [], gutter)
+            moved = True
+        return moved
 
-    def _set_down(self, search, closest_mm: float) -> float | None:
+    def _set_down(self, search, closest_mm: float, quick: bool = False) -> float | None:
         """``search``'s units set down at the widest gap it finds (see ``_arrange_units``),
-        where that is wider than ``closest_mm``: that gap, or None where they stay."""
+        where that is wider than ``closest_mm``: that gap, or None where they stay.
+        ``quick``: at the first layout one search finds wider than that (within
+        SET_DOWN_BUDGET relations, inside the margins), widened by its own relations
+        (unit_arrangements.wider_than), not the widest."""
         bodies = self._bodies
         gutter = self.params.gutter_mm
         obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
+        floor = closest_mm + WIDEST_GAP_SLACK_MM
+        if floor >= gutter:
+            return None  # no search keeps more than the gutter
+        if quick:
+            decided = wider_than(search.walls, *obstacles, floor, gutter, SET_DOWN_BUDGET)
+            return None if decided is None else self._place(search, decided.layout,
+                                                            decided.low)
         decided = widest_bracket(search.walls, *obstacles, gutter)
         if decided is None:
             return None
@@ -147,12 +169,17 @@ class RoomRelocation:
         # found is still one the units can be set down in (seed 51 p1: 18.0 mm into each
         # other where the pass left 18.8 mm)
         widest, spots = decided.low, decided.layout
-        if spots is None or widest <= closest_mm + WIDEST_GAP_SLACK_MM:
+        if spots is None or widest <= floor:
             return None
+        return self._place(search, spots, widest)
+
+    def _place(self, search, spots: np.ndarray, gap_mm: float) -> float:
+        """``search``'s units set down with their roots at ``spots`` (u, 2); ``gap_mm``."""
+        bodies = self._bodies
         for unit, spot in zip(search.units, spots):
             unit.place(bodies.centres, spot)
             bodies.velocities[unit.carried] = 0.0
-        return widest
+        return gap_mm
 
     def _closest_gap(self, among: np.ndarray | None = None) -> float:
         """The page's closest pair of items of different groups, not both pinned (negative:
