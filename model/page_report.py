@@ -167,19 +167,20 @@ def page_reasons(page, engine, gutter_mm: float) -> tuple[list[str], int, str]:
 
 
 def _loose_cap(bodies, limits: list[Limit], loose: list[tuple[int, int, float]]) -> float:
-    """The widest gap the limits leave the closest of the ``loose`` pairs, as
+    """The narrowest of the gaps the limits leave the ``loose`` pairs, each as
     unexplained_pairs reads it (room_caps: the wider cap of the rooms of its items that move);
-    inf where no limit caps it.  A page whose room a limit caps below the gutter was told
+    inf where no limit caps any.  A page whose room a limit caps below the gutter was told
     both that its items "cannot all stand 3 mm apart ... the widest gap they can all keep is
     2.2 mm" and that "the 3 mm gutter fits ... but is not kept" (fresh_projects seed 9614,
-    p4): the advice speaks of the gap the limit leaves instead."""
+    p4): the advice speaks of the gap the limit leaves instead.  The narrowest, not the
+    closest pair's: there a free text beside the capped region (a pair whose cap is the
+    free room's, none) was the closest, and the gutter was said to fit again."""
     roots, _ = bodies.group_roots()
     pinned = pinned_items(bodies, roots)
     rooms = rooms_of(bodies)
     caps = room_caps(bodies, limits, rooms)
-    a, b, _ = loose[0]
-    return float(max(-np.inf if pinned[a] else caps[rooms[a]],
-                     -np.inf if pinned[b] else caps[rooms[b]]))
+    return float(min(max(-np.inf if pinned[a] else caps[rooms[a]],
+                         -np.inf if pinned[b] else caps[rooms[b]]) for a, b, _ in loose))
 
 
 def _short(quality, why: str) -> str:
