@@ -15,9 +15,9 @@ from floatpage.physics.alignment import measure_alignment
 from floatpage.physics.page_limits import (
     Crossing, Limit, NoArrangement, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack,
     TooLarge, binding,
-    page_limits, too_large, unexplained_pairs,
+    page_limits, room_caps, too_large, unexplained_pairs,
 )
-from floatpage.physics.geometry import GUTTER_FITS_COVER, room_covers, rooms_of
+from floatpage.physics.geometry import GUTTER_FITS_COVER, pinned_items, room_covers, rooms_of
 from floatpage.physics.quality import GAP_TOLERANCE_MM
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
@@ -177,6 +177,17 @@ def page_reasons(page, engine, gutter_mm: float, *, stuck: bool = False
                 f"it (rectangles of mixed shapes seldom pack tighter), so settle keeps the "
                 f"widest gap it finds; make items smaller, move some to another page or lower "
                 f"gutter_mm or margin_mm to keep it")
+        elif (cap := _loose_cap(bodies, limits, loose)) < gutter_mm:
+            kept = max(min(gap for _, _, gap in loose), 0.0)
+            why = why or f"{cap:.1f} mm fits: r (reheat) may mend it"
+            lines.append(
+                f"  they can keep {cap:.1f} mm, not the {gutter_mm:g} mm gutter, but page "
+                f"{page.id} keeps {kept:.1f} mm "
+                f"({_some([f'{name(a)} and {name(b)}' for a, b, _ in loose[:SHOWN]], len(loose))}"
+                f" stand closer than that): {SETTLE}; if a settled page still keeps less, its anchors or "
+                f"the order its items lie in jam it: move an anchored item or nudge items "
+                f"apart, and settle again")
+            problems += 1
         else:
             why = why or "it fits: r (reheat) may mend it"
             lines.append(
@@ -190,6 +201,23 @@ def page_reasons(page, engine, gutter_mm: float, *, stuck: bool = False
                     f"apart, and settle again"))
             problems += 1
     return lines, problems, _short(quality, why or "r (reheat) may mend it")
+
+
+def _loose_cap(bodies, limits: list[Limit], loose: list[tuple[int, int, float]]) -> float:
+    """The narrowest of the gaps the limits leave the ``loose`` pairs, each as
+    unexplained_pairs reads it (room_caps: the wider cap of the rooms of its items that move);
+    inf where no limit caps any.  A page whose room a limit caps below the gutter was told
+    both that its items "cannot all stand 3 mm apart ... the widest gap they can all keep is
+    2.2 mm" and that "the 3 mm gutter fits ... but is not kept" (fresh_projects seed 9614,
+    p4): the advice speaks of the gap the limit leaves instead.  The narrowest, not the
+    closest pair's: there a free text beside the capped region (a pair whose cap is the
+    free room's, none) was the closest, and the gutter was said to fit again."""
+    roots, _ = bodies.group_roots()
+    pinned = pinned_items(bodies, roots)
+    rooms = rooms_of(bodies)
+    caps = room_caps(bodies, limits, rooms)
+    return float(min(max(-np.inf if pinned[a] else caps[rooms[a]],
+                         -np.inf if pinned[b] else caps[rooms[b]]) for a, b, _ in loose))
 
 
 def _short(quality, why: str) -> str:

@@ -14,14 +14,21 @@ from floatpage.physics.finalize import (
     project_within,
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER, pinned_items, room_covers, rooms_of
+from floatpage.physics.near_arrangement import near_search
 from floatpage.physics.page_limits import (
-    WIDEST_GAP_SLACK_MM, capping, page_limits, room_caps, unexplained_pairs,
+    WIDEST_GAP_SLACK_MM, capping, close_pairs, page_limits, room_caps, unexplained_pairs,
 )
 from floatpage.physics.relocation import (
-    MAX_ITEMS as RELOCATE_MAX_ITEMS, placed_anew, relocate_jammed,
+    MAX_ITEMS as RELOCATE_MAX_ITEMS, movable_units, placed_anew, relocate_jammed,
 )
-from floatpage.physics.unit_arrangements import search_of, widest_bracket
+from floatpage.physics.unit_arrangements import search_of, wider_than, widest_bracket
 
+# relations a search of _arrange_rooms and _arrange_near tries (a tenth of the search's own
+# budget, unit_arrangements.NODE_BUDGET): they look for a wider gap on a page the pushes left
+# short of it, each finalize of every probe, and with the whole budget fresh_projects seed
+# 9616 (three pages of 18, 19 and 4 items) took 31 s of CPU to settle where it took 2.4 s
+SET_DOWN_BUDGET = 10_000
+NEAR_ROUNDS = 4  # closest pairs whose units _arrange_near sets down, at most
 RELOCATED_RUN_STEPS = 20_000  # the gentle run from items set down anew (_relocate_jammed)
 
 
@@ -59,7 +66,9 @@ class RoomRelocation:
         on fresh_projects seed 7129 five units among a hard-anchored header and a photo with
         its caption on a 55 x 85 mm card kept six overlaps of up to 15.6 mm where they can
         all stand touching, and on seeds 7031 and 7062 the moves left overlaps of 28.8 mm and
-        29.5 mm where 4.8 mm and 0.8 mm are the least.  Whether the gutter is kept."""
+        29.5 mm where 4.8 mm and 0.8 mm are the least.  Where the page's units are too many
+        for one search, room by room (``_arrange_rooms``) and around the closest pairs
+        (``_arrange_near``).  Whether the gutter is kept."""
         bodies = self._bodies
         gutter = self.params.gutter_mm
         roots, _ = bodies.group_roots()
@@ -67,11 +76,99 @@ class RoomRelocation:
         search = search_of(bodies, pinned, self.margin_mm, self.page_w_mm, self.page_h_mm,
                            gutter)
         if search is None:
-            return False
+            if self.grown_cover() > GUTTER_FITS_COVER and self._closest_gap() >= 0:
+                # a page too full for the gutter to be promised, and without overlap: the
+                # set-downs of rooms and pairs found little there and cost the most
+                # (anchored_pages --kind follow --first 27000: pages of 42-61 items at 87-97 %,
+                # 0.26-0.73 s of CPU each on main, 0.61-1.50 s with them, every verdict the
+                # same).  Overlap they still part: fresh_projects seed 9638 p2 kept nine
+                # overlaps of up to 14.3 mm without them, none with them.
+                return False
+            self._arrange_rooms()
+            # the rooms again after the pairs: a room whose units a free item crowded may
+            # have room now (seed 9614 p4: a words region 2.29 mm from a free text, 3 mm after)
+            if self._arrange_near():
+                self._arrange_rooms()
+            return not unexplained_pairs(bodies, [], gutter)
+        placed = self._set_down(search, self._closest_gap())
+        return placed is not None and placed >= gutter - ROUNDING_MM
+
+    def _arrange_rooms(self) -> bool:
+        """``_arrange_units`` for a page whose units are too many for one search: the units
+        of each room (geometry.rooms_of: each region, then the free items) set down at the
+        widest gap they keep from one another and from every other item where it stands,
+        where that is wider than the room's closest pair now.  Sound: the other items stay,
+        so every pair the room's units are not in keeps its gap, and every pair they are in
+        keeps the wider one.  fresh_projects seed 9614, p4: ten members of a photos region
+        around a hard-anchored photo with its caption can keep 2.2 mm (check's limit, room
+        by room), and the settle kept 0.02 mm, since the page's sixteen items were too many
+        for the whole page's search.  Whether any room's units moved."""
+        bodies = self._bodies
+        gutter = self.params.gutter_mm
+        rooms = rooms_of(bodies)
+        units = movable_units(bodies)
+        moved = False
+        for room in [*range(1, int(rooms.max(initial=0)) + 1), 0]:
+            taken = rooms == room
+            members = [unit.members for unit in units if taken[unit.root]]
+            if not members:
+                continue
+            mine = np.zeros(bodies.count, dtype=bool)
+            mine[np.concatenate(members)] = True
+            search = search_of(bodies, bodies.active & ~mine, self.margin_mm, self.page_w_mm,
+                               self.page_h_mm, gutter, taken=taken)
+            if search is not None:
+                moved |= self._set_down(search, self._closest_gap(mine), quick=True) is not None
+        return moved
+
+    def _arrange_near(self) -> bool:
+        """The units around the page's closest pair set down by the search of
+        physics.near_arrangement (each inside a window around where they stand, every other
+        item an obstacle where it stands), where that beats their closest pair, up to
+        NEAR_ROUNDS times: a page whose rooms are each too many for one search (see that
+        module).  Whether any unit moved."""
+        bodies = self._bodies
+        gutter = self.params.gutter_mm
+        roots, _ = bodies.group_roots()
+        pinned = pinned_items(bodies, roots)
+        units = movable_units(bodies)
+        moved = False
+        for _ in range(NEAR_ROUNDS):
+            closest = close_pairs(bodies, np.flatnonzero(bodies.active), roots, gutter,
+                                  lambda a, b, gaps: ~(pinned[a] & pinned[b]))
+            if not closest:
+                break
+            a, b, _ = closest[0]
+            search = near_search(bodies, units, (a, b), self.margin_mm, self.page_w_mm,
+                                 self.page_h_mm, gutter)
+            if search is None:
+                break
+            mine = np.zeros(bodies.count, dtype=bool)
+            mine[search.rows] = True
+            if self._set_down(search, self._closest_gap(mine), quick=True) is None:
+                break
+            moved = True
+        return moved
+
+    def _set_down(self, search, closest_mm: float, quick: bool = False) -> float | None:
+        """``search``'s units set down at the widest gap it finds (see ``_arrange_units``),
+        where that is wider than ``closest_mm``: that gap, or None where they stay.
+        ``quick``: at the first layout one search finds wider than that (within
+        SET_DOWN_BUDGET relations, inside the margins), widened by its own relations
+        (unit_arrangements.wider_than), not the widest."""
+        bodies = self._bodies
+        gutter = self.params.gutter_mm
         obstacles = bodies.centres[search.obstacles], bodies.sizes[search.obstacles] / 2
+        floor = closest_mm + WIDEST_GAP_SLACK_MM
+        if floor >= gutter:
+            return None  # no search keeps more than the gutter
+        if quick:
+            decided = wider_than(search.walls, *obstacles, floor, gutter, SET_DOWN_BUDGET)
+            return None if decided is None else self._place(search, decided.layout,
+                                                            decided.low)
         decided = widest_bracket(search.walls, *obstacles, gutter)
         if decided is None:
-            return False
+            return None
         if decided.low < 0:  # the margin gives way before overlap does
             on_page = widest_bracket(search.page_walls, *obstacles, gutter)
             if on_page is not None and on_page.low > decided.low + WIDEST_GAP_SLACK_MM:
@@ -80,16 +177,22 @@ class RoomRelocation:
         # found is still one the units can be set down in (seed 51 p1: 18.0 mm into each
         # other where the pass left 18.8 mm)
         widest, spots = decided.low, decided.layout
-        if spots is None or widest <= self._closest_gap() + WIDEST_GAP_SLACK_MM:
-            return False
+        if spots is None or widest <= floor:
+            return None
+        return self._place(search, spots, widest)
+
+    def _place(self, search, spots: np.ndarray, gap_mm: float) -> float:
+        """``search``'s units set down with their roots at ``spots`` (u, 2); ``gap_mm``."""
+        bodies = self._bodies
         for unit, spot in zip(search.units, spots):
             unit.place(bodies.centres, spot)
             bodies.velocities[unit.carried] = 0.0
-        return widest >= gutter - ROUNDING_MM
+        return gap_mm
 
-    def _closest_gap(self) -> float:
+    def _closest_gap(self, among: np.ndarray | None = None) -> float:
         """The page's closest pair of items of different groups, not both pinned (negative:
-        the deepest overlap); inf with none."""
+        the deepest overlap), or the closest with an item ``among`` (n,) bool in it; inf with
+        none."""
         bodies = self._bodies
         roots, _ = bodies.group_roots()
         pinned = pinned_items(bodies, roots)
@@ -97,6 +200,8 @@ class RoomRelocation:
         i, j = np.triu_indices(len(rows), 1)
         i, j = rows[i], rows[j]
         keep = (roots[i] != roots[j]) & ~(pinned[i] & pinned[j])
+        if among is not None:
+            keep &= among[i] | among[j]
         gaps = pair_clearances(bodies.centres, bodies.sizes / 2, i[keep], j[keep])
         return float(gaps.min(initial=np.inf))
 

@@ -45,6 +45,13 @@ NODE_BUDGET = 100_000
 # the last MEMO_SIZE of them.  One that ran out of budget cost 1-4 s a settle on seeds 12 and
 # 36 of fresh_projects, twelve times over.
 MEMO_SIZE = 64
+# The key's numbers are taken to this many decimals (mm): a caption's offset from its photo is
+# the difference of two saved positions, and its last bits change with where the pair stands
+# (19.939999999999998 or 19.94000000000001), so each probe of a settled page searched its
+# rooms again (fresh_projects seed 9614 p4: 14 searches where 7 are different, 1.5 s of CPU).
+# A difference below 1e-10 mm is far inside the search's own tolerance (EPSILON) and the
+# saved file's 0.01 mm.
+KEY_DECIMALS = 10
 # the widest gap is found to this, a third of the slack it is read with
 # (limit_kinds.WIDEST_GAP_SLACK_MM), in at most GAP_STEPS searches after the first ones
 GAP_PRECISION_MM = 0.01
@@ -67,18 +74,20 @@ _memo: dict[bytes, np.ndarray | None | type] = {}
 
 
 def unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
-                     gap: float) -> np.ndarray | None:
+                     gap: float, budget: int | None = None) -> np.ndarray | None:
     """_unit_arrangement (below), its answers kept (MEMO_SIZE): the same numbers give the same
-    answer, so a kept one is the one a search would find."""
-    key = b"".join(np.ascontiguousarray(part, dtype=float).tobytes() for part in
-                   (units.owner, units.offsets, units.halves, units.lowest, units.highest,
-                    obstacle_centres, obstacle_halves, [gap, len(units.owner),
-                                                        len(obstacle_centres)]))
+    answer, so a kept one is the one a search would find.  ``budget``: relations tried at
+    most, NODE_BUDGET unless given."""
+    budget = NODE_BUDGET if budget is None else budget
+    key = b"".join((np.round(np.asarray(part, dtype=float), KEY_DECIMALS) + 0.0).tobytes()
+                   for part in (units.owner, units.offsets, units.halves, units.lowest,
+                                units.highest, obstacle_centres, obstacle_halves,
+                                [gap, len(units.owner), len(obstacle_centres), budget]))
     if key in _memo:
         found = _memo[key]
     else:
         try:
-            found = _unit_arrangement(units, obstacle_centres, obstacle_halves, gap)
+            found = _unit_arrangement(units, obstacle_centres, obstacle_halves, gap, budget)
         except OutOfBudget:
             found = OutOfBudget
         if len(_memo) >= MEMO_SIZE:
@@ -90,12 +99,12 @@ def unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves
 
 
 def _unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
-                      gap: float) -> np.ndarray | None:
+                      gap: float, budget: int) -> np.ndarray | None:
     """Root centres (u, 2) at which every member of each unit keeps ``gap`` (negative: overlaps
     by at most that much) from every member of another unit and from every obstacle, each root
     inside its walls; None where there is none.  Each unit stands as far up and left as the
     relations found let it (physics.fixed_relations spreads a layout over the room its
-    relations leave).  Raises OutOfBudget past NODE_BUDGET."""
+    relations leave).  Raises OutOfBudget past ``budget`` relations tried."""
     owner, offsets, halves = units.owner, units.offsets, units.halves
     count = len(units.lowest)
     if (units.lowest > units.highest + EPSILON).any():
@@ -245,7 +254,7 @@ def _unit_arrangement(units: Units, obstacle_centres: np.ndarray, obstacle_halve
             try:
                 for way in sorted(choices[index], key=room_left, reverse=True):
                     spent[0] += 1
-                    if spent[0] > NODE_BUDGET:
+                    if spent[0] > budget:
                         raise OutOfBudget
                     fits, raised, lowered = apply(way)
                     # every open pair keeps a way that fits: only those of a unit whose
@@ -344,6 +353,23 @@ def widest_bracket(units: Units, obstacle_centres: np.ndarray, obstacle_halves: 
             return found._replace(high=ask)
         found = _climbed(units, obstacles, roots, ask, found.high, found.exact)
     return found
+
+
+def wider_than(units: Units, obstacle_centres: np.ndarray, obstacle_halves: np.ndarray,
+               floor: float, high: float, budget: int) -> Bracket | None:
+    """A layout that keeps ``floor`` (at most ``high``), found by one search within
+    ``budget`` and widened by its own relations (physics.fixed_relations), without the climb
+    of ``widest_bracket``; None where the search finds none or runs out.  For a layout
+    better than one at hand, where the widest is not needed: relocation asks this of every
+    room and every closest pair, each finalize of every probe (RoomRelocation._set_down)."""
+    obstacles = obstacle_centres, obstacle_halves
+    try:
+        roots = unit_arrangement(units, *obstacles, floor, budget)
+    except OutOfBudget:
+        return None
+    if roots is None:
+        return None
+    return _climbed(units, obstacles, roots, floor, high, False)
 
 
 def _climbed(units: Units, obstacles: tuple, roots: np.ndarray, low: float, high: float,
