@@ -34,11 +34,21 @@ def engines_working_in(folder: Path) -> list[int]:
     return found
 
 
+def hang_ups_live() -> None:
+    """In the render's process before it starts: SIGHUP and SIGTERM as a terminal's job has
+    them.  Under `nohup` (a CI runner, a suite started over SSH) the suite and every process
+    below it start with SIGHUP ignored, and the command rightly keeps it so: the render went
+    on to write its PDF, and the SIGHUP case failed every run."""
+    for stop in (signal.SIGHUP, signal.SIGTERM):
+        signal.signal(stop, signal.SIG_DFL)
+
+
 def start_render(project: Path, out: Path, scratch: Path) -> subprocess.Popen:
     env = {**os.environ, "TMPDIR": str(scratch), "FLOATPAGE_CACHE_DIR": str(scratch / "cache")}
     return subprocess.Popen([sys.executable, "-m", "floatpage.cli.main", "render", "--no-settle",
                              str(project), "-o", str(out)], env=env, cwd=ROOT,
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=hang_ups_live)
 
 
 def wait_until(condition, timeout: float) -> bool:
