@@ -48,6 +48,17 @@ def position(app: FloatpageApp, item_id: str) -> tuple[float, float]:
     return app.session.engine.positions()[item_id]
 
 
+async def until(pilot, condition, seconds: float = 20.0) -> bool:
+    """Let the app run (its timers and queued keys too) until ``condition()`` holds, or
+    ``seconds`` of pauses pass; whether it holds. For keys sent past Pilot (straight into the
+    driver's queue), which Pilot does not wait for: a fixed 0.3 s was too short at load 9."""
+    for _ in range(int(seconds / 0.1)):
+        if condition():
+            return True
+        await pilot.pause(0.1)
+    return condition()
+
+
 async def type_text(pilot, text: str) -> None:
     await pilot.press(*[{" ": "space"}.get(char, char) for char in text])
 

@@ -16,14 +16,15 @@ from floatpage.model import load_project, save_project
 from floatpage.model.document import Page, PictureItem, Project, TextItem
 from floatpage.tui.cell_text import wrap_cells
 
-from editor_helpers import editor, position, preview_text, screen_of
+from editor_helpers import editor, position, preview_text, screen_of, until
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def type_ahead(app, *keys: str) -> None:
     """Send keys to the app the way a fast typist over SSH does: all of them in the driver's
-    queue at once, none waiting for the screen the one before opens."""
+    queue at once, none waiting for the screen the one before opens. Pilot does not wait for
+    them: a test waits for what they should do (`until`)."""
     for key in keys:
         event = events.Key(key, {"space": " "}.get(key, key if len(key) == 1 else None))
         event.set_sender(app)
@@ -39,8 +40,9 @@ async def test_keys_typed_ahead_of_a_dialog_go_to_the_dialog(project_path):
         chosen = screen_of(app).selected_id
         before = position(app, chosen)
         type_ahead(app, "p", "l")
-        await pilot.pause(0.3)
-        assert app.screen.id == "picture-dialog"
+        assert await until(pilot, lambda: app.screen.id == "picture-dialog"
+                           and app.screen.focused is not None), app.screen.id
+        await pilot.pause(0.3)  # where the `l` goes once the dialog has the focus
         assert position(app, chosen) == before
 
 
@@ -53,7 +55,8 @@ async def test_words_typed_ahead_of_a_form_are_typed_into_it_in_order(project_pa
         chosen = screen_of(app).selected_id
         before = position(app, chosen)
         type_ahead(app, "t", "H", "e", "l", "l", "o", "space", "h", "i")
-        await pilot.pause(0.3)
+        await until(pilot, lambda: app.screen.id == "text-dialog"
+                    and getattr(app.screen.focused, "text", None) == "Hello hi")
         assert app.screen.id == "text-dialog"
         assert app.screen.focused.text == "Hello hi"
         assert position(app, chosen) == before
@@ -64,7 +67,8 @@ async def test_a_choice_typed_ahead_reaches_the_dialog_the_one_before_opened(pro
     to the screen the key before it opened, through two dialogs."""
     async with editor(project_path) as (app, pilot):
         type_ahead(app, "i", "enter", "O", "k")
-        await pilot.pause(0.3)
+        await until(pilot, lambda: app.screen.id == "text-dialog"
+                    and getattr(app.screen.focused, "text", None) == "Ok")
         assert app.screen.id == "text-dialog"
         assert app.screen.focused.text == "Ok"
 

@@ -4,13 +4,12 @@ through the real app with Pilot, on a real project file."""
 from __future__ import annotations
 
 import shutil
-import time
 from pathlib import Path
 
 from floatpage.model import load_project
 from floatpage.tui.editor_screen import LOOK_AT_FILE_S
 
-from editor_helpers import editor, item, position
+from editor_helpers import editor, item, position, until
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -106,10 +105,9 @@ async def test_keep_editing_is_not_asked_again_for_the_same_change(project_path)
         await pilot.pause(3 * LOOK_AT_FILE_S)  # the look needs two to tell a change
         assert app.screen is app.editor, app.screen.id
         project_path.write_text(project_path.read_text().replace("and Ben", "and Bea"))
-        deadline = time.monotonic() + 30
-        while app.screen is app.editor and time.monotonic() < deadline:
-            await pilot.pause(0.1)
-        assert app.screen.id == "changed-on-disk-dialog"
+        assert await until(pilot, lambda: app.screen.id == "changed-on-disk-dialog")
+        await pilot.pause()  # mounted before the app closes
+        assert "changed card.toml just now" in app.screen.message  # the look's question
 
 
 async def test_save_and_quit_asks_too_and_quits_once_the_file_is_replaced(project_path):
