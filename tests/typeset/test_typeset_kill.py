@@ -79,7 +79,8 @@ def test_killing_render_stops_the_engine_and_cleans_up(tmp_path, how):
             render.kill()
     # The engine has seconds of work left; dying with its parent takes milliseconds.
     assert wait_until(lambda: not engines_working_in(scratch), 0.5), "LuaLaTeX outlived render"
-    assert not out.exists(), "no partial PDF at the output path"
+    assert not out.exists(), ("no partial PDF at the output path", render.returncode,
+                              render.stderr.read())
     leftovers = list(scratch.glob("floatpage-build-*"))
     if how in (signal.SIGTERM, signal.SIGHUP):  # a closed terminal unwinds as a kill does
         assert render.returncode == 130 and "interrupted" in render.stderr.read()
