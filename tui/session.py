@@ -1060,7 +1060,7 @@ class EditSession:
         `look_at_file` stays quiet about that state, as about one it told of itself. Else,
         a second after "Keep editing", the same question came again (and under load it came
         up between a test's keys). The stamp is taken before the content is read, so a change
-        made meanwhile is still seen at the next look."""
+        made after that read still differs at the next look and is told."""
         stamp = file_stamp(self.project.path)
         now = file_digest(self.project.path) if stamp is not None else "gone"
         if now is not None:
