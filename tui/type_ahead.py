@@ -47,9 +47,14 @@ class TypeAhead:
         except asyncio.TimeoutError:
             self.opened(screen)
             return
-        # Its on_mount has run (a dialog focuses its first field there); the refresh after it
-        # applies the auto focus of a screen that names none.
-        screen.call_after_refresh(self.opened, screen)
+        # Its on_mount has run. A dialog gives its first field the focus there, which Textual
+        # applies later, by a message to the App; until then the screen's auto focus may hold
+        # the form's scrolling box, which takes no keys. Keys handed on at the screen's own
+        # refresh went there while the App was busy (the words typed ahead of the text form
+        # were lost, the form opened empty). A message of ours, posted to the App now, is
+        # handled after that focus; the screen's refresh after it applies the auto focus of a
+        # screen that names none.
+        self.app.call_later(screen.call_after_refresh, self.opened, screen)
 
     def opened(self, screen: Screen) -> None:
         if self.opening is screen:
