@@ -15,12 +15,15 @@ timeout or the log. We call the engine directly, once:
 
 from __future__ import annotations
 
+import contextlib
 import os
 import shutil
 import signal
 import subprocess
+import threading
 import time
 from pathlib import Path
+from typing import Iterator
 
 from floatpage.typeset.errors import LatexCompileError, LogError, RenderError, TexNotFoundError
 from floatpage.typeset.latex_log import errors_with_items
@@ -99,21 +102,54 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
     """Run the engine on build_dir/main.tex; (exit code or None on timeout, seconds)."""
     memory_bytes = engine_memory_mb() << 20
     start = time.perf_counter()
-    process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                               env=engine_environment(picture_dir), start_new_session=True,
-                               preexec_fn=lambda: limit_engine(memory_bytes))
+    process = None
     try:
+        with stops_held() as held:
+            process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
+                                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                       env=engine_environment(picture_dir),
+                                       start_new_session=True,
+                                       preexec_fn=lambda: limit_engine(memory_bytes))
+        if held:
+            raise KeyboardInterrupt
         code = process.wait(timeout=timeout_s)
     except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)
         process.wait()
         code = None
     except BaseException:  # Ctrl+C or SIGTERM while typesetting: the engine goes too
-        os.killpg(process.pid, signal.SIGKILL)
-        process.wait()
+        if process is not None:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
         raise
     return code, time.perf_counter() - start
+
+
+STOPS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+
+
+@contextlib.contextmanager
+def stops_held() -> Iterator[list[int]]:
+    """While the engine is forked, a Ctrl+C, SIGTERM or SIGHUP is noted, not raised; the list
+    yielded holds those that came. Python runs its at-fork hooks in the parent (logging's
+    lock), and an exception raised there is printed and dropped ("Exception ignored in:
+    <function _releaseLock>"): a SIGHUP that came just then was lost, and the render went on
+    to write its PDF (1 run in 5 of the kill test at load 9). Only the main thread handles
+    signals, so elsewhere (the editor's export worker) nothing changes."""
+    held: list[int] = []
+    if threading.current_thread() is not threading.main_thread():
+        yield held
+        return
+    previous = {stop: signal.getsignal(stop) for stop in STOPS}
+    for stop, handler in previous.items():
+        if callable(handler):  # ignored or default signals stay so
+            signal.signal(stop, lambda signum, frame: held.append(signum))
+    try:
+        yield held
+    finally:
+        for stop, handler in previous.items():
+            if callable(handler):
+                signal.signal(stop, handler)
 
 
 def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
