@@ -53,8 +53,13 @@ def engine_memory_mb() -> int:
     return int(text)
 
 
-def limit_engine(memory_bytes: int) -> None:
-    """Run in the child between fork and exec: die with the parent, and cap memory."""
+def limit_engine(memory_bytes: int, parent: int) -> None:
+    """Run in the child between fork and exec: die with the parent, and cap memory.
+
+    The death signal is asked for only here, after the fork: a parent killed before that
+    (SIGKILL at that moment: the kill test's SIGKILL case once, at load 7) never sends it, and the
+    engine typeset on, an orphan. So the child then looks whether ``parent`` is still its
+    parent, and leaves at once if not (prctl(2) says to)."""
     try:
         import ctypes
 
@@ -62,6 +67,8 @@ def limit_engine(memory_bytes: int) -> None:
         libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
     except (OSError, AttributeError):
         pass  # not Linux: the timeout still stops a runaway engine
+    if os.getppid() != parent:
+        os._exit(1)
     try:
         import resource
 
@@ -101,6 +108,7 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
                ) -> tuple[int | None, float]:
     """Run the engine on build_dir/main.tex; (exit code or None on timeout, seconds)."""
     memory_bytes = engine_memory_mb() << 20
+    parent = os.getpid()
     start = time.perf_counter()
     process = None
     try:
@@ -109,7 +117,7 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
                                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                        env=engine_environment(picture_dir),
                                        start_new_session=True,
-                                       preexec_fn=lambda: limit_engine(memory_bytes))
+                                       preexec_fn=lambda: limit_engine(memory_bytes, parent))
         if held:
             raise KeyboardInterrupt
         code = process.wait(timeout=timeout_s)

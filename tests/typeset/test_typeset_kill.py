@@ -136,3 +136,62 @@ def test_a_hang_up_while_the_engine_is_forked_is_not_lost(tmp_path):
     assert "Exception ignored" not in said, said
     assert wait_until(lambda: not engines_working_in(scratch), 0.5), "LuaLaTeX outlived render"
     assert not out.exists()
+
+
+BEFORE_THE_DEATH_SIGNAL = """
+import os, pathlib, runpy, sys, time
+def slow_in_the_child():
+    # in the engine's child, before its preexec_fn asks for the death signal
+    if any(pathlib.Path(os.environ["TMPDIR"]).glob("floatpage-build-*/main.tex")):
+        pathlib.Path(os.environ["FORK_MARK"]).write_text(str(os.getpid()))
+        time.sleep(3)
+os.register_at_fork(after_in_child=slow_in_the_child)
+sys.argv[0] = "floatpage"
+runpy.run_module("floatpage.cli.main", run_name="__main__", alter_sys=True)
+"""
+
+
+def what_became_of(pid: int) -> str | None:
+    """"gone" once the process has exited, "became the engine" once it runs LuaLaTeX, None
+    while it is still the forked Python child."""
+    try:
+        exe = os.readlink(f"/proc/{pid}/exe")
+    except OSError:  # exited (a zombie has no executable either)
+        return "gone"
+    return "became the engine" if "tex" in Path(exe).name else None
+
+
+def test_a_render_killed_before_the_engine_asked_for_its_death_signal_leaves_no_engine(
+        tmp_path):
+    """The engine asks to die with the render (PR_SET_PDEATHSIG) between fork and exec; a
+    render killed before that never sends the signal, and LuaLaTeX typeset on, an orphan
+    (the SIGKILL case above, once at load 7). Here the child is held before that moment for
+    3 s, by a hook of the test's own, while the render is killed."""
+    project_folder = tmp_path / "calendar"
+    shutil.copytree(SAMPLE, project_folder)
+    scratch = tmp_path / "scratch"
+    scratch.mkdir()
+    mark = tmp_path / "child"
+    env = {**os.environ, "TMPDIR": str(scratch), "FLOATPAGE_CACHE_DIR": str(scratch / "cache"),
+           "FORK_MARK": str(mark)}
+    render = subprocess.Popen([sys.executable, "-c", BEFORE_THE_DEATH_SIGNAL, "render",
+                               "--no-settle", str(project_folder / "calendar-2027.toml"), "-o",
+                               str(tmp_path / "calendar.pdf")],
+                              env=env, cwd=ROOT, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL)
+    try:
+        assert wait_until(lambda: mark.exists() and mark.read_text().strip(), 120), \
+            "the engine was never forked"
+        child = int(mark.read_text())
+        render.kill()
+        render.wait(timeout=30)
+        # the child wakes 3 s later: it must leave then, not exec LuaLaTeX as an orphan
+        deadline = time.monotonic() + 60
+        while (became := what_became_of(child)) is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert became == "gone", f"the engine's child {became} after the render was killed"
+    finally:
+        if render.poll() is None:
+            render.kill()
+        for pid in engines_working_in(scratch):
+            os.kill(pid, signal.SIGKILL)
