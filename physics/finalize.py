@@ -56,6 +56,17 @@ FIRST_ATTEMPT_STALL = 15
 # with 60 (items in the margin 11.39 -> 11.33 on average), the same on eight crowded pages
 # (60-500 items) to 0.001 %, and the benchmark's over-full page's pass took 203 -> 104 rounds.
 OVERFULL_STALL = 20
+# ...and a first attempt with a second start to fall back on gives up once the closest pair's
+# shortfall from the clearance has shrunk by less than CREEP_GAIN in the last CREEP_ROUNDS: at
+# that pace closing it would take more than 800 rounds (and the pace only slows), past the
+# budget.  The stall test alone let such a run creep on while its moves' sum shrank by a
+# percent every fifteen rounds: seed 4016 of guide_cost.py's --first-seed 4000 (42 items,
+# 55 %) ran 436 rounds with guides, 59 without, then failed and took the packing either way
+# (its settle 1.73x the one without guides).  Of 1,240 first attempts that succeeded (seeds
+# 2000-12029 of guide_cost.py, guides off and on) the slowest shrank its shortfall by 11.6 %
+# in 40 rounds (seed 5012: 214 rounds); the others by at least 68 %.
+CREEP_ROUNDS = 40
+CREEP_GAIN = 0.05
 # When the gutter does not fit: at most this many bisection steps between the widest clearance
 # reached and the gutter, stopping once they are this close; each step aims only this far beyond
 # its clearance (near the limit, aiming further asks for room that is not there).
@@ -199,11 +210,13 @@ class _Projection:
         return int(any_xy(moves != 0).sum())
 
     def run(self, clearance: float, iterations: int, aim: float | None = None,
-            stall: int = STALL_ITERATIONS) -> bool:
+            stall: int = STALL_ITERATIONS, creep: bool = False) -> bool:
         """Jacobi projection in place; True once no pair is closer than ``clearance``.
 
         Pairs are pushed to ``aim`` (>= clearance): aiming a little beyond what is needed ends
         the projection sooner in a crowd, where neighbours keep undoing each other's moves.
+        With ``creep`` the run also gives up where its closest pair creeps towards the
+        clearance too slowly to reach it (CREEP_ROUNDS).
         """
         aim = clearance if aim is None else aim
         bodies, count = self.bodies, self.bodies.count
@@ -213,6 +226,7 @@ class _Projection:
         best, best_score = bodies.centres.copy(), np.inf
         hsum, deepest = self.pair_halves(i, j)
         last_gain = 0
+        shortfalls = []  # per round, the clearance less the closest pair's (with ``creep``)
         for iteration in range(iterations):
             if np.abs(bodies.centres - built_at).max() > skin / 2:
                 i, j, blocked = self.pairs(clearance + skin)
@@ -225,6 +239,11 @@ class _Projection:
             self.note_reached(min(closest, clearance))
             if closest >= clearance:
                 return True
+            if creep:
+                shortfalls.append(clearance - closest)
+                if iteration >= CREEP_ROUNDS and shortfalls[-1] > (1.0 - CREEP_GAIN) * \
+                        shortfalls[iteration - CREEP_ROUNDS]:
+                    break
             moves = moves_from_gaps(d, gaps, aim, blocked)
             violating = any_xy(moves != 0)
             depth = np.minimum(np.maximum(-gaps, 0.0), deepest)
@@ -356,7 +375,8 @@ def project_within(bodies: Bodies, page_w_mm: float, page_h_mm: float, gutter_mm
     if stall is None:
         stall = STALL_ITERATIONS if fall_back else FIRST_ATTEMPT_STALL
     if not hopeless and projection.run(gutter_mm + ROUNDING_MM, max_iterations,
-                                       aim=gutter_mm + AIM_BEYOND_MM, stall=stall):
+                                       aim=gutter_mm + AIM_BEYOND_MM, stall=stall,
+                                       creep=not fall_back):
         return True
     if not fall_back:
         return False

@@ -462,11 +462,327 @@ done:
     return result;
 }
 
+PyDoc_STRVAR(reach_of_doc,
+"reach_of(members, pair_lists, pair_ends, roots, movable, group_rows) -> (groups, rows, pairs)\n\n"
+"RestCheck.reached_by's answer for the rigid body ``members`` (int64 rows), worked out anew:\n"
+"the movable groups it touches by a pair of ``pair_lists`` (per row, its pairs' numbers) whose\n"
+"ends are ``pair_ends`` ((pairs, 2) int64), itself among them, in ascending order as the int64\n"
+"bytes of an array (``roots``: int64 per row; ``movable``: one bool per row, read at a root);\n"
+"their rows, group by group as ``group_rows`` lists them; and every pair of those rows, in\n"
+"ascending order.  Compiled: in Python sets it was a seventh of a 50-item page's snap\n"
+"(RestCheck.reach_python is the definition, tests/physics/test_rest_reach.py).");
+
+static PyObject *reach_of(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 6 || !PyList_Check(args[1]) || !PyList_Check(args[5])) {
+        PyErr_SetString(PyExc_TypeError, "reach_of(members, pair_lists: list, pair_ends, roots, "
+                        "movable, group_rows: list)");
+        return NULL;
+    }
+    PyObject *pair_lists = args[1], *group_rows = args[5];
+    Py_ssize_t count = PyList_GET_SIZE(pair_lists);
+    Py_buffer views[4];
+    int held = 0;
+    PyObject *result = NULL, *groups = NULL, *rows = NULL, *pairs = NULL;
+    char *touched = NULL, *is_group = NULL, *is_pair = NULL;
+    int64_t *group_buf = NULL;
+    if (PyList_GET_SIZE(group_rows) != count) {
+        PyErr_SetString(PyExc_ValueError, "group_rows: one list per row");
+        return NULL;
+    }
+    if (read_rows(args[0], &views[0], count) < 0)
+        goto done;
+    held++;
+    if (PyObject_GetBuffer(args[2], &views[1], PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        goto done;
+    held++;
+    if (views[1].itemsize != 8 || (views[1].ndim != 2 && views[1].len != 0)
+            || (views[1].ndim == 2 && views[1].shape[1] != 2)) {
+        PyErr_SetString(PyExc_TypeError, "pair_ends: a contiguous (pairs, 2) int64 array");
+        goto done;
+    }
+    Py_ssize_t pair_count = views[1].len / 16;
+    if (read_rows(args[3], &views[2], count) < 0)
+        goto done;
+    held++;
+    if (views[2].shape[0] != count) {
+        PyErr_SetString(PyExc_ValueError, "roots: one per row");
+        goto done;
+    }
+    if (read_flags(args[4], &views[3], count) < 0)
+        goto done;
+    held++;
+    const int64_t *members = views[0].buf, *ends = views[1].buf, *roots = views[2].buf;
+    const char *movable = views[3].buf;
+    Py_ssize_t member_count = views[0].shape[0];
+    touched = PyMem_Calloc(count + 1, 1);
+    is_group = PyMem_Calloc(count + 1, 1);
+    is_pair = PyMem_Calloc(pair_count + 1, 1);
+    group_buf = PyMem_Malloc((count + 1) * sizeof(int64_t));
+    if (touched == NULL || is_group == NULL || is_pair == NULL || group_buf == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t m = 0; m < member_count; m++) {
+        Py_ssize_t member = members[m];
+        touched[member] = 1;
+        PyObject *list = PyList_GET_ITEM(pair_lists, member);
+        if (!PyList_Check(list)) {
+            PyErr_SetString(PyExc_TypeError, "pair_lists: a list per row");
+            goto done;
+        }
+        for (Py_ssize_t k = 0; k < PyList_GET_SIZE(list); k++) {
+            Py_ssize_t pair = PyLong_AsSsize_t(PyList_GET_ITEM(list, k));
+            if (pair == -1 && PyErr_Occurred())
+                goto done;
+            if (pair < 0 || pair >= pair_count) {
+                PyErr_SetString(PyExc_IndexError, "pair_lists: a pair outside the table");
+                goto done;
+            }
+            int64_t i = ends[2 * pair], j = ends[2 * pair + 1];
+            if (i < 0 || i >= count || j < 0 || j >= count) {
+                PyErr_SetString(PyExc_IndexError, "pair_ends: a row outside the table");
+                goto done;
+            }
+            touched[i] = 1;
+            touched[j] = 1;
+        }
+    }
+    for (Py_ssize_t row = 0; row < count; row++) {
+        if (!touched[row])
+            continue;
+        int64_t root = roots[row];
+        if (root < 0 || root >= count) {
+            PyErr_SetString(PyExc_IndexError, "roots: a row outside the table");
+            goto done;
+        }
+        if (movable[root])
+            is_group[root] = 1;
+    }
+    Py_ssize_t group_count = 0;
+    rows = PyList_New(0);
+    if (rows == NULL)
+        goto done;
+    for (Py_ssize_t group = 0; group < count; group++) {
+        if (!is_group[group])
+            continue;
+        group_buf[group_count++] = group;
+        PyObject *list = PyList_GET_ITEM(group_rows, group);
+        if (!PyList_Check(list)) {
+            PyErr_SetString(PyExc_TypeError, "group_rows: a list per row");
+            goto done;
+        }
+        for (Py_ssize_t k = 0; k < PyList_GET_SIZE(list); k++) {
+            PyObject *item = PyList_GET_ITEM(list, k);
+            Py_ssize_t row = PyLong_AsSsize_t(item);
+            if (row == -1 && PyErr_Occurred())
+                goto done;
+            if (row < 0 || row >= count) {
+                PyErr_SetString(PyExc_IndexError, "group_rows: a row outside the table");
+                goto done;
+            }
+            if (PyList_Append(rows, item) < 0)
+                goto done;
+            PyObject *its = PyList_GET_ITEM(pair_lists, row);
+            if (!PyList_Check(its)) {
+                PyErr_SetString(PyExc_TypeError, "pair_lists: a list per row");
+                goto done;
+            }
+            for (Py_ssize_t q = 0; q < PyList_GET_SIZE(its); q++) {
+                Py_ssize_t pair = PyLong_AsSsize_t(PyList_GET_ITEM(its, q));
+                if (pair == -1 && PyErr_Occurred())
+                    goto done;
+                if (pair < 0 || pair >= pair_count) {
+                    PyErr_SetString(PyExc_IndexError, "pair_lists: a pair outside the table");
+                    goto done;
+                }
+                is_pair[pair] = 1;
+            }
+        }
+    }
+    pairs = PyList_New(0);
+    if (pairs == NULL)
+        goto done;
+    for (Py_ssize_t pair = 0; pair < pair_count; pair++) {
+        if (!is_pair[pair])
+            continue;
+        PyObject *value = PyLong_FromSsize_t(pair);
+        if (value == NULL || PyList_Append(pairs, value) < 0) {
+            Py_XDECREF(value);
+            goto done;
+        }
+        Py_DECREF(value);
+    }
+    groups = PyBytes_FromStringAndSize((const char *)group_buf,
+                                       group_count * (Py_ssize_t)sizeof(int64_t));
+    if (groups == NULL)
+        goto done;
+    result = PyTuple_Pack(3, groups, rows, pairs);
+done:
+    Py_XDECREF(groups);
+    Py_XDECREF(rows);
+    Py_XDECREF(pairs);
+    PyMem_Free(touched);
+    PyMem_Free(is_group);
+    PyMem_Free(is_pair);
+    PyMem_Free(group_buf);
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    return result;
+}
+
+PyDoc_STRVAR(unlisted_near_doc,
+"unlisted_near(members, axis, shift, centres, found_at, halves, active_rows, roots,\n"
+"              pair_lists, pair_ends, gap, margin) -> bool\n\n"
+"Whether the rigid body ``members`` moved by ``shift`` along ``axis`` would touch (within\n"
+"``gap``, edge to edge on both axes) an active row its pairs do not list.  The pairs were found\n"
+"at ``found_at`` within ``gap`` + ``margin``: none can be missing unless the members' travel\n"
+"from there (this move included) and the farthest any active row has travelled add up to more\n"
+"than ``margin``, the larger of |dx| and |dy| each; only then are the rows looked at.  The rest\n"
+"check's sums read the listed pairs alone, so a body that travelled past them could be pushed\n"
+"beyond the limit unseen (RestCheck.keeps_rest).");
+
+static PyObject *unlisted_near(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    if (nargs != 12 || !PyList_Check(args[8])) {
+        PyErr_SetString(PyExc_TypeError, "unlisted_near(members, axis, shift, centres, found_at, "
+                        "halves, active_rows, roots, pair_lists: list, pair_ends, gap, margin)");
+        return NULL;
+    }
+    int axis = PyLong_AsLong(args[1]);
+    double shift = PyFloat_AsDouble(args[2]);
+    double gap = PyFloat_AsDouble(args[10]), margin = PyFloat_AsDouble(args[11]);
+    if (PyErr_Occurred())
+        return NULL;
+    if (axis != 0 && axis != 1) {
+        PyErr_SetString(PyExc_ValueError, "axis: 0 or 1");
+        return NULL;
+    }
+    PyObject *pair_lists = args[8];
+    Py_buffer views[7];
+    int held = 0, near = 0;
+    char *listed = NULL;
+    PyObject *result = NULL;
+    if (read_row_pairs(args[3], &views[0], "centres") < 0)
+        goto done;
+    held++;
+    Py_ssize_t count = views[0].shape[0];
+    if (PyList_GET_SIZE(pair_lists) != count) {
+        PyErr_SetString(PyExc_ValueError, "pair_lists: one list per row");
+        goto done;
+    }
+    if (read_rows(args[0], &views[1], count) < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[4], &views[2], count, "found_at") < 0)
+        goto done;
+    held++;
+    if (read_pairs_of(args[5], &views[3], count, "halves") < 0)
+        goto done;
+    held++;
+    if (read_rows(args[6], &views[4], count) < 0)
+        goto done;
+    held++;
+    if (read_rows(args[7], &views[5], count) < 0)
+        goto done;
+    held++;
+    if (views[5].shape[0] != count) {
+        PyErr_SetString(PyExc_ValueError, "roots: one per row");
+        goto done;
+    }
+    if (PyObject_GetBuffer(args[9], &views[6], PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        goto done;
+    held++;
+    if (views[6].itemsize != 8 || (views[6].ndim != 2 && views[6].len != 0)
+            || (views[6].ndim == 2 && views[6].shape[1] != 2)) {
+        PyErr_SetString(PyExc_TypeError, "pair_ends: a contiguous (pairs, 2) int64 array");
+        goto done;
+    }
+    const double *centres = views[0].buf, *found_at = views[2].buf, *halves = views[3].buf;
+    const int64_t *members = views[1].buf, *active_rows = views[4].buf, *ends = views[6].buf;
+    Py_ssize_t member_count = views[1].shape[0], active = views[4].shape[0];
+    Py_ssize_t pair_count = views[6].len / 16;
+    double others = 0.0, mine = 0.0;
+    for (Py_ssize_t q = 0; q < active; q++) {
+        Py_ssize_t row = active_rows[q];
+        for (int a = 0; a < 2; a++) {
+            double travel = fabs(centres[2 * row + a] - found_at[2 * row + a]);
+            others = travel > others ? travel : others;
+        }
+    }
+    for (Py_ssize_t m = 0; m < member_count; m++) {
+        Py_ssize_t row = members[m];
+        for (int a = 0; a < 2; a++) {
+            double at = a == axis ? centres[2 * row + a] + shift : centres[2 * row + a];
+            double travel = fabs(at - found_at[2 * row + a]);
+            mine = travel > mine ? travel : mine;
+        }
+    }
+    if (mine + others <= margin)
+        goto answer;
+    listed = PyMem_Calloc(count + 1, 1); /* 1: a member; 2: a listed partner of this member */
+    if (listed == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t m = 0; m < member_count; m++)
+        listed[members[m]] = 1;
+    for (Py_ssize_t m = 0; m < member_count && !near; m++) {
+        Py_ssize_t row = members[m];
+        PyObject *list = PyList_GET_ITEM(pair_lists, row);
+        if (!PyList_Check(list)) {
+            PyErr_SetString(PyExc_TypeError, "pair_lists: a list per row");
+            goto done;
+        }
+        Py_ssize_t size = PyList_GET_SIZE(list);
+        for (int mark = 2; mark >= 0; mark -= 2) { /* mark the partners, look, unmark them */
+            if (mark == 0) {
+                double x = centres[2 * row] + (axis == 0 ? shift : 0.0);
+                double y = centres[2 * row + 1] + (axis == 1 ? shift : 0.0);
+                for (Py_ssize_t q = 0; q < active && !near; q++) {
+                    Py_ssize_t other = active_rows[q];
+                    if (listed[other])
+                        continue;
+                    near = fabs(centres[2 * other] - x) < halves[2 * row] + halves[2 * other] + gap
+                           && fabs(centres[2 * other + 1] - y)
+                              < halves[2 * row + 1] + halves[2 * other + 1] + gap;
+                }
+            }
+            for (Py_ssize_t k = 0; k < size; k++) {
+                Py_ssize_t pair = PyLong_AsSsize_t(PyList_GET_ITEM(list, k));
+                if (pair == -1 && PyErr_Occurred())
+                    goto done;
+                if (pair < 0 || pair >= pair_count) {
+                    PyErr_SetString(PyExc_IndexError, "pair_lists: a pair outside the table");
+                    goto done;
+                }
+                int64_t other = ends[2 * pair] == row ? ends[2 * pair + 1] : ends[2 * pair];
+                if (other < 0 || other >= count) {
+                    PyErr_SetString(PyExc_IndexError, "pair_ends: a row outside the table");
+                    goto done;
+                }
+                if (listed[other] != 1)
+                    listed[other] = (char)mark;
+            }
+        }
+    }
+answer:
+    result = PyBool_FromLong(near);
+done:
+    PyMem_Free(listed);
+    for (int k = 0; k < held; k++)
+        PyBuffer_Release(&views[k]);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"rest_net", (PyCFunction)(void (*)(void))rest_net, METH_FASTCALL, rest_net_doc},
     {"held_on_lines", (PyCFunction)(void (*)(void))held_on_lines, METH_FASTCALL,
      held_on_lines_doc},
     {"line_mates", (PyCFunction)(void (*)(void))line_mates, METH_FASTCALL, line_mates_doc},
+    {"reach_of", (PyCFunction)(void (*)(void))reach_of, METH_FASTCALL, reach_of_doc},
+    {"unlisted_near", (PyCFunction)(void (*)(void))unlisted_near, METH_FASTCALL,
+     unlisted_near_doc},
     {NULL, NULL, 0, NULL},
 };
 

@@ -776,20 +776,7 @@ static void sweep_dealloc(Sweep *self)
     Py_CLEAR(self->mover_mask);
     Py_CLEAR(self->aligned);
     Py_CLEAR(self->keeps_rest);
-    Py_CLEAR(self->reached_by);
-    Py_CLEAR(self->rest_net);
-    Py_CLEAR(self->net_args);
-    Py_CLEAR(self->held_on_lines);
-    Py_CLEAR(self->hold_args);
-    Py_CLEAR(self->no_rows);
-    Py_CLEAR(self->zero);
-    Py_CLEAR(self->scratch_rows);
-    Py_CLEAR(self->scratch_owner);
-    Py_CLEAR(self->root_list);
-    Py_CLEAR(self->group_rows);
-    Py_CLEAR(self->pairs_of);
-    Py_CLEAR(self->line_mates);
-    Py_CLEAR(self->mate_args);
+    drop_rest(self);
     PyMem_Free(self->before_known);
     PyMem_Free(self->before_held);
     PyMem_Free(self->before_push);
@@ -819,25 +806,49 @@ static int take_tables(PyObject *pair, PyObject **tables)
 /* The rest check's parts (RestCheck.compiled_parts), read when the Sweep is made or, from
    their maker (DeferredRest.compiled_parts), before the first move that needs the check: a page
    whose moves are all nudges, or that has none, never builds it (physics/deferred_rest.py). */
+static void drop_rest(Sweep *self)
+{
+    Py_CLEAR(self->reached_by);
+    Py_CLEAR(self->rest_net);
+    Py_CLEAR(self->net_args);
+    Py_CLEAR(self->held_on_lines);
+    Py_CLEAR(self->hold_args);
+    Py_CLEAR(self->no_rows);
+    Py_CLEAR(self->zero);
+    Py_CLEAR(self->scratch_rows);
+    Py_CLEAR(self->scratch_owner);
+    Py_CLEAR(self->root_list);
+    Py_CLEAR(self->group_rows);
+    Py_CLEAR(self->pairs_of);
+    Py_CLEAR(self->line_mates);
+    Py_CLEAR(self->mate_args);
+    Py_CLEAR(self->unlisted);
+    Py_CLEAR(self->unlisted_args);
+    Py_CLEAR(self->refind);
+    self->rest_taken = 0;
+}
+
 static int take_rest(Sweep *self, PyObject *parts)
 {
     PyObject *reached_by, *rest_net, *net_args, *held_on_lines, *hold_args, *no_rows,
-        *root_list, *group_rows, *pairs_of, *scratch_rows, *scratch_owner, *mates, *mate_args;
+        *root_list, *group_rows, *pairs_of, *scratch_rows, *scratch_owner, *mates, *mate_args,
+        *unlisted, *unlisted_args, *refind;
     int grouped;
     Py_ssize_t count = self->count;
     if (!PyTuple_Check(parts)) {
         PyErr_SetString(PyExc_TypeError, "rest: the parts as a tuple");
         return -1;
     }
-    if (!PyArg_ParseTuple(parts, "OOO!OO!OOOO!O!O!pddOO!:rest", &reached_by, &rest_net,
+    if (!PyArg_ParseTuple(parts, "OOO!OO!OOOO!O!O!pddOO!OO!O:rest", &reached_by, &rest_net,
                           &PyTuple_Type, &net_args, &held_on_lines, &PyTuple_Type,
                           &hold_args, &no_rows, &scratch_rows, &scratch_owner,
                           &PyList_Type, &root_list, &PyList_Type, &group_rows,
                           &PyList_Type, &pairs_of, &grouped, &self->limit, &self->hold,
-                          &mates, &PyTuple_Type, &mate_args))
+                          &mates, &PyTuple_Type, &mate_args, &unlisted, &PyTuple_Type,
+                          &unlisted_args, &refind))
         return -1;
     if (PyTuple_GET_SIZE(net_args) != 5 || PyTuple_GET_SIZE(hold_args) != 7
-            || PyTuple_GET_SIZE(mate_args) != 6
+            || PyTuple_GET_SIZE(mate_args) != 6 || PyTuple_GET_SIZE(unlisted_args) != 9
             || PyList_GET_SIZE(root_list) != count
             || PyList_GET_SIZE(group_rows) != count || PyList_GET_SIZE(pairs_of) != count) {
         PyErr_SetString(PyExc_ValueError, "rest: five net arguments, lists per row");
@@ -857,6 +868,9 @@ static int take_rest(Sweep *self, PyObject *parts)
     self->pairs_of = Py_NewRef(pairs_of);
     self->line_mates = Py_NewRef(mates);
     self->mate_args = Py_NewRef(mate_args);
+    self->unlisted = Py_NewRef(unlisted);
+    self->unlisted_args = Py_NewRef(unlisted_args);
+    self->refind = Py_NewRef(refind);
     self->zero = PyFloat_FromDouble(0.0);
     if (self->zero == NULL)
         return -1;

@@ -317,6 +317,26 @@ done:
 }
 
 
+/* RestCheck.unlisted_near(members, axis, shift): 1 if the move would meet a row its pairs do
+   not list, 0 if not, -1 on an error */
+static int unlisted_near(Sweep *self, PyObject *members, int axis, PyObject *shift)
+{
+    PyObject *axis_now = PyLong_FromLong(axis);
+    if (axis_now == NULL)
+        return -1;
+    PyObject *parts = self->unlisted_args;
+    PyObject *args[12] = {members, axis_now, shift};
+    for (Py_ssize_t k = 0; k < 9; k++)
+        args[3 + k] = PyTuple_GET_ITEM(parts, k);
+    PyObject *found = PyObject_Vectorcall(self->unlisted, args, 12, NULL);
+    Py_DECREF(axis_now);
+    if (found == NULL)
+        return -1;
+    int near = PyObject_IsTrue(found);
+    Py_DECREF(found);
+    return near;
+}
+
 /* RestCheck.keeps_rest(members, axis, shift) */
 static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
 {
@@ -328,6 +348,20 @@ static int keeps_rest(Sweep *self, PyObject *members, int axis, PyObject *shift)
         Py_DECREF(parts);
         if (taken < 0)
             return -1;
+    }
+    int unlisted = unlisted_near(self, members, axis, shift);
+    if (unlisted < 0)
+        return -1;
+    if (unlisted) { /* the pairs found again where the items are now: RestCheck.refind */
+        PyObject *parts = PyObject_CallNoArgs(self->refind);
+        if (parts == NULL)
+            return -1;
+        drop_rest(self);
+        int taken = take_rest(self, parts);
+        Py_DECREF(parts);
+        if (taken < 0)
+            return -1;
+        memset(self->before_known, 0, self->count);
     }
     PyObject *found = PyObject_CallOneArg(self->reached_by, members);
     if (found == NULL)

@@ -57,6 +57,8 @@ typedef struct {
     PyObject *scratch_rows, *scratch_owner; /* int64, one per row: held_of's rows, owners */
     PyObject *root_list, *group_rows, *pairs_of;
     PyObject *line_mates, *mate_args; /* RestCheck.keeps_holds: the function, its arguments */
+    PyObject *unlisted, *unlisted_args; /* RestCheck.unlisted_near: the function, its arguments */
+    PyObject *refind; /* RestCheck.refind: the check built anew, its parts to read again */
     char *before_known, *before_held; /* per group: RestCheck.as_it_is's, until a move */
     double *before_push, *before_net; /* per group: its push, its net (x, y) */
     /* what the scoring (snap_scoring_core.h, called directly) reads, read once in sweep_new:
@@ -80,6 +82,8 @@ typedef struct {
 
 /* the rest check's parts read into the Sweep (snap_sweep_kernel.c), now or at its first use */
 static int take_rest(Sweep *self, PyObject *parts);
+/* ...and let go of, before they are read again (RestCheck.refind) */
+static void drop_rest(Sweep *self);
 
 enum { FIT_CENTRES, FIT_HALVES, FIT_LOWEST, FIT_HIGHEST, FIT_TABLE_X, FIT_TABLE_Y,
        FIT_LIMIT_VALUES, FIT_VIEWS };

@@ -47,19 +47,23 @@ class TypeAhead:
         except asyncio.TimeoutError:
             self.opened(screen)
             return
-        # Its on_mount has run. A dialog gives its first field the focus there, which Textual
-        # applies later, by a message to the App; until then the screen's auto focus may hold
-        # the form's scrolling box, which takes no keys. Keys handed on at the screen's own
-        # refresh went there while the App was busy (the words typed ahead of the text form
-        # were lost, the form opened empty). A message of ours, posted to the App now, is
-        # handled after that focus; the screen's refresh after it applies the auto focus of a
-        # screen that names none.
-        self.app.call_later(screen.call_after_refresh, self.opened, screen)
+        # Its on_mount has run (a dialog focuses its first field there); the refresh after it
+        # applies the auto focus of a screen that names none.
+        screen.call_after_refresh(self.opened, screen)
 
     def opened(self, screen: Screen) -> None:
+        """``screen`` is mounted: its keys go to it once the focus its on_mount asked for is
+        given.  A widget's focus() is a message at the back of the App's queue, so the keys
+        wait behind it there (``let_keys_in``), still held: on a loaded machine a drain
+        already queued ran before that focus and handed the "Ok" typed ahead through the
+        insert and text dialogs to the form's scroll container, which dropped it."""
+        if self.opening is screen:
+            self.app.call_later(self.let_keys_in, screen)
+
+    async def let_keys_in(self, screen: Screen) -> None:
         if self.opening is screen:
             self.opening = None
-            self.app.call_next(self.drain)
+            await self.drain()
 
     def holds(self, event: events.Key) -> bool:
         """Queue `event` if a screen is opening or keys before it still wait; True if queued."""

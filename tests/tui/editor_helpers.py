@@ -33,6 +33,16 @@ async def editor(path: Path, size: tuple[int, int] = SIZE, *, autostart: bool = 
         yield app, pilot
 
 
+async def until(pilot, condition, seconds: float = 10.0) -> bool:
+    """Wait, a tenth of a second at a time, until ``condition()`` holds, at most ``seconds``:
+    a fixed pause that suits an idle machine is too short on a loaded CI runner."""
+    for _ in range(int(seconds / 0.1)):
+        if condition():
+            return True
+        await pilot.pause(0.1)
+    return condition()
+
+
 def screen_of(app: FloatpageApp) -> EditorScreen:
     return app.editor
 
@@ -46,17 +56,6 @@ def item(app: FloatpageApp, item_id: str):
 
 def position(app: FloatpageApp, item_id: str) -> tuple[float, float]:
     return app.session.engine.positions()[item_id]
-
-
-async def until(pilot, condition, seconds: float = 20.0) -> bool:
-    """Let the app run (its timers and queued keys too) until ``condition()`` holds, or
-    ``seconds`` of pauses pass; whether it holds. For keys sent past Pilot (straight into the
-    driver's queue), which Pilot does not wait for: a fixed 0.3 s was too short at load 9."""
-    for _ in range(int(seconds / 0.1)):
-        if condition():
-            return True
-        await pilot.pause(0.1)
-    return condition()
 
 
 async def type_text(pilot, text: str) -> None:
