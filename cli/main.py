@@ -682,6 +682,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     except BrokenPipeError:
         return EXIT_OK
     except Exception as error:  # a bug of ours: keep the details, show a short message
+        from floatpage.cli.entry import interrupted
+
+        if interrupted(error):  # a Ctrl+C that Python wrapped (see entry.interrupted)
+            print("floatpage: interrupted", file=sys.stderr)
+            return 130
         log = write_crash_log()
         print(f"floatpage: internal error: {type(error).__name__}: {printable(str(error))}\n"
               f"  this is a bug in floatpage, not in your project; details are in {log}\n"

@@ -16,6 +16,9 @@ DEBIAN_PACKAGES=(
   libfribidi0
   # a C compiler and the Python headers: pip builds the snap's compiled units (physics/*_kernel.c)
   gcc python3-dev
+  # the tests drive the real editor in a tmux pane (tests/tui/test_editor_walk7.py); a fresh
+  # Debian has none, and without it that test fails (FileNotFoundError)
+  tmux
 )
 
 missing=()

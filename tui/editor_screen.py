@@ -923,6 +923,7 @@ class EditorScreen(Screen):
         """The question for a project file another program changed (Ctrl+S's, and the one
         `look_at_file` asks as soon as it sees the change): replace it, open it as it is
         now, or keep editing."""
+        self.session.told_of_the_file()  # answered here: the timer does not ask it again
         name = printable(self.session.project.path.name)
         self.ask(ChoiceDialog(f"{name} was changed by another program",
                               [("Replace it with the editor's version", "replace"),

@@ -1005,6 +1005,18 @@ class EditSession:
         now = file_digest(self.project.path)
         return now is not None and now != self.disk_digest
 
+    def told_of_the_file(self) -> None:
+        """The user is being asked about the file as it now is (Ctrl+S's question): the timer's
+        `look_at_file` stays quiet about that state, as about one it told of itself. Else,
+        a second after "Keep editing", the same question came again (and under load it came
+        up between a test's keys). The stamp is taken before the content is read, so a change
+        made after that read still differs at the next look and is told."""
+        stamp = file_stamp(self.project.path)
+        now = file_digest(self.project.path) if stamp is not None else "gone"
+        if now is not None:
+            self.disk_stamp = self.stamp_seen = stamp
+            self.disk_told = now
+
     def finalize_for_export(self) -> Project:
         """Run the no-overlap pass on every page, write positions back; return a copy to render.
 

@@ -15,12 +15,15 @@ timeout or the log. We call the engine directly, once:
 
 from __future__ import annotations
 
+import contextlib
 import os
 import shutil
 import signal
 import subprocess
+import threading
 import time
 from pathlib import Path
+from typing import Iterator
 
 from floatpage.typeset.errors import LatexCompileError, LogError, RenderError, TexNotFoundError
 from floatpage.typeset.latex_log import errors_with_items
@@ -50,8 +53,13 @@ def engine_memory_mb() -> int:
     return int(text)
 
 
-def limit_engine(memory_bytes: int) -> None:
-    """Run in the child between fork and exec: die with the parent, and cap memory."""
+def limit_engine(memory_bytes: int, parent: int) -> None:
+    """Run in the child between fork and exec: die with the parent, and cap memory.
+
+    The death signal is asked for only here, after the fork: a parent killed before that
+    (SIGKILL at that moment: the kill test's SIGKILL case once, at load 7) never sends it, and the
+    engine typeset on, an orphan. So the child then looks whether ``parent`` is still its
+    parent, and leaves at once if not (prctl(2) says to)."""
     try:
         import ctypes
 
@@ -59,6 +67,8 @@ def limit_engine(memory_bytes: int) -> None:
         libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
     except (OSError, AttributeError):
         pass  # not Linux: the timeout still stops a runaway engine
+    if os.getppid() != parent:
+        os._exit(1)
     try:
         import resource
 
@@ -98,22 +108,56 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
                ) -> tuple[int | None, float]:
     """Run the engine on build_dir/main.tex; (exit code or None on timeout, seconds)."""
     memory_bytes = engine_memory_mb() << 20
+    parent = os.getpid()
     start = time.perf_counter()
-    process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                               env=engine_environment(picture_dir), start_new_session=True,
-                               preexec_fn=lambda: limit_engine(memory_bytes))
+    process = None
     try:
+        with stops_held() as held:
+            process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
+                                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                       env=engine_environment(picture_dir),
+                                       start_new_session=True,
+                                       preexec_fn=lambda: limit_engine(memory_bytes, parent))
+        if held:
+            raise KeyboardInterrupt
         code = process.wait(timeout=timeout_s)
     except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)
         process.wait()
         code = None
     except BaseException:  # Ctrl+C or SIGTERM while typesetting: the engine goes too
-        os.killpg(process.pid, signal.SIGKILL)
-        process.wait()
+        if process is not None:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
         raise
     return code, time.perf_counter() - start
+
+
+STOPS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+
+
+@contextlib.contextmanager
+def stops_held() -> Iterator[list[int]]:
+    """While the engine is forked, a Ctrl+C, SIGTERM or SIGHUP is noted, not raised; the list
+    yielded holds those that came. Python runs its at-fork hooks in the parent (logging's
+    lock), and an exception raised there is printed and dropped ("Exception ignored in:
+    <function _releaseLock>"): a SIGHUP that came just then was lost, and the render went on
+    to write its PDF (1 run in 5 of the kill test at load 9). Only the main thread handles
+    signals, so elsewhere (the editor's export worker) nothing changes."""
+    held: list[int] = []
+    if threading.current_thread() is not threading.main_thread():
+        yield held
+        return
+    previous = {stop: signal.getsignal(stop) for stop in STOPS}
+    for stop, handler in previous.items():
+        if callable(handler):  # ignored or default signals stay so
+            signal.signal(stop, lambda signum, frame: held.append(signum))
+    try:
+        yield held
+    finally:
+        for stop, handler in previous.items():
+            if callable(handler):
+                signal.signal(stop, handler)
 
 
 def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,

@@ -120,12 +120,16 @@ def restore_save_and_quit(path: Path, answer: bytes, *shown: bytes) -> None:
 
 
 def edit_something(editor: Editor) -> None:
+    """Select the first item and move it; returns once the editor shows the edit unsaved
+    (a fixed 0.8 s after the keys was all the wait before: on a loaded machine the editor
+    may not have taken the keys by then, and the recovery file would hold no move)."""
     editor.read_until(b"items")
     editor.send(b"\t")  # select the first item
     editor.drain(0.5)
     for _ in range(5):
         editor.send(b"\x1b[C")  # Right: move it
         editor.drain(0.1)
+    editor.read_until(b"unsaved")
     editor.drain(0.8)
 
 

@@ -7,8 +7,9 @@ import shutil
 from pathlib import Path
 
 from floatpage.model import load_project
+from floatpage.tui.editor_screen import LOOK_AT_FILE_S
 
-from editor_helpers import editor, item, position
+from editor_helpers import editor, item, position, until
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -88,6 +89,25 @@ async def test_the_file_as_another_program_left_it_can_be_opened_in_its_place(pr
         await pilot.pause()
         assert app.screen is app.editor and app.session.unsaved  # the editor's version kept
         assert "and Ben" in app.session.project.pages[0].item("title").text
+
+
+async def test_keep_editing_is_not_asked_again_for_the_same_change(project_path):
+    """Ctrl+S asked about the file vim changed, and the user chose "Keep editing": a second
+    later the editor's look at the file asked the same question again (it knew only of the
+    changes it had told of itself; under load it came up between a test's keys). A change
+    made after the answer is still asked about."""
+    async with editor(project_path) as (app, pilot):
+        await nudged_then_saved_over(pilot, project_path)
+        assert app.screen.id == "changed-on-disk-dialog"
+        await pilot.press("escape")  # keep editing
+        await pilot.pause()
+        assert app.screen is app.editor
+        await pilot.pause(3 * LOOK_AT_FILE_S)  # the look needs two to tell a change
+        assert app.screen is app.editor, app.screen.id
+        project_path.write_text(project_path.read_text().replace("and Ben", "and Bea"))
+        assert await until(pilot, lambda: app.screen.id == "changed-on-disk-dialog")
+        await pilot.pause()  # mounted before the app closes
+        assert "changed card.toml just now" in app.screen.message  # the look's question
 
 
 async def test_save_and_quit_asks_too_and_quits_once_the_file_is_replaced(project_path):
