@@ -47,9 +47,11 @@ class TypeAhead:
         except asyncio.TimeoutError:
             self.opened(screen)
             return
-        # Its on_mount has run (a dialog focuses its first field there); the refresh after it
-        # applies the auto focus of a screen that names none.
-        screen.call_after_refresh(self.opened, screen)
+        # Its on_mount has run: a dialog gives its first field the focus there, by a message
+        # to the App. A message of ours posted to the App now is handled after it, and the
+        # screen's refresh after that applies the auto focus of a screen that names none
+        # (the refresh alone came first now and then on a loaded machine: flake-hunt).
+        self.app.call_later(screen.call_after_refresh, self.opened, screen)
 
     def opened(self, screen: Screen) -> None:
         """``screen`` is mounted: its keys go to it once the focus its on_mount asked for is
