@@ -118,8 +118,8 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
                                        env=engine_environment(picture_dir),
                                        start_new_session=True,
                                        preexec_fn=lambda: limit_engine(memory_bytes, parent))
-        if held:
-            raise KeyboardInterrupt
+        if held:  # now, to the handler it was meant for (the command's raises KeyboardInterrupt)
+            signal.raise_signal(held[0])
         code = process.wait(timeout=timeout_s)
     except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)
