@@ -445,7 +445,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         if settle_may_help(lines):
             with progress_line(not sys.stdout.isatty()) as show:
                 show(f"page {printable(page.id)}: trying whether a settle mends it…")
-                mends = settle_mends(page, project.physics)
+                mends = settle_mends(page, project.physics, problems)
             if not mends:
                 lines, problems = page_report(page, engine_for_page(page, project.physics),
                                               project.physics.gutter_mm, stuck=True)

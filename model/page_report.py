@@ -73,24 +73,25 @@ def page_report(page, engine, gutter_mm: float, *, stuck: bool = False
     return lines, problems
 
 
-def settle_mends(page, physics) -> bool:
-    """Whether a settle of ``page`` (on a copy: the page is left as it is) leaves fewer of the
-    problems `check` counts.  A page a settle leaves as it is (a card's size typed down to A6,
-    settled: items off it), or moves without mending (too full), was sent back to `settle` by
+def settle_mends(page, physics, problems: int) -> bool:
+    """Whether a settle of ``page`` (on a copy: the page is left as it is) leaves fewer than
+    ``problems``, the count ``page_report`` gave the page as it is (the caller has it: its
+    limits are the dearest part of a report).  A page a settle leaves as it is (a card's size
+    typed down to A6, settled: items off it), or moves without mending (too full), was sent
+    back to `settle` by
     every line and by `check --strict`'s closing line, and settle then said "another settle
     changes nothing" (user-walk-9, user-walk-10).  As costly as a settle of the page; `check`
     asks only of a page whose lines would send the user to settle."""
     from floatpage.model.errors import FloatpageError
     from floatpage.model.layout import copy_of, engine_for_page, settle_page
 
-    before = page_report(page, engine_for_page(page, physics), physics.gutter_mm)[1]
     trial = copy_of(page)
     try:
         settle_page(trial, physics)
     except FloatpageError:  # settle refuses the page (items piled up): it says why itself
         return True
     after = page_report(trial, engine_for_page(trial, physics), physics.gutter_mm)[1]
-    return after < before
+    return after < problems
 
 
 def page_reasons(page, engine, gutter_mm: float, *, stuck: bool = False
