@@ -31,9 +31,7 @@ from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
 from floatpage.tui.history import History, Snapshot
-from floatpage.tui.page_resize import (  # noqa: F401  (keep_inside_margin: its old home)
-    keep_inside_margin, keepers_of, resize_page, scale_follow_offsets, size_words,
-)
+from floatpage.tui.page_resize import keepers_of, resize_page, scale_follow_offsets, size_words
 from floatpage.tui.reading_order import reading_order, step_through
 
 MIN_SIDE_MM = 3.0
