@@ -109,7 +109,10 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
     def on_mount(self) -> None:
         for widget in self.query("Input, TextArea"):
             widget.cursor_blink = getattr(self.app, "cursor_blink", True)
-        self.first_field().focus()
+        # the form scrolls to the cursor itself (show_cursor): the focus's own scroll, which
+        # shows the field's first row, came after it in some turns of the event loop and hid
+        # the cursor of a 20 x 6 form again (tools/shuffled_loop.py)
+        self.first_field().focus(scroll_visible=False)
         self.call_after_refresh(self._cursor_to_end)
 
     def first_field(self):

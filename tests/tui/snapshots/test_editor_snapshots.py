@@ -7,12 +7,24 @@ Review a changed snapshot in the report before running `pytest --snapshot-update
 from __future__ import annotations
 
 from floatpage.tui.app import make_app
+from floatpage.tui.page_preview import PagePreview
+
+from editor_helpers import until
 
 
 def frozen_app(project_path):
     app = make_app(project_path, seed=0, autostart=False)
     app.cursor_blink = False
     return app
+
+
+async def select(pilot, item_id: str) -> None:
+    """Select an item once the editor's preview is mounted: a snapshot's pilot may start
+    before the default screen's children are (the event loop's order shuffled showed it,
+    tools/shuffled_loop.py), and a selection redraws the preview."""
+    assert await until(pilot, lambda: pilot.app.editor.query(PagePreview))
+    pilot.app.editor.selected_id = item_id
+    await pilot.pause()
 
 
 def test_main_screen(project_path, snap_compare):
@@ -27,8 +39,7 @@ def test_main_screen(project_path, snap_compare):
     status lines speak words ('paused · Space resumes', 'no overlaps · gaps kept · v details'); the footer fits 100 columns: Help,
     Save, Export and Quit first, then the item commands while they fit."""
     async def run_before(pilot) -> None:
-        pilot.app.editor.selected_id = "block"
-        await pilot.pause()
+        await select(pilot, "block")
 
     assert snap_compare(frozen_app(project_path), terminal_size=(100, 34), run_before=run_before)
 
@@ -77,8 +88,7 @@ def test_edit_form_at_20x6(project_path, snap_compare):
     at the right; user-walk-10),
     'Esc cancels' alone as the hint, and the OK and Cancel buttons on the last row."""
     async def run_before(pilot) -> None:
-        pilot.app.editor.selected_id = "title"
-        await pilot.pause()
+        await select(pilot, "title")
         await pilot.press("enter")
         await pilot.pause()
         for _ in range(30):  # the form scrolls to the cursor once its words are wrapped
