@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from textual.widgets import Input, OptionList
 
-from editor_helpers import editor, screen_of
+from editor_helpers import editor, screen_of, until
 
 
 def on_screen(widget, size) -> bool:
@@ -73,8 +73,9 @@ async def test_a_terminal_below_20x6_says_it_is_too_small(project_path):
         await pilot.resize_terminal(30, 10)
         await pilot.pause()
         assert not notice.display and app.screen.query_one(".dialog").display
-        await pilot.pause(0.2)
-        assert isinstance(app.screen.focused, OptionList)  # opened too small, it had no focus
+        # opened too small, it had no focus; it takes it once shown (0.2 s on an idle machine)
+        assert await until(pilot, lambda: isinstance(app.screen.focused, OptionList)), \
+            app.screen.focused
         await pilot.press("escape")
         await pilot.pause()
         assert app.screen is screen_of(app)

@@ -6,7 +6,7 @@ import shutil
 
 import pytest
 
-from editor_helpers import editor, item, position, screen_of
+from editor_helpers import editor, item, position, screen_of, until
 from floatpage.tui.app import make_app
 from floatpage.tui.key_bar import KeyBar
 from floatpage.model.errors import FloatpageError
@@ -187,10 +187,23 @@ async def test_every_command_is_in_the_palette_and_runs_from_it(project_path):
         await pilot.press("ctrl+p")
         await pilot.pause()
         await pilot.press(*"Anchor")
-        await pilot.pause(0.3)
+        # the palette searches in a worker: Enter before its answer runs nothing (or the
+        # first command listed so far); 0.3 s was an idle machine's time for it
+        assert await until(pilot, lambda: highlighted_prompt(app).startswith("Anchor  (")), \
+            highlighted_prompt(app)
         await pilot.press("enter")
-        await pilot.pause()
-        assert item(app, "title").anchor is not None
+        assert await until(pilot, lambda: item(app, "title").anchor is not None)
+
+
+def highlighted_prompt(app) -> str:
+    """The command the palette's Enter would run now, by its title ("" when none is)."""
+    from textual.command import CommandList
+
+    found = app.screen.query(CommandList)
+    if not found or found.first().highlighted is None:
+        return ""
+    commands = found.first()
+    return str(commands.get_option_at_index(commands.highlighted).prompt)
 
 
 async def test_the_palette_shows_each_commands_keys(project_path):
@@ -202,9 +215,13 @@ async def test_the_palette_shows_each_commands_keys(project_path):
         await pilot.press("tab", "ctrl+p")
         await pilot.pause()
         await pilot.press(*"Unanchor")
-        await pilot.pause(0.5)
-        prompts = [str(option.prompt) for option in app.screen.query_one(CommandList).options]
-        assert any(prompt.startswith("Unanchor  (u)") for prompt in prompts), prompts
+
+        def prompts() -> list[str]:
+            return [str(option.prompt) for option in app.screen.query_one(CommandList).options]
+
+        # the search's worker answers when it answers (0.5 s was an idle machine's time)
+        assert await until(pilot, lambda: any(prompt.startswith("Unanchor  (u)")
+                                              for prompt in prompts())), prompts()
 
 
 def test_every_command_names_an_action_the_screen_has():

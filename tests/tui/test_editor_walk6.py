@@ -75,21 +75,24 @@ async def test_a_toast_never_covers_an_open_dialog(project_path):
     app = make_app(project_path, autostart=False)
     async with app.run_test(size=(80, 24), notifications=True) as pilot:  # toasts drawn
         screen = screen_of(app)
+        # each step waits for what it waits for (0.2 s each was an idle machine's time)
         await pilot.press("ctrl+s")
-        await pilot.pause(0.2)
-        assert any("saved" in toast for toast in toasts(app))
+        assert await until(pilot, lambda: any("saved" in toast for toast in toasts(app)))
+        # the toast the form is to take along: the save's lasts 3 s, which a slow runner spent
+        # before the form was up (it was gone, rightly, and "saved" was missed at the end)
+        screen.notify("lined up as settle does", timeout=60)
+        assert await until(pilot, lambda: any("lined up" in toast for toast in toasts(app)))
         await pilot.press("tab", "enter")  # the title's form
-        await pilot.pause(0.2)
-        assert app.screen is not screen and app.screen.query("Input")
-        assert toasts(app) == []  # the toast left with the editor
+        assert await until(pilot, lambda: app.screen is not screen and app.screen.query("Input")
+                           and toasts(app) == []), toasts(app)  # the toast left with the editor
         screen.notify("PDF written to card.pdf", title="PDF exported", timeout=8)  # as an
         await pilot.pause(0.2)                                # export's worker does
         assert toasts(app) == []
         await pilot.press("escape")
-        await pilot.pause(0.2)
-        assert app.screen is screen
+        assert await until(pilot, lambda: app.screen is screen
+                           and "PDF written" in " ".join(toasts(app))), toasts(app)
         shown = " ".join(toasts(app))
-        assert "saved" in shown and "PDF written to card.pdf" in shown  # held, not lost
+        assert "lined up" in shown and "PDF written to card.pdf" in shown  # held, not lost
 
 
 def crowded_page(path):
@@ -107,11 +110,12 @@ def status(app) -> str:
     return str(screen_of(app).query_one("#status").render())
 
 
-async def until(pilot, condition, seconds: float = 20.0) -> None:
+async def until(pilot, condition, seconds: float = 20.0) -> bool:
     for _ in range(int(seconds / 0.1)):
         if condition():
-            return
+            return True
         await pilot.pause(0.1)
+    return condition()
 
 
 async def test_the_status_line_says_what_gave_way_and_why_as_check_does(tmp_path):

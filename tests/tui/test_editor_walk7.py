@@ -124,7 +124,7 @@ async def test_a_page_added_is_named_by_its_place_and_the_top_bar_agrees(tmp_pat
         assert [page.id for page in app.session.project.pages] == ["page-1", "page-2", "page-3"]
         assert len(app.session.project.pages[2].items) > 0  # the album's second page, moved up
         await pilot.press("ctrl+s")
-        await pilot.pause(0.5)
+        assert await until(pilot, lambda: not app.session.unsaved)  # saved, not 0.5 s later
     assert [page.id for page in load_project(path).pages] == ["page-1", "page-2", "page-3"]
 
 
@@ -141,12 +141,14 @@ async def test_pages_the_user_named_keep_their_names_when_pages_come_and_go(tmp_
         assert names == ["front", "page-2", "page-3", "back"]
         assert "page 2/4 page-2" in top_bar(app)
         await pilot.press("D", "down", "enter")  # remove the new page: page-3 is page-2 again
-        await pilot.pause(0.3)
-        assert [page.id for page in app.session.project.pages] == ["front", "page-2", "back"]
+
+        def names() -> list[str]:
+            return [page.id for page in app.session.project.pages]
+
+        assert await until(pilot, lambda: names() == ["front", "page-2", "back"]), names()
         await pilot.press("ctrl+z")
-        await pilot.pause()
-        assert [page.id for page in app.session.project.pages] == ["front", "page-2", "page-3",
-                                                                    "back"]
+        assert await until(pilot, lambda: names() == ["front", "page-2", "page-3", "back"]), \
+            names()
 
 
 async def test_a_placeholder_is_never_broken_in_a_narrow_box(tmp_path):
