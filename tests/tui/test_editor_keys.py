@@ -446,9 +446,10 @@ async def test_the_physics_runs_live_then_stops_drawing_once_settled(project_pat
         app.session.rebuild_engine()
         await pilot.press("tab", "tab", "tab", "H", "H", "H")  # the block onto the photo
         fps_seen = []
-        # till it rests, as long as that takes: 200 turns of 0.05 s gave it 10 s, about the
-        # frames an idle machine needs (the deadline only keeps a page that never rests from
-        # hanging the suite; the assertions below still fail then)
+        # till it rests, as long as that takes: 200 turns of 0.05 s gave it 10 s (an idle
+        # machine needs 2 s), and a starved runner's frames slow down more than its turns (the
+        # deadline only keeps a page that never rests from hanging the suite; the assertions
+        # below still fail then)
         deadline = time.monotonic() + 120
         while time.monotonic() < deadline:
             await pilot.pause(0.05)
