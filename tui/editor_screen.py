@@ -902,7 +902,28 @@ class EditorScreen(Screen):
                                    every_page=every_page)
 
     def action_toggle_orientation(self) -> None:
-        self.attempt(self.session.toggle_orientation)
+        """`o` turns the page on screen; in a project of several pages it asks, as `S` does,
+        whether every page turns or this one (a calendar turned landscape kept eleven pages
+        portrait, user-walk-10).  "Every page" is highlighted where every page has this one's
+        orientation; nothing is asked where no other page would turn."""
+        session = self.session
+        turned = session.turned_orientation()
+        others = {index for index, *_ in session.orientation_changes(
+            turned, every_page=True)} - {session.page_index}
+        if not others:
+            self.attempt(session.set_orientation, turned)
+            return
+        pages, page = session.project.pages, session.page
+        alike = all(other.orientation == page.orientation for other in pages)
+        self.ask(ChoiceDialog(
+            f"Turn to {turned}", [(f"Every page ({len(pages)})", True),
+                                  (f"This page only ({page.id})", False)],
+            message="Each page keeps its own size.", highlighted=alike,
+            dialog_id="which-pages-dialog"),
+            lambda every: self.attempt(self.turn_pages, turned, every))
+
+    def turn_pages(self, orientation: str, every_page: bool) -> None:
+        self.session.set_orientation(orientation, every_page=every_page)
 
     # -- files -------------------------------------------------------------------------------
 

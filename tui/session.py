@@ -875,14 +875,24 @@ class EditSession:
         12-page calendar resized January only, user-walk-9), each in its own orientation for
         a named size; one undo step, and room is searched for on each page changed.
         """
+        changes = [(index, size, own, width, height) for index, own, width, height
+                   in self.size_changes(size, orientation, width_mm, height_mm,
+                                        every_page=every_page)]
+        self._resize_pages(changes, label, lambda width, height:
+                           f"made {size_words(size, width, height)}")
+
+    def _resize_pages(self, changes: list[tuple[int, str, str, float, float]], label: str,
+                      done_words) -> None:
+        """Give each page its (index, size, orientation, width, height): one undo step, its
+        items moved in proportion, room searched for on each page changed, each marked for
+        the save's settle.  ``done_words(width, height)`` says what became of several pages
+        ("made A6", "turned landscape")."""
         pages = self.project.pages
-        changes = self.size_changes(size, orientation, width_mm, height_mm,
-                                    every_page=every_page)
         if not changes:
             return
         self.checkpoint(label)
         too_large: list[str] = []
-        for index, own, width, height in changes:
+        for index, size, own, width, height in changes:
             page = pages[index]
             margin_kept = (self.margin_keepers() if index == self.page_index else
                            keepers_of(engine_for_page(page, self.project.physics)))
@@ -897,9 +907,9 @@ class EditSession:
                                 if len(too_large) == 1 else f"{len(too_large)} items larger "
                                 "than the new page were made smaller")
         if len(changes) > 1:
+            *_, width, height = changes[-1]
             self.status_note = "; ".join(filter(None, (
-                f"{len(changes)} pages made {size_words(size, width, height)}",
-                self.status_note)))
+                f"{len(changes)} pages {done_words(width, height)}", self.status_note)))
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
 
@@ -926,15 +936,38 @@ class EditSession:
         """The ids of the page's items that keep their print-safe margin now."""
         return keepers_of(self.engine)
 
-    def toggle_orientation(self) -> str:
-        page = self.page
-        if page.size == "custom":
-            self.set_page_size("custom", page.orientation, page.height_mm, page.width_mm,
-                               label="orientation")
-        else:
-            self.set_page_size(page.size, "landscape" if page.orientation == "portrait"
-                               else "portrait", label="orientation")
+    def turned_orientation(self) -> str:
+        """The orientation `o` turns the page on screen to."""
+        return "landscape" if self.page.orientation == "portrait" else "portrait"
+
+    def orientation_changes(self, orientation: str, *, every_page: bool = False
+                            ) -> list[tuple[int, str, str, float, float]]:
+        """(index, size, orientation, width, height) of each page that turning to
+        ``orientation`` would change: the page on screen, or every page, each keeping its own
+        size (a custom page's sides swap)."""
+        pages, changes = self.project.pages, []
+        for index in (range(len(pages)) if every_page else [self.page_index]):
+            page = pages[index]
+            if page.orientation == orientation:
+                continue
+            if page.size == "custom":  # its orientation follows from its sides
+                width, height = page.height_mm, page.width_mm
+                if (width > height) != (orientation == "landscape"):
+                    continue  # a square page: nothing to turn
+            else:
+                width, height = page_dimensions(page.size, orientation)
+            changes.append((index, page.size, orientation, width, height))
+        return changes
+
+    def set_orientation(self, orientation: str, *, every_page: bool = False) -> str:
+        """Turn the page on screen, or every page (`o` turned only the page on screen in a
+        12-page calendar, while `S` asks; user-walk-10): one undo step, as `S`'s."""
+        self._resize_pages(self.orientation_changes(orientation, every_page=every_page),
+                           "orientation", lambda width, height: f"turned {orientation}")
         return self.page.orientation
+
+    def toggle_orientation(self) -> str:
+        return self.set_orientation(self.turned_orientation())
 
     # -- files -------------------------------------------------------------------------------
 

@@ -1,0 +1,68 @@
+"""Defects a user of greeting cards, calendars, albums and flyers met in a first week with the
+editor (user-walk-11), each driven through the real app with Pilot, on a real project file."""
+
+from __future__ import annotations
+
+from editor_helpers import editor, until
+
+
+def turns(project) -> list[tuple[str, float, float]]:
+    return [(page.orientation, page.width_mm, page.height_mm) for page in project.pages]
+
+
+async def test_turning_every_page_is_one_undo_step_and_is_saved(project_path):
+    """`o` turned the page on screen only, while `S` asks (a calendar turned landscape kept
+    eleven pages portrait).  With several pages `o` asks the same question, "Every page"
+    highlighted where the pages have one orientation; every page turns in its own size, its
+    items moved in proportion, room is searched for on each, one Ctrl+Z turns them back, and
+    the file saved holds the turn on every page."""
+    from floatpage.model import load_project
+
+    async with editor(project_path) as (app, pilot):
+        greeting = app.session.project.pages[1].item("greeting")  # on the back
+        x, y = greeting.x, greeting.y
+        await pilot.press("o")
+        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        assert app.screen.id == "which-pages-dialog"
+        await pilot.press("enter")  # highlighted: every page (both are portrait)
+        await until(pilot, lambda: app.screen is app.editor)
+        await app.workers.wait_for_complete()
+        await pilot.pause()
+        project = app.session.project
+        assert turns(project) == [("landscape", 210.0, 148.0)] * 2
+        assert app.session.pages_edited >= {"front", "back"}
+        back = project.pages[1].item("greeting")
+        assert abs(back.x - x * 210 / 148) < 1.5 and abs(back.y - y * 148 / 210) < 1.5
+        await pilot.press("ctrl+z")
+        await pilot.pause()
+        assert turns(app.session.project) == [("portrait", 148.0, 210.0)] * 2
+        await pilot.press("ctrl+y", "ctrl+s")
+        await pilot.pause()
+        assert not app.session.unsaved
+    assert turns(load_project(project_path)) == [("landscape", 210.0, 148.0)] * 2
+
+
+async def test_turning_this_page_only_keeps_the_others_and_is_offered_first_then(project_path):
+    """"This page only" turns the front and leaves the back; the next `o`, on the turned
+    front, would turn it back to the orientation every other page has: nothing to ask."""
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("o")
+        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        await pilot.press("down", "enter")  # this page only
+        await until(pilot, lambda: app.screen is app.editor)
+        assert turns(app.session.project) == [("landscape", 210.0, 148.0),
+                                              ("portrait", 148.0, 210.0)]
+        await pilot.press("o")
+        await pilot.pause()
+        assert app.screen is app.editor  # asked nothing: the back is portrait already
+        assert turns(app.session.project) == [("portrait", 148.0, 210.0)] * 2
+        await pilot.press("pagedown")  # to the back, portrait among portrait pages
+        await pilot.pause()
+        await pilot.press("o")
+        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        options = app.screen.query_one("OptionList")
+        assert str(options.get_option_at_index(options.highlighted).prompt) \
+            == "Every page (2)"
+        await pilot.press("escape")
+        await pilot.pause()
+        assert turns(app.session.project) == [("portrait", 148.0, 210.0)] * 2
