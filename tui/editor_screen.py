@@ -677,7 +677,8 @@ class EditorScreen(Screen):
     def action_insert_kind(self, kind: str) -> None:
         project = self.session.project
         if kind == "picture":
-            self.ask(PictureDialog(project.base_dir), self.insert_picture)
+            self.ask(PictureDialog(project.base_dir, outputs=self.own_pdfs()),
+                     self.insert_picture)
         elif kind == "background":
             self.ask(ChoiceDialog("Page background", item_forms.BACKGROUND_CHOICES,
                                   dialog_id="background-dialog"), self.choose_background)
@@ -713,8 +714,8 @@ class EditorScreen(Screen):
                                 dialog_id="background-colour"),
                      partial(self.attempt, session.set_background))
         else:
-            self.ask(PictureDialog(session.project.base_dir, "Background picture"),
-                     self.set_background_picture)
+            self.ask(PictureDialog(session.project.base_dir, "Background picture",
+                                   outputs=self.own_pdfs()), self.set_background_picture)
 
     def set_background_picture(self, path: Path) -> None:
         session = self.session
@@ -1047,6 +1048,13 @@ class EditorScreen(Screen):
                      self.export_to)
             return
         self.export_to(out)
+
+    def own_pdfs(self) -> list[Path]:
+        """The PDFs this project is exported to (NAME.pdf, and the file chosen for the
+        session's exports): no pictures to insert into it."""
+        path = self.session.project.path
+        return [] if path is None else [path.with_suffix(".pdf")] + (
+            [self.export_path] if self.export_path else [])
 
     def refuse_output(self, path: Path) -> None:
         """The export dialog's check: what render would refuse, as the dialog's error line."""

@@ -66,3 +66,39 @@ async def test_turning_this_page_only_keeps_the_others_and_is_offered_first_then
         await pilot.press("escape")
         await pilot.pause()
         assert turns(app.session.project) == [("portrait", 148.0, 210.0)] * 2
+
+
+def tree_names(app) -> set[str]:
+    tree = app.screen.query_one("#picture-tree")
+    return {str(node.label) for node in tree.root.children}
+
+
+async def test_the_picture_dialog_does_not_offer_the_projects_own_pdf(project_path):
+    """After Ctrl+E, `p` listed card.pdf, the card's own export, beside the pictures: put in,
+    the card showed a picture of itself, and the next Ctrl+E refused to write over one of
+    the project's inputs.  The tree leaves it out (a logo PDF stays), and typed, the dialog
+    says what the file is."""
+    import pikepdf
+
+    folder = project_path.parent
+    logo = pikepdf.new()
+    logo.add_blank_page(page_size=(200, 100))
+    logo.save(folder / "logo.pdf")
+    async with editor(project_path) as (app, pilot):
+        await pilot.press("ctrl+e")
+        assert await until(pilot, lambda: (folder / "card.pdf").is_file()
+                           and not app.editor.export_state, 120)
+        await pilot.press("p")
+        assert await until(pilot, lambda: app.screen.id == "picture-dialog"
+                           and "logo.pdf" in tree_names(app))
+        assert "card.pdf" not in tree_names(app) and "pictures" in tree_names(app)
+        await pilot.press("tab")
+        await pilot.press(*"card.pdf")
+        await until(pilot, lambda: app.screen.query_one("#picture-path").value == "card.pdf")
+        await pilot.press("enter")
+        await pilot.pause()
+        error = str(app.screen.query_one("#picture-error").render())
+        assert app.screen.id == "picture-dialog" and "own PDF" in error, error
+        await pilot.press("escape")
+        await pilot.pause()
+        assert "picture-1" not in app.session.page.item_ids()
