@@ -70,6 +70,7 @@ def cmd_merge(args: argparse.Namespace) -> int:
         print(f"note: {printable(note)}", file=sys.stderr)
     with merge_progress(args.quiet) as show:
         summary = merge.run(show)
+    tell_empty_columns(summary.empty_columns, Path(args.data), summary.report)
     print(f"{summary.made} made, {summary.unchanged} unchanged, {summary.failed} failed of "
           f"{summary.records} record(s) in {summary.seconds:.1f} s; report: {printable(str(summary.report))}")
     if summary.combined:
@@ -79,6 +80,22 @@ def cmd_merge(args: argparse.Namespace) -> int:
               f"{printable(str(summary.report))}", file=sys.stderr)
         return EXIT_SOME_RECORDS_FAILED
     return 0
+
+
+EMPTY_COLUMNS_SHOWN = 10
+
+
+def tell_empty_columns(empty: list[tuple[int, int, str]], data: Path, report) -> None:
+    """A warning for each record made with words around an empty column ("Dear ,"), naming
+    the record, its line, the column and the item; the first ten, then how many more (a file
+    of 10,000 rows with an empty column is one line a row in report.csv, not on screen)."""
+    for number, line, words in empty[:EMPTY_COLUMNS_SHOWN]:
+        print(f"warning: record {number} (line {line} of {printable(str(data))}): "
+              f"{printable(words)}", file=sys.stderr)
+    if len(empty) > EMPTY_COLUMNS_SHOWN:
+        records = len({number for number, _, _ in empty[EMPTY_COLUMNS_SHOWN:]})
+        print(f"warning: {len(empty) - EMPTY_COLUMNS_SHOWN} more such text(s) in {records} "
+              f"record(s); each is named in {printable(str(report))}", file=sys.stderr)
 
 
 class merge_progress:

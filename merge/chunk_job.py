@@ -50,6 +50,7 @@ class RecordResult:
     name: str
     reason: str = ""
     warnings: list[str] = field(default_factory=list)
+    empty_columns: list[str] = field(default_factory=list)  # words printed around a blank
     pdf: bytes | None = None
     toml: str | None = None
     pages: int = 0
@@ -95,7 +96,7 @@ def run_chunk(task: ChunkTask) -> list[RecordResult]:
             result.reason = record.problem
             continue
         try:
-            project = lay_out_record(template, record.values, root)
+            project = lay_out_record(template, record.values, root, result.empty_columns)
             document = place_document(project)
         except RecordFailure as failure:
             result.reason = naming_columns(str(failure), template.uses)

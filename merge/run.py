@@ -13,7 +13,7 @@ import json
 import os
 import stat
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, Iterator
 
@@ -55,6 +55,8 @@ class MergeSummary:
     failed: int = 0
     seconds: float = 0.0
     notes: tuple[str, ...] = ()
+    # (record, line, what) of each record made with a text around an empty column
+    empty_columns: list[tuple[int, int, str]] = field(default_factory=list)
     combined: Path | None = None
     report: Path | None = None
 
@@ -264,7 +266,9 @@ class Merge:
                 result.reason = problem
         if result.ok:
             summary.made += 1
-            note = "; ".join(result.warnings)
+            note = "; ".join(result.empty_columns + result.warnings)
+            summary.empty_columns += [(result.number, result.line, words)
+                                      for words in result.empty_columns]
             ordered.add(result.number, (result.line, result.name, "made", note))
         else:
             ordered.add(result.number, (result.line, result.name, "failed", result.reason))

@@ -410,3 +410,33 @@ def test_a_json_or_toml_data_file_is_refused_with_what_to_give_instead(merge_fol
     assert "records.json" in done.stderr and ".jsonl" in done.stderr and ".csv" in done.stderr
     assert "one JSON object per line" in done.stderr
     assert not (merge_folder / "out").exists()
+
+
+def test_an_empty_column_around_other_words_is_named_with_its_record_and_line(merge_folder):
+    """A first name left empty printed "A little something for" and nothing after it, and an
+    empty date "Valid until · customer no. 1003", without a word (user-walk-10).  The records
+    are still made, as a mail merge makes them, but the run warns of each: the record, its
+    line in the data, the column, the item and what it prints, and how to leave the item out;
+    report.csv says it beside "made".  A column that is a whole text (the note, empty in
+    every other row) prints nothing and is not named."""
+    records = rows(3)
+    records[1][1] = ""   # first_name
+    records[2][7] = " "  # valid_until
+    data = write_csv(merge_folder / "customers.csv", records)
+    done = merge(merge_folder, data)
+    assert done.returncode == 0, done.stderr
+    warnings = [line for line in done.stderr.splitlines() if line.startswith("warning:")]
+    assert len(warnings) == 2, done.stderr
+    assert warnings[0].startswith(f"warning: record 2 (line 3 of {data}): ")
+    assert 'column "first_name" is empty: item "greeting" on page "offer" prints ' \
+        '"A little something for"' in warnings[0]
+    assert "drop_if_empty = true" in warnings[0]
+    assert warnings[1].startswith(f"warning: record 3 (line 4 of {data}): ")
+    assert 'column "valid_until" is empty' in warnings[1] and '"Valid until · customer no. ' \
+        '1003' in warnings[1]
+    first, second, third = report(merge_folder)
+    assert first["status"] == "made" and "empty" not in first["reason"]
+    assert second["status"] == "made" and 'column "first_name" is empty' in second["reason"]
+    assert third["status"] == "made" and 'column "valid_until" is empty' in third["reason"]
+    printed = " ".join(text_of(merge_folder / "out" / "1002-Müller.pdf").split())
+    assert "A little something for" in printed and "Person1" not in printed
