@@ -30,6 +30,7 @@ from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
+from floatpage.physics.quality import GAP_TOLERANCE_MM
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.page_resize import keepers_of, resize_page, scale_follow_offsets, size_words
 from floatpage.tui.reading_order import reading_order, step_through
@@ -126,6 +127,12 @@ def copy_into(picture: Path, folder: Path) -> Path:
     return candidate
 
 
+def keeps_gutter(quality) -> bool:
+    """Whether every gap of a page's quality is at least its gutter (a page of fewer than two
+    items keeps it)."""
+    return quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM
+
+
 def layout_of(page: Page) -> dict[str, tuple[float, float]]:
     return {item.id: (item.x, item.y) for item in page.items}
 
@@ -160,6 +167,10 @@ class RoomRequest:
     # the items that kept the print-safe margin before the change, which the room found must
     # let them keep (issue 16): a turned greeting card left its picture 1.4 mm from the edge
     margin_kept: frozenset[str] = frozenset()
+    # whether the page kept the gutter before a new page size: the room found keeps it too
+    # where it fits (user-walk-11: the calendar made A6 kept 1.6-2.2 mm of its 3 mm gutter on
+    # five pages, the room search having looked for zero overlap only)
+    gutter_kept: bool = False
 
 
 class EditSession:
@@ -397,21 +408,22 @@ class EditSession:
 
     def want_room(self, ids: frozenset[str] | None = None,
                   margin_kept: frozenset[str] = frozenset(),
-                  page_index: int | None = None) -> None:
+                  page_index: int | None = None, gutter_kept: bool = False) -> None:
         """Ask for room for the items ``ids`` (all that take part, if None) after an insert or
         a page change (of the page on screen, or of ``page_index``): the caller runs
         ``room_scale`` on a copy of the page, off the UI thread, and hands the answer to
         ``make_room`` (issue 11: a fair start).  Run in the key's answer, it froze the editor
         for 0.8-2.3 s on an insert and 2.6-5.6 s on `o` (the calendar, load 7)."""
         index = self.page_index if page_index is None else page_index
-        self.room_wanted.append(RoomRequest(self.version, index, ids, margin_kept))
+        self.room_wanted.append(RoomRequest(self.version, index, ids, margin_kept,
+                                            gutter_kept))
 
     def room_scale(self, page: Page, request: "RoomRequest") -> float:
         """How much the items of ``request`` must shrink for ``page`` (a copy: it is changed)
         to have a layout without overlap, tried headless with `floatpage settle`'s own code;
         1.0: not at all.  Reads nothing else of the session's, so it may run in a thread."""
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
-        scale = 1.0
+        scale, sound = 1.0, None
         for _ in range(MAKE_ROOM_ATTEMPTS):
             trial = copy_of(page)
             settle_page(trial, settings, max_rounds=3)
@@ -419,10 +431,13 @@ class EditSession:
             quality = engine.quality()
             in_margin = {engine.ids[k] for k in quality.in_margin} & request.margin_kept
             if not (quality.overlapping_pairs or quality.off_page or in_margin):
-                break
+                if not request.gutter_kept or keeps_gutter(quality):
+                    return scale
+                sound = scale if sound is None else sound
             shrink_items(page, request.ids, MAKE_ROOM_STEP)
             scale *= MAKE_ROOM_STEP
-        return scale
+        # no gutter within reach: the least shrink without overlap, not the most tried
+        return scale if sound is None else sound
 
     def make_room(self, request: "RoomRequest", scale: float) -> bool:
         """Shrink the items of ``request`` by ``scale`` and start the physics again, if the
@@ -896,10 +911,12 @@ class EditSession:
             page = pages[index]
             margin_kept = (self.margin_keepers() if index == self.page_index else
                            keepers_of(engine_for_page(page, self.project.physics)))
+            gutter_kept = keeps_gutter((self.engine if index == self.page_index else
+                                        engine_for_page(page, self.project.physics)).quality())
             too_large += resize_page(page, size, own, width, height,
                                      page_margin(self.project.physics.margin_mm, width, height))
             self.pages_edited.add(page.id)
-            self.want_room(margin_kept=margin_kept, page_index=index)
+            self.want_room(margin_kept=margin_kept, page_index=index, gutter_kept=gutter_kept)
         self.held_id = None
         if too_large:  # said, as the room search's smaller shrink is: "10 % smaller" was all
             # a user read when a 150 mm title became 9 mm wide on a 10 mm page

@@ -3,7 +3,12 @@ editor (user-walk-11), each driven through the real app with Pilot, on a real pr
 
 from __future__ import annotations
 
+import shutil
+from pathlib import Path
+
 from editor_helpers import editor, until
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def turns(project) -> list[tuple[str, float, float]]:
@@ -102,3 +107,49 @@ async def test_the_picture_dialog_does_not_offer_the_projects_own_pdf(project_pa
         await pilot.press("escape")
         await pilot.pause()
         assert "picture-1" not in app.session.page.item_ids()
+
+
+async def test_a_smaller_size_on_every_page_keeps_the_gutter_where_settle_keeps_it(tmp_path):
+    """`S` to A6 on every page of the calendar sample left five pages with 1.6-2.2 mm
+    between the month and the photos, under the 3 mm gutter each page had kept: the room
+    search shrank the items until nothing overlapped, no further, while `settle` keeps the
+    gutter wherever it fits.  A page that kept the gutter before keeps it after (its items
+    made a step smaller if need be); three of the sample's months, May and July among them,
+    saved and read back."""
+    from floatpage.model import load_project, save_project
+    from floatpage.model.layout import engine_for_page
+    from floatpage.physics.quality import GAP_TOLERANCE_MM
+
+    def keeps_gutter(quality) -> bool:
+        return quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM
+
+    folder = tmp_path / "calendar"
+    shutil.copytree(ROOT / "sample_projects" / "calendar-2027", folder)
+    path = folder / "calendar-2027.toml"
+    project = load_project(path)
+    project.pages = [page for page in project.pages if page.id in ("jan", "may", "jul")]
+    project.source_text, project.parsed_source = None, None
+    save_project(project, path)
+    project = load_project(path)
+    assert all(keeps_gutter(engine_for_page(page, project.physics).quality())
+               for page in project.pages)
+    async with editor(path, autostart=True) as (app, pilot):  # running: the save settles
+        await pilot.press("S")
+        await until(pilot, lambda: app.screen.id == "page-size-dialog")
+        options = [str(option.prompt) for option in app.screen.query_one("OptionList").options]
+        await pilot.press("home", *["down"] * next(
+            index for index, option in enumerate(options) if option.startswith("A6 ")),
+            "enter")
+        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        await pilot.press("enter")  # every page
+        await until(pilot, lambda: app.screen is app.editor)
+        assert await until(pilot, lambda: not app.session.room_wanted
+                           and not app.editor.room_searches, 240)
+        await app.workers.wait_for_complete()
+        await pilot.press("ctrl+s")
+        assert await until(pilot, lambda: not app.session.unsaved, 120)
+    project = load_project(path)
+    assert [page.width_mm for page in project.pages] == [105.0] * 3
+    gaps = {page.id: engine_for_page(page, project.physics).quality() for page in project.pages}
+    assert all(keeps_gutter(quality) for quality in gaps.values()), {
+        page: quality.summary() for page, quality in gaps.items()}
