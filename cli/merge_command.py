@@ -82,20 +82,31 @@ def cmd_merge(args: argparse.Namespace) -> int:
     return 0
 
 
-EMPTY_COLUMNS_SHOWN = 10
+EMPTY_COLUMNS_SHOWN = 10  # kinds of empty column told in full; record numbers per kind
 
 
-def tell_empty_columns(empty: list[tuple[int, int, str]], data: Path, report) -> None:
-    """A warning for each record made with words around an empty column ("Dear ,"), naming
-    the record, its line, the column and the item; the first ten, then how many more (a file
-    of 10,000 rows with an empty column is one line a row in report.csv, not on screen)."""
-    for number, line, words in empty[:EMPTY_COLUMNS_SHOWN]:
+def tell_empty_columns(empty: list[tuple[int, int, str, str]], data: Path, report) -> None:
+    """Warn of the records made with words around an empty column ("Dear ,"), in record
+    order: for each column and item, the first record in full (its number, its line in the
+    data, the column, the item, what it prints), then the other records it happened to; a
+    file of 10,000 rows with an empty column is 10,000 rows of report.csv, not of screen."""
+    kinds: dict[str, list[tuple[int, int, str]]] = {}
+    for number, line, what, words in sorted(empty):
+        kinds.setdefault(what, []).append((number, line, words))
+    for what, records in list(kinds.items())[:EMPTY_COLUMNS_SHOWN]:
+        number, line, words = records[0]
         print(f"warning: record {number} (line {line} of {printable(str(data))}): "
               f"{printable(words)}", file=sys.stderr)
-    if len(empty) > EMPTY_COLUMNS_SHOWN:
-        records = len({number for number, _, _ in empty[EMPTY_COLUMNS_SHOWN:]})
-        print(f"warning: {len(empty) - EMPTY_COLUMNS_SHOWN} more such text(s) in {records} "
-              f"record(s); each is named in {printable(str(report))}", file=sys.stderr)
+        if len(records) > 1:
+            others = [str(other) for other, _, _ in records[1:]]
+            listed = ", ".join(others[:EMPTY_COLUMNS_SHOWN]) + (
+                f" and {len(others) - EMPTY_COLUMNS_SHOWN} more"
+                if len(others) > EMPTY_COLUMNS_SHOWN else "")
+            print(f"warning: the same in {len(others)} more record(s): {listed}; their lines "
+                  f"are in {printable(str(report))}", file=sys.stderr)
+    if len(kinds) > EMPTY_COLUMNS_SHOWN:
+        print(f"warning: {len(kinds) - EMPTY_COLUMNS_SHOWN} more empty column(s) in other "
+              f"texts; each record's is in {printable(str(report))}", file=sys.stderr)
 
 
 class merge_progress:

@@ -50,7 +50,8 @@ class RecordResult:
     name: str
     reason: str = ""
     warnings: list[str] = field(default_factory=list)
-    empty_columns: list[str] = field(default_factory=list)  # words printed around a blank
+    # (what, words) of each text printed around an empty column (record_layout)
+    empty_columns: list[tuple[str, str]] = field(default_factory=list)
     pdf: bytes | None = None
     toml: str | None = None
     pages: int = 0

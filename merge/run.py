@@ -55,8 +55,9 @@ class MergeSummary:
     failed: int = 0
     seconds: float = 0.0
     notes: tuple[str, ...] = ()
-    # (record, line, what) of each record made with a text around an empty column
-    empty_columns: list[tuple[int, int, str]] = field(default_factory=list)
+    # (record, line, what, words) of each text printed around an empty column in a record
+    # made (`record_layout.empty_column_words`), in the order the records came back
+    empty_columns: list[tuple[int, int, str, str]] = field(default_factory=list)
     combined: Path | None = None
     report: Path | None = None
 
@@ -266,9 +267,9 @@ class Merge:
                 result.reason = problem
         if result.ok:
             summary.made += 1
-            note = "; ".join(result.empty_columns + result.warnings)
-            summary.empty_columns += [(result.number, result.line, words)
-                                      for words in result.empty_columns]
+            note = "; ".join([words for _, words in result.empty_columns] + result.warnings)
+            summary.empty_columns += [(result.number, result.line, what, words)
+                                      for what, words in result.empty_columns]
             ordered.add(result.number, (result.line, result.name, "made", note))
         else:
             ordered.add(result.number, (result.line, result.name, "failed", result.reason))

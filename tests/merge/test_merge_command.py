@@ -440,3 +440,22 @@ def test_an_empty_column_around_other_words_is_named_with_its_record_and_line(me
     assert third["status"] == "made" and 'column "valid_until" is empty' in third["reason"]
     printed = " ".join(text_of(merge_folder / "out" / "1002-Müller.pdf").split())
     assert "A little something for" in printed and "Person1" not in printed
+
+
+def test_a_column_empty_in_many_records_is_one_warning_in_record_order(merge_folder):
+    """Twelve rows without a first name printed ten warnings alike, in the order the workers
+    finished (records 4, 5, 6, 1, 2, 3, ...).  The first record is told in full, then the
+    numbers of the others; report.csv names each."""
+    records = rows(12)
+    for record in records:
+        record[1] = ""
+    done = merge(merge_folder, write_csv(merge_folder / "customers.csv", records), "out",
+                 "--chunk-size", "3")
+    assert done.returncode == 0, done.stderr
+    warnings = [line for line in done.stderr.splitlines() if line.startswith("warning:")]
+    assert len(warnings) == 2, done.stderr
+    assert warnings[0].startswith("warning: record 1 (line 2 of ")
+    assert 'column "first_name" is empty: item "greeting"' in warnings[0]
+    assert warnings[1].startswith("warning: the same in 11 more record(s): 2, 3, 4, 5, 6, 7, "
+                                  "8, 9, 10, 11 and 1 more; ")
+    assert all('column "first_name" is empty' in row["reason"] for row in report(merge_folder))
