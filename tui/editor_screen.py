@@ -162,6 +162,7 @@ class EditorScreen(Screen):
         self._quality_key: bytes | None = None  # what the figures were measured on, at rest
         self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
         self.room_searches = 0  # searches for room running in threads (`room_worker`)
+        self.after_room: dict[str, Callable[[], object]] = {}  # see `once_room_is_found`
         self._held_notices: list[tuple[str, dict, float | None]] = []  # while a dialog is open
         self._shown_notice: tuple[str, dict, float] | None = None  # the toast last shown
 
@@ -339,6 +340,9 @@ class EditorScreen(Screen):
     def state_word(self) -> str:
         if self.export_state:
             return self.export_state
+        if self.after_room and self.room_searches:
+            return f"{' and '.join(self.after_room)} once room is found ({self.room_searches} " \
+                "page(s) left)"
         if not self.running:
             return "paused"
         return "settled" if self.at_rest else "settling"
@@ -568,6 +572,24 @@ class EditorScreen(Screen):
                 self.redraw()
         else:
             self.redraw()
+        if not self.room_searches and self.after_room:
+            waiting, self.after_room = self.after_room, {}
+            for then in waiting.values():
+                then()
+
+    def once_room_is_found(self, what: str, then: Callable[[], object]) -> bool:
+        """Run ``then`` once the room searches still running are done, saying so (``what``:
+        "export", "save and quit"); False, and nothing kept, when none is running.  Ctrl+E
+        pressed right after `S` on every page of a calendar printed the pages with their
+        items piled up, the searches not done, and the export's own pass then left the
+        searches' answers unused: five overlaps stayed on the page on screen."""
+        if not self.room_searches:
+            return False
+        self.after_room[what] = then
+        self.notify(f"{what} once room is found on the {self.room_searches} page(s) resized; "
+                    "the editor answers meanwhile", timeout=4)
+        self.redraw()
+        return True
 
     @property
     def active_bindings(self):
@@ -1030,6 +1052,8 @@ class EditorScreen(Screen):
         if session.project.path is None:
             self.notify("save the project first; the PDF goes beside it", severity="warning")
             return
+        if self.once_room_is_found("export", self.action_export_pdf):
+            return
         from floatpage.typeset.render import check_pdf_output
 
         out = self.export_path or session.project.path.with_suffix(".pdf")
@@ -1138,5 +1162,6 @@ class EditorScreen(Screen):
     def finish_quit(self, choice: str) -> None:
         if choice == "discard":
             self.app.exit()
-        elif choice == "save":
+        elif choice == "save" and not self.once_room_is_found(
+                "save and quit", lambda: self.finish_quit("save")):
             self.action_save(then=lambda: None if self.session.unsaved else self.app.exit())

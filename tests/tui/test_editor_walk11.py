@@ -4,6 +4,7 @@ editor (user-walk-11), each driven through the real app with Pilot, on a real pr
 from __future__ import annotations
 
 import shutil
+import threading
 from pathlib import Path
 
 from editor_helpers import editor, until
@@ -153,3 +154,110 @@ async def test_a_smaller_size_on_every_page_keeps_the_gutter_where_settle_keeps_
     gaps = {page.id: engine_for_page(page, project.physics).quality() for page in project.pages}
     assert all(keeps_gutter(quality) for quality in gaps.values()), {
         page: quality.summary() for page, quality in gaps.items()}
+
+
+def three_months(tmp_path) -> Path:
+    """The calendar sample, its January, May and July: pages that need room at A6."""
+    from floatpage.model import load_project, save_project
+
+    folder = tmp_path / "calendar"
+    shutil.copytree(ROOT / "sample_projects" / "calendar-2027", folder)
+    path = folder / "calendar-2027.toml"
+    project = load_project(path)
+    project.pages = [page for page in project.pages if page.id in ("jan", "may", "jul")]
+    project.source_text, project.parsed_source = None, None
+    save_project(project, path)
+    return path
+
+
+def hold_room_searches(app) -> threading.Event:
+    """The room searches wait (in their thread) until the event is set, then run as ever:
+    the keys pressed meanwhile come while they run, however fast the machine."""
+    gate, search = threading.Event(), app.session.room_scale
+
+    def held(page, request):
+        gate.wait(60)
+        return search(page, request)
+
+    app.session.room_scale = held
+    return gate
+
+
+async def every_page_a6(app, pilot) -> None:
+    await pilot.press("S")
+    await until(pilot, lambda: app.screen.id == "page-size-dialog")
+    options = [str(option.prompt) for option in app.screen.query_one("OptionList").options]
+    await pilot.press("home", *["down"] * next(
+        index for index, option in enumerate(options) if option.startswith("A6 ")), "enter")
+    await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+    await pilot.press("enter")  # every page
+    await until(pilot, lambda: app.screen is app.editor)
+
+
+def overlaps_in(path: Path) -> dict[str, int]:
+    from floatpage.model import load_project
+    from floatpage.model.layout import engine_for_page
+
+    project = load_project(path)
+    return {page.id: len(engine_for_page(page, project.physics).quality().overlapping_pairs)
+            for page in project.pages}
+
+
+async def test_an_export_right_after_a_new_page_size_waits_for_the_room(tmp_path):
+    """Ctrl+E pressed right after `S` to A6 on every page of the calendar printed the months
+    with their photos piled on the title and the grid (the room searches not done), and the
+    export's own pass then left the searches' answers unused: five overlaps stayed on the
+    page on screen.  The export waits for the room, says so, and the PDF and the pages have
+    no overlap."""
+    import pdfplumber
+
+    path = three_months(tmp_path)
+    async with editor(path, autostart=True) as (app, pilot):
+        gate = hold_room_searches(app)
+        await every_page_a6(app, pilot)
+        assert app.editor.room_searches
+        await pilot.press("ctrl+e")
+        assert "export once room is found" in app.editor.state_word()
+        assert not path.with_suffix(".pdf").exists()
+        gate.set()
+        assert await until(pilot, lambda: path.with_suffix(".pdf").is_file()
+                           and not app.editor.export_state and not app.editor.room_searches,
+                           240)
+        quality = app.session.engine.quality()
+        assert quality.overlapping_pairs == (), quality.summary()
+        await pilot.press("ctrl+s")
+        assert await until(pilot, lambda: not app.session.unsaved, 120)
+    assert overlaps_in(path) == {"jan": 0, "may": 0, "jul": 0}
+    with pdfplumber.open(path.with_suffix(".pdf")) as pdf:
+        assert [round(page.width * 25.4 / 72) for page in pdf.pages] == [105] * 3
+        for page, month in zip(pdf.pages, ("January", "May", "July")):
+            # the title and the grid's heading, each whole, none drawn over: the photos no
+            # longer lie on the words (pdfplumber reads words under an image all the same,
+            # so the page's pictures are checked to keep clear of its words)
+            words = page.extract_words()
+            assert sum(word["text"] == month for word in words) == 2, words
+            for image in page.images:
+                for word in words:
+                    assert (image["x1"] <= word["x0"] or word["x1"] <= image["x0"]
+                            or image["bottom"] <= word["top"]
+                            or word["bottom"] <= image["top"]), (month, word["text"])
+
+
+async def test_save_and_quit_right_after_a_new_page_size_waits_for_the_room(tmp_path):
+    """`q`, "Save and quit" right after `S` on every page saved the pages with their items
+    piled up and quit: the room searches' answers were lost with the editor.  The save waits
+    for the room, then saves and quits."""
+    path = three_months(tmp_path)
+    async with editor(path, autostart=True) as (app, pilot):
+        gate = hold_room_searches(app)
+        await every_page_a6(app, pilot)
+        assert app.editor.room_searches
+        await pilot.press("q")
+        await until(pilot, lambda: app.screen.id == "quit-dialog")
+        await pilot.press("enter")  # Save and quit, highlighted
+        await until(pilot, lambda: app.screen is app.editor)
+        assert "save and quit once room is found" in app.editor.state_word()
+        assert app.session.unsaved
+        gate.set()
+        assert await until(pilot, lambda: not app.is_running, 240)
+    assert overlaps_in(path) == {"jan": 0, "may": 0, "jul": 0}
