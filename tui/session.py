@@ -420,8 +420,10 @@ class EditSession:
 
     def room_scale(self, page: Page, request: "RoomRequest") -> float:
         """How much the items of ``request`` must shrink for ``page`` (a copy: it is changed)
-        to have a layout without overlap, tried headless with `floatpage settle`'s own code;
-        1.0: not at all.  Reads nothing else of the session's, so it may run in a thread."""
+        to have a layout without overlap, with the gutter where the page kept it before
+        (``request.gutter_kept``; where no attempt keeps it, the least shrink without
+        overlap), tried headless with `floatpage settle`'s own code; 1.0: not at all.  Reads
+        nothing else of the session's, so it may run in a thread."""
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
         scale, sound = 1.0, None
         for _ in range(MAKE_ROOM_ATTEMPTS):
