@@ -206,7 +206,8 @@ class Merge:
                     continue
                 digest = self.digest(record, name)
                 if not options.force and self.out.unchanged(name, digest, options.write_toml):
-                    ordered.add(record.number, (record.line, name, "unchanged", ""))
+                    ordered.add(record.number, (record.line, name, "unchanged",
+                                                self.out.note(name)))
                     summary.unchanged += 1
                     continue
                 chunk.append((record, name, digest))
@@ -261,13 +262,14 @@ class Merge:
 
     def write(self, result: RecordResult, ordered: "InOrder", summary: MergeSummary) -> None:
         digest = self.digests.pop(result.number)
+        note = "; ".join([words for _, words in result.empty_columns] + result.warnings)
         if result.ok and result.pdf is not None:
-            problem = self.out.write_record(result.name, result.pdf, result.toml, digest)
+            problem = self.out.write_record(result.name, result.pdf, result.toml, digest,
+                                            note)
             if problem:
                 result.reason = problem
         if result.ok:
             summary.made += 1
-            note = "; ".join([words for _, words in result.empty_columns] + result.warnings)
             summary.empty_columns += [(result.number, result.line, what, words)
                                       for what, words in result.empty_columns]
             ordered.add(result.number, (result.line, result.name, "made", note))

@@ -440,6 +440,12 @@ def test_an_empty_column_around_other_words_is_named_with_its_record_and_line(me
     assert third["status"] == "made" and 'column "valid_until" is empty' in third["reason"]
     printed = " ".join(text_of(merge_folder / "out" / "1002-Müller.pdf").split())
     assert "A little something for" in printed and "Person1" not in printed
+    again = merge(merge_folder, data)  # nothing changed: every record skipped
+    assert again.returncode == 0 and "3 unchanged" in again.stdout, again.stdout
+    # the report still says it (it said nothing once the record was skipped as unchanged)
+    assert [row["reason"] for row in report(merge_folder)] == [
+        first["reason"], second["reason"], third["reason"]]
+    assert [row["status"] for row in report(merge_folder)] == ["unchanged"] * 3
 
 
 def test_a_column_empty_in_many_records_is_one_warning_in_record_order(merge_folder):
