@@ -398,9 +398,11 @@ class EditSession:
         if item.id in self.project.all_item_ids():
             raise EditError(f'the id "{item.id}" is already used')
         self.checkpoint(f"insert {item.id}")
+        quality = self.engine.quality()
+        margin_kept = self.margin_keepers() | {item.id}
         self.page.items.append(item)
         if not item.decorative:
-            self.want_room(frozenset({item.id}))
+            self.want_room(frozenset({item.id}), margin_kept, gutter_kept=keeps_gutter(quality))
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
         self.selected_id = item.id

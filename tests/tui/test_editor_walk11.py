@@ -261,3 +261,34 @@ async def test_save_and_quit_right_after_a_new_page_size_waits_for_the_room(tmp_
         gate.set()
         assert await until(pilot, lambda: not app.is_running, 240)
     assert overlaps_in(path) == {"jan": 0, "may": 0, "jul": 0}
+
+
+async def test_photos_put_into_an_album_page_keep_its_gutter_and_margin(tmp_path):
+    """Three more photos put into the album sample's first page with `p`: the second left
+    2.9 mm of the 3 mm gutter, the third 1.6 mm, and a fourth put ten items into the print
+    margin, the room search after an insert having looked for zero overlap only.  A page
+    that kept the gutter and the margin keeps them: the new photo comes a step smaller
+    instead.  Saved and read back."""
+    from floatpage.model import load_project
+    from floatpage.model.layout import engine_for_page
+    from floatpage.physics.quality import GAP_TOLERANCE_MM
+
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    path = folder / "photo-album.toml"
+    pictures = sorted(path.parent.glob("pictures/*.jpg"))[:4]
+    before = len(load_project(path).pages[0].items)
+    async with editor(path, autostart=True) as (app, pilot):
+        for picture in pictures:
+            await pilot.press("p")
+            await until(pilot, lambda: app.screen.id == "picture-dialog")
+            await pilot.press("tab", *picture.relative_to(folder).as_posix(), "enter")
+            await until(pilot, lambda: app.screen is app.editor)
+            assert await until(pilot, lambda: app.editor.at_rest, 120)
+        await pilot.press("ctrl+s")
+        assert await until(pilot, lambda: not app.session.unsaved, 120)
+    project = load_project(path)
+    quality = engine_for_page(project.pages[0], project.physics).quality()
+    assert len(project.pages[0].items) == before + len(pictures)
+    assert quality.overlapping_pairs == () and quality.in_margin == (), quality.summary()
+    assert quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM, quality.summary()
