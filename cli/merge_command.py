@@ -70,6 +70,7 @@ def cmd_merge(args: argparse.Namespace) -> int:
         print(f"note: {printable(note)}", file=sys.stderr)
     with merge_progress(args.quiet) as show:
         summary = merge.run(show)
+    tell_empty_columns(summary.empty_columns, Path(args.data), summary.report)
     print(f"{summary.made} made, {summary.unchanged} unchanged, {summary.failed} failed of "
           f"{summary.records} record(s) in {summary.seconds:.1f} s; report: {printable(str(summary.report))}")
     if summary.combined:
@@ -79,6 +80,33 @@ def cmd_merge(args: argparse.Namespace) -> int:
               f"{printable(str(summary.report))}", file=sys.stderr)
         return EXIT_SOME_RECORDS_FAILED
     return 0
+
+
+EMPTY_COLUMNS_SHOWN = 10  # kinds of empty column told in full; record numbers per kind
+
+
+def tell_empty_columns(empty: list[tuple[int, int, str, str]], data: Path, report) -> None:
+    """Warn of the records made with words around an empty column ("Dear ,"), in record
+    order: for each column and item, the first record in full (its number, its line in the
+    data, the column, the item, what it prints), then the other records it happened to; a
+    file of 10,000 rows with an empty column is 10,000 rows of report.csv, not of screen."""
+    kinds: dict[str, list[tuple[int, int, str]]] = {}
+    for number, line, what, words in sorted(empty):
+        kinds.setdefault(what, []).append((number, line, words))
+    for what, records in list(kinds.items())[:EMPTY_COLUMNS_SHOWN]:
+        number, line, words = records[0]
+        print(f"warning: record {number} (line {line} of {printable(str(data))}): "
+              f"{printable(words)}", file=sys.stderr)
+        if len(records) > 1:
+            others = [str(other) for other, _, _ in records[1:]]
+            listed = ", ".join(others[:EMPTY_COLUMNS_SHOWN]) + (
+                f" and {len(others) - EMPTY_COLUMNS_SHOWN} more"
+                if len(others) > EMPTY_COLUMNS_SHOWN else "")
+            print(f"warning: the same in {len(others)} more record(s): {listed}; their lines "
+                  f"are in {printable(str(report))}", file=sys.stderr)
+    if len(kinds) > EMPTY_COLUMNS_SHOWN:
+        print(f"warning: {len(kinds) - EMPTY_COLUMNS_SHOWN} more empty column(s) in other "
+              f"texts; each record's is in {printable(str(report))}", file=sys.stderr)
 
 
 class merge_progress:

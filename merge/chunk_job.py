@@ -50,6 +50,8 @@ class RecordResult:
     name: str
     reason: str = ""
     warnings: list[str] = field(default_factory=list)
+    # (what, words) of each text printed around an empty column (record_layout)
+    empty_columns: list[tuple[str, str]] = field(default_factory=list)
     pdf: bytes | None = None
     toml: str | None = None
     pages: int = 0
@@ -95,7 +97,7 @@ def run_chunk(task: ChunkTask) -> list[RecordResult]:
             result.reason = record.problem
             continue
         try:
-            project = lay_out_record(template, record.values, root)
+            project = lay_out_record(template, record.values, root, result.empty_columns)
             document = place_document(project)
         except RecordFailure as failure:
             result.reason = naming_columns(str(failure), template.uses)

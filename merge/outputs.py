@@ -164,6 +164,18 @@ class OutputFolder:
     def digest_file(self, name: str) -> Path:
         return self.folder / STATE_DIR / f"{name}.key"
 
+    def note_file(self, name: str) -> Path:
+        return self.folder / STATE_DIR / f"{name}.note"
+
+    def note(self, name: str) -> str:
+        """What report.csv said beside "made" when the record was made (a column printed
+        empty, a text set small): a run that skips it as unchanged says it again, where it
+        said nothing and the warning was gone from the report."""
+        try:
+            return self.note_file(name).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            return ""
+
     def unchanged(self, name: str, digest: str, with_toml: bool) -> bool:
         try:
             if self.digest_file(name).read_text(encoding="ascii") != digest:
@@ -182,8 +194,10 @@ class OutputFolder:
             return f"{path} is not a regular file; floatpage writes only regular files"
         return ""
 
-    def write_record(self, name: str, pdf: bytes, toml: str | None, digest: str) -> str:
-        """Write the record's files ("" if written, else the reason they were not)."""
+    def write_record(self, name: str, pdf: bytes, toml: str | None, digest: str,
+                     note: str = "") -> str:
+        """Write the record's files ("" if written, else the reason they were not), and
+        keep its report note for a later run that finds it unchanged."""
         targets = [(self.pdf(name), pdf)]
         if toml is not None:
             targets.append((self.toml(name), toml.encode("utf-8")))
@@ -194,6 +208,10 @@ class OutputFolder:
         self.digest_file(name).unlink(missing_ok=True)  # stale until all its files are new
         for path, data in targets:
             write_whole(path, data)
+        if note:
+            write_whole(self.note_file(name), note.encode("utf-8"))
+        else:
+            self.note_file(name).unlink(missing_ok=True)
         write_whole(self.digest_file(name), digest.encode("ascii"))
         return ""
 

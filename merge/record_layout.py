@@ -27,8 +27,11 @@ class RecordFailure(Exception):
 
 
 def fill_record(template: MergeTemplate, values: Mapping[str, str],
-                picture_root: Path | None = None) -> Project:
-    """The template with this record's values in place; items with empty fields dropped."""
+                picture_root: Path | None = None, empty: list[tuple[str, str]] | None = None
+                ) -> Project:
+    """The template with this record's values in place; items with empty fields dropped.
+    A text not marked `drop_if_empty` that prints words around an empty column gets a line
+    in ``empty`` (see `empty_column_words`)."""
     project = template.copy_project()
     root = picture_root or template.project.base_dir
     by_place = {(use.page_id, use.item_id): use for use in template.uses}
@@ -44,6 +47,8 @@ def fill_record(template: MergeTemplate, values: Mapping[str, str],
                 continue
             if item.kind == "text":
                 item.text = fill(item.text, values)
+                if empty is not None:
+                    empty += empty_column_words(use, item.text, values)
                 if len(item.text) > MAX_TEXT_CHARS:
                     raise RecordFailure(f"{use.where}: the text is {len(item.text):,} characters "
                                         f"long, more than the {MAX_TEXT_CHARS:,} a text may hold")
@@ -66,6 +71,26 @@ def fill_record(template: MergeTemplate, values: Mapping[str, str],
                 check_picture(root, page.background.picture, template.allow_outside, use,
                               values)
     return project
+
+
+def empty_column_words(use: FieldUse, text: str, values: Mapping[str, str]
+                       ) -> list[tuple[str, str]]:
+    """What a user of mail merge is told of a text whose column is empty but whose other words
+    print: "Dear {first_name}," came out "Dear ," without a word (user-walk-10).  Word and
+    LibreOffice print the blank too; here the record is still made, but the run names the
+    column, the item and what it prints, and the way to leave the item out.  A text that is
+    the column alone prints nothing, as the template asks, and is not named.  Each is
+    (what: the columns and the item, the same in every record it happens to; the words)."""
+    blank = [name for name in use.names if not values[name].strip()]
+    if not blank or not text.strip():
+        return []
+    columns = ", ".join(f'"{name}"' for name in blank)
+    shown = " ".join(text.split())
+    shown = shown if len(shown) <= 60 else shown[:59] + "…"
+    plural = "s" if len(blank) > 1 else ""
+    what = f"data column{plural} {columns} {'are' if plural else 'is'} empty: {use.where}"
+    return [(what, f'{what} prints "{shown}" (fill the value, or mark the item '
+                   "`drop_if_empty = true` to leave it out of such records)")]
 
 
 def check_picture(root: Path, relative: str, allow_outside: bool, use: FieldUse,
@@ -113,9 +138,10 @@ def settle_and_gate(project: Project, layouts: SettledLayouts = SETTLED) -> None
 
 
 def lay_out_record(template: MergeTemplate, values: Mapping[str, str],
-                   picture_root: Path | None = None) -> Project:
+                   picture_root: Path | None = None,
+                   empty: list[tuple[str, str]] | None = None) -> Project:
     try:
-        project = fill_record(template, values, picture_root)
+        project = fill_record(template, values, picture_root, empty)
         settle_and_gate(project)
     except FloatpageError as error:
         raise RecordFailure(str(error)) from None

@@ -13,7 +13,7 @@ import json
 import os
 import stat
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, Iterator
 
@@ -55,6 +55,9 @@ class MergeSummary:
     failed: int = 0
     seconds: float = 0.0
     notes: tuple[str, ...] = ()
+    # (record, line, what, words) of each text printed around an empty column in a record
+    # made (`record_layout.empty_column_words`), in the order the records came back
+    empty_columns: list[tuple[int, int, str, str]] = field(default_factory=list)
     combined: Path | None = None
     report: Path | None = None
 
@@ -203,7 +206,8 @@ class Merge:
                     continue
                 digest = self.digest(record, name)
                 if not options.force and self.out.unchanged(name, digest, options.write_toml):
-                    ordered.add(record.number, (record.line, name, "unchanged", ""))
+                    ordered.add(record.number, (record.line, name, "unchanged",
+                                                self.out.note(name)))
                     summary.unchanged += 1
                     continue
                 chunk.append((record, name, digest))
@@ -258,13 +262,16 @@ class Merge:
 
     def write(self, result: RecordResult, ordered: "InOrder", summary: MergeSummary) -> None:
         digest = self.digests.pop(result.number)
+        note = "; ".join([words for _, words in result.empty_columns] + result.warnings)
         if result.ok and result.pdf is not None:
-            problem = self.out.write_record(result.name, result.pdf, result.toml, digest)
+            problem = self.out.write_record(result.name, result.pdf, result.toml, digest,
+                                            note)
             if problem:
                 result.reason = problem
         if result.ok:
             summary.made += 1
-            note = "; ".join(result.warnings)
+            summary.empty_columns += [(result.number, result.line, what, words)
+                                      for what, words in result.empty_columns]
             ordered.add(result.number, (result.line, result.name, "made", note))
         else:
             ordered.add(result.number, (result.line, result.name, "failed", result.reason))

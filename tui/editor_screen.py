@@ -162,6 +162,7 @@ class EditorScreen(Screen):
         self._quality_key: bytes | None = None  # what the figures were measured on, at rest
         self.passes_running = 0  # no-overlap passes running in threads (`finish_settling`)
         self.room_searches = 0  # searches for room running in threads (`room_worker`)
+        self.after_room: dict[str, Callable[[], object]] = {}  # see `once_room_is_found`
         self._held_notices: list[tuple[str, dict, float | None]] = []  # while a dialog is open
         self._shown_notice: tuple[str, dict, float] | None = None  # the toast last shown
 
@@ -339,6 +340,9 @@ class EditorScreen(Screen):
     def state_word(self) -> str:
         if self.export_state:
             return self.export_state
+        if self.after_room and self.room_searches:
+            return f"{' and '.join(self.after_room)} once room is found ({self.room_searches} " \
+                "page(s) left)"
         if not self.running:
             return "paused"
         return "settled" if self.at_rest else "settling"
@@ -568,6 +572,24 @@ class EditorScreen(Screen):
                 self.redraw()
         else:
             self.redraw()
+        if not self.room_searches and self.after_room:
+            waiting, self.after_room = self.after_room, {}
+            for then in waiting.values():
+                then()
+
+    def once_room_is_found(self, what: str, then: Callable[[], object]) -> bool:
+        """Run ``then`` once the room searches still running are done, saying so (``what``:
+        "export", "save and quit"); False, and nothing kept, when none is running.  Ctrl+E
+        pressed right after `S` on every page of a calendar printed the pages with their
+        items piled up, the searches not done, and the export's own pass then left the
+        searches' answers unused: five overlaps stayed on the page on screen."""
+        if not self.room_searches:
+            return False
+        self.after_room[what] = then
+        self.notify(f"{what} once room is found on the {self.room_searches} page(s) resized; "
+                    "the editor answers meanwhile", timeout=4)
+        self.redraw()
+        return True
 
     @property
     def active_bindings(self):
@@ -677,7 +699,8 @@ class EditorScreen(Screen):
     def action_insert_kind(self, kind: str) -> None:
         project = self.session.project
         if kind == "picture":
-            self.ask(PictureDialog(project.base_dir), self.insert_picture)
+            self.ask(PictureDialog(project.base_dir, outputs=self.own_pdfs()),
+                     self.insert_picture)
         elif kind == "background":
             self.ask(ChoiceDialog("Page background", item_forms.BACKGROUND_CHOICES,
                                   dialog_id="background-dialog"), self.choose_background)
@@ -713,8 +736,8 @@ class EditorScreen(Screen):
                                 dialog_id="background-colour"),
                      partial(self.attempt, session.set_background))
         else:
-            self.ask(PictureDialog(session.project.base_dir, "Background picture"),
-                     self.set_background_picture)
+            self.ask(PictureDialog(session.project.base_dir, "Background picture",
+                                   outputs=self.own_pdfs()), self.set_background_picture)
 
     def set_background_picture(self, path: Path) -> None:
         session = self.session
@@ -902,7 +925,28 @@ class EditorScreen(Screen):
                                    every_page=every_page)
 
     def action_toggle_orientation(self) -> None:
-        self.attempt(self.session.toggle_orientation)
+        """`o` turns the page on screen; in a project of several pages it asks, as `S` does,
+        whether every page turns or this one (a calendar turned landscape kept eleven pages
+        portrait, user-walk-10).  "Every page" is highlighted where every page has this one's
+        orientation; nothing is asked where no other page would turn."""
+        session = self.session
+        turned = session.turned_orientation()
+        others = {index for index, *_ in session.orientation_changes(
+            turned, every_page=True)} - {session.page_index}
+        if not others:
+            self.attempt(session.set_orientation, turned)
+            return
+        pages, page = session.project.pages, session.page
+        alike = all(other.orientation == page.orientation for other in pages)
+        self.ask(ChoiceDialog(
+            f"Turn to {turned}", [(f"Every page ({len(pages)})", True),
+                                  (f"This page only ({page.id})", False)],
+            message="Each page keeps its own size.", highlighted=alike,
+            dialog_id="which-pages-dialog"),
+            lambda every: self.attempt(self.turn_pages, turned, every))
+
+    def turn_pages(self, orientation: str, every_page: bool) -> None:
+        self.session.set_orientation(orientation, every_page=every_page)
 
     # -- files -------------------------------------------------------------------------------
 
@@ -1008,6 +1052,8 @@ class EditorScreen(Screen):
         if session.project.path is None:
             self.notify("save the project first; the PDF goes beside it", severity="warning")
             return
+        if self.once_room_is_found("export", self.action_export_pdf):
+            return
         from floatpage.typeset.render import check_pdf_output
 
         out = self.export_path or session.project.path.with_suffix(".pdf")
@@ -1026,6 +1072,13 @@ class EditorScreen(Screen):
                      self.export_to)
             return
         self.export_to(out)
+
+    def own_pdfs(self) -> list[Path]:
+        """The PDFs this project is exported to (NAME.pdf, and the file chosen for the
+        session's exports): no pictures to insert into it."""
+        path = self.session.project.path
+        return [] if path is None else [path.with_suffix(".pdf")] + (
+            [self.export_path] if self.export_path else [])
 
     def refuse_output(self, path: Path) -> None:
         """The export dialog's check: what render would refuse, as the dialog's error line."""
@@ -1109,5 +1162,6 @@ class EditorScreen(Screen):
     def finish_quit(self, choice: str) -> None:
         if choice == "discard":
             self.app.exit()
-        elif choice == "save":
+        elif choice == "save" and not self.once_room_is_found(
+                "save and quit", lambda: self.finish_quit("save")):
             self.action_save(then=lambda: None if self.session.unsaved else self.app.exit())

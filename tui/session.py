@@ -30,6 +30,7 @@ from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
+from floatpage.physics.quality import GAP_TOLERANCE_MM
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.page_resize import keepers_of, resize_page, scale_follow_offsets, size_words
 from floatpage.tui.reading_order import reading_order, step_through
@@ -126,6 +127,12 @@ def copy_into(picture: Path, folder: Path) -> Path:
     return candidate
 
 
+def keeps_gutter(quality) -> bool:
+    """Whether every gap of a page's quality is at least its gutter (a page of fewer than two
+    items keeps it)."""
+    return quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM
+
+
 def layout_of(page: Page) -> dict[str, tuple[float, float]]:
     return {item.id: (item.x, item.y) for item in page.items}
 
@@ -160,6 +167,10 @@ class RoomRequest:
     # the items that kept the print-safe margin before the change, which the room found must
     # let them keep (issue 16): a turned greeting card left its picture 1.4 mm from the edge
     margin_kept: frozenset[str] = frozenset()
+    # whether the page kept the gutter before a new page size: the room found keeps it too
+    # where it fits (user-walk-11: the calendar made A6 kept 1.6-2.2 mm of its 3 mm gutter on
+    # five pages, the room search having looked for zero overlap only)
+    gutter_kept: bool = False
 
 
 class EditSession:
@@ -387,9 +398,11 @@ class EditSession:
         if item.id in self.project.all_item_ids():
             raise EditError(f'the id "{item.id}" is already used')
         self.checkpoint(f"insert {item.id}")
+        quality = self.engine.quality()
+        margin_kept = self.margin_keepers() | {item.id}
         self.page.items.append(item)
         if not item.decorative:
-            self.want_room(frozenset({item.id}))
+            self.want_room(frozenset({item.id}), margin_kept, gutter_kept=keeps_gutter(quality))
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
         self.selected_id = item.id
@@ -397,21 +410,24 @@ class EditSession:
 
     def want_room(self, ids: frozenset[str] | None = None,
                   margin_kept: frozenset[str] = frozenset(),
-                  page_index: int | None = None) -> None:
+                  page_index: int | None = None, gutter_kept: bool = False) -> None:
         """Ask for room for the items ``ids`` (all that take part, if None) after an insert or
         a page change (of the page on screen, or of ``page_index``): the caller runs
         ``room_scale`` on a copy of the page, off the UI thread, and hands the answer to
         ``make_room`` (issue 11: a fair start).  Run in the key's answer, it froze the editor
         for 0.8-2.3 s on an insert and 2.6-5.6 s on `o` (the calendar, load 7)."""
         index = self.page_index if page_index is None else page_index
-        self.room_wanted.append(RoomRequest(self.version, index, ids, margin_kept))
+        self.room_wanted.append(RoomRequest(self.version, index, ids, margin_kept,
+                                            gutter_kept))
 
     def room_scale(self, page: Page, request: "RoomRequest") -> float:
         """How much the items of ``request`` must shrink for ``page`` (a copy: it is changed)
-        to have a layout without overlap, tried headless with `floatpage settle`'s own code;
-        1.0: not at all.  Reads nothing else of the session's, so it may run in a thread."""
+        to have a layout without overlap, with the gutter where the page kept it before
+        (``request.gutter_kept``; where no attempt keeps it, the least shrink without
+        overlap), tried headless with `floatpage settle`'s own code; 1.0: not at all.  Reads
+        nothing else of the session's, so it may run in a thread."""
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
-        scale = 1.0
+        scale, sound = 1.0, None
         for _ in range(MAKE_ROOM_ATTEMPTS):
             trial = copy_of(page)
             settle_page(trial, settings, max_rounds=3)
@@ -419,10 +435,13 @@ class EditSession:
             quality = engine.quality()
             in_margin = {engine.ids[k] for k in quality.in_margin} & request.margin_kept
             if not (quality.overlapping_pairs or quality.off_page or in_margin):
-                break
+                if not request.gutter_kept or keeps_gutter(quality):
+                    return scale
+                sound = scale if sound is None else sound
             shrink_items(page, request.ids, MAKE_ROOM_STEP)
             scale *= MAKE_ROOM_STEP
-        return scale
+        # no gutter within reach: the least shrink without overlap, not the most tried
+        return scale if sound is None else sound
 
     def make_room(self, request: "RoomRequest", scale: float) -> bool:
         """Shrink the items of ``request`` by ``scale`` and start the physics again, if the
@@ -875,21 +894,33 @@ class EditSession:
         12-page calendar resized January only, user-walk-9), each in its own orientation for
         a named size; one undo step, and room is searched for on each page changed.
         """
+        changes = [(index, size, own, width, height) for index, own, width, height
+                   in self.size_changes(size, orientation, width_mm, height_mm,
+                                        every_page=every_page)]
+        self._resize_pages(changes, label, lambda width, height:
+                           f"made {size_words(size, width, height)}")
+
+    def _resize_pages(self, changes: list[tuple[int, str, str, float, float]], label: str,
+                      done_words) -> None:
+        """Give each page its (index, size, orientation, width, height): one undo step, its
+        items moved in proportion, room searched for on each page changed, each marked for
+        the save's settle.  ``done_words(width, height)`` says what became of several pages
+        ("made A6", "turned landscape")."""
         pages = self.project.pages
-        changes = self.size_changes(size, orientation, width_mm, height_mm,
-                                    every_page=every_page)
         if not changes:
             return
         self.checkpoint(label)
         too_large: list[str] = []
-        for index, own, width, height in changes:
+        for index, size, own, width, height in changes:
             page = pages[index]
             margin_kept = (self.margin_keepers() if index == self.page_index else
                            keepers_of(engine_for_page(page, self.project.physics)))
+            gutter_kept = keeps_gutter((self.engine if index == self.page_index else
+                                        engine_for_page(page, self.project.physics)).quality())
             too_large += resize_page(page, size, own, width, height,
                                      page_margin(self.project.physics.margin_mm, width, height))
             self.pages_edited.add(page.id)
-            self.want_room(margin_kept=margin_kept, page_index=index)
+            self.want_room(margin_kept=margin_kept, page_index=index, gutter_kept=gutter_kept)
         self.held_id = None
         if too_large:  # said, as the room search's smaller shrink is: "10 % smaller" was all
             # a user read when a 150 mm title became 9 mm wide on a 10 mm page
@@ -897,9 +928,9 @@ class EditSession:
                                 if len(too_large) == 1 else f"{len(too_large)} items larger "
                                 "than the new page were made smaller")
         if len(changes) > 1:
+            *_, width, height = changes[-1]
             self.status_note = "; ".join(filter(None, (
-                f"{len(changes)} pages made {size_words(size, width, height)}",
-                self.status_note)))
+                f"{len(changes)} pages {done_words(width, height)}", self.status_note)))
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
 
@@ -926,15 +957,38 @@ class EditSession:
         """The ids of the page's items that keep their print-safe margin now."""
         return keepers_of(self.engine)
 
-    def toggle_orientation(self) -> str:
-        page = self.page
-        if page.size == "custom":
-            self.set_page_size("custom", page.orientation, page.height_mm, page.width_mm,
-                               label="orientation")
-        else:
-            self.set_page_size(page.size, "landscape" if page.orientation == "portrait"
-                               else "portrait", label="orientation")
+    def turned_orientation(self) -> str:
+        """The orientation `o` turns the page on screen to."""
+        return "landscape" if self.page.orientation == "portrait" else "portrait"
+
+    def orientation_changes(self, orientation: str, *, every_page: bool = False
+                            ) -> list[tuple[int, str, str, float, float]]:
+        """(index, size, orientation, width, height) of each page that turning to
+        ``orientation`` would change: the page on screen, or every page, each keeping its own
+        size (a custom page's sides swap)."""
+        pages, changes = self.project.pages, []
+        for index in (range(len(pages)) if every_page else [self.page_index]):
+            page = pages[index]
+            if page.orientation == orientation:
+                continue
+            if page.size == "custom":  # its orientation follows from its sides
+                width, height = page.height_mm, page.width_mm
+                if (width > height) != (orientation == "landscape"):
+                    continue  # a square page: nothing to turn
+            else:
+                width, height = page_dimensions(page.size, orientation)
+            changes.append((index, page.size, orientation, width, height))
+        return changes
+
+    def set_orientation(self, orientation: str, *, every_page: bool = False) -> str:
+        """Turn the page on screen, or every page (`o` turned only the page on screen in a
+        12-page calendar, while `S` asks; user-walk-10): one undo step, as `S`'s."""
+        self._resize_pages(self.orientation_changes(orientation, every_page=every_page),
+                           "orientation", lambda width, height: f"turned {orientation}")
         return self.page.orientation
+
+    def toggle_orientation(self) -> str:
+        return self.set_orientation(self.turned_orientation())
 
     # -- files -------------------------------------------------------------------------------
 

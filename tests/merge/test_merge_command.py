@@ -410,3 +410,58 @@ def test_a_json_or_toml_data_file_is_refused_with_what_to_give_instead(merge_fol
     assert "records.json" in done.stderr and ".jsonl" in done.stderr and ".csv" in done.stderr
     assert "one JSON object per line" in done.stderr
     assert not (merge_folder / "out").exists()
+
+
+def test_an_empty_column_around_other_words_is_named_with_its_record_and_line(merge_folder):
+    """A first name left empty printed "A little something for" and nothing after it, and an
+    empty date "Valid until · customer no. 1003", without a word (user-walk-10).  The records
+    are still made, as a mail merge makes them, but the run warns of each: the record, its
+    line in the data, the column, the item and what it prints, and how to leave the item out;
+    report.csv says it beside "made".  A column that is a whole text (the note, empty in
+    every other row) prints nothing and is not named."""
+    records = rows(3)
+    records[1][1] = ""   # first_name
+    records[2][7] = " "  # valid_until
+    data = write_csv(merge_folder / "customers.csv", records)
+    done = merge(merge_folder, data)
+    assert done.returncode == 0, done.stderr
+    warnings = [line for line in done.stderr.splitlines() if line.startswith("warning:")]
+    assert len(warnings) == 2, done.stderr
+    assert warnings[0].startswith(f"warning: record 2 (line 3 of {data}): ")
+    assert 'column "first_name" is empty: item "greeting" on page "offer" prints ' \
+        '"A little something for"' in warnings[0]
+    assert "drop_if_empty = true" in warnings[0]
+    assert warnings[1].startswith(f"warning: record 3 (line 4 of {data}): ")
+    assert 'column "valid_until" is empty' in warnings[1] and '"Valid until · customer no. ' \
+        '1003' in warnings[1]
+    first, second, third = report(merge_folder)
+    assert first["status"] == "made" and "empty" not in first["reason"]
+    assert second["status"] == "made" and 'column "first_name" is empty' in second["reason"]
+    assert third["status"] == "made" and 'column "valid_until" is empty' in third["reason"]
+    printed = " ".join(text_of(merge_folder / "out" / "1002-Müller.pdf").split())
+    assert "A little something for" in printed and "Person1" not in printed
+    again = merge(merge_folder, data)  # nothing changed: every record skipped
+    assert again.returncode == 0 and "3 unchanged" in again.stdout, again.stdout
+    # the report still says it (it said nothing once the record was skipped as unchanged)
+    assert [row["reason"] for row in report(merge_folder)] == [
+        first["reason"], second["reason"], third["reason"]]
+    assert [row["status"] for row in report(merge_folder)] == ["unchanged"] * 3
+
+
+def test_a_column_empty_in_many_records_is_one_warning_in_record_order(merge_folder):
+    """Twelve rows without a first name printed ten warnings alike, in the order the workers
+    finished (records 4, 5, 6, 1, 2, 3, ...).  The first record is told in full, then the
+    numbers of the others; report.csv names each."""
+    records = rows(12)
+    for record in records:
+        record[1] = ""
+    done = merge(merge_folder, write_csv(merge_folder / "customers.csv", records), "out",
+                 "--chunk-size", "3")
+    assert done.returncode == 0, done.stderr
+    warnings = [line for line in done.stderr.splitlines() if line.startswith("warning:")]
+    assert len(warnings) == 2, done.stderr
+    assert warnings[0].startswith("warning: record 1 (line 2 of ")
+    assert 'column "first_name" is empty: item "greeting"' in warnings[0]
+    assert warnings[1].startswith("warning: the same in 11 more record(s): 2, 3, 4, 5, 6, 7, "
+                                  "8, 9, 10, 11 and 1 more; ")
+    assert all('column "first_name" is empty' in row["reason"] for row in report(merge_folder))

@@ -9,7 +9,7 @@ import pytest
 
 from floatpage.model import BlockItem, CalendarItem, Page, Project, load_project, save_project
 
-from editor_helpers import editor, screen_of
+from editor_helpers import editor, screen_of, until
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -81,7 +81,7 @@ async def test_1_an_export_that_moves_items_is_an_edit_that_undoes(tmp_path):
 async def test_2_undo_and_redo_name_the_edit_they_undo_and_redo(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("tab", "right")  # move the first item
-        await pilot.press("o")  # orientation
+        await pilot.press("o", "down", "enter")  # orientation, this page only
         await pilot.press("ctrl+z")
         assert messages(app)[-1] == "undid orientation"
         await pilot.press("ctrl+z")
@@ -213,7 +213,7 @@ async def test_9_turning_the_page_ends_with_no_overlap_and_nothing_off_it(tmp_pa
     path = tmp_path / "card.toml"
     create("card", path)
     async with editor(path, autostart=True) as (app, pilot):
-        await pilot.press("o")
+        await pilot.press("o", "down", "enter")  # this page only
         await settle_live(app, pilot)
         quality = app.session.engine.quality()
         assert app.session.engine.settled
@@ -459,7 +459,7 @@ async def test_turning_the_page_answers_before_the_room_is_found(tmp_path):
     create("card", path)
     async with editor(path, autostart=True) as (app, pilot):
         screen = screen_of(app)
-        screen.action_toggle_orientation()
+        screen.attempt(screen.turn_pages, "landscape", False)  # `o`'s "This page only"
         assert app.session.page.orientation == "landscape"
         assert screen.room_searches == 1 and not screen.at_rest
         await settle_live(app, pilot)
@@ -495,6 +495,9 @@ async def test_a_turned_page_keeps_the_print_safe_margin(tmp_path, project):
         kept = {engine.ids[k] for k in range(len(engine.ids))} - {
             engine.ids[k] for k in engine.quality().in_margin}
         await pilot.press("o")
+        if len(app.session.project.pages) > 1:  # "This page only", the page tested
+            await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+            await pilot.press("down", "enter")
         await settle_live(app, pilot)
         engine = app.session.engine
         quality = engine.quality()

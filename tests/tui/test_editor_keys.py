@@ -506,7 +506,7 @@ async def test_pages_add_switch_resize_reorient_and_remove(project_path):
         assert app.screen.id == "which-pages-dialog"
         await pilot.press("down", "enter")  # this page only
         assert (session.page.size, session.page.width_mm, session.page.height_mm) == ("A4", 210, 297)
-        await pilot.press("o")
+        await pilot.press("o", "down", "enter")  # this page only (every page asks since walk 11)
         assert (session.page.orientation, session.page.width_mm) == ("landscape", 297)
         assert screen_of(app).preview.projection.width > screen_of(app).preview.projection.height
         await pilot.press("D")
@@ -518,7 +518,7 @@ async def test_pages_add_switch_resize_reorient_and_remove(project_path):
 async def test_changing_the_page_size_keeps_items_in_place_relatively(project_path):
     async with editor(project_path) as (app, pilot):
         x, y = position(app, "block")
-        await pilot.press("o")
+        await pilot.press("o", "down", "enter")  # this page only
         page = app.session.page
         assert (page.width_mm, page.height_mm) == (210, 148)
         assert position(app, "block") == pytest.approx((x * 210 / 148, y * 148 / 210), abs=0.01)
