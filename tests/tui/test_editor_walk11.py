@@ -117,20 +117,11 @@ async def test_a_smaller_size_on_every_page_keeps_the_gutter_where_settle_keeps_
     gutter wherever it fits.  A page that kept the gutter before keeps it after (its items
     made a step smaller if need be); three of the sample's months, May and July among them,
     saved and read back."""
-    from floatpage.model import load_project, save_project
+    from floatpage.model import load_project
     from floatpage.model.layout import engine_for_page
-    from floatpage.physics.quality import GAP_TOLERANCE_MM
+    from floatpage.tui.session import keeps_gutter
 
-    def keeps_gutter(quality) -> bool:
-        return quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM
-
-    folder = tmp_path / "calendar"
-    shutil.copytree(ROOT / "sample_projects" / "calendar-2027", folder)
-    path = folder / "calendar-2027.toml"
-    project = load_project(path)
-    project.pages = [page for page in project.pages if page.id in ("jan", "may", "jul")]
-    project.source_text, project.parsed_source = None, None
-    save_project(project, path)
+    path = three_months(tmp_path)
     project = load_project(path)
     assert all(keeps_gutter(engine_for_page(page, project.physics).quality())
                for page in project.pages)
