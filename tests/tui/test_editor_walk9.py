@@ -101,16 +101,15 @@ async def test_a_change_another_program_makes_is_told_at_once_not_at_the_next_ct
         assert "changed card.toml just now" in dialog.message
         assert "unsaved edits" in dialog.message
         await pilot.press("enter")  # the highlighted choice: keep editing
-        await pilot.pause()
-        assert app.screen is app.editor and app.session.unsaved
+        assert await until(pilot, lambda: app.screen is app.editor), app.screen
+        assert app.session.unsaved
         assert project_path.read_text() == theirs
         assert not await until(pilot, lambda: asked(app), seconds=2.5)  # told once
         await pilot.press("ctrl+s")
-        await pilot.pause()
-        assert asked(app)  # Ctrl+S still asks
+        assert await until(pilot, lambda: asked(app))  # Ctrl+S still asks
         await pilot.press("home", "enter")
-        await pilot.pause()
-        assert not app.session.unsaved and "and Ben" not in project_path.read_text()
+        assert await until(pilot, lambda: not app.session.unsaved)
+        assert "and Ben" not in project_path.read_text()
         assert project_path.with_name("card.toml.bak").read_text() == theirs
         assert not await until(pilot, lambda: asked(app), seconds=2.5)  # its own save: no change
 
