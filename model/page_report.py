@@ -18,7 +18,6 @@ from floatpage.physics.page_limits import (
     page_limits, room_caps, too_large, unexplained_pairs,
 )
 from floatpage.physics.geometry import GUTTER_FITS_COVER, pinned_items, room_covers, rooms_of
-from floatpage.physics.quality import GAP_TOLERANCE_MM
 
 SHOWN = 5  # reasons of one kind spelled out; the rest are counted
 AXIS_WORDS = (("wide", "across"), ("tall", "down"))
@@ -228,7 +227,7 @@ def _short(quality, why: str) -> str:
         gave = f"{quality.overlap_count} overlap{'s' if quality.overlap_count != 1 else ''}"
     elif quality.in_margin:
         gave = f"margin ({len(quality.in_margin)} in it)"
-    elif np.isfinite(quality.min_gap_mm) and quality.min_gap_mm < quality.gutter_mm - GAP_TOLERANCE_MM:
+    elif not quality.gutter_kept:
         gave = f"gutter {max(quality.min_gap_mm, 0.0):.1f} of {quality.gutter_mm:g} mm"
     elif quality.off_page or quality.outside_region:
         gave = "walls"

@@ -35,15 +35,20 @@ class Quality:
     outside_region: tuple[int, ...] = ()  # items not wholly inside the region they are confined to
 
     @property
+    def gutter_kept(self) -> bool:
+        """Every gap at least the gutter (a page of fewer than two items keeps it)."""
+        return self.min_gap_mm >= self.gutter_mm - GAP_TOLERANCE_MM
+
+    @property
     def ok(self) -> bool:
         """No overlap, nothing off the page, and every gap at least the gutter."""
         return (not self.overlap_count and not self.off_page and not self.in_margin
-                and not self.outside_region and self.min_gap_mm >= self.gutter_mm - GAP_TOLERANCE_MM)
+                and not self.outside_region and self.gutter_kept)
 
     def summary(self) -> str:
         """One short line for a status bar."""
         gap = "—" if math.isinf(self.min_gap_mm) else f"{self.min_gap_mm:.1f} mm"
-        if not math.isinf(self.min_gap_mm) and self.min_gap_mm < self.gutter_mm - GAP_TOLERANCE_MM:
+        if not self.gutter_kept:
             gap += f" < {self.gutter_mm:g}"
         margin = f"{len(self.in_margin)} in margin · " if self.in_margin else ""
         if self.outside_region:

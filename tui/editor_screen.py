@@ -43,7 +43,6 @@ from floatpage.tui.page_bar import PageBar
 from floatpage.tui.page_painter import PageView, shown_guides
 from floatpage.tui.page_preview import PagePreview
 from floatpage.tui.session import EditError, EditSession
-from floatpage.physics.quality import GAP_TOLERANCE_MM
 from floatpage.tui.status_line import Status, StatusLine
 
 FRAME_S = 1 / 30
@@ -101,8 +100,7 @@ def quality_in_words(quality, reason: str = "") -> str:
     if not reason and quality.in_margin:
         words.append(f"{len(quality.in_margin)} in the margin")
     if not reason and not overlaps and not math.isinf(quality.min_gap_mm):
-        kept = quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM
-        words.append("gaps kept" if kept else
+        words.append("gaps kept" if quality.gutter_kept else
                      f"gap {max(quality.min_gap_mm, 0.0):.1f} of {quality.gutter_mm:g} mm")
     return " · ".join(words) + " · v details"
 

@@ -49,9 +49,12 @@ def resize_page(page: Page, size: str, orientation: str, width: float, height: f
     return too_large
 
 
-def keepers_of(engine: Engine) -> frozenset[str]:
-    """The ids of the engine's items that keep their print-safe margin now."""
-    return frozenset(engine.ids) - {engine.ids[k] for k in engine.quality().in_margin}
+def kept_by(engine: Engine) -> tuple[frozenset[str], bool]:
+    """What the engine's page keeps now, which the room found after a change must let it keep:
+    the ids of the items that keep their print-safe margin, and whether every gap keeps the
+    gutter (one measure of the page for both)."""
+    quality = engine.quality()
+    return frozenset(engine.ids) - {engine.ids[k] for k in quality.in_margin}, quality.gutter_kept
 
 
 def size_words(size: str, width: float, height: float) -> str:

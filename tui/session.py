@@ -30,9 +30,8 @@ from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
-from floatpage.physics.quality import GAP_TOLERANCE_MM
 from floatpage.tui.history import History, Snapshot
-from floatpage.tui.page_resize import keepers_of, resize_page, scale_follow_offsets, size_words
+from floatpage.tui.page_resize import kept_by, resize_page, scale_follow_offsets, size_words
 from floatpage.tui.reading_order import reading_order, step_through
 
 MIN_SIDE_MM = 3.0
@@ -125,12 +124,6 @@ def copy_into(picture: Path, folder: Path) -> Path:
         candidate = folder / f"{picture.stem}-{number}{picture.suffix}"
     atomic_write(candidate, data, backup=False)
     return candidate
-
-
-def keeps_gutter(quality) -> bool:
-    """Whether every gap of a page's quality is at least its gutter (a page of fewer than two
-    items keeps it)."""
-    return quality.min_gap_mm >= quality.gutter_mm - GAP_TOLERANCE_MM
 
 
 def layout_of(page: Page) -> dict[str, tuple[float, float]]:
@@ -398,11 +391,10 @@ class EditSession:
         if item.id in self.project.all_item_ids():
             raise EditError(f'the id "{item.id}" is already used')
         self.checkpoint(f"insert {item.id}")
-        quality = self.engine.quality()
-        margin_kept = self.margin_keepers() | {item.id}
+        margin_kept, gutter_kept = kept_by(self.engine)
         self.page.items.append(item)
         if not item.decorative:
-            self.want_room(frozenset({item.id}), margin_kept, gutter_kept=keeps_gutter(quality))
+            self.want_room(frozenset({item.id}), margin_kept | {item.id}, gutter_kept=gutter_kept)
         self.engine = self._build_engine(check=False)
         self.engine.reheat()
         self.selected_id = item.id
@@ -435,7 +427,7 @@ class EditSession:
             quality = engine.quality()
             in_margin = {engine.ids[k] for k in quality.in_margin} & request.margin_kept
             if not (quality.overlapping_pairs or quality.off_page or in_margin):
-                if not request.gutter_kept or keeps_gutter(quality):
+                if not request.gutter_kept or quality.gutter_kept:
                     return scale
                 sound = scale if sound is None else sound
             shrink_items(page, request.ids, MAKE_ROOM_STEP)
@@ -913,10 +905,8 @@ class EditSession:
         too_large: list[str] = []
         for index, size, own, width, height in changes:
             page = pages[index]
-            margin_kept = (self.margin_keepers() if index == self.page_index else
-                           keepers_of(engine_for_page(page, self.project.physics)))
-            gutter_kept = keeps_gutter((self.engine if index == self.page_index else
-                                        engine_for_page(page, self.project.physics)).quality())
+            margin_kept, gutter_kept = kept_by(self.engine if index == self.page_index else
+                                               engine_for_page(page, self.project.physics))
             too_large += resize_page(page, size, own, width, height,
                                      page_margin(self.project.physics.margin_mm, width, height))
             self.pages_edited.add(page.id)
@@ -952,10 +942,6 @@ class EditSession:
                                               page.height_mm):
                 changes.append((index, own, width, height))
         return changes
-
-    def margin_keepers(self) -> frozenset[str]:
-        """The ids of the page's items that keep their print-safe margin now."""
-        return keepers_of(self.engine)
 
     def turned_orientation(self) -> str:
         """The orientation `o` turns the page on screen to."""

@@ -119,11 +119,10 @@ async def test_a_smaller_size_on_every_page_keeps_the_gutter_where_settle_keeps_
     saved and read back."""
     from floatpage.model import load_project
     from floatpage.model.layout import engine_for_page
-    from floatpage.tui.session import keeps_gutter
 
     path = three_months(tmp_path)
     project = load_project(path)
-    assert all(keeps_gutter(engine_for_page(page, project.physics).quality())
+    assert all(engine_for_page(page, project.physics).quality().gutter_kept
                for page in project.pages)
     async with editor(path, autostart=True) as (app, pilot):  # running: the save settles
         await pilot.press("S")
@@ -143,7 +142,7 @@ async def test_a_smaller_size_on_every_page_keeps_the_gutter_where_settle_keeps_
     project = load_project(path)
     assert [page.width_mm for page in project.pages] == [105.0] * 3
     gaps = {page.id: engine_for_page(page, project.physics).quality() for page in project.pages}
-    assert all(keeps_gutter(quality) for quality in gaps.values()), {
+    assert all(quality.gutter_kept for quality in gaps.values()), {
         page: quality.summary() for page, quality in gaps.items()}
 
 
