@@ -15,6 +15,7 @@ resumed run keeps a PDF only if it ends whole, so a power cut in between costs a
 from __future__ import annotations
 
 import csv
+import json
 import os
 import re
 import secrets
@@ -167,14 +168,23 @@ class OutputFolder:
     def note_file(self, name: str) -> Path:
         return self.folder / STATE_DIR / f"{name}.note"
 
-    def note(self, name: str) -> str:
+    def note(self, name: str) -> tuple[str, list[tuple[str, str]]]:
         """What report.csv said beside "made" when the record was made (a column printed
-        empty, a text set small): a run that skips it as unchanged says it again, where it
-        said nothing and the warning was gone from the report."""
+        empty, a text set small), and the empty columns it was made with, each (what,
+        words) as `record_layout.empty_column_words` gave them: a run that skips the record
+        as unchanged says both again, where the report said nothing and then the terminal
+        said nothing (user-walk-12a: a re-run showed no "Dear ," warning).  A note kept as
+        plain text by an older floatpage is the report's words alone."""
         try:
-            return self.note_file(name).read_text(encoding="utf-8")
+            text = self.note_file(name).read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError):
-            return ""
+            return "", []
+        try:
+            kept = json.loads(text)
+            return str(kept["note"]), [(str(what), str(words))
+                                       for what, words in kept["empty_columns"]]
+        except (ValueError, KeyError, TypeError):
+            return text, []
 
     def unchanged(self, name: str, digest: str, with_toml: bool) -> bool:
         try:
@@ -195,7 +205,7 @@ class OutputFolder:
         return ""
 
     def write_record(self, name: str, pdf: bytes, toml: str | None, digest: str,
-                     note: str = "") -> str:
+                     note: str = "", empty_columns: list[tuple[str, str]] = ()) -> str:
         """Write the record's files ("" if written, else the reason they were not), and
         keep its report note for a later run that finds it unchanged."""
         targets = [(self.pdf(name), pdf)]
@@ -209,7 +219,8 @@ class OutputFolder:
         for path, data in targets:
             write_whole(path, data)
         if note:
-            write_whole(self.note_file(name), note.encode("utf-8"))
+            kept = {"note": note, "empty_columns": [list(pair) for pair in empty_columns]}
+            write_whole(self.note_file(name), json.dumps(kept, ensure_ascii=False).encode("utf-8"))
         else:
             self.note_file(name).unlink(missing_ok=True)
         write_whole(self.digest_file(name), digest.encode("ascii"))

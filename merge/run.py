@@ -56,7 +56,8 @@ class MergeSummary:
     seconds: float = 0.0
     notes: tuple[str, ...] = ()
     # (record, line, what, words) of each text printed around an empty column in a record
-    # made (`record_layout.empty_column_words`), in the order the records came back
+    # made (`record_layout.empty_column_words`), or skipped as unchanged since it was made
+    # so, in the order the records came back
     empty_columns: list[tuple[int, int, str, str]] = field(default_factory=list)
     combined: Path | None = None
     report: Path | None = None
@@ -206,9 +207,11 @@ class Merge:
                     continue
                 digest = self.digest(record, name)
                 if not options.force and self.out.unchanged(name, digest, options.write_toml):
-                    ordered.add(record.number, (record.line, name, "unchanged",
-                                                self.out.note(name)))
+                    note, empty_columns = self.out.note(name)
+                    ordered.add(record.number, (record.line, name, "unchanged", note))
                     summary.unchanged += 1
+                    summary.empty_columns += [(record.number, record.line, what, words)
+                                              for what, words in empty_columns]
                     continue
                 chunk.append((record, name, digest))
                 if len(chunk) >= size:
@@ -265,7 +268,7 @@ class Merge:
         note = "; ".join([words for _, words in result.empty_columns] + result.warnings)
         if result.ok and result.pdf is not None:
             problem = self.out.write_record(result.name, result.pdf, result.toml, digest,
-                                            note)
+                                            note, result.empty_columns)
             if problem:
                 result.reason = problem
         if result.ok:

@@ -448,6 +448,29 @@ def test_an_empty_column_around_other_words_is_named_with_its_record_and_line(me
     assert [row["status"] for row in report(merge_folder)] == ["unchanged"] * 3
 
 
+def test_a_second_run_warns_again_of_the_empty_columns_on_the_terminal(merge_folder):
+    """A second run of the same merge skipped every record as unchanged and said nothing on
+    the terminal of the records it had made with "A little something for" and no name: only
+    report.csv said it (user-walk-12a).  A user re-running the merge still sees the same
+    warnings, each with its record and line; a record made again with the value filled no
+    longer warns."""
+    records = rows(3)
+    records[1][1] = ""   # first_name
+    data = write_csv(merge_folder / "customers.csv", records)
+    first = merge(merge_folder, data)
+    assert first.returncode == 0, first.stderr
+    told = [line for line in first.stderr.splitlines() if line.startswith("warning:")]
+    assert len(told) == 1 and told[0].startswith(f"warning: record 2 (line 3 of {data}): ")
+    again = merge(merge_folder, data)
+    assert again.returncode == 0 and "3 unchanged" in again.stdout, again.stdout
+    assert [line for line in again.stderr.splitlines() if line.startswith("warning:")] == told
+    records[1][1] = "Ana"
+    filled = merge(merge_folder, write_csv(merge_folder / "customers.csv", records))
+    assert filled.returncode == 0 and "1 made, 2 unchanged" in filled.stdout, filled.stdout
+    assert "warning:" not in filled.stderr, filled.stderr
+    assert all("empty" not in row["reason"] for row in report(merge_folder))
+
+
 def test_a_column_empty_in_many_records_is_one_warning_in_record_order(merge_folder):
     """Twelve rows without a first name printed ten warnings alike, in the order the workers
     finished (records 4, 5, 6, 1, 2, 3, ...).  The first record is told in full, then the
