@@ -584,7 +584,7 @@ class EditorScreen(Screen):
         if not self.room_searches:
             return False
         self.after_room[what] = then
-        self.notify(f"{what} once room is found on the {self.room_searches} page(s) resized; "
+        self.notify(f"{what} once room is found on {self.room_searches} page(s); "
                     "the editor answers meanwhile", timeout=4)
         self.redraw()
         return True
@@ -951,7 +951,13 @@ class EditorScreen(Screen):
     def action_save(self, then: Callable[[], object] | None = None) -> None:
         """Save, after asking first when another program changed the file since the editor
         read or saved it (an edit in a text editor, a `git checkout`): Ctrl+S replaced such
-        changes without a word. `then` runs once the project is saved."""
+        changes without a word. `then` runs once the project is saved.  While room is
+        searched for after an insert or a new page size, the save waits for it, as Ctrl+E
+        does: saved at once, the file held the items piled up, the answers then came and
+        marked the project unsaved again, and a user who saved and hung up had a file no
+        settle leaves (user-walk-12a); a hang-up meanwhile still keeps the edits (recovery)."""
+        if self.once_room_is_found("save", lambda: self.action_save(then)):
+            return
         if not self.session.changed_on_disk():
             self.save_now(then)
             return

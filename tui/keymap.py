@@ -141,7 +141,8 @@ COMMANDS: tuple[Command, ...] = (
     Command("o", "toggle_orientation", "Orientation",
             "Turn between portrait and landscape (asks: every page, or this one)", "Pages",
             rank=3),
-    Command("ctrl+s", "save", "Save", "Save the project file", "File", footer="both",
+    Command("ctrl+s", "save", "Save", "Save the project file (once room is found, "
+            "where an insert or a new page size is still looking for it)", "File", footer="both",
             rank=11),
     Command("ctrl+e", "export_pdf", "Export",
             "Typeset the project into a PDF beside the project file", "File", footer="both",
