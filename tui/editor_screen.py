@@ -707,11 +707,13 @@ class EditorScreen(Screen):
                                 item_forms.parse_new_text, dialog_id="text-dialog"),
                      partial(self.insert, "text"))
         elif kind == "block":
-            self.ask(FormDialog("Insert a colour block", item_forms.new_block_fields(),
+            self.ask(FormDialog("Insert a colour block",
+                                item_forms.new_block_fields(self.session.new_item_look("block")),
                                 item_forms.parse_new_block, dialog_id="block-dialog"),
                      partial(self.insert, "block"))
         elif kind == "calendar":
-            fields = item_forms.new_calendar_fields(*next_month(project), project.language)
+            fields = item_forms.new_calendar_fields(*next_month(project), project.language,
+                                                    self.session.new_item_look("calendar"))
             self.ask(FormDialog("Insert a calendar month", fields, item_forms.parse_calendar,
                                 dialog_id="calendar-dialog"), partial(self.insert, "calendar"))
 

@@ -142,17 +142,24 @@ def parse_new_text(values: dict[str, Any]) -> dict[str, Any]:
     return parse_form((TextItem,), {"text": values["text"].strip()})
 
 
-def new_block_fields() -> list[Field]:
-    return form_fields(BlockItem, ("color",))
+def new_block_fields(look: dict[str, Any] | None = None) -> list[Field]:
+    """The colour to ask for, showing the one the new block takes (`insert_style`)."""
+    return form_fields(BlockItem, ("color",),
+                       values={"color": look["color"]} if look and "color" in look else None)
 
 
 def parse_new_block(values: dict[str, Any]) -> dict[str, Any]:
     return parse_form((BlockItem,), values)
 
 
-def new_calendar_fields(year: int, month: int, language: str) -> list[Field]:
+def new_calendar_fields(year: int, month: int, language: str,
+                        look: dict[str, Any] | None = None) -> list[Field]:
+    """The month to ask for, with the first weekday and language the new panel takes from
+    the page's panels (`insert_style`), else the project's language."""
+    shown = {"year": year, "month": month, "language": language}
+    shown |= {name: look[name] for name in ("first_weekday", "language") if name in (look or {})}
     return form_fields(CalendarItem, ("year", "month", "first_weekday", "language"),
-                       values={"year": year, "month": month, "language": language})
+                       values=shown)
 
 
 def parse_calendar(values: dict[str, Any]) -> dict[str, Any]:

@@ -89,12 +89,17 @@ COMMANDS: tuple[Command, ...] = (
     _resize("underscore", 1, SHRINK, "Shorter", "shorter (a picture keeps its aspect ratio)"),
     Command("i", "insert", "Insert", "Insert an item or a background (asks which)", "Insert",
             rank=2),
-    Command("t", "insert_kind('text')", "Insert text", "Insert a text box", "Insert", rank=2),
-    Command("p", "insert_kind('picture')", "Insert picture", "Insert a picture from a file", "Insert",
-            rank=2),
-    Command("b", "insert_kind('block')", "Insert block", "Insert a colour block", "Insert", rank=2),
-    Command("c", "insert_kind('calendar')", "Insert calendar", "Insert a calendar month panel",
-            "Insert", rank=2),
+    Command("t", "insert_kind('text')", "Insert text",
+            "Insert a text box, in the look and size of the selected text, or of most of the "
+            "page's texts (its role is not taken)", "Insert", rank=2),
+    Command("p", "insert_kind('picture')", "Insert picture",
+            "Insert a picture from a file, as large as the selected picture, or as the page's "
+            "pictures mostly are", "Insert", rank=2),
+    Command("b", "insert_kind('block')", "Insert block",
+            "Insert a colour block, in the colour and size of the selected block, or of most "
+            "of the page's blocks", "Insert", rank=2),
+    Command("c", "insert_kind('calendar')", "Insert calendar", "Insert a calendar month panel, "
+            "in the look and size of the selected panel, or of the page's", "Insert", rank=2),
     Command("g", "insert_kind('background')", "Background",
             "Set the page background: a colour or a picture", "Insert", rank=2),
     Command("enter,e", "edit", "Edit", "Edit the selected item's text and properties "

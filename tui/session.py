@@ -30,6 +30,7 @@ from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
+from floatpage.tui.insert_style import new_item_style
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.page_resize import kept_by, resize_page, scale_follow_offsets, size_words
 from floatpage.tui.reading_order import reading_order, step_through
@@ -458,17 +459,28 @@ class EditSession:
         return True
 
     def make_item(self, kind: str, **fields):
-        """A new item of `kind` with a fresh id, at the page centre, at the default size."""
+        """A new item of `kind` with a fresh id, at the page centre, in the style of the
+        selected item of its kind or of the page's items of its kind (`insert_style`), else
+        at the default size; ``fields`` (what the insert form asked) override the style."""
         w, h = self.default_size(kind)
+        aspect = None
         if kind == "picture" and fields.get("path"):
             aspect = picture_aspect(self.project.base_dir / fields["path"])
             if aspect:
                 h = w * aspect
+        style = {"w": w, "h": h,
+                 **new_item_style(kind, self.page, self.selected_item, aspect), **fields}
+        fit = min(1.0, self.page.width_mm / style["w"], self.page.height_mm / style["h"])
+        style["w"], style["h"] = style["w"] * fit, style["h"] * fit
         cls = {"text": TextItem, "picture": PictureItem, "block": BlockItem,
                "calendar": CalendarItem}[kind]
-        item = cls(id=self.new_id(kind), x=self.page.width_mm / 2, y=self.page.height_mm / 2,
-                   w=w, h=h, z=max((i.z for i in self.page.items), default=0), **fields)
-        return item
+        return cls(id=self.new_id(kind), x=self.page.width_mm / 2, y=self.page.height_mm / 2,
+                   z=max((i.z for i in self.page.items), default=0), **style)
+
+    def new_item_look(self, kind: str) -> dict:
+        """The look a new item of ``kind`` would take (`insert_style`), for the insert form
+        to show: a form showing the defaults would give them back and undo the style."""
+        return new_item_style(kind, self.page, self.selected_item)
 
     def relative_picture_path(self, path: str | Path) -> str:
         """The path to write for a picture the user picked: relative when it is inside the

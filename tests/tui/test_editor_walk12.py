@@ -2,8 +2,14 @@
 
 from __future__ import annotations
 
-from editor_helpers import editor, until
+import shutil
+from pathlib import Path
+
+import pytest
+from editor_helpers import editor, paint_picture, screen_of, type_text, until
 from test_editor_walk11 import every_page_a6, hold_room_searches, overlaps_in, three_months
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 async def test_a_save_right_after_a_new_page_size_waits_for_the_room(tmp_path):
@@ -24,3 +30,90 @@ async def test_a_save_right_after_a_new_page_size_waits_for_the_room(tmp_path):
         assert await until(pilot, lambda: not app.editor.room_searches
                            and not app.session.unsaved, 240)
     assert overlaps_in(path) == {"jan": 0, "may": 0, "jul": 0}
+
+
+def flyer(tmp_path):
+    folder = tmp_path / "flyer"
+    shutil.copytree(ROOT / "sample_projects" / "shop-flyer", folder)
+    return folder / "shop-flyer.toml"
+
+
+async def insert_text(app, pilot, words: str):
+    await pilot.press("t")
+    await until(pilot, lambda: app.screen.id == "text-dialog")
+    await type_text(pilot, words)
+    await pilot.press("tab", "enter")
+    await until(pilot, lambda: app.screen is app.editor)
+    return app.session.page.item(app.session.selected_id)
+
+
+async def test_a_new_text_takes_the_look_of_the_selected_text_or_of_the_pages_texts(tmp_path):
+    """A text inserted on the flyer came in as a 94 x 31 mm box of black serif among 36 x 14
+    mm price tags in red bold sans (user-walk-11's leftover).  With nothing selected it takes
+    the look and box most of the page's texts share (six of its eight are price tags); with
+    the title selected, the title's.  Never the role: a longer text in the price role would
+    shrink every price.  Saved as shown."""
+    from floatpage.model import load_project
+
+    path = flyer(tmp_path)
+    async with editor(path) as (app, pilot):
+        gate = hold_room_searches(app)  # the items read as the insert made them
+        price = app.session.page.item("product-1-price")
+        new = await insert_text(app, pilot, "Open Sundays")
+        assert (new.font, new.color, new.bold, new.w, new.h) == (
+            price.font, price.color, price.bold, price.w, price.h) == ("sans", "#c0392b", True,
+                                                                        36.0, 14.0)
+        assert new.role == "" and price.role == "price"
+        screen_of(app).selected_id = "shop-title"
+        await pilot.pause()
+        title = app.session.page.item("shop-title")
+        second = await insert_text(app, pilot, "Summer sale")
+        assert (second.font, second.color, second.bold, second.w, second.h) == (
+            "display", title.color, True, title.w, title.h)
+        gate.set()
+        await pilot.press("ctrl+s")
+        assert await until(pilot, lambda: not app.session.unsaved, 60)
+    saved = load_project(path).pages[0]
+    assert (saved.item(new.id).font, saved.item(new.id).color) == ("sans", "#c0392b")
+    assert saved.item(second.id).font == "display"
+
+
+async def test_a_new_picture_is_as_large_as_the_selected_one_in_its_own_shape(tmp_path):
+    """A photo put into the flyer came in 84 mm wide among 35 mm ones.  It takes the area of
+    the selected picture (or the page's median), in its own file's shape: a portrait photo
+    beside square ones is as large, not as wide."""
+    path = flyer(tmp_path)
+    paint_picture(path.parent / "pictures" / "tall.png", (30, 60))
+    async with editor(path) as (app, pilot):
+        gate = hold_room_searches(app)  # the picture read as the insert made it
+        screen_of(app).selected_id = "product-1"
+        await pilot.pause()
+        apples = app.session.page.item("product-1")
+        await pilot.press("p")
+        await until(pilot, lambda: app.screen.id == "picture-dialog")
+        await pilot.press("tab", *"pictures/tall.png", "enter")
+        await until(pilot, lambda: app.screen is app.editor)
+        new = app.session.page.item(app.session.selected_id)
+        assert new.path == "pictures/tall.png"
+        assert new.h == pytest.approx(2 * new.w)
+        assert new.w * new.h == pytest.approx(apples.w * apples.h)
+        gate.set()
+
+
+async def test_a_new_block_offers_the_colour_of_the_selected_block(tmp_path):
+    """The colour block's form showed the default grey, and what the form shows is what the
+    block takes: the selected block's colour is offered, and taken with its size."""
+    path = flyer(tmp_path)
+    async with editor(path) as (app, pilot):
+        gate = hold_room_searches(app)  # the block read as the insert made it
+        band = app.session.page.item("header-stripe")
+        screen_of(app).selected_id = band.id
+        await pilot.pause()
+        await pilot.press("b")
+        await until(pilot, lambda: app.screen.id == "block-dialog")
+        assert app.screen.query_one("Input").value == band.color
+        await pilot.press("enter")
+        await until(pilot, lambda: app.screen is app.editor)
+        new = app.session.page.item(app.session.selected_id)
+        assert (new.kind, new.color, new.w, new.h) == ("block", band.color, band.w, band.h)
+        gate.set()
