@@ -804,13 +804,27 @@ class EditorScreen(Screen):
         self.notify(self.session.set_group(group))
 
     def action_region(self) -> None:
-        """Make a region, or change or remove the selected item's (`tui.region_edits`)."""
+        """Make a region, or change or remove the selected item's (`tui.region_edits`).  With
+        nothing selected on a page that has regions, ask which: a new one, or one of them to
+        change or remove; a region holding no item could be neither once made (a stray `R`
+        left one the editor could not take away, user-walk-12a)."""
+        session = self.session
+        if session.selected_item is None and session.page.regions:
+            self.ask(ChoiceDialog("Region", region_edits.region_choices(session.page),
+                                  dialog_id="which-region-dialog"), self.edit_region)
+            return
+        self.edit_region(None)
+
+    def edit_region(self, region_id: str | None) -> None:
+        """The form for the region ``region_id`` of the page, or for the selected item's
+        region, or for a new one around the selected item (or the page's top two-thirds)."""
         session = self.session
         item = session.selected_item
         if item is not None:
             session.sync_positions()  # the region offered is around where the item is now
-        region = region_edits.proposed_region(session.page, item)
-        old_id = item.region if item is not None and item.region else None
+        old_id = region_id or (item.region if item is not None and item.region else None)
+        region = session.page.region(old_id) if old_id else \
+            region_edits.proposed_region(session.page, item)
         title = f"Region {old_id}" if old_id else "New region"
         self.ask(FormDialog(title, region_edits.region_fields(region, item, new=old_id is None),
                             region_edits.region_parser(session.page, old_id, item),

@@ -120,7 +120,8 @@ COMMANDS: tuple[Command, ...] = (
             "(asks for its name; empty takes it out)", "Anchor", footer="item", rank=6,
             needs_item=True),
     Command("R", "region", "Region", "Make a region (around the selected item, which keeps "
-            "inside it), or change or remove the selected item's region", "Anchor",
+            "inside it), or change or remove the selected item's region; with nothing "
+            "selected, a new one (the page's top two-thirds) or one of the page's", "Anchor",
             footer="item", rank=6),
     Command("space", "toggle_pause", "Pause", "Pause or resume the physics", "Physics",
             footer="both", rank=9),

@@ -41,6 +41,17 @@ def proposed_region(page, item) -> Region:
                   round(right - left, 2), round(bottom - top, 2))
 
 
+def region_choices(page) -> list[tuple[str, str]]:
+    """What `R` with nothing selected offers on a page with regions: a new region (the value
+    "", which `edit_region` reads as none), or one of the page's to change or remove."""
+    def held(region) -> str:
+        count = sum(1 for item in page.items if item.region == region.id)
+        return f"{count} item(s) in it" if count else "no item in it"
+    return [("New region…", "")] + [
+        (f"Change or remove {region.id}  ({round(region.w, 1):g} × {round(region.h, 1):g} mm, "
+         f"{held(region)})", region.id) for region in page.regions]
+
+
 def region_fields(region: Region, item, *, new: bool) -> list[Field]:
     name = "Region name" if new else "Region name (empty removes it; its items go free)"
     fields = [Field("id", name, "line", region.id),

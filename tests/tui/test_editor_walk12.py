@@ -117,3 +117,36 @@ async def test_a_new_block_offers_the_colour_of_the_selected_block(tmp_path):
         new = app.session.page.item(app.session.selected_id)
         assert (new.kind, new.color, new.w, new.h) == ("block", band.color, band.w, band.h)
         gate.set()
+
+
+async def test_a_region_with_no_item_in_it_can_be_changed_and_removed(tmp_path):
+    """`R` with nothing selected made a new region every time: a region holding no item (made
+    by a stray `R`, or kept empty) could be neither changed nor removed in the editor, only
+    undone at once, and after a save only in a text editor.  With nothing selected on a page
+    that has regions, `R` asks: a new one, or one of the page's; an empty name removes it."""
+    from floatpage.model import load_project
+
+    folder = tmp_path / "card"
+    shutil.copytree(ROOT / "sample_projects" / "greeting-card", folder)
+    path = folder / "greeting-card.toml"
+    async with editor(path) as (app, pilot):
+        await pilot.press("R")
+        await until(pilot, lambda: app.screen.id == "region-dialog")
+        await pilot.press("enter")  # the page's top two-thirds, as offered
+        await until(pilot, lambda: app.screen is app.editor)
+        assert [region.id for region in app.session.page.regions] == ["region-1"]
+        await pilot.press("ctrl+s")
+        assert await until(pilot, lambda: not app.session.unsaved, 60)
+    async with editor(path) as (app, pilot):  # reopened: no undo to take it away
+        await pilot.press("R")
+        assert await until(pilot, lambda: app.screen.id == "which-region-dialog"), app.screen.id
+        await pilot.press("down", "enter")  # region-1
+        await until(pilot, lambda: app.screen.id == "region-dialog")
+        name = app.screen.query_one("Input")
+        assert name.value == "region-1" and name.has_focus
+        await pilot.press(*["backspace"] * len(name.value), "enter")  # an empty name removes it
+        await until(pilot, lambda: app.screen is app.editor)
+        assert app.session.page.regions == []
+        await pilot.press("ctrl+s")
+        assert await until(pilot, lambda: not app.session.unsaved, 60)
+    assert load_project(path).pages[0].regions == []
