@@ -13,7 +13,7 @@ from __future__ import annotations
 import itertools
 from typing import Any
 
-from floatpage.model.document import Region
+from floatpage.model.document import ItemAnchor, Region
 from floatpage.tui.dialogs.form import Field, FieldError
 from floatpage.tui.item_forms import checked, number
 
@@ -26,17 +26,18 @@ def free_region_id(page) -> str:
 
 
 def proposed_region(page, item) -> Region:
-    """The region the form offers: the item's own, else one around the item, else the page's
-    top two-thirds (the README's example)."""
+    """The region the form offers: the item's own, else one around the item and the items
+    that move as one with it (a region keeps them all inside), else the page's top
+    two-thirds (the README's example)."""
     if item is not None and item.region:
         return page.region(item.region)
     if item is None:
         return Region(free_region_id(page), 0.0, 0.0, page.width_mm,
                       round(page.height_mm * 2 / 3, 2))
-    left = max(0.0, item.x - item.w / 2 - AROUND_MM)
-    top = max(0.0, item.y - item.h / 2 - AROUND_MM)
-    right = min(page.width_mm, item.x + item.w / 2 + AROUND_MM)
-    bottom = min(page.height_mm, item.y + item.h / 2 + AROUND_MM)
+    left, top, right, bottom = box_of(body_of(page, item))  # with its caption, its group
+    left, top = max(0.0, left - AROUND_MM), max(0.0, top - AROUND_MM)
+    right = min(page.width_mm, right + AROUND_MM)
+    bottom = min(page.height_mm, bottom + AROUND_MM)
     return Region(free_region_id(page), round(left, 2), round(top, 2),
                   round(right - left, 2), round(bottom - top, 2))
 
@@ -84,6 +85,32 @@ def parse_region(values: dict[str, Any]) -> dict[str, Any]:
         except ValueError as error:
             raise FieldError(key, str(error)) from None
     return {"region": Region(name, **numbers), "confine": confine}
+
+
+def body_of(page, item) -> list:
+    """``item`` and every item that moves as one with it: its group's members and the items
+    following any of them (or followed), as the physics joins them, in file order.  A region
+    keeps the whole body inside it, not the confined item alone."""
+    body, grew = {item.id}, True
+    while grew:
+        grew = False
+        groups = {other.group for other in page.items if other.id in body and other.group}
+        for other in page.items:
+            joined = other.id not in body and (
+                other.group in groups
+                or isinstance(other.anchor, ItemAnchor) and other.anchor.to in body
+                or any(isinstance(member.anchor, ItemAnchor) and member.anchor.to == other.id
+                       for member in page.items if member.id in body))
+            if joined:
+                body.add(other.id)
+                grew = True
+    return [other for other in page.items if other.id in body]
+
+
+def box_of(items) -> tuple[float, float, float, float]:
+    """(left, top, right, bottom) around ``items``, mm."""
+    return (min(i.x - i.w / 2 for i in items), min(i.y - i.h / 2 for i in items),
+            max(i.x + i.w / 2 for i in items), max(i.y + i.h / 2 for i in items))
 
 
 def members_of(page, old_id: str | None, item, confine: bool) -> list:
@@ -148,9 +175,14 @@ def put_region(session, old_id: str | None, answer: dict[str, Any], item_id: str
     if item is not None:
         item.region = new.id if answer["confine"] else ("" if item.region == new.id
                                                          else item.region)
-    for member in members:  # put inside at once, as a drag keeps it inside
-        member.x = min(max(member.x, new.left + member.w / 2), new.left + new.w - member.w / 2)
-        member.y = min(max(member.y, new.top + member.h / 2), new.top + new.h - member.h / 2)
+    for member in members:  # put inside at once, as a drag keeps it inside: with the items
+        body = body_of(page, member)  # that move as one with it, or the group came apart
+        left, top, right, bottom = box_of(body)
+        dx = min(max(left, new.left), new.left + new.w - (right - left)) - left
+        dy = min(max(top, new.top), new.top + new.h - (bottom - top)) - top
+        for other in body:
+            other.x += dx
+            other.y += dy
     session.rebuild_engine(sync=False)
     verb = "made" if old_id is None else "changed"
     # to a tenth of a mm, as the preview can show: "127 × 135.47 mm" (two thirds of a 5x8 in
@@ -177,3 +209,16 @@ def refuse_region(page, old_id: str | None, new: Region, members: list) -> None:
             raise EditError(f'"{member.id}" is {member.w:.1f} x {member.h:.1f} mm, larger than '
                             f"the region ({new.w:g} x {new.h:g} mm): make the region larger "
                             "or the item smaller")
+        body = body_of(page, member)
+        left, top, right, bottom = box_of(body)
+        if right - left > new.w + 1e-9 or bottom - top > new.h + 1e-9:
+            others = ", ".join(f'"{other.id}"' for other in body if other is not member)
+            how, undo = ((f'its group "{member.group}"', f'take "{member.id}" out of its group '
+                          "(G, an empty name) first") if member.group else
+                         ("the items it follows or that follow it", "bring them closer "
+                          "together, or unanchor them (u) first"))
+            raise EditError(
+                f'"{member.id}" moves as one with {others} ({how}): together they are '
+                f"{right - left:.1f} x {bottom - top:.1f} mm, larger than the region "
+                f"({new.w:g} x {new.h:g} mm), and a region keeps them all inside it: make the "
+                f"region larger, or {undo}")

@@ -150,3 +150,65 @@ async def test_a_region_with_no_item_in_it_can_be_changed_and_removed(tmp_path):
         await pilot.press("ctrl+s")
         assert await until(pilot, lambda: not app.session.unsaved, 60)
     assert load_project(path).pages[0].regions == []
+
+
+async def group_two_photos(app, pilot) -> None:
+    for photo in ("p1-photo-1", "p1-photo-2"):
+        screen_of(app).selected_id = photo
+        await pilot.pause()
+        await pilot.press("G")
+        await until(pilot, lambda: app.screen.id == "group-dialog")
+        await type_text(pilot, "toprow")
+        await pilot.press("enter")
+        await until(pilot, lambda: app.screen is app.editor)
+    assert [item.id for item in app.session.page.group_members("toprow")] == [
+        "p1-photo-1", "p1-photo-2"]
+
+
+def form_words(app) -> str:
+    return " ".join(str(label.render()) for label in app.screen.query("Label"))
+
+
+async def region_form(app, pilot, *numbers: str) -> None:
+    """`R` on the selected item, the region's left, top, width and height typed."""
+    await pilot.press("R")
+    await until(pilot, lambda: app.screen.id == "region-dialog")
+    for typed in numbers:
+        await pilot.press("tab", *typed)
+    await pilot.press("enter")
+
+
+async def test_a_group_member_put_in_a_region_takes_its_group_along(tmp_path):
+    """Two album photos grouped, the first then kept inside a new region at the page's foot
+    with `R`: the first photo (and its caption) jumped into the region and the second stayed
+    at the top, so the group, one body, was 220 mm tall for a region of 97, and `check` said
+    no settle could fit it (2 overlaps).  The group (with its captions) goes into the region
+    together, keeping its shape; a region too small for the group is refused in the form,
+    with the group named and what to do."""
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    async with editor(folder / "photo-album.toml", autostart=True) as (app, pilot):
+        await group_two_photos(app, pilot)
+        screen_of(app).selected_id = "p1-photo-1"
+        await pilot.pause()
+        page = app.session.page
+        app.session.sync_positions()
+        apart = page.item("p1-photo-2").x - page.item("p1-photo-1").x
+        await region_form(app, pilot, "0", "210", "210", "60")
+        assert await until(pilot, lambda: "moves as one" in form_words(app)), form_words(app)
+        assert app.screen.id == "region-dialog"  # refused: the form stays open
+        assert 'group "toprow"' in form_words(app), form_words(app)
+        assert "larger than the region" in form_words(app)
+        await pilot.press("escape")
+        await until(pilot, lambda: app.screen is app.editor)
+        await region_form(app, pilot, "0", "200", "210", "97")
+        assert await until(pilot, lambda: app.screen is app.editor)
+        app.session.sync_positions()
+        body = [page.item(name) for name in ("p1-photo-1", "p1-photo-2", "p1-photo-1-caption",
+                                             "p1-photo-2-caption")]
+        assert all(item.y - item.h / 2 >= 200 - 0.01 and item.y + item.h / 2 <= 297.01
+                   for item in body), [(item.id, item.y) for item in body]
+        assert page.item("p1-photo-2").x - page.item("p1-photo-1").x == pytest.approx(apart)
+        assert await until(pilot, lambda: app.editor.at_rest, 120)  # the photo below makes way
+        quality = app.session.engine.quality()
+        assert quality.overlapping_pairs == (), quality.summary()
