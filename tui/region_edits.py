@@ -209,16 +209,24 @@ def refuse_region(page, old_id: str | None, new: Region, members: list) -> None:
             raise EditError(f'"{member.id}" is {member.w:.1f} x {member.h:.1f} mm, larger than '
                             f"the region ({new.w:g} x {new.h:g} mm): make the region larger "
                             "or the item smaller")
-        body = body_of(page, member)
-        left, top, right, bottom = box_of(body)
-        if right - left > new.w + 1e-9 or bottom - top > new.h + 1e-9:
-            others = ", ".join(f'"{other.id}"' for other in body if other is not member)
-            how, undo = ((f'its group "{member.group}"', f'take "{member.id}" out of its group '
-                          "(G, an empty name) first") if member.group else
-                         ("the items it follows or that follow it", "bring them closer "
-                          "together, or unanchor them (u) first"))
-            raise EditError(
-                f'"{member.id}" moves as one with {others} ({how}): together they are '
-                f"{right - left:.1f} x {bottom - top:.1f} mm, larger than the region "
-                f"({new.w:g} x {new.h:g} mm), and a region keeps them all inside it: make the "
-                f"region larger, or {undo}")
+        misfit = body_misfit(page, member, new)
+        if misfit:
+            raise EditError(misfit)
+
+
+def body_misfit(page, member, region: Region) -> str | None:
+    """Why ``member`` and the items moving as one with it (`body_of`) cannot all keep inside
+    ``region``, as the region keeps them, in words with what to do; None if they can."""
+    body = body_of(page, member)
+    left, top, right, bottom = box_of(body)
+    if right - left <= region.w + 1e-9 and bottom - top <= region.h + 1e-9:
+        return None
+    others = ", ".join(f'"{other.id}"' for other in body if other is not member)
+    how, undo = ((f'its group "{member.group}"', f'take "{member.id}" out of its group '
+                  "(G, an empty name) first") if member.group else
+                 ("the items it follows or that follow it", "bring them closer together, or "
+                  "unanchor them (u) first"))
+    return (f'"{member.id}" moves as one with {others} ({how}): together they are '
+            f"{right - left:.1f} x {bottom - top:.1f} mm, larger than the region "
+            f'"{region.id}" ({region.w:g} x {region.h:g} mm), and a region keeps them all '
+            f"inside it: make the region larger, or {undo}")

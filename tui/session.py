@@ -31,6 +31,7 @@ from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
 from floatpage.tui.insert_style import new_item_style
+from floatpage.tui.region_edits import body_misfit
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.page_resize import kept_by, resize_page, scale_follow_offsets, size_words
 from floatpage.tui.reading_order import reading_order, step_through
@@ -715,6 +716,19 @@ class EditSession:
         misfit = self.page.region_misfit(item, region_id) if region_id else None
         if misfit:
             raise EditError(f'"{item.id}" {misfit}')
+        if region_id and ("region" in changes or "group" in changes):
+            # the region keeps the item's whole body inside it (its group, its followers):
+            # measured as the edit would leave it, then the item put back as it was
+            before = {key: getattr(item, key) for key in ("region", "group")}
+            for key in before:
+                setattr(item, key, changes.get(key, before[key]))
+            try:
+                misfit = body_misfit(self.page, item, self.page.region(region_id))
+            finally:
+                for key, value in before.items():
+                    setattr(item, key, value)
+            if misfit:
+                raise EditError(misfit)
         group = changes.get("group", item.group)
         if not group or group == item.group:
             return

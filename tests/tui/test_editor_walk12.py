@@ -212,3 +212,31 @@ async def test_a_group_member_put_in_a_region_takes_its_group_along(tmp_path):
         assert await until(pilot, lambda: app.editor.at_rest, 120)  # the photo below makes way
         quality = app.session.engine.quality()
         assert quality.overlapping_pairs == (), quality.summary()
+
+
+async def test_a_group_member_is_not_kept_in_a_region_its_group_cannot_fit_from_the_form(tmp_path):
+    """The same through `Enter`'s "Keep inside region": a grouped photo was confined to a
+    region 60 mm tall that its group (68 mm with the captions) could never fit, without a
+    word; `check` then found no settle that fits it.  The form says why and stays open."""
+    from textual.widgets import Select
+
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    async with editor(folder / "photo-album.toml") as (app, pilot):
+        await pilot.press("R")  # nothing selected: a new region, typed
+        await until(pilot, lambda: app.screen.id == "region-dialog")
+        for typed in ("0", "230", "210", "60"):
+            await pilot.press("tab", *typed)
+        await pilot.press("enter")
+        assert await until(pilot, lambda: app.screen is app.editor)
+        await group_two_photos(app, pilot)
+        screen_of(app).selected_id = "p1-photo-1"
+        await pilot.pause()
+        await pilot.press("enter")
+        await until(pilot, lambda: app.screen.id == "edit-dialog")
+        app.screen.query_one(Select).value = "region-1"
+        await pilot.press("ctrl+s")
+        assert await until(pilot, lambda: app.screen is app.editor)
+        told = [n.message for n in app._notifications if "moves as one" in n.message]
+        assert told and 'group "toprow"' in told[0] and 'region "region-1"' in told[0], told
+        assert app.session.page.item("p1-photo-1").region == ""
