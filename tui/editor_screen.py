@@ -827,7 +827,8 @@ class EditorScreen(Screen):
             region_edits.proposed_region(session.page, item)
         title = f"Region {old_id}" if old_id else "New region"
         self.ask(FormDialog(title, region_edits.region_fields(region, item, new=old_id is None),
-                            region_edits.region_parser(session.page, old_id, item),
+                            region_edits.region_parser(session.page, old_id, item,
+                                                       session.engine.margin_mm),
                             dialog_id="region-dialog"),
                  partial(self.attempt, self.say_region, old_id,
                          item.id if item is not None else None))

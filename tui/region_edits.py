@@ -11,6 +11,7 @@ it becomes one undoable edit.
 from __future__ import annotations
 
 import itertools
+import math
 from typing import Any
 
 from floatpage.model.document import ItemAnchor, Region
@@ -27,14 +28,16 @@ def free_region_id(page) -> str:
 
 def proposed_region(page, item) -> Region:
     """The region the form offers: the item's own, else one around the item and the items
-    that move as one with it (a region keeps them all inside), else the page's top
-    two-thirds (the README's example)."""
+    following it (its caption: where the region is the item's alone, the caption cannot stay
+    on the page below it), else the page's top two-thirds (the README's example)."""
     if item is not None and item.region:
         return page.region(item.region)
     if item is None:
         return Region(free_region_id(page), 0.0, 0.0, page.width_mm,
                       round(page.height_mm * 2 / 3, 2))
-    left, top, right, bottom = box_of(body_of(page, item))  # with its caption, its group
+    own = [item] + [other for other in page.items  # with its caption, which it keeps inside
+                    if isinstance(other.anchor, ItemAnchor) and other.anchor.to == item.id]
+    left, top, right, bottom = box_of(own)
     left, top = max(0.0, left - AROUND_MM), max(0.0, top - AROUND_MM)
     right = min(page.width_mm, right + AROUND_MM)
     bottom = min(page.height_mm, bottom + AROUND_MM)
@@ -121,7 +124,7 @@ def members_of(page, old_id: str | None, item, confine: bool) -> list:
     return members + [item] if item is not None and confine else members
 
 
-def region_parser(page, old_id: str | None, item):
+def region_parser(page, old_id: str | None, item, margin_mm: float):
     """`parse_region`, then the loader's rules (`refuse_region`) as the form's error line, so
     a region too large for the page or too small for its items keeps the form open."""
     from floatpage.tui.session import EditError
@@ -133,7 +136,7 @@ def region_parser(page, old_id: str | None, item):
         if answer["region"] is not None:
             try:
                 refuse_region(page, old_id, answer["region"],
-                              members_of(page, old_id, item, answer["confine"]))
+                              members_of(page, old_id, item, answer["confine"]), margin_mm)
             except EditError as error:
                 raise ValueError(str(error)) from None
         return answer
@@ -163,7 +166,8 @@ def put_region(session, old_id: str | None, answer: dict[str, Any], item_id: str
         return f'removed region "{old_id}"' + (f"; {len(freed)} item(s) in it go free"
                                                if freed else "")
     members = members_of(page, old_id, item, answer["confine"])
-    refuse_region(page, old_id, new, members)
+    margin_mm = session.engine.margin_mm
+    refuse_region(page, old_id, new, members, margin_mm)
     session.checkpoint(f"region {new.id}")
     if old_id is None:
         page.regions.append(new)
@@ -175,14 +179,17 @@ def put_region(session, old_id: str | None, answer: dict[str, Any], item_id: str
     if item is not None:
         item.region = new.id if answer["confine"] else ("" if item.region == new.id
                                                          else item.region)
+    moved: set[str] = set()
     for member in members:  # put inside at once, as a drag keeps it inside: with the items
-        body = body_of(page, member)  # that move as one with it, or the group came apart
-        left, top, right, bottom = box_of(body)
-        dx = min(max(left, new.left), new.left + new.w - (right - left)) - left
-        dy = min(max(top, new.top), new.top + new.h - (bottom - top)) - top
+        body = body_of(page, member)  # moving as one with it, or the group came apart
+        if member.id in moved:
+            continue
+        (dx_low, dx_high), (dy_low, dy_high) = shift_room(body, page, margin_mm)
+        dx, dy = min(max(0.0, dx_low), dx_high), min(max(0.0, dy_low), dy_high)
         for other in body:
             other.x += dx
             other.y += dy
+            moved.add(other.id)
     session.rebuild_engine(sync=False)
     verb = "made" if old_id is None else "changed"
     # to a tenth of a mm, as the preview can show: "127 × 135.47 mm" (two thirds of a 5x8 in
@@ -192,7 +199,8 @@ def put_region(session, old_id: str | None, answer: dict[str, Any], item_id: str
                else ""))
 
 
-def refuse_region(page, old_id: str | None, new: Region, members: list) -> None:
+def refuse_region(page, old_id: str | None, new: Region, members: list,
+                  margin_mm: float) -> None:
     """EditError for what the loader would refuse (model.project_file): a region reaching past
     the page, a name another region has, an item larger than its region."""
     from floatpage.tui.session import EditError
@@ -209,24 +217,57 @@ def refuse_region(page, old_id: str | None, new: Region, members: list) -> None:
             raise EditError(f'"{member.id}" is {member.w:.1f} x {member.h:.1f} mm, larger than '
                             f"the region ({new.w:g} x {new.h:g} mm): make the region larger "
                             "or the item smaller")
-        misfit = body_misfit(page, member, new)
+        misfit = body_misfit(page, member, margin_mm, {item.id: new for item in members})
         if misfit:
             raise EditError(misfit)
 
 
-def body_misfit(page, member, region: Region) -> str | None:
-    """Why ``member`` and the items moving as one with it (`body_of`) cannot all keep inside
-    ``region``, as the region keeps them, in words with what to do; None if they can."""
+def walls_of(item, page, margin_mm: float, regions: dict[str, Region]) -> tuple[float, ...]:
+    """(left, top, right, bottom) an item keeps inside: its region (``regions`` first: the
+    region an edit gives it), else the page less the print-safe margin (none for bleed)."""
+    region = regions.get(item.id) or (page.region(item.region) if item.region and any(
+        r.id == item.region for r in page.regions) else None)
+    if region is not None:
+        return region.box
+    margin = 0.0 if getattr(item, "bleed", False) else margin_mm
+    return (margin, margin, page.width_mm - margin, page.height_mm - margin)
+
+
+def shift_room(body, page, margin_mm: float, regions: dict[str, Region] | None = None
+               ) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The shifts along x and along y, each (least, most), that keep every item of ``body``
+    (moving as one) inside its walls (`walls_of`); least > most where none does."""
+    room = [[-math.inf, math.inf], [-math.inf, math.inf]]
+    for item in body:
+        if item.decorative:
+            continue
+        walls = walls_of(item, page, margin_mm, regions or {})
+        for axis, (centre, size) in enumerate(((item.x, item.w), (item.y, item.h))):
+            room[axis][0] = max(room[axis][0], walls[axis] - (centre - size / 2))
+            room[axis][1] = min(room[axis][1], walls[axis + 2] - (centre + size / 2))
+    return (room[0][0], room[0][1]), (room[1][0], room[1][1])
+
+
+def body_misfit(page, member, margin_mm: float, regions: dict[str, Region] | None = None
+                ) -> str | None:
+    """Why ``member`` and the items moving as one with it (`body_of`) have no place where
+    each keeps inside its walls (its region, ``regions`` first, or the margins), in words
+    with what to do; None if they have one.  Such a body no settle can fit: `check` said so
+    only after the edit was made."""
     body = body_of(page, member)
-    left, top, right, bottom = box_of(body)
-    if right - left <= region.w + 1e-9 and bottom - top <= region.h + 1e-9:
+    if len(body) == 1:
         return None
+    across, down = shift_room(body, page, margin_mm, regions)
+    if across[0] <= across[1] + 1e-6 and down[0] <= down[1] + 1e-6:
+        return None
+    left, top, right, bottom = box_of(body)
+    region = (regions or {}).get(member.id) or page.region(member.region)
     others = ", ".join(f'"{other.id}"' for other in body if other is not member)
     how, undo = ((f'its group "{member.group}"', f'take "{member.id}" out of its group '
                   "(G, an empty name) first") if member.group else
                  ("the items it follows or that follow it", "bring them closer together, or "
                   "unanchor them (u) first"))
-    return (f'"{member.id}" moves as one with {others} ({how}): together they are '
-            f"{right - left:.1f} x {bottom - top:.1f} mm, larger than the region "
-            f'"{region.id}" ({region.w:g} x {region.h:g} mm), and a region keeps them all '
-            f"inside it: make the region larger, or {undo}")
+    return (f'"{member.id}" moves as one with {others} ({how}), {right - left:.1f} x '
+            f'{bottom - top:.1f} mm together; kept inside the region "{region.id}" '
+            f"({region.w:g} x {region.h:g} mm), and the others inside their regions or the "
+            f"margins, they have no place on the page: make the region larger, or {undo}")

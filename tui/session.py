@@ -723,7 +723,7 @@ class EditSession:
             for key in before:
                 setattr(item, key, changes.get(key, before[key]))
             try:
-                misfit = body_misfit(self.page, item, self.page.region(region_id))
+                misfit = body_misfit(self.page, item, self.engine.margin_mm)
             finally:
                 for key, value in before.items():
                     setattr(item, key, value)

@@ -183,8 +183,9 @@ async def test_a_group_member_put_in_a_region_takes_its_group_along(tmp_path):
     with `R`: the first photo (and its caption) jumped into the region and the second stayed
     at the top, so the group, one body, was 220 mm tall for a region of 97, and `check` said
     no settle could fit it (2 overlaps).  The group (with its captions) goes into the region
-    together, keeping its shape; a region too small for the group is refused in the form,
-    with the group named and what to do."""
+    together, keeping its shape; a region that leaves the group no place (the photo inside
+    it, its caption and the other photo inside the margins) is refused in the form, with the
+    group named and what to do."""
     folder = tmp_path / "album"
     shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
     async with editor(folder / "photo-album.toml", autostart=True) as (app, pilot):
@@ -194,11 +195,12 @@ async def test_a_group_member_put_in_a_region_takes_its_group_along(tmp_path):
         page = app.session.page
         app.session.sync_positions()
         apart = page.item("p1-photo-2").x - page.item("p1-photo-1").x
-        await region_form(app, pilot, "0", "210", "210", "60")
+        # at the page's foot, 60 mm: the photo's caption would fall past the bottom margin
+        await region_form(app, pilot, "0", "237", "210", "60")
         assert await until(pilot, lambda: "moves as one" in form_words(app)), form_words(app)
         assert app.screen.id == "region-dialog"  # refused: the form stays open
         assert 'group "toprow"' in form_words(app), form_words(app)
-        assert "larger than the region" in form_words(app)
+        assert "no place on the page" in form_words(app)
         await pilot.press("escape")
         await until(pilot, lambda: app.screen is app.editor)
         await region_form(app, pilot, "0", "200", "210", "97")
