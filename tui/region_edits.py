@@ -233,18 +233,37 @@ def walls_of(item, page, margin_mm: float, regions: dict[str, Region]) -> tuple[
     return (margin, margin, page.width_mm - margin, page.height_mm - margin)
 
 
+def root_of(page, body):
+    """The member of ``body`` the others follow, as the physics joins them: the one that
+    follows no item and leads its group, if any."""
+    for item in body:
+        follows = isinstance(item.anchor, ItemAnchor) or (
+            item.group and page.group_lead(item.group) is not item)
+        if not follows:
+            return item
+    return body[0]
+
+
 def shift_room(body, page, margin_mm: float, regions: dict[str, Region] | None = None
                ) -> tuple[tuple[float, float], tuple[float, float]]:
-    """The shifts along x and along y, each (least, most), that keep every item of ``body``
-    (moving as one) inside its walls (`walls_of`); least > most where none does."""
+    """The shifts along x and along y, each (least, most), that keep ``body`` (moving as one)
+    inside its walls by the physics' rule (physics.geometry.group_room): every member inside
+    its root's walls (`walls_of`: the root's region, or the margins), and a member confined
+    to a region of its own inside that too; least > most where no shift does."""
+    regions = regions or {}
+    root = root_of(page, body)
+    outer = walls_of(root, page, margin_mm, regions)
     room = [[-math.inf, math.inf], [-math.inf, math.inf]]
     for item in body:
         if item.decorative:
             continue
-        walls = walls_of(item, page, margin_mm, regions or {})
-        for axis, (centre, size) in enumerate(((item.x, item.w), (item.y, item.h))):
-            room[axis][0] = max(room[axis][0], walls[axis] - (centre - size / 2))
-            room[axis][1] = min(room[axis][1], walls[axis + 2] - (centre + size / 2))
+        walls = [outer]
+        if item is not root and (item.id in regions or item.region):
+            walls.append(walls_of(item, page, margin_mm, regions))
+        for wall in walls:
+            for axis, (centre, size) in enumerate(((item.x, item.w), (item.y, item.h))):
+                room[axis][0] = max(room[axis][0], wall[axis] - (centre - size / 2))
+                room[axis][1] = min(room[axis][1], wall[axis + 2] - (centre + size / 2))
     return (room[0][0], room[0][1]), (room[1][0], room[1][1])
 
 
@@ -269,5 +288,6 @@ def body_misfit(page, member, margin_mm: float, regions: dict[str, Region] | Non
                   "unanchor them (u) first"))
     return (f'"{member.id}" moves as one with {others} ({how}), {right - left:.1f} x '
             f'{bottom - top:.1f} mm together; kept inside the region "{region.id}" '
-            f"({region.w:g} x {region.h:g} mm), and the others inside their regions or the "
-            f"margins, they have no place on the page: make the region larger, or {undo}")
+            f"({region.w:g} x {region.h:g} mm), and all of them inside the walls of the one "
+            f'they follow ("{root_of(page, body).id}"), they have no place on the page: make '
+            f"the region larger, or {undo}")
