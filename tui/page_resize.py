@@ -44,9 +44,39 @@ def resize_page(page: Page, size: str, orientation: str, width: float, height: f
         if not (item.decorative or item.group or getattr(item, "bleed", False)):
             keep_inside_margin(item, width, height, margin)
     scale_follow_offsets(page, old_sizes, sx, sy)
+    fit_bodies_to_regions(page)
     page.size, page.orientation = size, orientation
     page.width_mm, page.height_mm = width, height
     return too_large
+
+
+def fit_bodies_to_regions(page: Page) -> None:
+    """Shrink an item confined to a region, with the items that move as one with it, until
+    they fit the region together: the whole body keeps inside its root's region (the
+    physics' rule).  The item alone was fitted, and its caption left below: `o` on an album
+    page with a photo in a region (73 x 54 mm, 38 mm tall once turned) fitted the photo to
+    38 mm and left its caption outside, a page no settle could mend (user-walk-12a)."""
+    from floatpage.tui.region_edits import body_of, box_of, root_of
+
+    for item in page.items:
+        if not item.region or item.decorative:
+            continue
+        body = body_of(page, item)
+        if len(body) == 1 or root_of(page, body) is not item:
+            continue
+        room = page.region(item.region)
+        left, top, right, bottom = box_of(body)
+        fit = min(1.0, room.w / (right - left), room.h / (bottom - top))
+        if fit >= 1.0:
+            continue
+        for member in body:
+            member.w, member.h = member.w * fit, member.h * fit
+            if member is not item:
+                member.x = item.x + (member.x - item.x) * fit
+                member.y = item.y + (member.y - item.y) * fit
+                if isinstance(member.anchor, ItemAnchor):
+                    member.anchor.dx, member.anchor.dy = (member.anchor.dx * fit,
+                                                          member.anchor.dy * fit)
 
 
 def kept_by(engine: Engine) -> tuple[frozenset[str], bool]:

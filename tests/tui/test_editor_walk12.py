@@ -242,3 +242,38 @@ async def test_a_group_member_is_not_kept_in_a_region_its_group_cannot_fit_from_
         told = [n.message for n in app._notifications if "moves as one" in n.message]
         assert told and 'group "toprow"' in told[0] and 'region "region-1"' in told[0], told
         assert app.session.page.item("p1-photo-1").region == ""
+
+
+async def test_a_turned_page_fits_a_confined_photo_with_its_caption_in_its_region(tmp_path):
+    """An album photo kept in a region around it with its caption, the page then turned with
+    `o`: the region, scaled with the page, came out 62 mm tall, and the photo alone was fitted
+    to it, its caption left below, outside: the status line said the photo was too large for
+    its room, and `check` that no settle could fit them.  The photo and its caption shrink
+    together until they fit the region."""
+    from floatpage.model import load_project
+    from floatpage.model.layout import engine_for_page
+
+    folder = tmp_path / "album"
+    shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
+    path = folder / "photo-album.toml"
+    async with editor(path, autostart=True) as (app, pilot):
+        screen_of(app).selected_id = "p1-photo-5"
+        await pilot.pause()
+        await pilot.press("R")
+        await until(pilot, lambda: app.screen.id == "region-dialog")
+        await pilot.press("enter")  # around the photo and its caption, the photo kept inside
+        assert await until(pilot, lambda: app.screen is app.editor)
+        assert app.session.page.item("p1-photo-5").region == "region-1"
+        await pilot.press("o")
+        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        await pilot.press("enter")  # every page
+        await until(pilot, lambda: app.screen is app.editor)
+        assert await until(pilot, lambda: not app.editor.room_searches and app.editor.at_rest,
+                           120)
+        await pilot.press("ctrl+s")
+        assert await until(pilot, lambda: not app.session.unsaved, 120)
+    project = load_project(path)
+    page = project.pages[0]
+    assert page.orientation == "landscape"
+    quality = engine_for_page(page, project.physics).quality()
+    assert quality.outside_region == () and quality.overlapping_pairs == (), quality.summary()
