@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import textwrap
 from dataclasses import dataclass
 
@@ -46,7 +47,10 @@ def status_text(status: Status) -> str:
         return f"{words}{alignment}{note} · idle\n{status.quality}"  # no energy: nothing moves
     rate = (f"{status.fps:4.1f} fps · {status.held} held · "
             f"{status.steps_per_s:,.0f} steps/s · frame {status.frame_ms:4.1f} ms")
-    return f"{words}{note} · energy {status.energy:.2e} · {rate}\n{status.quality}{alignment}"
+    # Moving, the alignment figures go first on the first line too, and the frame figures
+    # give way to them (`fitted`): at the end of the quality line, 80 columns cut them to
+    # "misses 3.60…" while the page settled (user-walk-12a).
+    return f"{words}{alignment}{note} · energy {status.energy:.2e} · {rate}\n{status.quality}"
 
 
 REASON_ROWS = 8  # at most this many rows of `check`'s reasons in the details view
@@ -64,18 +68,23 @@ def reason_rows(reasons: tuple[str, ...], width: int) -> list[str]:
 
 
 DROPPED_FIRST = ("v details", "no overlaps", "gaps kept")  # what a narrow line goes without
+# then, in the details view while the page moves, the frame figures, the least telling first
+DROPPED_RATES = (re.compile(r"frame .* ms"), re.compile(r".* steps/s"), re.compile(r"\d+ held"),
+                 re.compile(r".* fps"))
 
 
 def fitted(line: str, width: int) -> str:
-    """``line`` without the parts a user can spare, in DROPPED_FIRST's order, until it fits
-    ``width``: at 60 columns "no overlaps · gutter 1.5 of 3 mm: page too full (96% of t…"
-    lost the why, the one part that said something (user-walk-6)."""
+    """``line`` without the parts a user can spare, in DROPPED_FIRST's order, then
+    DROPPED_RATES', until it fits ``width``: at 60 columns "no overlaps · gutter 1.5 of 3 mm:
+    page too full (96% of t…" lost the why, the one part that said something (user-walk-6)."""
     parts = line.split(" · ")
-    for spare in DROPPED_FIRST:
+    spares = [part.__eq__ for part in DROPPED_FIRST] + [rate.fullmatch for rate in DROPPED_RATES]
+    for spare in spares:
         if len(" · ".join(parts)) <= width:
             break
-        if spare in parts and len(parts) > 1:
-            parts.remove(spare)
+        found = [part for part in parts if spare(part.strip())]
+        if found and len(parts) > 1:
+            parts.remove(found[0])
     return " · ".join(parts)
 
 

@@ -277,3 +277,27 @@ async def test_a_turned_page_fits_a_confined_photo_with_its_caption_in_its_regio
     assert page.orientation == "landscape"
     quality = engine_for_page(page, project.physics).quality()
     assert quality.outside_region == () and quality.overlapping_pairs == (), quality.summary()
+
+
+def test_the_details_view_keeps_the_alignment_figures_at_80_columns_while_settling():
+    """At 80 columns, while the page settled, the details view's quality line ended
+    "balance 0.99 · misses 3.60…": the edge lines and the share aligned fell off its end
+    (in tmux, the flyer reheated with `r`; the settling lasts under a second, too short to
+    catch in a Pilot test, so the lines are built here as the screen builds them, with the
+    flyer's own measures).  The figures go first on the first line, as at rest, and the
+    frame figures give way to them."""
+    from floatpage.model import load_project
+    from floatpage.model.layout import engine_for_page
+    from floatpage.tui.status_line import Status, fitted, status_text
+
+    project = load_project(ROOT / "sample_projects" / "shop-flyer" / "shop-flyer.toml")
+    engine = engine_for_page(project.pages[0], project.physics)
+    status = Status(state="settling", energy=10.2, fps=28.9, steps_per_s=2890.0,
+                    quality=engine.quality().summary(), frame_ms=21.3, details=True,
+                    alignment=engine.alignment().short())
+    width = 80 - 2  # the status line's padding
+    lines = [fitted(line, width) for line in status_text(status).split("\n")]
+    assert all(len(line) <= width for line in lines), lines
+    shown = " ".join(lines)
+    assert "misses " in shown and "lines " in shown and "aligned " in shown, lines
+    assert "balance " in shown and "energy " in shown, lines
