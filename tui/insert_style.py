@@ -6,9 +6,10 @@ the user had to retype the font, the colour and the size of every new item.  As 
 program's "new frame like this one", a new item takes its style from
 
 - the selected item, where it is of the same kind (the user points at the one they want);
-- else the style most of the page's items of that kind share, where more than half of them
-  share it (a page of red price tags gives a red price tag; a page of one title and one
-  message of two styles gives the defaults, for no style is the page's);
+- else the style most of the page's items of that kind share, where at least two and more
+  than half of them share it (a page of red price tags gives a red price tag; a page of one
+  title and one message of two styles gives the defaults, for no style is the page's; so
+  does a calendar page's one month name, 186 mm wide, which a note should not copy);
 - else the model's defaults.
 
 The style is the box's size and the look, never what ties the new item to others: a text's
@@ -48,7 +49,7 @@ def style_model(kind: str, page: Page, selected: ItemBase | None) -> ItemBase | 
     if not alike:
         return None
     look, count = Counter(look_of(item) for item in alike).most_common(1)[0]
-    if 2 * count <= len(alike):
+    if count < 2 or 2 * count <= len(alike):  # one item is no style the page repeats
         return None
     return next(item for item in alike if look_of(item) == look)
 
@@ -65,7 +66,7 @@ def new_item_style(kind: str, page: Page, selected: ItemBase | None,
         else:
             areas = [item.w * item.h for item in page.items
                      if item.kind == "picture" and not item.decorative]
-            if not areas:
+            if len(areas) < 2:
                 return {}
             area = statistics.median(areas)
         shape = aspect or 0.75

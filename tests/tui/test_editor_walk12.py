@@ -301,3 +301,23 @@ def test_the_details_view_keeps_the_alignment_figures_at_80_columns_while_settli
     shown = " ".join(lines)
     assert "misses " in shown and "lines " in shown and "aligned " in shown, lines
     assert "balance " in shown and "energy " in shown, lines
+
+
+async def test_a_new_text_does_not_copy_a_pages_only_text(tmp_path):
+    """One text is no style a page repeats: on a calendar month, whose only text is its
+    186 x 24 mm month name, a note typed with nothing selected took the month name's box and
+    display face (the look "most of the page's texts" share, with one text).  It comes at the
+    defaults; selected, the month name still gives its look."""
+    path = three_months(tmp_path)
+    async with editor(path) as (app, pilot):
+        gate = hold_room_searches(app)  # the items read as the insert made them
+        month_name = next(item for item in app.session.page.items if item.kind == "text")
+        note = await insert_text(app, pilot, "Holiday")
+        assert (note.font, note.w) != (month_name.font, month_name.w)
+        assert note.font == "serif"
+        screen_of(app).selected_id = month_name.id
+        await pilot.pause()
+        copy = await insert_text(app, pilot, "Enero")
+        assert (copy.font, copy.color, copy.w) == (month_name.font, month_name.color,
+                                                   month_name.w)
+        gate.set()
