@@ -92,8 +92,8 @@ def parse_region(values: dict[str, Any]) -> dict[str, Any]:
 
 def body_of(page, item) -> list:
     """``item`` and every item that moves as one with it: its group's members and the items
-    following any of them (or followed), as the physics joins them, in file order.  A region
-    keeps the whole body inside it, not the confined item alone."""
+    following any of them (or followed), as the physics joins them, in file order: a region
+    holds the body by the walls `shift_room` reads, not the confined item alone."""
     body, grew = {item.id}, True
     while grew:
         grew = False
@@ -181,9 +181,9 @@ def put_region(session, old_id: str | None, answer: dict[str, Any], item_id: str
                                                          else item.region)
     moved: set[str] = set()
     for member in members:  # put inside at once, as a drag keeps it inside: with the items
-        body = body_of(page, member)  # moving as one with it, or the group came apart
-        if member.id in moved:
+        if member.id in moved:  # moving as one with it, or the group came apart
             continue
+        body = body_of(page, member)
         (dx_low, dx_high), (dy_low, dy_high) = shift_room(body, page, margin_mm)
         dx, dy = min(max(0.0, dx_low), dx_high), min(max(0.0, dy_low), dy_high)
         for other in body:
@@ -202,7 +202,8 @@ def put_region(session, old_id: str | None, answer: dict[str, Any], item_id: str
 def refuse_region(page, old_id: str | None, new: Region, members: list,
                   margin_mm: float) -> None:
     """EditError for what the loader would refuse (model.project_file): a region reaching past
-    the page, a name another region has, an item larger than its region."""
+    the page, a name another region has, an item larger than its region; and for a body (a
+    group, an item with its caption) the region would leave no place (`body_misfit`)."""
     from floatpage.tui.session import EditError
 
     left, top, right, bottom = new.box
