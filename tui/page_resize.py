@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from floatpage.model.document import ItemAnchor, Page, PictureItem, PointAnchor
 from floatpage.physics import Engine
+from floatpage.tui.region_edits import body_of, box_of, root_of
 
 
 def resize_page(page: Page, size: str, orientation: str, width: float, height: float,
@@ -56,8 +57,6 @@ def fit_bodies_to_regions(page: Page) -> None:
     physics' rule).  The item alone was fitted, and its caption left below: `o` on an album
     page with a photo in a region (73 x 54 mm, 38 mm tall once turned) fitted the photo to
     38 mm and left its caption outside, a page no settle could mend (user-walk-12a)."""
-    from floatpage.tui.region_edits import body_of, box_of, root_of
-
     for item in page.items:
         if not item.region or item.decorative:
             continue

@@ -30,11 +30,11 @@ from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
-from floatpage.tui.insert_style import new_item_style
-from floatpage.tui.region_edits import body_misfit
 from floatpage.tui.history import History, Snapshot
+from floatpage.tui.insert_style import new_item_style
 from floatpage.tui.page_resize import kept_by, resize_page, scale_follow_offsets, size_words
 from floatpage.tui.reading_order import reading_order, step_through
+from floatpage.tui.region_edits import body_misfit
 
 MIN_SIDE_MM = 3.0
 # The item fields the physics reads (model.layout.engine_for_page): an edit of any other
@@ -717,8 +717,9 @@ class EditSession:
         if misfit:
             raise EditError(f'"{item.id}" {misfit}')
         if region_id and ("region" in changes or "group" in changes):
-            # the region keeps the item's whole body inside it (its group, its followers):
-            # measured as the edit would leave it, then the item put back as it was
+            # the item's body (its group, its followers) needs a place inside its walls
+            # (region_edits.shift_room): measured as the edit would leave it, then the item
+            # put back as it was
             before = {key: getattr(item, key) for key in ("region", "group")}
             for key in before:
                 setattr(item, key, changes.get(key, before[key]))
