@@ -25,7 +25,7 @@ from floatpage.merge.records import JSON_LINES, DataFile, Record
 from floatpage.merge.template import MergeTemplate
 from floatpage.model.errors import FloatpageError
 from floatpage.model.picture_files import is_outside
-from floatpage.typeset.compile import engine_path
+from floatpage.typeset.compile import check_engine_settings
 from floatpage.typeset.pdf_split import concatenate
 
 FORMAT = b"floatpage-merge-1"  # part of every digest: bump when output bytes change
@@ -124,7 +124,7 @@ class Merge:
     def __init__(self, options: MergeOptions):
         self.options = options
         refuse_swapped_arguments(options.template, options.data)
-        engine_path()  # no TeX: say so once, not once per record
+        check_engine_settings()  # no TeX, a bad setting: say so once, not once per record
         self.template = MergeTemplate(options.template,
                                       allow_outside_files=options.allow_outside_files)
         self.data = DataFile(options.data)
