@@ -14,7 +14,7 @@ import pdfplumber
 import pikepdf
 
 from floatpage.model import load_project
-from merge_helpers import COLUMNS, rows, write_csv
+from merge_helpers import COLUMNS, rows, session_members, write_csv
 
 FLOATPAGE = str(Path(sys.executable).with_name("floatpage"))
 
@@ -326,6 +326,33 @@ def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
     assert (out / "report.csv").is_file()
     time.sleep(1.0)
     assert engines_in_build_folders(builds) == []
+
+
+def test_a_merge_killed_outright_leaves_no_process_behind(merge_folder):
+    """user-walk-12b: `kill -9` of a merge (a CI job's timeout) left its workers, the fork
+    server and the resource tracker waiting for good, minutes later: the workers hold their
+    own task queue's ends, so nothing told them the command was gone."""
+    data = write_csv(merge_folder / "customers.csv", rows(80))
+    out = merge_folder / "out"
+    process = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
+                                "-o", str(out), "--chunk-size", "2", "--workers", "2"],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               start_new_session=True)
+    try:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline and len(list(out.glob("*.pdf"))) < 2:
+            assert process.poll() is None
+            time.sleep(0.05)
+        assert len(session_members(process.pid)) >= 4  # command, tracker, server, workers
+        process.kill()
+        process.wait(timeout=10)
+        deadline = time.monotonic() + 30
+        while session_members(process.pid) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert session_members(process.pid) == []
+    finally:  # a failure leaves nothing running either
+        for pid in session_members(process.pid):
+            os.kill(pid, signal.SIGKILL)
 
 
 def engines_in_build_folders(parent: Path) -> list[int]:
