@@ -302,6 +302,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.typeset.render import check_pdf_output
 
     for option, name in (("-o", args.output), ("--tex", args.tex), ("--fragment", args.fragment)):
+        refuse_no_file_name(option, name, Path(args.path).stem)
         refuse_folder_name(option, name, Path(args.path).stem)
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
     refuse_other_format(out, args.path)
@@ -399,6 +400,22 @@ def refuse_not_tex(option: str, name: str | None, project: str) -> None:
 
 
 PROJECT_PATH_HELP = "the project's .toml file"
+
+
+def refuse_no_file_name(option: str, name: str | None, stem: str) -> None:
+    """`-o -` wrote a file called `-` (a user of Unix tools meant standard output), and
+    `-o ""` (a Makefile's variable left empty) wrote NAME.pdf beside the project without a
+    word, where the Makefile then looked for its target in vain."""
+    example = stem + (".pdf" if option == "-o" else ".tex")
+    if name == "-":
+        raise FloatpageError(f"{option} -: render writes files, not to standard output; name "
+                             f"the file, e.g. {option} {example} (and `cat {example}` into a "
+                             f"pipe)")
+    if name is not None and not name.strip():
+        raise FloatpageError(f"{option} {name!r} names no file (an empty variable in a "
+                             f"Makefile?); name the file, e.g. {option} {example}"
+                             + (", or leave -o out for the project's name with .pdf"
+                                if option == "-o" else ""))
 
 
 def refuse_folder_name(option: str, name: str | None, stem: str) -> None:

@@ -8,7 +8,7 @@ import time
 from pathlib import Path
 from typing import Callable
 
-from floatpage.model.errors import printable
+from floatpage.model.errors import FloatpageError, printable
 
 EXIT_SOME_RECORDS_FAILED = 3
 
@@ -61,6 +61,7 @@ def add_merge_parser(commands, allow_outside_option) -> None:
 def cmd_merge(args: argparse.Namespace) -> int:
     from floatpage.merge.run import Merge, MergeOptions
 
+    refuse_no_folder_name(args.output)
     merge = Merge(MergeOptions(
         template=Path(args.template), data=Path(args.data), outdir=Path(args.output),
         name=args.name, combined=args.combined, write_toml=args.toml, force=args.force,
@@ -80,6 +81,19 @@ def cmd_merge(args: argparse.Namespace) -> int:
               f"{printable(str(summary.report))}", file=sys.stderr)
         return EXIT_SOME_RECORDS_FAILED
     return 0
+
+
+def refuse_no_folder_name(name: str) -> None:
+    """`-o ""` (a Makefile's variable left empty) wrote every record's PDF, report.csv and
+    the run's keys into the current folder, among the template and the data; `-o -` made a
+    folder called `-`.  `-o .` still writes here, as asked."""
+    if name == "-":
+        raise FloatpageError("-o -: merge writes a folder of PDFs, not to standard output; "
+                             "name the folder, e.g. -o out")
+    if not name.strip():
+        raise FloatpageError(f"-o {name!r} names no folder (an empty variable in a "
+                             "Makefile?); name the folder for the PDFs, e.g. -o out (or -o . "
+                             "for this one)")
 
 
 EMPTY_COLUMNS_SHOWN = 10  # kinds of empty column told in full; record numbers per kind
