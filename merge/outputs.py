@@ -22,6 +22,7 @@ import time
 import unicodedata
 from pathlib import Path
 
+from floatpage.merge.folder_lock import lock_output_folder, unlock
 from floatpage.merge.placeholders import PlaceholderError, fields_in, fill
 from floatpage.model.errors import FloatpageError
 from floatpage.model.atomic_file import STALE_AFTER_S, TEMPORARY_SUFFIX
@@ -143,13 +144,24 @@ class OutputFolder:
             raise FloatpageError(f"{state}: is a symbolic link; floatpage keeps its merge state "
                                  "in a folder of its own there (remove the link, or name "
                                  "another output folder with -o)")
-        remove_leftovers(self.folder)
-        remove_leftovers(self.folder / STATE_DIR)
-        self.inputs = {self.key(path) for path in inputs}
-        for fixed in (self.folder / REPORT, self.folder / COMBINED):
-            problem = self.refuse(fixed)
-            if problem:
-                raise FloatpageError(f"{problem} (floatpage merge writes {fixed.name} there)")
+        self.lock = lock_output_folder(self.folder, state)  # before another run's files go
+        try:
+            remove_leftovers(self.folder)
+            remove_leftovers(self.folder / STATE_DIR)
+            self.inputs = {self.key(path) for path in inputs}
+            for fixed in (self.folder / REPORT, self.folder / COMBINED):
+                problem = self.refuse(fixed)
+                if problem:
+                    raise FloatpageError(f"{problem} (floatpage merge writes {fixed.name} "
+                                         "there)")
+        except BaseException:
+            self.release()
+            raise
+
+    def release(self) -> None:
+        """Let another merge write here (the run's end; a process's exit does it anyway)."""
+        unlock(self.lock)
+        self.lock = None
 
     @staticmethod
     def key(path: Path) -> str:

@@ -182,6 +182,13 @@ class Merge:
         return input_digest(self.template_digest.encode(), values, name.encode(), *pictures)
 
     def run(self, progress: Callable[[int, int, int], None] | None = None) -> MergeSummary:
+        try:
+            return self.run_held(progress)
+        finally:
+            self.out.release()
+
+    def run_held(self, progress: Callable[[int, int, int], None] | None) -> MergeSummary:
+        """The run, with the output folder's lock held (merge.folder_lock)."""
         started = time.perf_counter()
         options = self.options
         total = sum(1 for _ in self.data.records())

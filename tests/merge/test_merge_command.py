@@ -355,6 +355,32 @@ def test_a_merge_killed_outright_leaves_no_process_behind(merge_folder):
             os.kill(pid, signal.SIGKILL)
 
 
+def test_a_second_merge_into_the_same_folder_is_refused_while_the_first_runs(merge_folder):
+    """user-walk-12b: two merges into one folder at once (`make -j2`, a CI job retried)
+    shared `.floatpage-merge/report.partial`: the second typeset every record, then stopped
+    at "report.csv: could not write it (No such file or directory)"."""
+    first_data = write_csv(merge_folder / "first.csv", rows(12))
+    second_data = write_csv(merge_folder / "second.csv", rows(3))
+    out = merge_folder / "out"
+    first = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"),
+                              str(first_data), "-o", str(out), "--chunk-size", "2", "--workers",
+                              "1", "-q"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and not list(out.glob("*.pdf")):
+        assert first.poll() is None, first.communicate()
+        time.sleep(0.05)
+    second = merge(merge_folder, second_data)
+    first_out, first_err = first.communicate(timeout=600)
+    assert second.returncode == 1, second.stdout + second.stderr
+    assert second.stderr.startswith(f"floatpage: {out}: another merge is writing there (PID "
+                                    f"{first.pid} (floatpage merge)); wait for it to finish"), \
+        second.stderr
+    assert first.returncode == 0, first_err
+    assert "12 made" in first_out
+    assert len(report(merge_folder)) == 12
+
+
 def engines_in_build_folders(parent: Path) -> list[int]:
     """Processes (LuaLaTeX) still working in a floatpage build folder under `parent`."""
     found = []
