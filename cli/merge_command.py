@@ -40,6 +40,9 @@ def add_merge_parser(commands, allow_outside_option) -> None:
                        help="also write OUTDIR/combined.pdf, every record in order, for printing")
     merge.add_argument("--toml", action="store_true",
                        help="also write each record's settled project, to open in the editor")
+    merge.add_argument("--prune", action="store_true",
+                       help="remove the PDFs an earlier run made here for records the data "
+                            "no longer names (a record taken out, a name changed)")
     merge.add_argument("--force", action="store_true",
                        help="redo every record, even those whose inputs have not changed")
     merge.add_argument("--chunk-size", type=positive, default=None, metavar="N",
@@ -65,6 +68,7 @@ def cmd_merge(args: argparse.Namespace) -> int:
     merge = Merge(MergeOptions(
         template=Path(args.template), data=Path(args.data), outdir=Path(args.output),
         name=args.name, combined=args.combined, write_toml=args.toml, force=args.force,
+        prune=args.prune,
         chunk_size=args.chunk_size or 0, workers=args.workers or 0, dask=args.dask,
         ship_pictures=args.pictures == "ship", allow_outside_files=args.allow_outside_files))
     for note in merge.notes:
@@ -76,6 +80,7 @@ def cmd_merge(args: argparse.Namespace) -> int:
           f"{summary.records} record(s) in {summary.seconds:.1f} s; report: {printable(str(summary.report))}")
     if summary.combined:
         print(f"combined PDF: {printable(str(summary.combined))}")
+    tell_other_records(summary.others, Path(args.output), args.prune)
     if summary.failed:
         print(f"floatpage: {summary.failed} record(s) failed; their reasons are in "
               f"{printable(str(summary.report))}", file=sys.stderr)
@@ -94,6 +99,23 @@ def refuse_no_folder_name(name: str) -> None:
         raise FloatpageError(f"-o {name!r} names no folder (an empty variable in a "
                              "Makefile?); name the folder for the PDFs, e.g. -o out (or -o . "
                              "for this one)")
+
+
+def tell_other_records(names: list[str], outdir: Path, pruned: bool) -> None:
+    """The PDFs an earlier run left for records this data no longer names: removed (--prune)
+    on stdout, else a note on stderr, as a folder printed whole would print them too."""
+    if not names:
+        return
+    shown = ", ".join(f"{name}.pdf" for name in names[:EMPTY_COLUMNS_SHOWN]) + (
+        f" and {len(names) - EMPTY_COLUMNS_SHOWN} more" if len(names) > EMPTY_COLUMNS_SHOWN
+        else "")
+    if pruned:
+        print(f"removed {len(names)} record(s) this data no longer names: {printable(shown)}")
+        return
+    print(f"note: {printable(str(outdir))} holds {len(names)} PDF(s) an earlier run made for "
+          f"records this data no longer names ({printable(shown)}); they are not in "
+          f"report.csv or combined.pdf: remove them before printing the folder, or run again "
+          f"with --prune", file=sys.stderr)
 
 
 EMPTY_COLUMNS_SHOWN = 10  # kinds of empty column told in full; record numbers per kind

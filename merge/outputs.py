@@ -227,6 +227,23 @@ class OutputFolder:
         write_whole(self.digest_file(name), digest.encode("ascii"))
         return ""
 
+    def names_not_in(self, taken: set[str]) -> list[str]:
+        """The records an earlier run made here (their .key) that no name in ``taken`` (this
+        run's, case-folded) is: `1001-Doe.pdf` stayed beside `1001-Doe-Smith.pdf` once the
+        surname was corrected, and `lpr out/*.pdf` printed both."""
+        state = self.folder / STATE_DIR
+        return sorted(entry.name[:-len(".key")] for entry in os.scandir(state)
+                      if entry.name.endswith(".key") and entry.is_file(follow_symlinks=False)
+                      and entry.name[:-len(".key")].casefold() not in taken)
+
+    def remove_record(self, name: str) -> None:
+        """A record's files, as this merge wrote them: its key first, so a run stopped half
+        way leaves nothing that counts as made."""
+        for path in (self.digest_file(name), self.pdf(name), self.toml(name),
+                     self.note_file(name)):
+            if path.is_file() and not path.is_symlink():
+                path.unlink(missing_ok=True)
+
     @staticmethod
     def flush() -> None:
         """Everything written so far to the disk, once per run rather than once per file."""

@@ -45,6 +45,7 @@ class MergeOptions:
     ship_pictures: bool = False
     force: bool = False
     allow_outside_files: bool = False
+    prune: bool = False        # remove the files of records this data no longer names
 
 
 @dataclass
@@ -60,6 +61,9 @@ class MergeSummary:
     empty_columns: list[tuple[int, int, str, str]] = field(default_factory=list)
     combined: Path | None = None
     report: Path | None = None
+    # PDFs an earlier run made for records this data no longer names (a surname corrected
+    # with --name "{id}-{surname}", a record taken out), by name; removed with --prune
+    others: list[str] = field(default_factory=list)
 
 
 # An engine run costs about 0.5 s to start and a record 40-60 ms more, and the records of
@@ -202,9 +206,10 @@ class Merge:
         def chunk_size(records_read: int) -> int:
             return options.chunk_size or auto_chunk_size(total - records_read, total, workers)
 
+        names = Names(options.name)
+
         def tasks() -> Iterator[ChunkTask]:
             chunk: list[tuple[Record, str, str]] = []
-            names = Names(options.name)
             size = chunk_size(0)
             for record in self.data.records():
                 name = names.name_for(record.number, record.values)
@@ -249,6 +254,10 @@ class Merge:
             summary.failed = report.failed
             summary.seconds = time.perf_counter() - started
         show(total, total, report.failed)
+        summary.others = self.out.names_not_in(names.taken)  # only once every record is read
+        if options.prune:
+            for name in summary.others:
+                self.out.remove_record(name)
         if options.combined:
             combined = self.out.folder / COMBINED
             if concatenate((self.out.pdf(name) for name in report.made_names()), combined):

@@ -381,6 +381,31 @@ def test_a_second_merge_into_the_same_folder_is_refused_while_the_first_runs(mer
     assert len(report(merge_folder)) == 12
 
 
+def test_pdfs_of_records_the_data_no_longer_names_are_told_and_pruned(merge_folder):
+    """user-walk-12b: with --name "{id}-{surname}", a surname corrected in the data made
+    `1001-Silva-Costa.pdf` and left `1001-Silva.pdf` beside it without a word: `lpr out/*.pdf`
+    printed both. A run says so; --prune removes the files merge made for them, no other."""
+    table = rows(3)
+    data = write_csv(merge_folder / "customers.csv", table)
+    assert merge(merge_folder, data).returncode == 0
+    out = merge_folder / "out"
+    (out / "cover.pdf").write_bytes(b"%PDF-1.4 the user's own")
+    table[0][2] = "Silva-Costa"
+    write_csv(data, table)
+    again = merge(merge_folder, data)
+    assert again.returncode == 0, again.stderr
+    assert (f"note: {out} holds 1 PDF(s) an earlier run made for records this data no longer "
+            f"names (1001-Silva.pdf); they are not in report.csv or combined.pdf") in again.stderr
+    assert (out / "1001-Silva.pdf").is_file()
+    pruned = merge(merge_folder, data, "out", "--prune")
+    assert pruned.returncode == 0, pruned.stderr
+    assert "removed 1 record(s) this data no longer names: 1001-Silva.pdf" in pruned.stdout
+    assert sorted(p.name for p in out.glob("*.pdf")) == [
+        "1001-Silva-Costa.pdf", "1002-Müller.pdf", "1003-Okonkwo-Fitzgerald.pdf", "cover.pdf"]
+    assert not (out / ".floatpage-merge" / "1001-Silva.key").exists()
+    assert "no longer names" not in merge(merge_folder, data).stderr
+
+
 def engines_in_build_folders(parent: Path) -> list[int]:
     """Processes (LuaLaTeX) still working in a floatpage build folder under `parent`."""
     found = []
