@@ -81,6 +81,7 @@ def cmd_merge(args: argparse.Namespace) -> int:
     if summary.combined:
         print(f"combined PDF: {printable(str(summary.combined))}")
     tell_other_records(summary.others, Path(args.output), args.prune)
+    tell_renamed(summary.renamed, Path(args.data), args.name)
     if summary.failed:
         print(f"floatpage: {summary.failed} record(s) failed; their reasons are in "
               f"{printable(str(summary.report))}", file=sys.stderr)
@@ -99,6 +100,19 @@ def refuse_no_folder_name(name: str) -> None:
         raise FloatpageError(f"-o {name!r} names no folder (an empty variable in a "
                              "Makefile?); name the folder for the PDFs, e.g. -o out (or -o . "
                              "for this one)")
+
+
+def tell_renamed(clashes: list, data: Path, pattern: str | None) -> None:
+    """Records whose --name another record had already: the first few in full, then a count
+    (a key column that repeats is mostly one customer twice, and each got a card)."""
+    for number, line, name, base, (first, first_line) in clashes[:EMPTY_COLUMNS_SHOWN]:
+        print(f"warning: record {number} (line {line} of {printable(str(data))}) is named "
+              f"{printable(name)}: --name {printable(repr(pattern))} gave it {printable(base)}, "
+              f"the name of record {first} (line {first_line}); if they are one record twice, "
+              f"take one out of the data", file=sys.stderr)
+    if len(clashes) > EMPTY_COLUMNS_SHOWN:
+        print(f"warning: {len(clashes) - EMPTY_COLUMNS_SHOWN} more record(s) renamed so; "
+              "their names are in report.csv", file=sys.stderr)
 
 
 def tell_other_records(names: list[str], outdir: Path, pruned: bool) -> None:

@@ -73,8 +73,12 @@ class Names:
     def __init__(self, pattern: str | None):
         self.pattern = pattern
         self.taken: set[str] = set()
+        self.owners: dict[str, tuple[int, int]] = {}  # a name given: (record, line) it is
+        # (record, line, name, base, (record, line) that had the base): a key column that
+        # repeats in the data is mostly one customer twice, and was renamed without a word
+        self.clashes: list[tuple[int, int, str, str, tuple[int, int]]] = []
 
-    def name_for(self, number: int, values: dict[str, str]) -> str:
+    def name_for(self, number: int, values: dict[str, str], line: int = 0) -> str:
         if self.pattern is None:
             base = f"record-{number:05d}"
         else:
@@ -84,6 +88,9 @@ class Names:
             count += 1
             name = f"{base}-{count}"
         self.taken.add(name.casefold())
+        self.owners[name.casefold()] = (number, line)
+        if base.casefold() in self.owners and name != base:  # not "report", "combined"
+            self.clashes.append((number, line, name, base, self.owners[base.casefold()]))
         return name
 
 

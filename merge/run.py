@@ -64,6 +64,8 @@ class MergeSummary:
     # PDFs an earlier run made for records this data no longer names (a surname corrected
     # with --name "{id}-{surname}", a record taken out), by name; removed with --prune
     others: list[str] = field(default_factory=list)
+    # records whose --name was another's, renamed NAME-2 (merge.outputs.Names.clashes)
+    renamed: list[tuple[int, int, str, str, tuple[int, int]]] = field(default_factory=list)
 
 
 # An engine run costs about 0.5 s to start and a record 40-60 ms more, and the records of
@@ -212,7 +214,7 @@ class Merge:
             chunk: list[tuple[Record, str, str]] = []
             size = chunk_size(0)
             for record in self.data.records():
-                name = names.name_for(record.number, record.values)
+                name = names.name_for(record.number, record.values, record.line)
                 if record.problem:
                     ordered.add(record.number, (record.line, name, "failed", record.problem))
                     continue
@@ -255,6 +257,7 @@ class Merge:
             summary.seconds = time.perf_counter() - started
         show(total, total, report.failed)
         summary.others = self.out.names_not_in(names.taken)  # only once every record is read
+        summary.renamed = names.clashes
         if options.prune:
             for name in summary.others:
                 self.out.remove_record(name)

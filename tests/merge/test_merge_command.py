@@ -406,6 +406,21 @@ def test_pdfs_of_records_the_data_no_longer_names_are_told_and_pruned(merge_fold
     assert "no longer names" not in merge(merge_folder, data).stderr
 
 
+def test_a_record_renamed_for_a_name_another_had_is_told(merge_folder):
+    """user-walk-12b: a customer number that repeats in the data (one customer exported
+    twice) gave `1001-Silva.pdf` and `1001-Silva-2.pdf` without a word."""
+    table = rows(3)
+    table[2][0], table[2][2] = table[0][0], table[0][2]
+    data = write_csv(merge_folder / "customers.csv", table)
+    done = merge(merge_folder, data)
+    assert done.returncode == 0, done.stderr
+    assert (f"warning: record 3 (line 4 of {data}) is named 1001-Silva-2: --name "
+            "'{id}-{surname}' gave it 1001-Silva, the name of record 1 (line 2); if they are "
+            "one record twice, take one out of the data") in done.stderr
+    assert [row["name"] for row in report(merge_folder)] == [
+        "1001-Silva", "1002-Müller", "1001-Silva-2"]
+
+
 def engines_in_build_folders(parent: Path) -> list[int]:
     """Processes (LuaLaTeX) still working in a floatpage build folder under `parent`."""
     found = []
