@@ -256,10 +256,11 @@ class Merge:
             summary.failed = report.failed
             summary.seconds = time.perf_counter() - started
         show(total, total, report.failed)
-        summary.others = self.out.names_not_in(names.taken)  # only once every record is read
+        others = self.out.names_not_in(names.taken)  # only once every record is read
+        summary.others = [name for name in others if self.out.pdf(name).is_file()]
         summary.renamed = names.clashes
         if options.prune:
-            for name in summary.others:
+            for name in others:  # a key whose PDF you removed goes too
                 self.out.remove_record(name)
         if options.combined:
             combined = self.out.folder / COMBINED
