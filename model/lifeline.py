@@ -37,7 +37,10 @@ def end_with(command_pid: int) -> None:
 
 def watch(command_pid: int, pidfd: int | None) -> None:
     if pidfd is not None:
-        select.select([pidfd], [], [])
+        watcher = select.poll()  # not select(): no limit on the descriptor's number
+        watcher.register(pidfd, select.POLLIN)
+        while not watcher.poll():
+            pass
     else:
         while is_running(command_pid):
             time.sleep(POLL_S)
