@@ -452,7 +452,10 @@ def cmd_check(args: argparse.Namespace) -> int:
     )
     from floatpage.model.layout import engine_for_page
 
-    print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
+    # -q (user-walk-12b: `check --strict -q` in a Makefile was exit 2, as the other commands
+    # take -q): the figures of pages without problems and the notes are left out
+    say = (lambda text: None) if args.quiet else print
+    say(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
     settle_lines: list[str] = []  # the lines that send the user to `settle`
     stuck: list[str] = []  # pages with problems no settle mends
@@ -460,13 +463,13 @@ def cmd_check(args: argparse.Namespace) -> int:
         lines, problems = page_report(page, engine_for_page(page, project.physics),
                                       project.physics.gutter_mm)
         if settle_may_help(lines):
-            with progress_line(not sys.stdout.isatty()) as show:
+            with progress_line(args.quiet or not sys.stdout.isatty()) as show:
                 show(f"page {printable(page.id)}: trying whether a settle mends it…")
                 mends = settle_mends(page, project.physics, problems)
             if not mends:
                 lines, problems = page_report(page, engine_for_page(page, project.physics),
                                               project.physics.gutter_mm, stuck=True)
-        print("\n".join(lines))
+        (print if problems else say)("\n".join(lines))
         issues += problems
         if settle_may_help(lines):
             settle_lines += lines
@@ -485,9 +488,9 @@ def cmd_check(args: argparse.Namespace) -> int:
     # notes, not problems: --strict still passes
     for note in empty_page_notes(project) + resolution_notes(project) \
             + faint_text_notes(project, fits):
-        print(f"note: {printable(note)}")
+        say(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
-        print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
+        say(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
         print(f"{printable(args.path)}: {issues} layout problem(s); " + "; ".join(
             ([f"run `floatpage settle {typed_path(args.path)}` to fix "
@@ -646,6 +649,9 @@ def build_parser() -> argparse.ArgumentParser:
                                             "the page and text that would not fit.")
     check.add_argument("path", help=PROJECT_PATH_HELP)
     check.add_argument("--strict", action="store_true", help="exit 1 when the layout has problems")
+    check.add_argument("-q", "--quiet", action="store_true",
+                       help="print only what needs attention: the pages with problems and the "
+                            "warnings (nothing for a project without any)")
     allow_outside_option(check)
     check.set_defaults(run=cmd_check)
 

@@ -63,3 +63,26 @@ def test_merge_refuses_standard_output_and_an_empty_folder_name(tmp_path, name):
     assert result.returncode == 1, result.stderr
     assert "name the folder" in result.stderr and "e.g. -o out" in result.stderr
     assert listing(tmp_path) == before
+
+
+def test_check_quiet_prints_only_what_needs_attention(tmp_path):
+    """`check --strict -q` in a Makefile was exit 2 ("unrecognized arguments: -q"), where
+    render, settle and merge take -q: quiet, a sound project prints nothing, and a page
+    with a problem prints its lines and the closing line, not the sound page's figures."""
+    path = tmp_path / "card.toml"
+    save_project(Project(title="Card", pages=[
+        Page(id="front", size="A6", items=[
+            TextItem(id="title", x=52.0, y=40.0, w=60.0, h=20.0, text="Hello")]),
+        Page(id="back", size="A6", items=[
+            TextItem(id="lost", x=300.0, y=40.0, w=60.0, h=20.0, text="Far away")])]), path)
+    loud = run("check", "--strict", "card.toml", cwd=tmp_path)
+    quiet = run("check", "--strict", "-q", "card.toml", cwd=tmp_path)
+    assert loud.returncode == quiet.returncode == 1, quiet.stderr
+    assert "valid project" in loud.stdout and "page front:" in loud.stdout
+    assert "valid project" not in quiet.stdout and "page front:" not in quiet.stdout
+    assert "page back:" in quiet.stdout and "1 off page" in quiet.stdout
+    assert quiet.stdout.rstrip().splitlines()[-1].startswith("card.toml: 1 layout problem(s)")
+    (tmp_path / "sound.toml").write_text(path.read_text().split("[[pages]]")[0] + "[[pages]]"
+                                         + path.read_text().split("[[pages]]")[1])
+    sound = run("check", "--strict", "-q", "sound.toml", cwd=tmp_path)
+    assert (sound.returncode, sound.stdout, sound.stderr) == (0, "", "")
