@@ -302,6 +302,7 @@ def cmd_render(args: argparse.Namespace) -> int:
     from floatpage.typeset.render import check_pdf_output
 
     for option, name in (("-o", args.output), ("--tex", args.tex), ("--fragment", args.fragment)):
+        refuse_no_file_name(option, name, Path(args.path).stem)
         refuse_folder_name(option, name, Path(args.path).stem)
     out = Path(args.output) if args.output else Path(args.path).with_suffix(".pdf")
     refuse_other_format(out, args.path)
@@ -401,6 +402,22 @@ def refuse_not_tex(option: str, name: str | None, project: str) -> None:
 PROJECT_PATH_HELP = "the project's .toml file"
 
 
+def refuse_no_file_name(option: str, name: str | None, stem: str) -> None:
+    """`-o -` wrote a file called `-` (a user of Unix tools meant standard output), and
+    `-o ""` (a Makefile's variable left empty) wrote NAME.pdf beside the project without a
+    word, where the Makefile then looked for its target in vain."""
+    example = stem + (".pdf" if option == "-o" else ".tex")
+    if name == "-":
+        raise FloatpageError(f"{option} -: render writes files, not to standard output; name "
+                             f"the file, e.g. {option} {example} (and `cat {example}` into a "
+                             f"pipe)")
+    if name is not None and not name.strip():
+        raise FloatpageError(f"{option} {name!r} names no file (an empty variable in a "
+                             f"Makefile?); name the file, e.g. {option} {example}"
+                             + (", or leave -o out for the project's name with .pdf"
+                                if option == "-o" else ""))
+
+
 def refuse_folder_name(option: str, name: str | None, stem: str) -> None:
     """`-o .` ended in "internal error" and `-o out/` wrote a PDF called `out`: a name that
     can only be a folder is refused, with the file name to give instead."""
@@ -435,7 +452,10 @@ def cmd_check(args: argparse.Namespace) -> int:
     )
     from floatpage.model.layout import engine_for_page
 
-    print(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
+    # -q (user-walk-12b: `check --strict -q` in a Makefile was exit 2, as the other commands
+    # take -q): the figures of pages without problems and the notes are left out
+    say = (lambda text: None) if args.quiet else print
+    say(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
     settle_lines: list[str] = []  # the lines that send the user to `settle`
     stuck: list[str] = []  # pages with problems no settle mends
@@ -443,13 +463,13 @@ def cmd_check(args: argparse.Namespace) -> int:
         lines, problems = page_report(page, engine_for_page(page, project.physics),
                                       project.physics.gutter_mm)
         if settle_may_help(lines):
-            with progress_line(not sys.stdout.isatty()) as show:
+            with progress_line(args.quiet or not sys.stdout.isatty()) as show:
                 show(f"page {printable(page.id)}: trying whether a settle mends it…")
                 mends = settle_mends(page, project.physics, problems)
             if not mends:
                 lines, problems = page_report(page, engine_for_page(page, project.physics),
                                               project.physics.gutter_mm, stuck=True)
-        print("\n".join(lines))
+        (print if problems else say)("\n".join(lines))
         issues += problems
         if settle_may_help(lines):
             settle_lines += lines
@@ -468,9 +488,9 @@ def cmd_check(args: argparse.Namespace) -> int:
     # notes, not problems: --strict still passes
     for note in empty_page_notes(project) + resolution_notes(project) \
             + faint_text_notes(project, fits):
-        print(f"note: {printable(note)}")
+        say(f"note: {printable(note)}")
     for where, picture in pictures_outside(project):
-        print(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
+        say(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
         print(f"{printable(args.path)}: {issues} layout problem(s); " + "; ".join(
             ([f"run `floatpage settle {typed_path(args.path)}` to fix "
@@ -629,6 +649,9 @@ def build_parser() -> argparse.ArgumentParser:
                                             "the page and text that would not fit.")
     check.add_argument("path", help=PROJECT_PATH_HELP)
     check.add_argument("--strict", action="store_true", help="exit 1 when the layout has problems")
+    check.add_argument("-q", "--quiet", action="store_true",
+                       help="print only what needs attention: the pages with problems and the "
+                            "warnings (nothing for a project without any)")
     allow_outside_option(check)
     check.set_defaults(run=cmd_check)
 

@@ -8,7 +8,7 @@ import time
 from pathlib import Path
 from typing import Callable
 
-from floatpage.model.errors import printable
+from floatpage.model.errors import FloatpageError, printable
 
 EXIT_SOME_RECORDS_FAILED = 3
 
@@ -40,6 +40,9 @@ def add_merge_parser(commands, allow_outside_option) -> None:
                        help="also write OUTDIR/combined.pdf, every record in order, for printing")
     merge.add_argument("--toml", action="store_true",
                        help="also write each record's settled project, to open in the editor")
+    merge.add_argument("--prune", action="store_true",
+                       help="remove the PDFs an earlier run made here for records the data "
+                            "no longer names (a record taken out, a name changed)")
     merge.add_argument("--force", action="store_true",
                        help="redo every record, even those whose inputs have not changed")
     merge.add_argument("--chunk-size", type=positive, default=None, metavar="N",
@@ -61,9 +64,11 @@ def add_merge_parser(commands, allow_outside_option) -> None:
 def cmd_merge(args: argparse.Namespace) -> int:
     from floatpage.merge.run import Merge, MergeOptions
 
+    refuse_no_folder_name(args.output)
     merge = Merge(MergeOptions(
         template=Path(args.template), data=Path(args.data), outdir=Path(args.output),
         name=args.name, combined=args.combined, write_toml=args.toml, force=args.force,
+        prune=args.prune,
         chunk_size=args.chunk_size or 0, workers=args.workers or 0, dask=args.dask,
         ship_pictures=args.pictures == "ship", allow_outside_files=args.allow_outside_files))
     for note in merge.notes:
@@ -75,11 +80,56 @@ def cmd_merge(args: argparse.Namespace) -> int:
           f"{summary.records} record(s) in {summary.seconds:.1f} s; report: {printable(str(summary.report))}")
     if summary.combined:
         print(f"combined PDF: {printable(str(summary.combined))}")
+    tell_other_records(summary.others, Path(args.output), args.prune)
+    tell_renamed(summary.renamed, Path(args.data), args.name)
     if summary.failed:
         print(f"floatpage: {summary.failed} record(s) failed; their reasons are in "
               f"{printable(str(summary.report))}", file=sys.stderr)
         return EXIT_SOME_RECORDS_FAILED
     return 0
+
+
+def refuse_no_folder_name(name: str) -> None:
+    """`-o ""` (a Makefile's variable left empty) wrote every record's PDF, report.csv and
+    the run's keys into the current folder, among the template and the data; `-o -` made a
+    folder called `-`.  `-o .` still writes here, as asked."""
+    if name == "-":
+        raise FloatpageError("-o -: merge writes a folder of PDFs, not to standard output; "
+                             "name the folder, e.g. -o out")
+    if not name.strip():
+        raise FloatpageError(f"-o {name!r} names no folder (an empty variable in a "
+                             "Makefile?); name the folder for the PDFs, e.g. -o out (or -o . "
+                             "for this one)")
+
+
+def tell_renamed(clashes: list, data: Path, pattern: str | None) -> None:
+    """Records whose --name another record had already: the first few in full, then a count
+    (a key column that repeats is mostly one customer twice, and each got a card)."""
+    for number, line, name, base, (first, first_line) in clashes[:EMPTY_COLUMNS_SHOWN]:
+        print(f"warning: record {number} (line {line} of {printable(str(data))}) is named "
+              f"{printable(name)}: --name {printable(repr(pattern))} gave it {printable(base)}, "
+              f"the name of record {first} (line {first_line}); if they are one record twice, "
+              f"take one out of the data", file=sys.stderr)
+    if len(clashes) > EMPTY_COLUMNS_SHOWN:
+        print(f"warning: {len(clashes) - EMPTY_COLUMNS_SHOWN} more record(s) renamed so; "
+              "their names are in report.csv", file=sys.stderr)
+
+
+def tell_other_records(names: list[str], outdir: Path, pruned: bool) -> None:
+    """The PDFs an earlier run left for records this data no longer names: removed (--prune)
+    on stdout, else a note on stderr, as a folder printed whole would print them too."""
+    if not names:
+        return
+    shown = ", ".join(f"{name}.pdf" for name in names[:EMPTY_COLUMNS_SHOWN]) + (
+        f" and {len(names) - EMPTY_COLUMNS_SHOWN} more" if len(names) > EMPTY_COLUMNS_SHOWN
+        else "")
+    if pruned:
+        print(f"removed {len(names)} record(s) this data no longer names: {printable(shown)}")
+        return
+    print(f"note: {printable(str(outdir))} holds {len(names)} PDF(s) an earlier run made for "
+          f"records this data no longer names ({printable(shown)}); they are not in "
+          f"report.csv or combined.pdf: remove them before printing the folder, or run again "
+          f"with --prune", file=sys.stderr)
 
 
 EMPTY_COLUMNS_SHOWN = 10  # kinds of empty column told in full; record numbers per kind

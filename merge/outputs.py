@@ -23,6 +23,7 @@ import time
 import unicodedata
 from pathlib import Path
 
+from floatpage.merge.folder_lock import lock_output_folder, unlock
 from floatpage.merge.placeholders import PlaceholderError, fields_in, fill
 from floatpage.model.errors import FloatpageError
 from floatpage.model.atomic_file import STALE_AFTER_S, TEMPORARY_SUFFIX
@@ -73,8 +74,12 @@ class Names:
     def __init__(self, pattern: str | None):
         self.pattern = pattern
         self.taken: set[str] = set()
+        self.owners: dict[str, tuple[int, int]] = {}  # a name given: (record, line) it is
+        # (record, line, name, base, (record, line) that had the base): a key column that
+        # repeats in the data is mostly one customer twice, and was renamed without a word
+        self.clashes: list[tuple[int, int, str, str, tuple[int, int]]] = []
 
-    def name_for(self, number: int, values: dict[str, str]) -> str:
+    def name_for(self, number: int, values: dict[str, str], line: int = 0) -> str:
         if self.pattern is None:
             base = f"record-{number:05d}"
         else:
@@ -84,6 +89,9 @@ class Names:
             count += 1
             name = f"{base}-{count}"
         self.taken.add(name.casefold())
+        self.owners[name.casefold()] = (number, line)
+        if base.casefold() in self.owners and name != base:  # not "report", "combined"
+            self.clashes.append((number, line, name, base, self.owners[base.casefold()]))
         return name
 
 
@@ -144,13 +152,24 @@ class OutputFolder:
             raise FloatpageError(f"{state}: is a symbolic link; floatpage keeps its merge state "
                                  "in a folder of its own there (remove the link, or name "
                                  "another output folder with -o)")
-        remove_leftovers(self.folder)
-        remove_leftovers(self.folder / STATE_DIR)
-        self.inputs = {self.key(path) for path in inputs}
-        for fixed in (self.folder / REPORT, self.folder / COMBINED):
-            problem = self.refuse(fixed)
-            if problem:
-                raise FloatpageError(f"{problem} (floatpage merge writes {fixed.name} there)")
+        self.lock = lock_output_folder(self.folder, state)  # before another run's files go
+        try:
+            remove_leftovers(self.folder)
+            remove_leftovers(self.folder / STATE_DIR)
+            self.inputs = {self.key(path) for path in inputs}
+            for fixed in (self.folder / REPORT, self.folder / COMBINED):
+                problem = self.refuse(fixed)
+                if problem:
+                    raise FloatpageError(f"{problem} (floatpage merge writes {fixed.name} "
+                                         "there)")
+        except BaseException:
+            self.release()
+            raise
+
+    def release(self) -> None:
+        """Let another merge write here (the run's end; a process's exit does it anyway)."""
+        unlock(self.lock)
+        self.lock = None
 
     @staticmethod
     def key(path: Path) -> str:
@@ -225,6 +244,23 @@ class OutputFolder:
             self.note_file(name).unlink(missing_ok=True)
         write_whole(self.digest_file(name), digest.encode("ascii"))
         return ""
+
+    def names_not_in(self, taken: set[str]) -> list[str]:
+        """The records an earlier run made here (their .key) that no name in ``taken`` (this
+        run's, case-folded) is: `1001-Doe.pdf` stayed beside `1001-Doe-Smith.pdf` once the
+        surname was corrected, and `lpr out/*.pdf` printed both."""
+        state = self.folder / STATE_DIR
+        return sorted(entry.name[:-len(".key")] for entry in os.scandir(state)
+                      if entry.name.endswith(".key") and entry.is_file(follow_symlinks=False)
+                      and entry.name[:-len(".key")].casefold() not in taken)
+
+    def remove_record(self, name: str) -> None:
+        """A record's files, as this merge wrote them: its key first, so a run stopped half
+        way leaves nothing that counts as made."""
+        for path in (self.digest_file(name), self.pdf(name), self.toml(name),
+                     self.note_file(name)):
+            if path.is_file() and not path.is_symlink():
+                path.unlink(missing_ok=True)
 
     @staticmethod
     def flush() -> None:

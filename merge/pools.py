@@ -15,6 +15,7 @@ from typing import Iterator
 
 from floatpage.merge.chunk_job import ChunkTask, RecordResult, run_chunk
 from floatpage.model.errors import FloatpageError
+from floatpage.model.lifeline import end_with
 from floatpage.model.page_pool import stop_pool
 
 IN_FLIGHT_PER_WORKER = 2
@@ -30,7 +31,9 @@ def cores() -> int:
 def local_results(tasks: Iterator[ChunkTask], workers: int) -> Iterator[list[RecordResult]]:
     # forkserver: workers start from a clean process, not a fork of one holding threads.
     context = multiprocessing.get_context("forkserver")
-    executor = ProcessPoolExecutor(workers, mp_context=context)
+    # A command killed outright (kill -9, a CI timeout) takes its workers with it.
+    executor = ProcessPoolExecutor(workers, mp_context=context, initializer=end_with,
+                                   initargs=(os.getpid(),))
     pending: set = set()
     try:
         for task in tasks:

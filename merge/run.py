@@ -25,7 +25,7 @@ from floatpage.merge.records import JSON_LINES, DataFile, Record
 from floatpage.merge.template import MergeTemplate
 from floatpage.model.errors import FloatpageError
 from floatpage.model.picture_files import is_outside
-from floatpage.typeset.compile import engine_path
+from floatpage.typeset.compile import check_engine_settings
 from floatpage.typeset.pdf_split import concatenate
 
 FORMAT = b"floatpage-merge-1"  # part of every digest: bump when output bytes change
@@ -45,6 +45,7 @@ class MergeOptions:
     ship_pictures: bool = False
     force: bool = False
     allow_outside_files: bool = False
+    prune: bool = False        # remove the files of records this data no longer names
 
 
 @dataclass
@@ -61,6 +62,11 @@ class MergeSummary:
     empty_columns: list[tuple[int, int, str, str]] = field(default_factory=list)
     combined: Path | None = None
     report: Path | None = None
+    # PDFs an earlier run made for records this data no longer names (a surname corrected
+    # with --name "{id}-{surname}", a record taken out), by name; removed with --prune
+    others: list[str] = field(default_factory=list)
+    # records whose --name was another's, renamed NAME-2 (merge.outputs.Names.clashes)
+    renamed: list[tuple[int, int, str, str, tuple[int, int]]] = field(default_factory=list)
 
 
 # An engine run costs about 0.5 s to start and a record 40-60 ms more, and the records of
@@ -125,7 +131,7 @@ class Merge:
     def __init__(self, options: MergeOptions):
         self.options = options
         refuse_swapped_arguments(options.template, options.data)
-        engine_path()  # no TeX: say so once, not once per record
+        check_engine_settings()  # no TeX, a bad setting: say so once, not once per record
         self.template = MergeTemplate(options.template,
                                       allow_outside_files=options.allow_outside_files)
         self.data = DataFile(options.data)
@@ -183,6 +189,13 @@ class Merge:
         return input_digest(self.template_digest.encode(), values, name.encode(), *pictures)
 
     def run(self, progress: Callable[[int, int, int], None] | None = None) -> MergeSummary:
+        try:
+            return self.run_held(progress)
+        finally:
+            self.out.release()
+
+    def run_held(self, progress: Callable[[int, int, int], None] | None) -> MergeSummary:
+        """The run, with the output folder's lock held (merge.folder_lock)."""
         started = time.perf_counter()
         options = self.options
         total = sum(1 for _ in self.data.records())
@@ -196,12 +209,13 @@ class Merge:
         def chunk_size(records_read: int) -> int:
             return options.chunk_size or auto_chunk_size(total - records_read, total, workers)
 
+        names = Names(options.name)
+
         def tasks() -> Iterator[ChunkTask]:
             chunk: list[tuple[Record, str, str]] = []
-            names = Names(options.name)
             size = chunk_size(0)
             for record in self.data.records():
-                name = names.name_for(record.number, record.values)
+                name = names.name_for(record.number, record.values, record.line)
                 if record.problem:
                     ordered.add(record.number, (record.line, name, "failed", record.problem))
                     continue
@@ -245,6 +259,12 @@ class Merge:
             summary.failed = report.failed
             summary.seconds = time.perf_counter() - started
         show(total, total, report.failed)
+        others = self.out.names_not_in(names.taken)  # only once every record is read
+        summary.others = [name for name in others if self.out.pdf(name).is_file()]
+        summary.renamed = names.clashes
+        if options.prune:
+            for name in others:  # a key whose PDF you removed goes too
+                self.out.remove_record(name)
         if options.combined:
             combined = self.out.folder / COMBINED
             if concatenate((self.out.pdf(name) for name in report.made_names()), combined):

@@ -24,6 +24,7 @@ from concurrent.futures.process import BrokenProcessPool
 
 from floatpage.model.document import Item, Page, PhysicsSettings
 from floatpage.model.errors import FloatpageError
+from floatpage.model.lifeline import end_with
 from floatpage.physics import SettleReport
 
 MIN_PAGES = 8  # fewer pages settle in the command's own process
@@ -55,7 +56,7 @@ def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
         context = multiprocessing.get_context("forkserver")
         context.set_forkserver_preload(PRELOAD)
         pool = ProcessPoolExecutor(max_workers=min(jobs, len(pages)), mp_context=context,
-                                   initializer=leave_interrupts_to_the_command)
+                                   initializer=start_worker, initargs=(os.getpid(),))
     except (OSError, NotImplementedError, ValueError):  # no processes here (a sandbox
         return settle_here(pages, settings, max_steps)  # without semaphores): one by one
     # From here on, whatever stops the command (Ctrl+C, SIGTERM, a page's error) stops the
@@ -114,6 +115,13 @@ def settle_here(pages: list[Page], settings: PhysicsSettings,
     from floatpage.model.layout import settle_page
 
     return [settle_page(page, settings, max_steps=max_steps) for page in pages]
+
+
+def start_worker(command_pid: int) -> None:
+    """A worker's start: Ctrl+C is the command's to handle, and a command killed outright
+    takes the worker with it (model.lifeline)."""
+    leave_interrupts_to_the_command()
+    end_with(command_pid)
 
 
 def leave_interrupts_to_the_command() -> None:

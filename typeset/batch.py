@@ -20,7 +20,7 @@ from pathlib import Path
 from pylatex.utils import NoEscape
 
 from floatpage.typeset.build_folder import build_folder
-from floatpage.typeset.compile import compile_pdf, engine_path
+from floatpage.typeset.compile import check_engine_settings, compile_pdf
 from floatpage.typeset.errors import RenderError
 from floatpage.typeset.fonts import FaceKey, fallback_candidates
 from floatpage.typeset.pdf_split import split_records
@@ -187,7 +187,7 @@ def typeset_batch(documents: list[PlacedDocument], *, timeout_s: float = 600.0,
 
 def typeset_run(documents: list[PlacedDocument], *, timeout_s: float) -> list[bytes]:
     """One PDF per document, from one engine run."""
-    engine_path()
+    check_engine_settings()
     for document in documents:
         materialize_pictures(document)
     with build_folder() as build:

@@ -7,7 +7,9 @@ timeout or the log. We call the engine directly, once:
 - in a build folder given by the caller (a fresh temporary one), stdin closed;
 - `-no-shell-escape`, `openin_any=p`/`openout_any=p` (no absolute, parent or
   hidden paths); pictures are found by bare name through TEXINPUTS;
-- SOURCE_DATE_EPOCH fixed, so the PDF's dates never change;
+- SOURCE_DATE_EPOCH fixed, so the PDF's dates never change (the caller's own, if set), and
+  TZ and the locale fixed too, so a laptop in Paris, a CI runner in UTC and a Docker image whose
+  LANG names a locale it lacks make the same bytes (see engine_environment);
 - a timeout that kills the whole process group (`\\def\\x{\\x}\\x` runs forever);
 - the engine dies with its parent (Linux's PR_SET_PDEATHSIG), so a killed `render` leaves no
   LuaLaTeX running, and runs under a memory limit (`engine_memory_mb`, of address space).
@@ -92,11 +94,40 @@ def engine_command(main: str = MAIN) -> list[str]:
             "-file-line-error", main]
 
 
+def source_date_epoch() -> str:
+    """The instant written as the PDF's CreationDate and ModDate: $SOURCE_DATE_EPOCH (whole
+    seconds since 1970, as reproducible-builds.org defines it), else 2026-01-01.  Set but
+    empty counts as unset: LuaTeX read it as "now", and every PDF differed.  A value that is
+    not a whole number is refused, as the specification asks: LuaTeX read "abc" as 1970."""
+    text = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    if not text:
+        return DEFAULT_SOURCE_DATE_EPOCH
+    if not text.isascii() or not text.isdigit() or len(text) > 12:
+        raise RenderError(f"SOURCE_DATE_EPOCH={text[:40]!r} is not a time: give whole seconds "
+                          f"since 1970-01-01 UTC, e.g. SOURCE_DATE_EPOCH=$(git log -1 "
+                          f"--format=%ct), or unset it for the fixed date floatpage writes")
+    return text
+
+
+def check_engine_settings() -> None:
+    """Before any work: the engine is installed, and the environment's settings for it
+    (memory, date) can be read; a bad one is said once, not once per record of a merge."""
+    engine_path()
+    engine_memory_mb()
+    source_date_epoch()
+
+
 def engine_environment(picture_dir: Path | None) -> dict[str, str]:
+    """The engine's environment: the caller's (PATH, TEXMF settings), with the file access
+    closed, the date fixed, and TZ and the locale fixed.  TZ reached the PDF's dates
+    (TZ=Pacific/Kiritimati wrote "D:20260101140000+14'00'" where UTC wrote "...000000Z"), and
+    LuaTeX stops at once, before a log, under a LANG or LC_ALL naming a locale the machine
+    lacks ("Unable to read environment locale: exit now", a common Docker image's state).
+    LC_ALL=C exists everywhere and makes the same PDF as C.UTF-8 (the multilingual card)."""
     env = dict(os.environ)
     env.update(openin_any="p", openout_any="p", shell_escape="f",
-               SOURCE_DATE_EPOCH=os.environ.get("SOURCE_DATE_EPOCH", DEFAULT_SOURCE_DATE_EPOCH),
-               FORCE_SOURCE_DATE="1")
+               SOURCE_DATE_EPOCH=source_date_epoch(), FORCE_SOURCE_DATE="1",
+               TZ="UTC", LC_ALL="C")
     env.pop("TEXMFOUTPUT", None)
     if picture_dir is not None:
         # The trailing separator keeps TeX's own search path after the picture cache.

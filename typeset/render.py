@@ -20,7 +20,7 @@ from floatpage.model.document import Project
 from floatpage.model.save import atomic_write
 from floatpage.model.picture_files import decode_warning, is_merge_placeholder, read_header
 from floatpage.typeset.build_folder import build_folder
-from floatpage.typeset.compile import compile_pdf, engine_path
+from floatpage.typeset.compile import check_engine_settings, compile_pdf
 from floatpage.typeset.contrast import contrast_notes
 from floatpage.typeset.output_paths import check_outputs, project_companions, project_inputs
 from floatpage.typeset.print_marks import for_print
@@ -191,7 +191,7 @@ def render_pdf(project: Project, out_pdf: Path, *, tex_out: Path | None = None,
     say = progress or (lambda message: None)
     out_pdf = Path(out_pdf)
     check_pdf_output(project, out_pdf, tex_out, fragment_out)
-    engine_path()
+    check_engine_settings()
     if not project.pages:
         raise RenderError("the project has no pages; add a [[pages]] table")
     say("laying out text")

@@ -68,20 +68,35 @@ def finite_file(path: Path) -> str:
     return ", ".join(bad[:5])
 
 
-def peak_mb() -> float:
+def peaks_mb() -> tuple[float, float]:
+    """This process's peak and its largest finished child's (LuaLaTeX, mostly), in MB."""
     own = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
     children = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
-    return max(own, children) / 1024
+    return own / 1024, children / 1024
+
+
+def peak_mb() -> float:
+    return max(peaks_mb())
+
+
+def measured(argv: list[str]) -> dict:
+    """`run`, plus the peaks after it: a peak over the limit then names the file and the
+    command that raised it, and whether this process or a child (LuaLaTeX) reached it."""
+    before = peak_mb()
+    outcome = run(argv)
+    outcome["peak_before_mb"] = before
+    outcome["peak_own_mb"], outcome["peak_children_mb"] = peaks_mb()
+    return outcome
 
 
 def drive(path: Path) -> dict:
     before_finite = finite_file(path)
     before = path.read_bytes()
-    result = {"file": path.name, "check": run(["check", str(path)])}
-    result["settle"] = run(["settle", "-q", str(path)])
+    result = {"file": path.name, "check": measured(["check", str(path)])}
+    result["settle"] = measured(["settle", "-q", str(path)])
     result["non_finite_after_settle"] = finite_file(path) if path.read_bytes() != before else ""
     result["non_finite_before"] = before_finite
-    result["render"] = run(["render", "-q", str(path), "-o", str(path.with_suffix(".pdf"))])
+    result["render"] = measured(["render", "-q", str(path), "-o", str(path.with_suffix(".pdf"))])
     result["peak_mb"] = peak_mb()
     return result
 

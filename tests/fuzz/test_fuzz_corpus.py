@@ -89,7 +89,21 @@ def test_settle_never_saves_a_non_finite_number(results):
 
 def test_memory_stays_under_a_gigabyte(results):
     peak = max(record["peak_mb"] for record in results.values())
-    assert peak < MEMORY_LIMIT_MB, peak
+    assert peak < MEMORY_LIMIT_MB, where_memory_peaked(results)
+
+
+def where_memory_peaked(results: dict[str, dict]) -> str:
+    """The commands that took a driver's peak over the limit: the file, the command, and
+    whether the driver itself or a child (LuaLaTeX) grew, so a failure says where to look."""
+    raised = []
+    for name, record in results.items():
+        for command in ("check", "settle", "render"):
+            outcome = record[command]
+            own, children = outcome["peak_own_mb"], outcome["peak_children_mb"]
+            if outcome["peak_before_mb"] < MEMORY_LIMIT_MB <= max(own, children):
+                raised.append(f"{name} {command}: from {outcome['peak_before_mb']:.0f} MB to "
+                              f"driver {own:.0f} MB, largest child {children:.0f} MB")
+    return "; ".join(raised)
 
 
 def test_the_corpus_is_what_make_corpus_writes():

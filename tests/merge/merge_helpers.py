@@ -25,3 +25,18 @@ def rows(count: int) -> list[list[str]]:
     return [[str(1001 + n), f"Person{n}", names[n % len(names)], f"Product number {n}",
              f"€{n}.50", pictures[n % len(pictures)], "A note" if n % 2 else "", "31 May"]
             for n in range(count)]
+
+
+def session_members(session: int) -> list[int]:
+    """The processes of a session (/proc/PID/stat's sixth field): a command started in a
+    session of its own, and every process below it that did not leave it."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:  # gone meanwhile
+                continue
+            if int(stat[stat.rindex(")") + 2:].split()[3]) == session:
+                found.append(int(entry.name))
+    return found

@@ -14,7 +14,7 @@ import pdfplumber
 import pikepdf
 
 from floatpage.model import load_project
-from merge_helpers import COLUMNS, rows, write_csv
+from merge_helpers import COLUMNS, rows, session_members, write_csv
 
 FLOATPAGE = str(Path(sys.executable).with_name("floatpage"))
 
@@ -326,6 +326,104 @@ def test_ctrl_c_leaves_no_partial_pdf(merge_folder):
     assert (out / "report.csv").is_file()
     time.sleep(1.0)
     assert engines_in_build_folders(builds) == []
+
+
+def test_a_merge_killed_outright_leaves_no_process_behind(merge_folder):
+    """user-walk-12b: `kill -9` of a merge (a CI job's timeout) left its workers, the fork
+    server and the resource tracker waiting for good, minutes later: the workers hold their
+    own task queue's ends, so nothing told them the command was gone."""
+    data = write_csv(merge_folder / "customers.csv", rows(80))
+    out = merge_folder / "out"
+    process = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data),
+                                "-o", str(out), "--chunk-size", "2", "--workers", "2"],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               start_new_session=True)
+    try:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline and len(list(out.glob("*.pdf"))) < 2:
+            assert process.poll() is None
+            time.sleep(0.05)
+        assert len(session_members(process.pid)) >= 4  # command, tracker, server, workers
+        process.kill()
+        process.wait(timeout=10)
+        deadline = time.monotonic() + 30
+        while session_members(process.pid) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert session_members(process.pid) == []
+    finally:  # a failure leaves nothing running either
+        for pid in session_members(process.pid):
+            os.kill(pid, signal.SIGKILL)
+
+
+def test_a_second_merge_into_the_same_folder_is_refused_while_the_first_runs(merge_folder):
+    """user-walk-12b: two merges into one folder at once (`make -j2`, a CI job retried)
+    shared `.floatpage-merge/report.partial`: the second typeset every record, then stopped
+    at "report.csv: could not write it (No such file or directory)"."""
+    first_data = write_csv(merge_folder / "first.csv", rows(40))
+    second_data = write_csv(merge_folder / "second.csv", rows(3))
+    out = merge_folder / "out"
+    # one record per engine run: the first is still at work long after the second has asked
+    first = subprocess.Popen([FLOATPAGE, "merge", str(merge_folder / "offer.toml"),
+                              str(first_data), "-o", str(out), "--chunk-size", "1", "--workers",
+                              "1", "-q"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True,
+                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline and not list(out.glob("*.pdf")):
+            assert first.poll() is None, first.communicate()
+            time.sleep(0.05)
+        second = merge(merge_folder, second_data)
+        assert first.poll() is None, "the first merge ended before the second asked"
+    finally:
+        first.send_signal(signal.SIGINT)  # enough shown: the first need not finish its 40
+        first.communicate(timeout=60)
+    assert second.returncode == 1, second.stdout + second.stderr
+    assert second.stderr.startswith(f"floatpage: {out}: another merge is writing there (PID "
+                                    f"{first.pid} (floatpage merge)); wait for it to finish"), \
+        second.stderr
+    assert first.returncode == 130
+    assert report(merge_folder)[0]["name"] == "record-00001"  # the first's own report
+
+
+def test_pdfs_of_records_the_data_no_longer_names_are_told_and_pruned(merge_folder):
+    """user-walk-12b: with --name "{id}-{surname}", a surname corrected in the data made
+    `1001-Silva-Costa.pdf` and left `1001-Silva.pdf` beside it without a word: `lpr out/*.pdf`
+    printed both. A run says so; --prune removes the files merge made for them, no other."""
+    table = rows(3)
+    data = write_csv(merge_folder / "customers.csv", table)
+    assert merge(merge_folder, data).returncode == 0
+    out = merge_folder / "out"
+    (out / "cover.pdf").write_bytes(b"%PDF-1.4 the user's own")
+    table[0][2] = "Silva-Costa"
+    write_csv(data, table)
+    again = merge(merge_folder, data)
+    assert again.returncode == 0, again.stderr
+    assert (f"note: {out} holds 1 PDF(s) an earlier run made for records this data no longer "
+            f"names (1001-Silva.pdf); they are not in report.csv or combined.pdf") in again.stderr
+    assert (out / "1001-Silva.pdf").is_file()
+    pruned = merge(merge_folder, data, "out", "--prune")
+    assert pruned.returncode == 0, pruned.stderr
+    assert "removed 1 record(s) this data no longer names: 1001-Silva.pdf" in pruned.stdout
+    assert sorted(p.name for p in out.glob("*.pdf")) == [
+        "1001-Silva-Costa.pdf", "1002-Müller.pdf", "1003-Okonkwo-Fitzgerald.pdf", "cover.pdf"]
+    assert not (out / ".floatpage-merge" / "1001-Silva.key").exists()
+    assert "no longer names" not in merge(merge_folder, data).stderr
+
+
+def test_a_record_renamed_for_a_name_another_had_is_told(merge_folder):
+    """user-walk-12b: a customer number that repeats in the data (one customer exported
+    twice) gave `1001-Silva.pdf` and `1001-Silva-2.pdf` without a word."""
+    table = rows(3)
+    table[2][0], table[2][2] = table[0][0], table[0][2]
+    data = write_csv(merge_folder / "customers.csv", table)
+    done = merge(merge_folder, data)
+    assert done.returncode == 0, done.stderr
+    assert (f"warning: record 3 (line 4 of {data}) is named 1001-Silva-2: --name "
+            "'{id}-{surname}' gave it 1001-Silva, the name of record 1 (line 2); if they are "
+            "one record twice, take one out of the data") in done.stderr
+    assert [row["name"] for row in report(merge_folder)] == [
+        "1001-Silva", "1002-Müller", "1001-Silva-2"]
 
 
 def engines_in_build_folders(parent: Path) -> list[int]:

@@ -166,3 +166,29 @@ def test_where_no_worker_process_can_start_the_pages_settle_here(monkeypatch):
     assert len(reports) == 3
     assert [(i.x, i.y) for p in project.pages for i in p.items] == [
         (i.x, i.y) for p in expected.pages for i in p.items]
+
+
+def test_a_settle_killed_outright_leaves_no_process_behind(tmp_path):
+    """user-walk-12b: `kill -9` of the command (a CI job's timeout, the out-of-memory
+    killer) left its two workers, the fork server and the resource tracker waiting for good:
+    the workers hold their own task queue's ends, so nothing ever told them."""
+    path = tmp_path / "album.toml"
+    save_project(album(120, 12), path)
+    command = subprocess.Popen([sys.executable, "-m", "floatpage.cli.main", "settle", "-j", "2",
+                                str(path)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               start_new_session=True)
+    try:
+        started = time.monotonic()
+        while len(session_members(command.pid)) < 5 and time.monotonic() - started < 60:
+            assert command.poll() is None
+            time.sleep(0.1)
+        assert len(session_members(command.pid)) >= 5
+        command.kill()  # the command alone, as a runner's timeout kills it
+        command.wait(timeout=10)
+        deadline = time.monotonic() + 30
+        while session_members(command.pid) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert session_members(command.pid) == []
+    finally:  # a failure leaves nothing running either
+        for pid in session_members(command.pid):
+            os.kill(pid, signal.SIGKILL)

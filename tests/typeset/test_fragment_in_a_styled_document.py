@@ -7,6 +7,7 @@ from __future__ import annotations
 import subprocess
 from pathlib import Path
 
+import pytest
 from PIL import Image, ImageChops
 
 from floatpage.model.document import BlockItem, Page, PictureItem, Project, TextItem
@@ -65,3 +66,46 @@ def test_the_documents_language_adds_no_space_before_the_fragments_colons(tmp_pa
     plain = compiled_page(tmp_path, "")
     french = compiled_page(tmp_path, r"\usepackage{polyglossia}\setdefaultlanguage{french}")
     assert ImageChops.difference(plain, french).getbbox() is None
+
+
+# babel's shorthands as its German makes them ("a is ä, "s is ß), and one as its Turkish does
+# (= active, which TikZ's options are full of), from babel's core, installed everywhere
+SHORTHANDS = (r"\usepackage[english]{babel}"
+              r"\useshorthands*{"+'"'+r"}\defineshorthand{"+'"'+r"a}{\"a}"
+              r"\defineshorthand{"+'"'+r"s}{\ss}"
+              r"\useshorthands*{=}\defineshorthand{=}{\textbf{!}}")
+
+
+def test_the_documents_shorthands_leave_the_fragments_words_as_typed(tmp_path):
+    """user-walk-12b: in a German document (babel) the fragment's `"Offen"` printed `Öffen"`,
+    `"a"o` printed `äö` and `"s` printed `ß`: words the user typed, changed, in lines fitted
+    without those changes."""
+    project = Project(path=tmp_path / "card.toml", title="Kurz", pages=[
+        Page(id="front", size="custom", width_mm=100, height_mm=40, items=[
+            TextItem(id="sign", x=50, y=20, w=90, h=14, text='"Offen" "a"o "s x=y')])])
+    render_pdf(project, tmp_path / "card.pdf", fragment_out=tmp_path / "fragment.tex")
+    plain = compiled_page(tmp_path, "")
+    german = compiled_page(tmp_path, SHORTHANDS)
+    assert ImageChops.difference(plain, german).getbbox() is None
+
+
+@pytest.mark.parametrize("engine", ["pdflatex", "xelatex"])
+def test_another_engine_is_told_the_fragment_needs_lualatex(tmp_path, engine):
+    """pdfLaTeX and XeLaTeX stopped at "Undefined control sequence \\directlua", which says
+    nothing of what to do."""
+    project = Project(path=tmp_path / "card.toml", title="Engine", pages=[
+        Page(id="front", size="custom", width_mm=60, height_mm=30, items=[
+            TextItem(id="t", x=30, y=15, w=50, h=10, text="Hello")])])
+    render_pdf(project, tmp_path / "card.pdf", fragment_out=tmp_path / "fragment.tex")
+    (tmp_path / "host.tex").write_text(r"""\documentclass{article}
+\usepackage{xcolor,graphicx,tikz}
+\begin{document}
+\input{fragment.tex}
+\end{document}
+""")
+    run = subprocess.run([engine, "-interaction=nonstopmode", "host.tex"], cwd=tmp_path,
+                         stdout=subprocess.DEVNULL, timeout=180)
+    log = (tmp_path / "host.log").read_text(errors="replace")
+    assert run.returncode != 0
+    assert "This fragment needs LuaLaTeX (compile this document" in log
+    assert "Undefined control sequence" not in log
