@@ -114,6 +114,18 @@ async def press_then_quit(pilot, *keys: str, seconds: float = DEADLINE_S) -> boo
     return bool(app._exit)
 
 
+def notices(app: FloatpageApp) -> list[str]:
+    """The words of the notices the App holds, oldest first."""
+    return [notification.message for notification in app._notifications]
+
+
+async def told(pilot, app: FloatpageApp, check, seconds: float = DEADLINE_S) -> bool:
+    """Until ``check(notices(app))`` holds: a notice is a message (Textual's ``notify`` posts
+    it to the App), handled a turn after the key that gave it, which may be after the key's
+    ``press`` has returned."""
+    return await until(pilot, lambda: check(notices(app)), seconds)
+
+
 def words_in(app: FloatpageApp, selector: str) -> str:
     """What the widget ``selector`` on the top screen shows ("" while there is none): for
     waiting on a form's error, which comes a few messages after the Enter that asked."""

@@ -9,7 +9,10 @@ import pytest
 
 from floatpage.model import BlockItem, CalendarItem, Page, Project, load_project, save_project
 
-from editor_helpers import back_on_editor, dialog_shown, editor, screen_of, until
+from editor_helpers import (
+    back_on_editor, dialog_shown, editor, keys_go_straight_in, press_then_quit, screen_of, told,
+    until,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -31,8 +34,7 @@ async def test_1_export_after_save_leaves_the_project_saved(project_path):
         await app.workers.wait_for_complete()
         await pilot.pause()
         assert not app.session.unsaved, "an export that moved nothing is no edit"
-        await pilot.press("q")
-        assert app._exit, "q quits at once: nothing is unsaved"
+        assert await press_then_quit(pilot, "q"), "q quits at once: nothing is unsaved"
 
 
 async def test_1_a_nudge_saved_then_exported_stays_saved_and_prints_as_shown(tmp_path):
@@ -60,8 +62,7 @@ async def test_1_a_nudge_saved_then_exported_stays_saved_and_prints_as_shown(tmp
         await pilot.pause()
         assert app.session.engine.positions()[moved] == shown, "the PDF is the page as shown"
         assert not app.session.unsaved, "an export after a save leaves it saved"
-        await pilot.press("q")
-        assert app._exit, "q quits at once: nothing is unsaved"
+        assert await press_then_quit(pilot, "q"), "q quits at once: nothing is unsaved"
 
 
 async def test_1_an_export_that_moves_items_is_an_edit_that_undoes(tmp_path):
@@ -75,7 +76,7 @@ async def test_1_an_export_that_moves_items_is_an_edit_that_undoes(tmp_path):
         await pilot.pause()
         assert app.session.engine.quality().overlapping_pairs == ()
         await pilot.press("ctrl+z")
-        assert "undid finalise for export" in messages(app)
+        assert await told(pilot, app, lambda said: "undid finalise for export" in said)
 
 
 async def test_2_undo_and_redo_name_the_edit_they_undo_and_redo(project_path):
@@ -84,14 +85,18 @@ async def test_2_undo_and_redo_name_the_edit_they_undo_and_redo(project_path):
         await pilot.press("o", "down", "enter")  # orientation, this page only
         assert await back_on_editor(pilot, app)
         await pilot.press("ctrl+z")
-        assert messages(app)[-1] == "undid orientation"
+        assert await told(pilot, app, lambda said: said[-1:] == ["undid orientation"]), messages(app)
         await pilot.press("ctrl+z")
+        assert await told(pilot, app, lambda said: said and said[-1] != "undid orientation"), \
+            messages(app)
         first_undo = messages(app)[-1]
         assert first_undo.startswith("undid move"), first_undo
         await pilot.press("ctrl+y")
-        assert messages(app)[-1] == first_undo.replace("undid", "redid")
+        redone = first_undo.replace("undid", "redid")
+        assert await told(pilot, app, lambda said: said[-1:] == [redone]), messages(app)
         await pilot.press("ctrl+y")
-        assert messages(app)[-1] == "redid orientation"
+        assert await told(pilot, app, lambda said: said[-1:] == ["redid orientation"]), \
+            messages(app)
 
 
 async def test_8_a_page_that_opens_with_overlaps_starts_settling(tmp_path):
@@ -134,15 +139,15 @@ async def test_13_keys_that_need_an_item_say_so_when_none_is_selected(project_pa
         for key in ("right", "plus", "x", "a"):
             app.clear_notifications()
             await pilot.press(key)
-            assert messages(app) and messages(app)[-1].endswith(
-                "select an item first (Tab, or click it)"), key
+            assert await told(pilot, app, lambda said: said and said[-1].endswith(
+                "select an item first (Tab, or click it)")), key
 
 
 async def test_13_a_second_reheat_says_the_page_is_already_settling(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("r")
         await pilot.press("r")
-        assert messages(app)[-1] == "the page is already settling"
+        assert await told(pilot, app, lambda said: said[-1:] == ["the page is already settling"])
 
 
 async def test_11_export_shows_each_warning_with_its_item_and_character(tmp_path):
@@ -163,7 +168,7 @@ async def test_11_export_shows_each_warning_with_its_item_and_character(tmp_path
 async def test_3_a_new_notice_replaces_the_last_one(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("right", "plus", "x", "r", "r")
-        await pilot.pause()
+        assert await until(pilot, lambda: keys_go_straight_in(app))  # every notice handled
         assert len(app._notifications) == 1
 
 
@@ -446,8 +451,8 @@ async def test_a_nudge_the_page_edge_stops_makes_no_edit_and_says_so(tmp_path):
             await pilot.press("tab")
         await pilot.press("right")
         assert not app.session.unsaved, "nothing moved"
-        assert messages(app)[-1] == ("front-band is at the edge of the page: "
-                                     "no room to move that way")
+        assert await told(pilot, app, lambda said: said[-1:] == [
+            "front-band is at the edge of the page: no room to move that way"]), messages(app)
         await pilot.press("up")  # up it can go
         assert app.session.unsaved
 

@@ -7,7 +7,7 @@ import shutil
 import pytest
 
 from editor_helpers import (
-    back_on_editor, editor, item, position, press_then_quit, screen_of, until, words_in,
+    back_on_editor, editor, item, position, press_then_quit, screen_of, told, until, words_in,
 )
 from floatpage.tui.app import make_app
 from floatpage.tui.key_bar import KeyBar
@@ -31,7 +31,7 @@ async def test_save_writes_every_edit_and_clears_unsaved(project_path):
         assert app.session.unsaved and "unsaved" in str(screen_of(app).query_one("#page-bar").render())
         await pilot.press("ctrl+s")
         assert not app.session.unsaved
-        assert any("saved" in message for message in notifications(app))
+        assert await told(pilot, app, lambda said: any("saved" in words for words in said))
     saved = load_project(project_path)
     block = saved.page("front").item("block")
     assert (block.x, block.y) == pytest.approx(moved, abs=0.01)

@@ -13,7 +13,8 @@ import pikepdf
 import pytest
 
 from editor_helpers import (
-    back_on_editor, dialog_shown, editor, item, position, preview_text, screen_of, type_text, until, words_in,
+    back_on_editor, dialog_shown, editor, item, notices, position, preview_text, screen_of, told,
+    type_text, until, words_in,
 )
 from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, PictureItem, PointAnchor, TextItem,
@@ -234,8 +235,8 @@ async def test_a_file_named_as_a_picture_that_is_none_is_refused(project_path):
         assert await back_on_editor(pilot, app)
         screen_of(app).insert_picture(folder / "pictures" / "fake.jpg")  # as the tree picks it
         assert "picture-1" not in app.session.page.item_ids()
-        assert any("fake.jpg" in note.message and "is not a picture" in note.message
-                   for note in app._notifications)
+        assert await told(pilot, app, lambda said: any(
+            "fake.jpg" in words and "is not a picture" in words for words in said))
         await pilot.press("ctrl+s")
     load_project(project_path)  # still opens
 
@@ -341,8 +342,8 @@ async def test_delete_the_selected_item(project_path):
         assert item(app, "caption").anchor is None  # the follower is let go
         assert "photo" not in preview_text(app)
         # and says so: the caption's link went without a word
-        said = [notification.message for notification in app._notifications]
-        assert 'deleted "photo"; "caption" no longer follows it (Ctrl+Z brings it back)' in said
+        assert await told(pilot, app, lambda said: 'deleted "photo"; "caption" no longer follows '
+                           'it (Ctrl+Z brings it back)' in said), notices(app)
 
 
 async def test_anchor_here_to_another_item_and_unanchor(project_path):
@@ -491,7 +492,7 @@ async def test_undo_and_redo_restore_items_and_positions(project_path):
         await pilot.press("ctrl+y", "ctrl+y")
         assert "block" not in app.session.page.item_ids()
         await pilot.press("ctrl+z", "ctrl+z", "ctrl+z")
-        assert any("nothing to undo" in n.message for n in app._notifications)
+        assert await told(pilot, app, lambda said: any("nothing to undo" in m for m in said))
 
 
 async def test_pages_add_switch_resize_reorient_and_remove(project_path):

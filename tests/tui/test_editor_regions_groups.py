@@ -154,8 +154,8 @@ async def test_a_held_item_stays_inside_its_region(tmp_path):
         await pilot.pause()
         select(app, "box")
         await pilot.press("J")
-        assert messages(app)[-1] == ('box is at the edge of its region "top": '
-                                     "no room to move that way")
+        assert await until(pilot, lambda: messages(app)[-1:] == [
+            'box is at the edge of its region "top": no room to move that way']), messages(app)
 
 
 async def test_a_smaller_page_size_keeps_regions_on_the_page_and_the_file_opens(tmp_path):

@@ -7,7 +7,8 @@ import pytest
 from textual.widgets import TextArea
 
 from editor_helpers import (
-    back_on_editor, dialog_shown, editor, item, keys_go_straight_in, type_text, until,
+    back_on_editor, dialog_shown, editor, item, keys_go_straight_in, notices, told, type_text,
+    until,
 )
 
 
@@ -117,7 +118,8 @@ async def test_undoing_a_group_says_it_was_the_group(project_path):
         assert item(app, "photo").group == "pics"
         await pilot.press("ctrl+z")
         assert item(app, "photo").group == ""
-        notes = [note.message for note in app._notifications]
-        assert notes[-1] == "undid group photo", notes
+        assert await told(pilot, app, lambda said: said[-1:] == ["undid group photo"]), \
+            notices(app)
         await pilot.press("ctrl+y")
-        assert [note.message for note in app._notifications][-1] == "redid group photo"
+        assert await told(pilot, app, lambda said: said[-1:] == ["redid group photo"]), \
+            notices(app)
