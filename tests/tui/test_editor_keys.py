@@ -63,7 +63,8 @@ async def test_item_actions_are_disabled_without_a_selection(project_path):
         assert screen.check_action("delete", ()) is True
 
 
-async def test_arrows_move_the_selected_item_which_is_held_then_released(project_path):
+async def test_arrows_move_the_selected_item_which_is_held_then_released(project_path,
+                                                                      held_until_let_go):
     async with editor(project_path) as (app, pilot):
         await pilot.press("tab", "tab", "tab")  # block
         x, y = position(app, "block")
@@ -409,7 +410,8 @@ async def test_pause_resume_and_reheat(project_path):
 
 
 @pytest.mark.parametrize("next_keys", [("tab",), ("plus",), ("ctrl+z",), ("right_square_bracket",)])
-async def test_the_next_command_lets_go_of_a_nudged_item_first(project_path, next_keys):
+async def test_the_next_command_lets_go_of_a_nudged_item_first(project_path, next_keys,
+                                                               held_until_let_go):
     """The session ends a move before any other selection, edit, undo or page change; no
     command of the screen has to remember it (they used to, 26 times)."""
     async with editor(project_path) as (app, pilot):
