@@ -51,3 +51,14 @@ def build_project(folder: Path) -> Path:
 @pytest.fixture
 def project_path(tmp_path: Path) -> Path:
     return build_project(tmp_path / "card")
+
+
+@pytest.fixture
+def held_until_let_go(monkeypatch):
+    """A nudged item stays held until the test lets go of it (`release_held`) or a command
+    does: the editor's own release, RELEASE_AFTER_S (0.6 s) after the last arrow, came
+    between a test's keys on a loaded machine (a shuffled, slowed run beside a CPU burner),
+    and the test read an item let go by the timer instead of the state it was about."""
+    from floatpage.tui import editor_screen
+
+    monkeypatch.setattr(editor_screen, "RELEASE_AFTER_S", 600.0)

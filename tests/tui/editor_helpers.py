@@ -33,14 +33,107 @@ async def editor(path: Path, size: tuple[int, int] = SIZE, *, autostart: bool = 
         yield app, pilot
 
 
-async def until(pilot, condition, seconds: float = 10.0) -> bool:
+DEADLINE_S = 60.0  # how long a wait gives a condition: minutes on no machine we know of
+
+
+async def until(pilot, condition, seconds: float = DEADLINE_S) -> bool:
     """Wait, a tenth of a second at a time, until ``condition()`` holds, at most ``seconds``:
-    a fixed pause that suits an idle machine is too short on a loaded CI runner."""
+    a fixed pause that suits an idle machine is too short on a loaded CI runner. The deadline
+    is generous (a lost key or a broken feature still fails, only later); a test that wants
+    "never" passes a short one of its own."""
     for _ in range(int(seconds / 0.1)):
         if condition():
             return True
         await pilot.pause(0.1)
     return condition()
+
+
+def keys_go_straight_in(app: FloatpageApp) -> bool:
+    """No key is held back by the App's type-ahead (`tui.type_ahead`): no screen is still
+    opening and no dialog's answer is still on its way, so a key pressed now is handled in
+    its turn. After an Enter or Esc that answers a dialog, the keys typed next wait until
+    the answer is through, several turns of the loop later. A dialog's answer reaches the
+    editor by a callback the App runs after the dialog is off the stack (Textual's
+    `call_next`), so nothing may be left pending on the App either."""
+    waiting = app.type_ahead
+    return (waiting.opening is None and not waiting.answering and not waiting.waiting
+            and not app._next_callbacks and app._message_queue.empty())
+
+
+async def back_on_editor(pilot, app: FloatpageApp, seconds: float = DEADLINE_S) -> bool:
+    """Until every dialog is closed, its answer handled and the keys typed meanwhile handed
+    on: a dialog closes by a chain of messages (the key to its list, the list's choice, the
+    dialog's answer, the callback on the App), which one pause does not wait out on a
+    loaded machine."""
+    return await until(pilot, lambda: app.screen is app.editor and keys_go_straight_in(app),
+                       seconds)
+
+
+async def dialog_shown(pilot, app: FloatpageApp, dialog_id: str,
+                       seconds: float = DEADLINE_S) -> bool:
+    """Until the dialog ``dialog_id`` is on top, mounted, and takes the keys typed to it (the
+    keys typed while it opened are handed to it first)."""
+    return await until(pilot, lambda: app.screen.id == dialog_id and app.screen.is_mounted
+                       and keys_go_straight_in(app), seconds)
+
+
+async def answer_form(pilot, app: FloatpageApp, *keys: str, error: str = "#form-error") -> None:
+    """Press ``keys`` (Enter, or Ctrl+S) in a form, until its answer is through: the form
+    closed and its answer handled (`back_on_editor`'s test), or the form's error line says
+    something new. Either comes a few messages after the key; one pause read the form
+    still open, or the old error, on a loaded machine."""
+    before = words_in(app, error)
+    form = app.screen
+
+    def answered() -> bool:
+        if app.screen is app.editor:
+            return keys_go_straight_in(app)
+        return app.screen is form and words_in(app, error) != before
+
+    await pilot.press(*keys)
+    assert await until(pilot, answered), (app.screen.id, words_in(app, error))
+
+
+async def press_then_quit(pilot, *keys: str, seconds: float = DEADLINE_S) -> bool:
+    """Press ``keys``, the last of which quits the editor, and wait until the App exits.
+    Pilot's own ``press`` then waits for the screen to handle every message it has queued;
+    a screen the exit closes never does, and Pilot gave up after 30 s with its
+    WaitForScreenTimeout (seen under `tools/shuffled_loop.py`). So the last key is sent as
+    Pilot sends it, and the wait is for the exit alone, by the loop's clock."""
+    import asyncio
+
+    app = pilot.app
+    *first, last = keys
+    if first:
+        await pilot.press(*first)
+    await app._press_keys([last])
+    for _ in range(int(seconds / 0.1)):
+        if app._exit:
+            return True
+        await asyncio.sleep(0.1)
+    return bool(app._exit)
+
+
+def notices(app: FloatpageApp) -> list[str]:
+    """The words of the notices the App holds, oldest first."""
+    return [notification.message for notification in app._notifications]
+
+
+async def told(pilot, app: FloatpageApp, check, seconds: float = DEADLINE_S) -> bool:
+    """Until ``check(notices(app))`` holds: a notice is a message (Textual's ``notify`` posts
+    it to the App), handled a turn after the key that gave it, which may be after the key's
+    ``press`` has returned."""
+    return await until(pilot, lambda: check(notices(app)), seconds)
+
+
+def words_in(app: FloatpageApp, selector: str) -> str:
+    """What the widget ``selector`` on the top screen shows ("" while there is none): for
+    waiting on a form's error, which comes a few messages after the Enter that asked."""
+    from textual.css.query import NoMatches
+    try:
+        return str(app.screen.query_one(selector).render())
+    except NoMatches:
+        return ""
 
 
 def screen_of(app: FloatpageApp) -> EditorScreen:

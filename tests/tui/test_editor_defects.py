@@ -9,7 +9,10 @@ import pytest
 
 from floatpage.model import BlockItem, CalendarItem, Page, Project, load_project, save_project
 
-from editor_helpers import editor, screen_of, until
+from editor_helpers import (
+    back_on_editor, dialog_shown, editor, keys_go_straight_in, press_then_quit, screen_of, told,
+    until,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -31,8 +34,7 @@ async def test_1_export_after_save_leaves_the_project_saved(project_path):
         await app.workers.wait_for_complete()
         await pilot.pause()
         assert not app.session.unsaved, "an export that moved nothing is no edit"
-        await pilot.press("q")
-        assert app._exit, "q quits at once: nothing is unsaved"
+        assert await press_then_quit(pilot, "q"), "q quits at once: nothing is unsaved"
 
 
 async def test_1_a_nudge_saved_then_exported_stays_saved_and_prints_as_shown(tmp_path):
@@ -60,8 +62,7 @@ async def test_1_a_nudge_saved_then_exported_stays_saved_and_prints_as_shown(tmp
         await pilot.pause()
         assert app.session.engine.positions()[moved] == shown, "the PDF is the page as shown"
         assert not app.session.unsaved, "an export after a save leaves it saved"
-        await pilot.press("q")
-        assert app._exit, "q quits at once: nothing is unsaved"
+        assert await press_then_quit(pilot, "q"), "q quits at once: nothing is unsaved"
 
 
 async def test_1_an_export_that_moves_items_is_an_edit_that_undoes(tmp_path):
@@ -75,22 +76,27 @@ async def test_1_an_export_that_moves_items_is_an_edit_that_undoes(tmp_path):
         await pilot.pause()
         assert app.session.engine.quality().overlapping_pairs == ()
         await pilot.press("ctrl+z")
-        assert "undid finalise for export" in messages(app)
+        assert await told(pilot, app, lambda said: "undid finalise for export" in said)
 
 
 async def test_2_undo_and_redo_name_the_edit_they_undo_and_redo(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("tab", "right")  # move the first item
         await pilot.press("o", "down", "enter")  # orientation, this page only
+        assert await back_on_editor(pilot, app)
         await pilot.press("ctrl+z")
-        assert messages(app)[-1] == "undid orientation"
+        assert await told(pilot, app, lambda said: said[-1:] == ["undid orientation"]), messages(app)
         await pilot.press("ctrl+z")
+        assert await told(pilot, app, lambda said: said and said[-1] != "undid orientation"), \
+            messages(app)
         first_undo = messages(app)[-1]
         assert first_undo.startswith("undid move"), first_undo
         await pilot.press("ctrl+y")
-        assert messages(app)[-1] == first_undo.replace("undid", "redid")
+        redone = first_undo.replace("undid", "redid")
+        assert await told(pilot, app, lambda said: said[-1:] == [redone]), messages(app)
         await pilot.press("ctrl+y")
-        assert messages(app)[-1] == "redid orientation"
+        assert await told(pilot, app, lambda said: said[-1:] == ["redid orientation"]), \
+            messages(app)
 
 
 async def test_8_a_page_that_opens_with_overlaps_starts_settling(tmp_path):
@@ -99,7 +105,7 @@ async def test_8_a_page_that_opens_with_overlaps_starts_settling(tmp_path):
         BlockItem(id=f"b{k}", x=100.0 + k, y=140.0 + k, w=30.0, h=30.0) for k in range(8)])]), path)
     async with editor(path, autostart=True) as (app, pilot):
         assert not app.session.engine.settled
-        await settle_live(app, pilot, seconds=10.0)
+        await settle_live(app, pilot)
         assert app.session.engine.quality().overlapping_pairs == ()
 
 
@@ -133,15 +139,15 @@ async def test_13_keys_that_need_an_item_say_so_when_none_is_selected(project_pa
         for key in ("right", "plus", "x", "a"):
             app.clear_notifications()
             await pilot.press(key)
-            assert messages(app) and messages(app)[-1].endswith(
-                "select an item first (Tab, or click it)"), key
+            assert await told(pilot, app, lambda said: said and said[-1].endswith(
+                "select an item first (Tab, or click it)")), key
 
 
 async def test_13_a_second_reheat_says_the_page_is_already_settling(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("r")
         await pilot.press("r")
-        assert messages(app)[-1] == "the page is already settling"
+        assert await told(pilot, app, lambda said: said[-1:] == ["the page is already settling"])
 
 
 async def test_11_export_shows_each_warning_with_its_item_and_character(tmp_path):
@@ -162,7 +168,7 @@ async def test_11_export_shows_each_warning_with_its_item_and_character(tmp_path
 async def test_3_a_new_notice_replaces_the_last_one(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("right", "plus", "x", "r", "r")
-        await pilot.pause()
+        assert await until(pilot, lambda: keys_go_straight_in(app))  # every notice handled
         assert len(app._notifications) == 1
 
 
@@ -185,7 +191,8 @@ async def test_12_saving_after_an_insert_or_delete_keeps_the_spacing(tmp_path):
         assert path.read_text() == original
 
 
-async def settle_live(app, pilot, seconds: float = 30.0) -> None:
+async def settle_live(app, pilot, seconds: float = 120.0) -> None:
+    """Until the page is at rest, at most ``seconds`` (the assertions after it tell)."""
     for _ in range(int(seconds / 0.05)):
         await pilot.pause(0.05)
         if screen_of(app).at_rest:  # settled, and the no-overlap pass done
@@ -214,6 +221,8 @@ async def test_9_turning_the_page_ends_with_no_overlap_and_nothing_off_it(tmp_pa
     create("card", path)
     async with editor(path, autostart=True) as (app, pilot):
         await pilot.press("o", "down", "enter")  # this page only
+        assert await back_on_editor(pilot, app)
+        assert app.session.page.orientation == "landscape"
         await settle_live(app, pilot)
         quality = app.session.engine.quality()
         assert app.session.engine.settled
@@ -358,10 +367,9 @@ async def test_a_smaller_page_size_ends_with_no_overlap_and_nothing_off_it(tmp_p
         await pilot.pause()
         assert app.screen.id == "page-size-dialog"
         await pilot.press("home", *["down"] * target, "enter")
-        await pilot.pause()
-        assert app.screen.id == "which-pages-dialog"
+        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
         await pilot.press("down", "enter")  # this page only
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         assert app.session.page.size == "4x6in"
         await settle_live(app, pilot)
         quality = app.session.engine.quality()
@@ -443,8 +451,8 @@ async def test_a_nudge_the_page_edge_stops_makes_no_edit_and_says_so(tmp_path):
             await pilot.press("tab")
         await pilot.press("right")
         assert not app.session.unsaved, "nothing moved"
-        assert messages(app)[-1] == ("front-band is at the edge of the page: "
-                                     "no room to move that way")
+        assert await told(pilot, app, lambda said: said[-1:] == [
+            "front-band is at the edge of the page: no room to move that way"]), messages(app)
         await pilot.press("up")  # up it can go
         assert app.session.unsaved
 
@@ -496,8 +504,9 @@ async def test_a_turned_page_keeps_the_print_safe_margin(tmp_path, project):
             engine.ids[k] for k in engine.quality().in_margin}
         await pilot.press("o")
         if len(app.session.project.pages) > 1:  # "This page only", the page tested
-            await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+            assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
             await pilot.press("down", "enter")
+        assert await back_on_editor(pilot, app)  # turned, before the wait for its rest
         await settle_live(app, pilot)
         engine = app.session.engine
         quality = engine.quality()
@@ -573,14 +582,16 @@ async def test_a_page_narrower_than_a_photo_keeps_the_photos_shape_and_says_so(t
         options = [str(o.prompt) for o in app.screen.query_one("OptionList").options]
         await pilot.press(*["down"] * (len(options) - 1 - options.index(
             next(o for o in options if o.startswith("A4")))), "enter")  # "Custom…", the last
+        assert await dialog_shown(pilot, app, "custom-size-dialog")
         app.screen.query_one("#field-width_mm").value = "60"
         app.screen.query_one("#field-height_mm").value = "200"
         await pilot.press("ctrl+s")
-        await pilot.pause()
-        if app.screen.id == "which-pages-dialog":  # an album of several pages
-            await pilot.press("end", "enter")  # this page only
+        # the album has two pages: which of them is asked
+        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        await pilot.press("end", "enter")  # this page only
+        assert await back_on_editor(pilot, app)
+        assert await until(pilot, lambda: screen_of(app).room_searches == 0)
         await app.workers.wait_for_complete()
-        await pilot.pause()
         page = app.session.page
         assert page.width_mm == 60
         for item_id, shape in shapes.items():

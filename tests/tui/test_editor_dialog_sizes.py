@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from textual.widgets import Input, OptionList
 
-from editor_helpers import editor, screen_of, until
+from editor_helpers import back_on_editor, dialog_shown, editor, screen_of, until, words_in
 
 
 def on_screen(widget, size) -> bool:
@@ -47,15 +47,14 @@ async def test_insert_dialog_at_20x6_is_still_usable(project_path):
         hint = app.screen.query_one(".dialog-hint")
         assert on_screen(hint, size) and str(hint.render()) == "Esc cancels"
         await pilot.press("down", "down", "enter")  # Colour block: its form, at 20 x 6
-        await pilot.pause()
-        assert app.screen.id == "block-dialog"
+        assert await dialog_shown(pilot, app, "block-dialog")
         colour = app.screen.query_one("#field-color", Input)
-        assert on_screen(colour, size)
+        assert await until(pilot, lambda: on_screen(colour, size))  # once laid out
         assert on_screen(app.screen.query_one("#ok"), size)
         assert on_screen(app.screen.query_one("#cancel"), size)
         await pilot.press("enter")
-        await pilot.pause()
-        assert sum(item.kind == "block" for item in app.session.page.items) == 3
+        assert await until(pilot, lambda: sum(item.kind == "block"
+                                              for item in app.session.page.items) == 3)
 
 
 async def test_a_terminal_below_20x6_says_it_is_too_small(project_path):
@@ -68,17 +67,15 @@ async def test_a_terminal_below_20x6_says_it_is_too_small(project_path):
         assert "20 × 6" in str(notice.render()) and "18 × 5" in str(notice.render())
         assert not app.screen.query_one(".dialog").display
         await pilot.resize_terminal(19, 5)
-        await pilot.pause()
-        assert "(now 19 × 5)" in str(notice.render())
+        assert await until(pilot, lambda: "(now 19 × 5)" in words_in(app, ".too-small"))
         await pilot.resize_terminal(30, 10)
-        await pilot.pause()
-        assert not notice.display and app.screen.query_one(".dialog").display
+        assert await until(pilot, lambda: not notice.display)
+        assert app.screen.query_one(".dialog").display
         # opened too small, it had no focus; it takes it once shown (0.2 s on an idle machine)
         assert await until(pilot, lambda: isinstance(app.screen.focused, OptionList)), \
             app.screen.focused
         await pilot.press("escape")
-        await pilot.pause()
-        assert app.screen is screen_of(app)
+        assert await back_on_editor(pilot, app)
 
 
 async def test_the_edit_form_uses_a_tall_terminal(project_path):
@@ -86,9 +83,9 @@ async def test_the_edit_form_uses_a_tall_terminal(project_path):
     async with editor(project_path, size=size) as (app, pilot):
         screen_of(app).selected_id = "title"
         await pilot.press("enter")
-        await pilot.pause()
+        assert await dialog_shown(pilot, app, "edit-dialog")
         fields = app.screen.query_one(".form-fields")
-        assert fields.size.height > 11
+        assert await until(pilot, lambda: fields.size.height > 11)  # once laid out
         assert fields.max_scroll_y == 0  # every field of a text box in view at once
         assert on_screen(app.screen.query_one("#ok"), size)
 
@@ -98,15 +95,15 @@ async def test_the_edit_form_scrolls_on_a_short_terminal(project_path):
     async with editor(project_path, size=size) as (app, pilot):
         screen_of(app).selected_id = "title"
         await pilot.press("enter")
-        await pilot.pause()
+        assert await dialog_shown(pilot, app, "edit-dialog")
         fields = app.screen.query_one(".form-fields")
-        assert fields.max_scroll_y > 0
+        assert await until(pilot, lambda: fields.max_scroll_y > 0)  # once laid out
         assert on_screen(app.screen.query_one("#ok"), size)
         for _ in range(12):  # Tab to the last field: it scrolls into view
             await pilot.press("tab")
-        await pilot.pause()
-        focused = app.screen.focused
-        assert focused is not None and on_screen(focused, size)
+        # the scroll to the focused field comes after a refresh
+        assert await until(pilot, lambda: app.screen.focused is not None
+                           and on_screen(app.screen.focused, size))
 
 
 async def test_a_refused_field_gets_the_cursor(project_path):
@@ -114,14 +111,15 @@ async def test_a_refused_field_gets_the_cursor(project_path):
     cursor goes there (it stayed in the height field, where the user had to look for it)."""
     async with editor(project_path) as (app, pilot):
         await pilot.press("S", "end", "enter")  # Custom… page size
-        await pilot.pause()
-        assert app.screen.id == "custom-size-dialog"
+        assert await dialog_shown(pilot, app, "custom-size-dialog")
         app.screen.query_one("#field-width_mm", Input).value = "5"
         app.screen.query_one("#field-height_mm", Input).focus()
+        assert await until(pilot, lambda: app.screen.focused.id == "field-height_mm")
         await pilot.press("enter")
-        await pilot.pause()
-        assert "the width must be between" in str(app.screen.query_one("#form-error").render())
-        assert app.screen.focused is app.screen.query_one("#field-width_mm")
+        assert await until(pilot, lambda: "the width must be between"
+                           in words_in(app, "#form-error"))
+        width = app.screen.query_one("#field-width_mm")
+        assert await until(pilot, lambda: app.screen.focused is width)
 
 
 async def test_a_choice_field_opens_with_every_choice_at_40x12(project_path):
@@ -133,10 +131,9 @@ async def test_a_choice_field_opens_with_every_choice_at_40x12(project_path):
     async with editor(project_path, size=size) as (app, pilot):
         screen_of(app).selected_id = "title"
         await pilot.press("enter")
-        await pilot.pause()
+        assert await dialog_shown(pilot, app, "edit-dialog")
         await pilot.press("tab", "enter")  # from the text to the font field, opened
-        await pilot.pause()
         overlay = app.screen.query_one("#field-font").query_one(SelectOverlay)
-        assert overlay.display and option_rows_shown(overlay) >= 3
+        assert await until(pilot, lambda: overlay.display and option_rows_shown(overlay) >= 3)
         assert on_screen(overlay, size)
 

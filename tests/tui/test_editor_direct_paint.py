@@ -25,7 +25,7 @@ from floatpage.tui.direct_paint import DirectPainter
 from floatpage.tui.app import make_app
 
 import editor_key_trace
-from editor_helpers import screen_of
+from editor_helpers import screen_of, until
 from test_shadow_screen import seen
 from terminal_probe import DOWN, UP, Terminal, hold_arrow
 
@@ -94,18 +94,18 @@ async def test_cells_go_past_textual_only_when_nothing_else_is_on_them():
     async with app.run_test(size=(COLUMNS, ROWS), notifications=True) as pilot:
         await pilot.pause()
         preview = screen_of(app).preview
-        assert DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
+
+        def sole_owner() -> bool:
+            return DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
+
+        # each of these shows a few messages and a screen update later: waited for, not paused
+        assert await until(pilot, sole_owner)
         app.editor.notify("a notice over the preview", timeout=30)
-        await pilot.pause()
-        await pilot.pause()
-        assert not DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
+        assert await until(pilot, lambda: not sole_owner())
         app.clear_notifications()
-        await pilot.pause()
-        await pilot.pause()
-        assert DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
+        assert await until(pilot, sole_owner)
         await pilot.press("question_mark")  # help
-        await pilot.pause()
-        assert not DirectPainter.sole_owner(preview, preview._cache.cols, preview._cache.rows)
+        assert await until(pilot, lambda: not sole_owner())
 
 
 def test_a_keys_whole_answer_is_one_write(tmp_path):

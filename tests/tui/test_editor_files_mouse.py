@@ -6,7 +6,9 @@ import shutil
 
 import pytest
 
-from editor_helpers import editor, item, position, screen_of, until
+from editor_helpers import (
+    back_on_editor, editor, item, position, press_then_quit, screen_of, told, until, words_in,
+)
 from floatpage.tui.app import make_app
 from floatpage.tui.key_bar import KeyBar
 from floatpage.model.errors import FloatpageError
@@ -23,13 +25,13 @@ async def test_save_writes_every_edit_and_clears_unsaved(project_path):
         await pilot.press("tab", "tab", "tab", "H")  # block
         screen_of(app).release_held()
         await pilot.press("t", "O", "k", "ctrl+s")  # in a form, Ctrl+S applies the form
-        await pilot.pause()
-        assert app.screen is screen_of(app)
+        assert await back_on_editor(pilot, app)
+        assert "text-1" in app.session.page.item_ids()
         moved = position(app, "block")
         assert app.session.unsaved and "unsaved" in str(screen_of(app).query_one("#page-bar").render())
         await pilot.press("ctrl+s")
         assert not app.session.unsaved
-        assert any("saved" in message for message in notifications(app))
+        assert await told(pilot, app, lambda said: any("saved" in words for words in said))
     saved = load_project(project_path)
     block = saved.page("front").item("block")
     assert (block.x, block.y) == pytest.approx(moved, abs=0.01)
@@ -94,14 +96,12 @@ async def test_export_refused_by_a_symlinked_pdf_asks_for_another_name(project_p
         assert field.value == "card-export.pdf"
         field.value = "card.pdf"  # the link again: refused in the dialog, which stays open
         await pilot.press("enter")
-        await pilot.pause()
+        assert await until(pilot, lambda: "symbolic link" in words_in(app, "#form-error"))
         assert app.screen.id == "export-dialog"
-        assert "symbolic link" in str(app.screen.query_one("#form-error").render())
         field.value = "card-export"  # .pdf is added
         await pilot.press("enter")
+        assert await back_on_editor(pilot, app)  # the answer has started the export
         await app.workers.wait_for_complete()
-        await pilot.pause()
-        assert app.screen is screen_of(app)
         pdf = project_path.with_name("card-export.pdf")
         assert pdf.read_bytes().startswith(b"%PDF"), notifications(app)
         pdf.unlink()
@@ -116,8 +116,7 @@ async def test_export_refused_by_a_symlinked_pdf_asks_for_another_name(project_p
 
 async def test_quit_without_changes_exits_at_once(project_path):
     async with editor(project_path) as (app, pilot):
-        await pilot.press("q")
-        assert app._exit
+        assert await press_then_quit(pilot, "q")
 
 
 async def test_quit_with_unsaved_changes_asks_first(project_path):
@@ -126,19 +125,19 @@ async def test_quit_with_unsaved_changes_asks_first(project_path):
         await pilot.press("q")
         assert app.screen.id == "quit-dialog" and not app._exit
         await pilot.press("down", "down", "enter")  # Keep editing
-        assert app.screen is screen_of(app) and not app._exit
+        assert await back_on_editor(pilot, app)
+        assert not app._exit
         await pilot.press("ctrl+q")
         assert app.screen.id == "quit-dialog"
-        await pilot.press("enter")  # Save and quit
-        assert app._exit and not app.session.unsaved
+        assert await press_then_quit(pilot, "enter")  # Save and quit
+        assert not app.session.unsaved
     assert load_project(project_path).page("front").item("title").decorative
 
 
 async def test_quit_discarding_changes_leaves_the_file_alone(project_path):
     before = project_path.read_text()
     async with editor(project_path) as (app, pilot):
-        await pilot.press("tab", "d", "q", "down", "enter")
-        assert app._exit
+        assert await press_then_quit(pilot, "tab", "d", "q", "down", "enter")
     assert project_path.read_text() == before
 
 
@@ -146,22 +145,22 @@ async def test_click_selects_and_drag_moves(project_path):
     async with editor(project_path) as (app, pilot):
         preview = screen_of(app).preview
         col, row = preview.cell_centre_of("block")
+        # a mouse event reaches the editor as the preview's message, a turn or more later
         await pilot.click("#preview", offset=(col, row))
-        assert screen_of(app).selected_id == "block"
+        assert await until(pilot, lambda: screen_of(app).selected_id == "block")
         x, y = position(app, "block")
         await pilot.mouse_down("#preview", offset=(col, row))
         await pilot.hover("#preview", offset=(col - 6, row + 3))
-        assert app.session.held_id == "block"
+        assert await until(pilot, lambda: app.session.held_id == "block")
         await pilot.mouse_up("#preview", offset=(col - 6, row + 3))
-        await pilot.pause()
-        assert app.session.held_id is None
+        assert await until(pilot, lambda: app.session.held_id is None)
         new_x, new_y = item(app, "block").x, item(app, "block").y
         scale = preview.projection.scale
         assert new_x - x == pytest.approx(-6 / scale, abs=0.6 / scale)
         assert new_y - y == pytest.approx(6 / scale, abs=1.1 / scale)
         page = preview.projection
         await pilot.click("#preview", offset=(page.left + 1, page.top // 2 + 1))  # empty paper
-        assert screen_of(app).selected_id is None
+        assert await until(pilot, lambda: screen_of(app).selected_id is None)
 
 
 async def test_help_lists_every_command(project_path):
@@ -169,13 +168,20 @@ async def test_help_lists_every_command(project_path):
         await pilot.press("question_mark")
         assert app.screen.id == "help"
         help_widget = app.screen.query_one("#help-text")
-        lines = [strip.text for strip in help_widget.render_lines(help_widget.region.reset_offset)]
-        text = " ".join(" ".join(lines).split())
+
+        def shown() -> str:
+            lines = [strip.text
+                     for strip in help_widget.render_lines(help_widget.region.reset_offset)]
+            return " ".join(" ".join(lines).split())
+
+        last = COMMANDS[-1]
+        assert await until(pilot, lambda: key_label(last.keys) in shown())  # laid out
+        text = shown()
         for command in COMMANDS:
             assert " ".join(command.help.split()) in text or command.help[:30] in text, command.help
             assert key_label(command.keys) in text
         await pilot.press("escape")
-        assert app.screen is screen_of(app)
+        assert await back_on_editor(pilot, app)
 
 
 async def test_every_command_is_in_the_palette_and_runs_from_it(project_path):
@@ -264,13 +270,12 @@ async def test_the_footer_fits_itself_again_when_the_terminal_is_resized(project
     the width (user-walk-2)."""
     async with editor(project_path, size=(80, 24)) as (app, pilot):
         narrow = footer_actions(app)
-        await pilot.resize_terminal(160, 40)
-        await pilot.pause()
+        await pilot.resize_terminal(160, 40)  # the footer hears of it a few messages later
+        assert await until(pilot, lambda: len(footer_actions(app)) > len(narrow))
         wide = footer_actions(app)
-        assert len(wide) > len(narrow) and set(narrow) <= set(wide)
+        assert set(narrow) <= set(wide)
         await pilot.resize_terminal(80, 24)
-        await pilot.pause()
-        assert footer_actions(app) == narrow
+        assert await until(pilot, lambda: footer_actions(app) == narrow)
         assert screen_of(app).query_one(KeyBar).render().cell_len <= 80
 
 
@@ -295,12 +300,11 @@ async def test_brackets_in_titles_and_errors_are_shown_as_typed(project_path):
     async with editor(project_path) as (app, pilot):
         assert "[draft] card" in str(screen_of(app).query_one("#page-bar").render())
         await pilot.press("b", "ctrl+a", "ctrl+k", *"[red", "enter")
-        assert '"[red"' in str(app.screen.query_one("#form-error").render())
+        assert await until(pilot, lambda: '"[red"' in words_in(app, "#form-error"))
         await pilot.press("escape", "x")  # nothing selected: a plain-text warning
         await pilot.press("tab")
         screen_of(app).notify("[bold]literal[/bold]")
-        await pilot.pause()
-        assert app.screen is screen_of(app)
+        assert await back_on_editor(pilot, app)
 
 
 async def test_6_the_footer_is_there_from_the_first_frame_and_follows_a_key_at_once(project_path):
@@ -323,5 +327,4 @@ async def test_a_click_on_a_footer_key_runs_its_command(project_path):
         bar.render()
         start, end, _ = next(span for span in bar.spans if span[2] == "help")
         await pilot.click(KeyBar, offset=(start + 1, 0))
-        await pilot.pause()
-        assert app.screen.id == "help"
+        assert await until(pilot, lambda: app.screen.id == "help")

@@ -13,7 +13,8 @@ def guide_pixels(app) -> set[tuple[int, int]]:
     return set(zip(cols.tolist(), rows.tolist()))
 
 
-async def test_a_moving_item_shows_the_guide_it_sits_on_and_a_still_page_none(project_path):
+async def test_a_moving_item_shows_the_guide_it_sits_on_and_a_still_page_none(
+        project_path, held_until_let_go):
     async with editor(project_path, size=(100, 40)) as (app, pilot):
         assert guide_pixels(app) == set()
         screen_of(app).selected_id = "block"  # its centre is level with the photo's (85 mm)

@@ -12,7 +12,10 @@ from pathlib import Path
 import pikepdf
 import pytest
 
-from editor_helpers import editor, item, position, preview_text, screen_of, type_text, until
+from editor_helpers import (
+    back_on_editor, dialog_shown, editor, item, notices, position, preview_text, screen_of, told,
+    type_text, until, words_in,
+)
 from floatpage.model.document import (
     Background, BlockItem, CalendarItem, ItemAnchor, PictureItem, PointAnchor, TextItem,
 )
@@ -60,7 +63,8 @@ async def test_item_actions_are_disabled_without_a_selection(project_path):
         assert screen.check_action("delete", ()) is True
 
 
-async def test_arrows_move_the_selected_item_which_is_held_then_released(project_path):
+async def test_arrows_move_the_selected_item_which_is_held_then_released(project_path,
+                                                                      held_until_let_go):
     async with editor(project_path) as (app, pilot):
         await pilot.press("tab", "tab", "tab")  # block
         x, y = position(app, "block")
@@ -165,7 +169,7 @@ async def test_insert_a_text_box(project_path):
         await pilot.press("t")
         await type_text(pilot, "Hello there")
         await pilot.press("ctrl+s")
-        await pilot.pause()
+        assert await until(pilot, lambda: "text-1" in app.session.page.item_ids())
         new = item(app, "text-1")
         assert isinstance(new, TextItem) and new.text == "Hello there"
         assert screen_of(app).selected_id == "text-1"
@@ -176,9 +180,10 @@ async def test_an_empty_text_is_refused_in_the_dialog(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("t", "ctrl+s")
         assert app.screen.id == "text-dialog"
-        assert "type some text" in str(app.screen.query_one("#form-error").render())
+        assert await until(pilot, lambda: "type some text" in words_in(app, "#form-error"))
         await pilot.press("escape")
-        assert app.screen is screen_of(app) and "text-1" not in app.session.page.item_ids()
+        assert await back_on_editor(pilot, app)
+        assert "text-1" not in app.session.page.item_ids()
 
 
 async def test_insert_a_picture_from_the_file_picker(project_path):
@@ -188,7 +193,7 @@ async def test_insert_a_picture_from_the_file_picker(project_path):
         await pilot.press("tab")  # from the tree to the path field
         await type_text(pilot, "pictures/second.png")
         await pilot.press("enter")
-        await pilot.pause()
+        assert await until(pilot, lambda: "picture-1" in app.session.page.item_ids())
         new = item(app, "picture-1")
         assert isinstance(new, PictureItem) and new.path == "pictures/second.png"
         assert new.h / new.w == pytest.approx(2.0)  # the file is 20 x 40 pixels
@@ -205,12 +210,13 @@ async def test_the_picture_dialog_takes_what_the_typesetter_reads(project_path):
         await pilot.press("p", "tab")
         await type_text(pilot, "notes.txt")
         await pilot.press("enter")
+        assert await until(pilot, lambda: ".pdf" in words_in(app, "#picture-error"))
         error = str(app.screen.query_one("#picture-error").render())
         assert app.screen.id == "picture-dialog" and ".pdf" in error and ".jpg" in error
         await pilot.press("ctrl+a", "ctrl+k")
         await type_text(pilot, "logo.pdf")
         await pilot.press("enter")
-        await pilot.pause()
+        assert await until(pilot, lambda: "picture-1" in app.session.page.item_ids())
         assert item(app, "picture-1").path == "logo.pdf"
 
 
@@ -224,14 +230,14 @@ async def test_a_file_named_as_a_picture_that_is_none_is_refused(project_path):
         await pilot.press("p", "tab")
         await type_text(pilot, "pictures/fake.jpg")
         await pilot.press("enter")
-        error = str(app.screen.query_one("#picture-error").render())
-        assert app.screen.id == "picture-dialog" and "is not a picture" in error
+        assert await until(pilot, lambda: "is not a picture" in words_in(app, "#picture-error"))
+        assert app.screen.id == "picture-dialog"
         await pilot.press("escape")
+        assert await back_on_editor(pilot, app)
         screen_of(app).insert_picture(folder / "pictures" / "fake.jpg")  # as the tree picks it
-        await pilot.pause()
         assert "picture-1" not in app.session.page.item_ids()
-        assert any("fake.jpg" in note.message and "is not a picture" in note.message
-                   for note in app._notifications)
+        assert await told(pilot, app, lambda said: any(
+            "fake.jpg" in words and "is not a picture" in words for words in said))
         await pilot.press("ctrl+s")
     load_project(project_path)  # still opens
 
@@ -239,11 +245,14 @@ async def test_a_file_named_as_a_picture_that_is_none_is_refused(project_path):
 async def test_insert_a_picture_by_walking_the_tree(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("p")
-        await pilot.pause()
+        assert await dialog_shown(pilot, app, "picture-dialog")
+        tree = app.screen.query_one("#picture-tree")
+        # the tree reads each folder in a worker: a key before it is read moves nowhere
+        assert await until(pilot, lambda: tree.root.children)
         await pilot.press("down", "enter")  # open "pictures"
-        await pilot.pause()
+        assert await until(pilot, lambda: tree.cursor_node.children)
         await pilot.press("down", "enter")  # photo.png (sorted before second.png)
-        await pilot.pause()
+        assert await until(pilot, lambda: "picture-1" in app.session.page.item_ids())
         assert item(app, "picture-1").path == "pictures/photo.png"
 
 
@@ -252,16 +261,16 @@ async def test_insert_a_block_and_a_calendar_from_the_insert_menu(project_path):
         await pilot.press("i")
         assert app.screen.id == "insert-dialog"
         await pilot.press("down", "down", "enter")  # Colour block
-        assert app.screen.id == "block-dialog"
+        assert await until(pilot, lambda: app.screen.id == "block-dialog")
         await pilot.press("ctrl+a", "ctrl+k")
         await type_text(pilot, "#123456")
         await pilot.press("enter")
-        await pilot.pause()
+        assert await until(pilot, lambda: "block-1" in app.session.page.item_ids())
         block = item(app, "block-1")
         assert isinstance(block, BlockItem) and block.color == "#123456"
         await pilot.press("c")
         await pilot.press("ctrl+s")
-        await pilot.pause()
+        assert await until(pilot, lambda: "calendar-1" in app.session.page.item_ids())
         assert isinstance(item(app, "calendar-1"), CalendarItem)
 
 
@@ -270,8 +279,8 @@ async def test_a_bad_colour_is_explained_not_crashed_on(project_path):
         await pilot.press("b", "ctrl+a", "ctrl+k")
         await type_text(pilot, "red")
         await pilot.press("enter")
+        assert await until(pilot, lambda: "#rrggbb" in words_in(app, "#form-error"))
         assert app.screen.id == "block-dialog"
-        assert "#rrggbb" in str(app.screen.query_one("#form-error").render())
 
 
 async def test_set_and_clear_the_background(project_path):
@@ -280,11 +289,10 @@ async def test_set_and_clear_the_background(project_path):
         await pilot.press("ctrl+a", "ctrl+k")
         await type_text(pilot, "#ffeecc")
         await pilot.press("enter")
-        await pilot.pause()
+        assert await until(pilot, lambda: app.session.page.background is not None)
         assert app.session.page.background == Background(color="#ffeecc")
         await pilot.press("g", "down", "down", "enter")  # "None"
-        await pilot.pause()
-        assert app.session.page.background is None
+        assert await until(pilot, lambda: app.session.page.background is None)
 
 
 async def test_edit_text_and_properties(project_path):
@@ -296,7 +304,7 @@ async def test_edit_text_and_properties(project_path):
         dialog.query_one("#field-font").value = "display"
         dialog.query_one("#field-color").value = "#0000ff"
         await pilot.press("ctrl+s")
-        await pilot.pause()
+        assert await until(pilot, lambda: "Happy Birthday Ben" in preview_text(app))
         title = item(app, "title")
         assert (title.text, title.font, title.color) == ("Happy Birthday Ben", "display", "#0000ff")
         assert "Happy Birthday Ben" in preview_text(app)
@@ -309,8 +317,7 @@ async def test_edit_gamma_of_a_point_anchor(project_path):
         gamma = app.screen.query_one("#field-gamma")
         gamma.value = "0.25"
         await pilot.press("ctrl+s")
-        await pilot.pause()
-        assert item(app, "month").anchor.gamma == 0.25
+        assert await until(pilot, lambda: item(app, "month").anchor.gamma == 0.25)
 
 
 async def test_toggle_decorative(project_path):
@@ -336,8 +343,8 @@ async def test_delete_the_selected_item(project_path):
         assert item(app, "caption").anchor is None  # the follower is let go
         assert "photo" not in preview_text(app)
         # and says so: the caption's link went without a word
-        said = [notification.message for notification in app._notifications]
-        assert 'deleted "photo"; "caption" no longer follows it (Ctrl+Z brings it back)' in said
+        assert await told(pilot, app, lambda said: 'deleted "photo"; "caption" no longer follows '
+                           'it (Ctrl+Z brings it back)' in said), notices(app)
 
 
 async def test_anchor_here_to_another_item_and_unanchor(project_path):
@@ -349,7 +356,8 @@ async def test_anchor_here_to_another_item_and_unanchor(project_path):
         await pilot.press("A")
         assert app.screen.id == "anchor-dialog"
         await pilot.press("enter")  # the list is in page order, without the title: photo first
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
+        assert await until(pilot, lambda: isinstance(item(app, "title").anchor, ItemAnchor))
         anchor = item(app, "title").anchor
         assert isinstance(anchor, ItemAnchor) and anchor.to == "photo"
         assert anchor.dy == pytest.approx(item(app, "title").y - item(app, "photo").y)
@@ -368,11 +376,13 @@ async def test_the_anchor_dialog_offers_no_follower_and_says_why(project_path):
         shown = " ".join(str(label.render()) for label in app.screen.query("Label"))
         assert "not offered: caption, which already follows photo (a cycle)" in shown
         await pilot.press("escape")
+        assert await back_on_editor(pilot, app)
         # a follower of a follower is a cycle too
         app.session.selected_id = "title"
         app.session.anchor_to("caption")  # title follows caption, which follows photo
         screen_of(app).selected_id = "photo"
         await pilot.press("A")
+        assert app.screen.id == "anchor-dialog"
         options = [option.prompt for option in app.screen.query_one("OptionList").options]
         assert "caption" not in options and "title" not in options and "block" in options
         shown = " ".join(str(label.render()) for label in app.screen.query("Label"))
@@ -400,7 +410,8 @@ async def test_pause_resume_and_reheat(project_path):
 
 
 @pytest.mark.parametrize("next_keys", [("tab",), ("plus",), ("ctrl+z",), ("right_square_bracket",)])
-async def test_the_next_command_lets_go_of_a_nudged_item_first(project_path, next_keys):
+async def test_the_next_command_lets_go_of_a_nudged_item_first(project_path, next_keys,
+                                                               held_until_let_go):
     """The session ends a move before any other selection, edit, undo or page change; no
     command of the screen has to remember it (they used to, 26 times)."""
     async with editor(project_path) as (app, pilot):
@@ -434,7 +445,7 @@ async def test_a_cancelled_dialog_changes_nothing(project_path):
             await pilot.press(key)
             assert app.screen.id == dialog
             await pilot.press("escape")
-            assert app.screen is screen_of(app)
+            assert await back_on_editor(pilot, app)
         assert not app.session.unsaved and not app.session.history.undo_stack
         assert screen_of(app).selected_id == "title"
 
@@ -483,7 +494,7 @@ async def test_undo_and_redo_restore_items_and_positions(project_path):
         await pilot.press("ctrl+y", "ctrl+y")
         assert "block" not in app.session.page.item_ids()
         await pilot.press("ctrl+z", "ctrl+z", "ctrl+z")
-        assert any("nothing to undo" in n.message for n in app._notifications)
+        assert await told(pilot, app, lambda said: any("nothing to undo" in m for m in said))
 
 
 async def test_pages_add_switch_resize_reorient_and_remove(project_path):
@@ -503,15 +514,18 @@ async def test_pages_add_switch_resize_reorient_and_remove(project_path):
         current = next(i for i, o in enumerate(options) if o.startswith("A5"))
         await pilot.press(*(["down"] * (index - current) if index > current
                             else ["up"] * (current - index)), "enter")
-        assert app.screen.id == "which-pages-dialog"
+        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
         await pilot.press("down", "enter")  # this page only
+        assert await back_on_editor(pilot, app)
         assert (session.page.size, session.page.width_mm, session.page.height_mm) == ("A4", 210, 297)
         await pilot.press("o", "down", "enter")  # this page only (every page asks since walk 11)
+        assert await back_on_editor(pilot, app)
         assert (session.page.orientation, session.page.width_mm) == ("landscape", 297)
         assert screen_of(app).preview.projection.width > screen_of(app).preview.projection.height
         await pilot.press("D")
         assert app.screen.id == "remove-page-dialog"
         await pilot.press("up", "enter")  # "Remove it"
+        assert await back_on_editor(pilot, app)
         assert [p.id for p in session.project.pages] == ["front", "back"]
 
 
@@ -519,6 +533,7 @@ async def test_changing_the_page_size_keeps_items_in_place_relatively(project_pa
     async with editor(project_path) as (app, pilot):
         x, y = position(app, "block")
         await pilot.press("o", "down", "enter")  # this page only
+        assert await back_on_editor(pilot, app)
         page = app.session.page
         assert (page.width_mm, page.height_mm) == (210, 148)
         assert position(app, "block") == pytest.approx((x * 210 / 148, y * 148 / 210), abs=0.01)
@@ -532,12 +547,13 @@ async def test_a_custom_page_size_and_its_orientation(project_path):
         options = [str(o.prompt) for o in app.screen.query_one("OptionList").options]
         await pilot.press(*["down"] * (len(options) - 1 - options.index(
             next(o for o in options if o.startswith("A5")))), "enter")  # "Custom…", the last
-        assert app.screen.id == "custom-size-dialog"
+        assert await dialog_shown(pilot, app, "custom-size-dialog")
         app.screen.query_one("#field-width_mm").value = "200"
         app.screen.query_one("#field-height_mm").value = "100"
         await pilot.press("ctrl+s")
-        assert app.screen.id == "which-pages-dialog"
+        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
         await pilot.press("down", "enter")  # this page only
+        assert await back_on_editor(pilot, app)
         page = app.session.page
         assert (page.size, page.width_mm, page.height_mm, page.orientation) == (
             "custom", 200, 100, "landscape")
@@ -548,7 +564,7 @@ async def test_a_custom_page_size_and_its_orientation(project_path):
 async def test_a_multi_line_text_shows_line_by_line(project_path):
     async with editor(project_path) as (app, pilot):
         await pilot.press("t", *"Line", "enter", *"Two", "ctrl+s")
-        await pilot.pause()
+        assert await until(pilot, lambda: "text-1" in app.session.page.item_ids())
         assert item(app, "text-1").text == "Line\nTwo"
         lines = preview_text(app).splitlines()
         row = next(i for i, line in enumerate(lines) if "Line" in line)
@@ -600,7 +616,7 @@ async def test_a_dialog_error_wraps_instead_of_being_cut_at_the_dialog_edge(proj
         await pilot.press("b", "ctrl+a", "ctrl+k")
         await type_text(pilot, "red")
         await pilot.press("enter")
-        await pilot.pause()
+        assert await until(pilot, lambda: "#1f77b4" in words_in(app, "#form-error"))
         error = app.screen.query_one("#form-error")
         message = str(error.render())
         assert "#1f77b4" in message
@@ -616,11 +632,12 @@ async def test_the_picture_dialog_names_where_it_looked(project_path):
         await pilot.press("p", "tab")
         await type_text(pilot, "pics/x.jpg")
         await pilot.press("enter")
+        assert await until(pilot, lambda: "not found" in words_in(app, "#picture-error"))
         error = str(app.screen.query_one("#picture-error").render())
         assert str(project_path.parent / "pics" / "x.jpg") in error
         assert "not found" in error and "pick a file in the tree" in error
         await pilot.press("ctrl+a", "ctrl+k", "enter")
-        assert "type a path" in str(app.screen.query_one("#picture-error").render())
+        assert await until(pilot, lambda: "type a path" in words_in(app, "#picture-error"))
 
 
 async def test_u_typed_right_after_the_arrows_lets_the_moved_item_float(tmp_path):

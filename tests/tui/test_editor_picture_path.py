@@ -13,18 +13,17 @@ import shutil
 from textual.widgets import Input, Label
 
 from floatpage.model import load_project
-from editor_helpers import editor, item, paint_picture, screen_of
+from editor_helpers import answer_form, dialog_shown, editor, item, paint_picture, screen_of, until
 
 
 async def open_path_field(app, pilot, item_id: str) -> Input:
     screen_of(app).selected_id = item_id
     await pilot.press("enter")
-    await pilot.pause()
-    assert app.screen.id == "edit-dialog"
+    assert await dialog_shown(pilot, app, "edit-dialog")
     field = app.screen.query_one("#field-path", Input)
     field.value = ""
-    field.focus()
-    await pilot.pause()
+    field.focus()  # given by a message: Enter pressed before it went to another field
+    assert await until(pilot, lambda: field.has_focus)
     return field
 
 
@@ -40,8 +39,7 @@ async def test_a_moved_photo_is_found_again_by_its_new_path(project_path):
         assert app.session.project.missing_pictures  # opened all the same
         field = await open_path_field(app, pilot, "photo")
         field.value = "moved/photo.png"
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         assert app.screen is screen_of(app)
         assert item(app, "photo").path == "moved/photo.png"
         await pilot.press("ctrl+s")
@@ -57,8 +55,7 @@ async def test_another_photo_keeps_its_own_shape(project_path):
         area = before.w * before.h
         field = await open_path_field(app, pilot, "photo")
         field.value = "pictures/tall.png"
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         after = item(app, "photo")
         assert abs(after.h / after.w - 3.0) < 1e-6
         assert abs(after.w * after.h - area) < 1e-6 * area
@@ -71,8 +68,7 @@ async def test_a_path_to_nothing_names_the_file_and_what_to_do(project_path):
     async with editor(project_path) as (app, pilot):
         field = await open_path_field(app, pilot, "photo")
         field.value = "pictures/gone.jpg"
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         assert app.screen.id == "edit-dialog"  # stays open, with the reason
         words = form_error(app)
         assert str(project_path.parent / "pictures" / "gone.jpg") in words
@@ -86,18 +82,15 @@ async def test_a_text_file_or_a_folder_is_refused_in_words(project_path):
     async with editor(project_path) as (app, pilot):
         field = await open_path_field(app, pilot, "photo")
         field.value = "notes.jpg"
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         words = form_error(app)
         assert str(notes) in words and "is not a picture floatpage can read" in words
         assert "use " in words  # which formats to use instead
         field.value = "pictures"
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         assert "is a folder" in form_error(app)
         field.value = ""
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         assert "type the picture's file path" in form_error(app)
         assert item(app, "photo").path == "pictures/photo.png"
 
@@ -107,10 +100,9 @@ async def test_a_missing_picture_keeps_its_other_fields_editable(project_path):
     async with editor(project_path) as (app, pilot):
         screen_of(app).selected_id = "photo"
         await pilot.press("enter")
-        await pilot.pause()
+        assert await dialog_shown(pilot, app, "edit-dialog")
         app.screen.query_one("#field-group", Input).value = "top"
-        await pilot.press("ctrl+s")
-        await pilot.pause()
+        await answer_form(pilot, app, "ctrl+s")
         assert app.screen is screen_of(app)
         assert item(app, "photo").group == "top"
 
@@ -127,8 +119,7 @@ async def test_the_refusal_names_the_full_path_when_the_project_was_opened_by_a_
         await pilot.pause()
         field = await open_path_field(app, pilot, "photo")
         field.value = "moved/photo.png"
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         assert str(project_path.parent / "moved" / "photo.png") in form_error(app)
 
 
@@ -149,8 +140,7 @@ async def test_a_project_whose_picture_is_no_picture_opens_to_be_mended(project_
         assert "unreadable" in text
         field = await open_path_field(app, pilot, "photo")
         field.value = "pictures/second.png"
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         await pilot.press("ctrl+s")
         await pilot.pause()
     assert load_project(project_path).pages[0].item("photo").path == "pictures/second.png"
@@ -180,8 +170,7 @@ async def test_a_merge_template_picture_takes_a_placeholder_path(project_path):
     async with editor(project_path) as (app, pilot):
         field = await open_path_field(app, pilot, "photo")
         field.value = "pictures/{photo}"
-        await pilot.press("enter")
-        await pilot.pause()
+        await answer_form(pilot, app, "enter")
         assert app.screen is screen_of(app)
         assert item(app, "photo").path == "pictures/{photo}"
         await pilot.press("ctrl+s")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from editor_helpers import editor, item_pixel_box, pixel, preview_text, screen_of
+from editor_helpers import editor, item_pixel_box, pixel, preview_text, screen_of, until
 from floatpage.tui.page_painter import ANCHOR, LINK, PAPER, SELECTION, SURROUND
 from floatpage.tui.projection import Projection
 from floatpage.tui.thumbnails import thumbnail
@@ -18,10 +18,10 @@ async def test_page_fits_with_its_aspect_ratio_and_refits_on_resize(project_path
         assert p.height == 2 * (preview.size.height - 2)  # the page is as tall as fits
         assert pixel(app, p.left + p.width // 2, p.top + 1) == PAPER
         assert pixel(app, 0, 0) == SURROUND
-        await pilot.resize_terminal(160, 30)
-        await pilot.pause()
+        await pilot.resize_terminal(160, 30)  # heard by the preview a few messages later
+        assert await until(pilot, lambda: (preview.projection.cols, preview.projection.rows)
+                           == (160, preview.size.height))
         q = preview.projection
-        assert (q.cols, q.rows) == (160, preview.size.height)
         assert q.height == 2 * (preview.size.height - 2)
         assert q.width / q.height == pytest.approx(148 / 210, rel=0.05)
 

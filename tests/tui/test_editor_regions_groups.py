@@ -11,7 +11,9 @@ from floatpage.model.document import (
     BlockItem, ItemAnchor, Page, PointAnchor, Project, Region, TextItem,
 )
 from floatpage.tui.page_painter import GROUP, PAPER, REGION, mix
-from editor_helpers import editor, item, pixel, position, screen_of, type_text
+from editor_helpers import (
+    editor, item, keys_go_straight_in, pixel, position, screen_of, type_text, until,
+)
 
 
 def messages(app) -> list[str]:
@@ -23,9 +25,12 @@ def select(app, item_id: str) -> None:
 
 
 async def keys(pilot, *names: str) -> None:
-    """Press the keys, then let the app handle them."""
+    """Press the keys, then wait until the app has handled them: a dialog opened by one of
+    them is open and has its keys, a dialog answered by one is closed and its answer (a
+    callback on the App) has run. One pause left that callback for later on a loaded
+    machine; the editor's own keys are handled while pressed."""
     await pilot.press(*names)
-    await pilot.pause()
+    assert await until(pilot, lambda: keys_go_straight_in(pilot.app))
 
 
 def grouped_page(path):
@@ -149,8 +154,8 @@ async def test_a_held_item_stays_inside_its_region(tmp_path):
         await pilot.pause()
         select(app, "box")
         await pilot.press("J")
-        assert messages(app)[-1] == ('box is at the edge of its region "top": '
-                                     "no room to move that way")
+        assert await until(pilot, lambda: messages(app)[-1:] == [
+            'box is at the edge of its region "top": no room to move that way']), messages(app)
 
 
 async def test_a_smaller_page_size_keeps_regions_on_the_page_and_the_file_opens(tmp_path):
@@ -222,7 +227,6 @@ async def test_a_smaller_page_size_keeps_a_groups_members_apart(tmp_path):
         await keys(pilot, "S", *["down"] * 5, "enter")  # from A4 to 4x6in
         assert app.session.page.size == "4x6in"
         await app.workers.wait_for_complete()
-        await pilot.pause()
         await keys(pilot, "ctrl+s")
     page = load_project(path).pages[0]
     title, sub = page.item("title"), page.item("sub")
@@ -249,7 +253,6 @@ async def test_a_page_too_small_for_a_photo_and_its_caption_shrinks_them_as_one(
         app.screen.query_one("#field-height_mm").value = "100"
         await keys(pilot, "ctrl+s")
         await app.workers.wait_for_complete()
-        await pilot.pause()
         engine = app.session.engine
         engine.advance(20_000)
         quality = engine.quality()

@@ -10,7 +10,7 @@ from __future__ import annotations
 from textual.widgets import Checkbox, Input, Label
 
 from floatpage.model import load_project
-from editor_helpers import editor, item, screen_of
+from editor_helpers import answer_form, editor, item, screen_of
 
 
 def form_error(app) -> str:
@@ -30,9 +30,8 @@ async def region_form(app, pilot, selected: str | None = None) -> None:
     await pilot.pause()
 
 
-async def submit(pilot) -> None:
-    await pilot.press("enter")
-    await pilot.pause()
+async def submit(app, pilot) -> None:
+    await answer_form(pilot, app, "enter")
 
 
 async def test_a_new_region_with_nothing_selected_is_the_top_two_thirds(project_path):
@@ -41,7 +40,7 @@ async def test_a_new_region_with_nothing_selected_is_the_top_two_thirds(project_
         await region_form(app, pilot)
         assert app.screen.id == "region-dialog"
         assert not app.screen.query(Checkbox)  # no item to keep inside it
-        await submit(pilot)
+        await submit(app, pilot)
         page = app.session.page
         assert [(r.id, r.left, r.top, r.w, r.h) for r in page.regions] == \
             [("region-1", 0.0, 0.0, 148.0, 140.0)]
@@ -51,7 +50,7 @@ async def test_a_region_around_the_selected_photo_keeps_it_inside_and_is_saved(p
     async with editor(project_path) as (app, pilot):
         await region_form(app, pilot, "photo")
         await type_into(app, pilot, "id", "photos")
-        await submit(pilot)
+        await submit(app, pilot)
         assert app.screen is screen_of(app)
         region = app.session.page.region("photos")
         photo = item(app, "photo")
@@ -69,14 +68,14 @@ async def test_a_region_too_small_or_past_the_page_keeps_the_form_open(project_p
     async with editor(project_path) as (app, pilot):
         await region_form(app, pilot, "photo")
         await type_into(app, pilot, "w", "20")
-        await submit(pilot)
+        await submit(app, pilot)
         assert app.screen.id == "region-dialog"
         assert '"photo" is 60.0 x 45.0 mm, larger than the region' in form_error(app)
         await type_into(app, pilot, "w", "200")
-        await submit(pilot)
+        await submit(app, pilot)
         assert "reaches outside the page" in form_error(app)
         await type_into(app, pilot, "w", "abc")
-        await submit(pilot)
+        await submit(app, pilot)
         assert 'the width must be a number (not "abc")' in form_error(app)
         assert app.session.page.regions == [] and item(app, "photo").region == ""
 
@@ -85,19 +84,19 @@ async def test_a_region_is_renamed_resized_removed_and_brought_back(project_path
     async with editor(project_path) as (app, pilot):
         await region_form(app, pilot, "photo")
         await type_into(app, pilot, "id", "photos")
-        await submit(pilot)
+        await submit(app, pilot)
         await pilot.press("R")  # the photo's own region, to change
-        await pilot.pause()
+        assert app.screen.id == "region-dialog"
         assert app.screen.query_one("#field-id", Input).value == "photos"
         await type_into(app, pilot, "id", "pictures")
         await type_into(app, pilot, "h", "100")
-        await submit(pilot)
+        await submit(app, pilot)
         page = app.session.page
         assert [r.id for r in page.regions] == ["pictures"] and page.regions[0].h == 100.0
         assert item(app, "photo").region == "pictures"
         await region_form(app, pilot)
         await type_into(app, pilot, "id", "")  # an empty name removes it
-        await submit(pilot)
+        await submit(app, pilot)
         assert app.session.page.regions == [] and item(app, "photo").region == ""
         await pilot.press("ctrl+z")
         await pilot.pause()
@@ -109,8 +108,8 @@ async def test_two_regions_cannot_share_a_name(project_path):
     async with editor(project_path) as (app, pilot):
         screen_of(app).selected_id = None
         await region_form(app, pilot)
-        await submit(pilot)
+        await submit(app, pilot)
         await region_form(app, pilot, "block")
         await type_into(app, pilot, "id", "region-1")
-        await submit(pilot)
+        await submit(app, pilot)
         assert 'a region "region-1" already' in form_error(app)

@@ -6,7 +6,10 @@ from __future__ import annotations
 import pytest
 from textual.widgets import TextArea
 
-from editor_helpers import editor, item, type_text
+from editor_helpers import (
+    back_on_editor, dialog_shown, editor, item, keys_go_straight_in, notices, told, type_text,
+    until,
+)
 
 
 async def test_the_edit_form_opens_with_the_cursor_after_the_words(project_path):
@@ -17,14 +20,15 @@ async def test_the_edit_form_opens_with_the_cursor_after_the_words(project_path)
         app.editor.selected_id = "title"
         await pilot.pause()
         await pilot.press("enter")
-        await pilot.pause()
+        assert await dialog_shown(pilot, app, "edit-dialog")
         area = app.screen.query_one(TextArea)
-        assert area.has_focus
-        assert area.cursor_location == area.document.end
+        # the focus and the cursor's move to the end come a message and a refresh later
+        assert await until(pilot, lambda: area.has_focus
+                           and area.cursor_location == area.document.end), \
+            (area.has_focus, area.cursor_location)
         await type_text(pilot, " and Ben")
         await pilot.press("ctrl+s")
-        await pilot.pause()
-        assert item(app, "title").text == "Happy Birthday Anna and Ben"
+        assert await until(pilot, lambda: item(app, "title").text == "Happy Birthday Anna and Ben")
 
 
 def sizes(project) -> list[tuple[str, float, float]]:
@@ -40,7 +44,9 @@ async def choose_size(app, pilot, name: str) -> None:
     await pilot.press("home", *["down"] * next(
         index for index, option in enumerate(options) if option.startswith(name + " ")),
         "enter")
-    await pilot.pause()
+    # until the list's answer is through: the next question open, or the size taken
+    assert await until(pilot, lambda: app.screen.id != "page-size-dialog"
+                       and keys_go_straight_in(app))
 
 
 async def test_a_page_size_for_every_page_is_one_undo_step_and_is_saved(project_path):
@@ -57,17 +63,15 @@ async def test_a_page_size_for_every_page_is_one_undo_step_and_is_saved(project_
         await choose_size(app, pilot, "A6")
         assert app.screen.id == "which-pages-dialog"
         await pilot.press("enter")  # highlighted: every page (both are A5)
+        assert await back_on_editor(pilot, app)  # the answer has started the room searches
         await app.workers.wait_for_complete()
-        await pilot.pause()
         project = app.session.project
         assert sizes(project) == [("A6", 105.0, 148.0)] * 2
         back = project.pages[1].item("greeting")
         assert (back.x, back.y) == pytest.approx((x * 105 / 148, y * 148 / 210), abs=1.5)
         await pilot.press("ctrl+z")
-        await pilot.pause()
         assert sizes(app.session.project) == [("A5", 148.0, 210.0)] * 2
         await pilot.press("ctrl+y", "ctrl+s")
-        await pilot.pause()
         assert not app.session.unsaved
     assert sizes(load_project(project_path)) == [("A6", 105.0, 148.0)] * 2
 
@@ -79,14 +83,14 @@ async def test_this_page_only_keeps_the_others_and_is_offered_first_where_sizes_
     async with editor(project_path) as (app, pilot):
         await choose_size(app, pilot, "A6")
         await pilot.press("down", "enter")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         assert sizes(app.session.project) == [("A6", 105.0, 148.0), ("A5", 148.0, 210.0)]
         await choose_size(app, pilot, "A4")
         options = app.screen.query_one("OptionList")
         assert str(options.get_option_at_index(options.highlighted).prompt) \
             == "This page only (front)"
         await pilot.press("escape")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         assert sizes(app.session.project) == [("A6", 105.0, 148.0), ("A5", 148.0, 210.0)]
 
 
@@ -107,16 +111,15 @@ async def test_undoing_a_group_says_it_was_the_group(project_path):
         app.editor.selected_id = "photo"
         await pilot.pause()
         await pilot.press("G")
-        await pilot.pause()
+        assert app.screen.id == "group-dialog"
         await type_text(pilot, "pics")
         await pilot.press("enter")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         assert item(app, "photo").group == "pics"
         await pilot.press("ctrl+z")
-        await pilot.pause()
         assert item(app, "photo").group == ""
-        notes = [note.message for note in app._notifications]
-        assert notes[-1] == "undid group photo", notes
+        assert await told(pilot, app, lambda said: said[-1:] == ["undid group photo"]), \
+            notices(app)
         await pilot.press("ctrl+y")
-        await pilot.pause()
-        assert [note.message for note in app._notifications][-1] == "redid group photo"
+        assert await told(pilot, app, lambda said: said[-1:] == ["redid group photo"]), \
+            notices(app)

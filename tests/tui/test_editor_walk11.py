@@ -7,7 +7,7 @@ import shutil
 import threading
 from pathlib import Path
 
-from editor_helpers import editor, until
+from editor_helpers import back_on_editor, editor, until, words_in
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -28,22 +28,19 @@ async def test_turning_every_page_is_one_undo_step_and_is_saved(project_path):
         greeting = app.session.project.pages[1].item("greeting")  # on the back
         x, y = greeting.x, greeting.y
         await pilot.press("o")
-        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
         assert app.screen.id == "which-pages-dialog"
         await pilot.press("enter")  # highlighted: every page (both are portrait)
-        await until(pilot, lambda: app.screen is app.editor)
+        assert await back_on_editor(pilot, app)  # the answer has started the room searches
         await app.workers.wait_for_complete()
-        await pilot.pause()
         project = app.session.project
         assert turns(project) == [("landscape", 210.0, 148.0)] * 2
         assert app.session.pages_edited >= {"front", "back"}
         back = project.pages[1].item("greeting")
         assert abs(back.x - x * 210 / 148) < 1.5 and abs(back.y - y * 148 / 210) < 1.5
         await pilot.press("ctrl+z")
-        await pilot.pause()
         assert turns(app.session.project) == [("portrait", 148.0, 210.0)] * 2
         await pilot.press("ctrl+y", "ctrl+s")
-        await pilot.pause()
         assert not app.session.unsaved
     assert turns(load_project(project_path)) == [("landscape", 210.0, 148.0)] * 2
 
@@ -53,9 +50,9 @@ async def test_turning_this_page_only_keeps_the_others_and_is_offered_first_then
     front, would turn it back to the orientation every other page has: nothing to ask."""
     async with editor(project_path) as (app, pilot):
         await pilot.press("o")
-        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
         await pilot.press("down", "enter")  # this page only
-        await until(pilot, lambda: app.screen is app.editor)
+        assert await back_on_editor(pilot, app)
         assert turns(app.session.project) == [("landscape", 210.0, 148.0),
                                               ("portrait", 148.0, 210.0)]
         await pilot.press("o")
@@ -65,12 +62,12 @@ async def test_turning_this_page_only_keeps_the_others_and_is_offered_first_then
         await pilot.press("pagedown")  # to the back, portrait among portrait pages
         await pilot.pause()
         await pilot.press("o")
-        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
         options = app.screen.query_one("OptionList")
         assert str(options.get_option_at_index(options.highlighted).prompt) \
             == "Every page (2)"
         await pilot.press("escape")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         assert turns(app.session.project) == [("portrait", 148.0, 210.0)] * 2
 
 
@@ -100,13 +97,13 @@ async def test_the_picture_dialog_does_not_offer_the_projects_own_pdf(project_pa
         assert "card.pdf" not in tree_names(app) and "pictures" in tree_names(app)
         await pilot.press("tab")
         await pilot.press(*"card.pdf")
-        await until(pilot, lambda: app.screen.query_one("#picture-path").value == "card.pdf")
+        assert await until(pilot, lambda: app.screen.query_one("#picture-path").value == "card.pdf")
         await pilot.press("enter")
-        await pilot.pause()
-        error = str(app.screen.query_one("#picture-error").render())
-        assert app.screen.id == "picture-dialog" and "own PDF" in error, error
+        assert await until(pilot, lambda: "own PDF" in words_in(app, "#picture-error")), \
+            words_in(app, "#picture-error")
+        assert app.screen.id == "picture-dialog"
         await pilot.press("escape")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         assert "picture-1" not in app.session.page.item_ids()
 
 
@@ -126,14 +123,14 @@ async def test_a_smaller_size_on_every_page_keeps_the_gutter_where_settle_keeps_
                for page in project.pages)
     async with editor(path, autostart=True) as (app, pilot):  # running: the save settles
         await pilot.press("S")
-        await until(pilot, lambda: app.screen.id == "page-size-dialog")
+        assert await until(pilot, lambda: app.screen.id == "page-size-dialog")
         options = [str(option.prompt) for option in app.screen.query_one("OptionList").options]
         await pilot.press("home", *["down"] * next(
             index for index, option in enumerate(options) if option.startswith("A6 ")),
             "enter")
-        await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
         await pilot.press("enter")  # every page
-        await until(pilot, lambda: app.screen is app.editor)
+        assert await back_on_editor(pilot, app)
         assert await until(pilot, lambda: not app.session.room_wanted
                            and not app.editor.room_searches, 240)
         await app.workers.wait_for_complete()
@@ -175,13 +172,13 @@ def hold_room_searches(app) -> threading.Event:
 
 async def every_page_a6(app, pilot) -> None:
     await pilot.press("S")
-    await until(pilot, lambda: app.screen.id == "page-size-dialog")
+    assert await until(pilot, lambda: app.screen.id == "page-size-dialog")
     options = [str(option.prompt) for option in app.screen.query_one("OptionList").options]
     await pilot.press("home", *["down"] * next(
         index for index, option in enumerate(options) if option.startswith("A6 ")), "enter")
-    await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+    assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
     await pilot.press("enter")  # every page
-    await until(pilot, lambda: app.screen is app.editor)
+    assert await back_on_editor(pilot, app)
 
 
 def overlaps_in(path: Path) -> dict[str, int]:
@@ -243,9 +240,9 @@ async def test_save_and_quit_right_after_a_new_page_size_waits_for_the_room(tmp_
         await every_page_a6(app, pilot)
         assert app.editor.room_searches
         await pilot.press("q")
-        await until(pilot, lambda: app.screen.id == "quit-dialog")
+        assert await until(pilot, lambda: app.screen.id == "quit-dialog")
         await pilot.press("enter")  # Save and quit, highlighted
-        await until(pilot, lambda: app.screen is app.editor)
+        assert await back_on_editor(pilot, app)
         assert "save and quit once room is found" in app.editor.state_word()
         assert app.session.unsaved
         gate.set()
@@ -271,9 +268,9 @@ async def test_photos_put_into_an_album_page_keep_its_gutter_and_margin(tmp_path
     async with editor(path, autostart=True) as (app, pilot):
         for picture in pictures:
             await pilot.press("p")
-            await until(pilot, lambda: app.screen.id == "picture-dialog")
+            assert await until(pilot, lambda: app.screen.id == "picture-dialog")
             await pilot.press("tab", *picture.relative_to(folder).as_posix(), "enter")
-            await until(pilot, lambda: app.screen is app.editor)
+            assert await back_on_editor(pilot, app)
             assert await until(pilot, lambda: app.editor.at_rest, 120)
         await pilot.press("ctrl+s")
         assert await until(pilot, lambda: not app.session.unsaved, 120)

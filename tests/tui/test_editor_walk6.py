@@ -15,7 +15,7 @@ from floatpage.model import save_project
 from floatpage.model.document import BlockItem, Page, PointAnchor, Project, Region, TextItem
 from floatpage.tui.app import make_app
 
-from editor_helpers import editor, preview_text, screen_of, until
+from editor_helpers import back_on_editor, editor, preview_text, screen_of, until
 
 ROOT = Path(__file__).resolve().parents[2]
 WORDS = ["alpha", "bravo", "charlie", "delta", "echo", "foxtrot", "golf", "hotel", "india",
@@ -117,7 +117,7 @@ async def test_the_status_line_says_what_gave_way_and_why_as_check_does(tmp_path
                            capture_output=True, text=True).stdout
     assert "gutter may not fit" in check and "96%" in check
     async with editor(path, size=(100, 34)) as (app, pilot):
-        await until(pilot, lambda: "too full" in status(app), seconds=20)
+        assert await until(pilot, lambda: "too full" in status(app))
         first, second = status(app).splitlines()[:2]
         assert "some gaps narrow" not in second
         assert re.search(r"gutter \d\.\d of 3 mm: page too full \(96% of the room\)", second)
@@ -167,9 +167,9 @@ async def test_a_new_regions_size_is_said_to_a_tenth_of_a_mm(tmp_path):
                                                      text="Hi")])]), path)
     async with editor(path) as (app, pilot):
         await pilot.press("R")
-        await pilot.pause()
+        assert app.screen.id == "region-dialog"
         await pilot.press("enter")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         said = [notification.message for notification in app._notifications]
         assert app.session.page.regions and any("made region" in m for m in said), said
         assert any('"region-1" (127 × 135.5 mm)' in m for m in said), said
@@ -179,7 +179,7 @@ async def test_at_60_columns_the_status_line_keeps_the_why(tmp_path):
     """At 60 columns the reason was cut at "(96% of t…"; the parts a user can spare go first."""
     path = crowded_page(tmp_path / "full.toml")
     async with editor(path, size=(60, 20)) as (app, pilot):
-        await until(pilot, lambda: "too full" in status(app), seconds=20)
+        assert await until(pilot, lambda: "too full" in status(app))
         second = status(app).splitlines()[1]
         assert "page too full (96% of the room)" in second
         assert len(second) <= 60 - 2  # the line fits: nothing of it is cut with "…"
@@ -204,9 +204,9 @@ async def test_a_pictures_id_beside_a_region_name_hides_no_caption(tmp_path):
         app.session.select("p1-photo-1")
         screen_of(app).after_edit()
         await pilot.press("R")
-        await pilot.pause()
+        assert app.screen.id == "region-dialog"
         await pilot.press("enter")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         assert app.session.page.regions and app.session.selected_id == "p1-photo-1"
         shown = preview_text(app)
         assert "region-1" in shown and "p1-photo-1" in shown
@@ -223,6 +223,6 @@ async def test_two_pinned_items_on_each_other_are_named_on_the_status_line(tmp_p
         TextItem(id="right", x=80.0, y=100.0, w=50.0, h=30.0, text="b",
                  anchor=PointAnchor(x=80.0, y=100.0, hard=True))])]), path)
     async with editor(path) as (app, pilot):
-        await until(pilot, lambda: "meet" in status(app), seconds=20)
+        assert await until(pilot, lambda: "meet" in status(app)), status(app)
         second = status(app).splitlines()[1]
         assert second.startswith('1 overlap: pinned "left" and "right" meet'), second

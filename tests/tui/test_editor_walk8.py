@@ -9,7 +9,7 @@ from pathlib import Path
 from floatpage.model import load_project
 from floatpage.tui.editor_screen import LOOK_AT_FILE_S
 
-from editor_helpers import editor, item, position, until
+from editor_helpers import back_on_editor, editor, item, position, press_then_quit, until
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -31,7 +31,7 @@ async def nudged_then_saved_over(pilot, path) -> str:
     await pilot.pause()
     theirs = edited_elsewhere(path)
     await pilot.press("ctrl+s")
-    await pilot.pause()
+    assert await until(pilot, lambda: pilot.app.screen.id == "changed-on-disk-dialog")
     return theirs
 
 
@@ -46,17 +46,15 @@ async def test_a_save_asks_before_replacing_changes_another_program_made_to_the_
         assert app.screen.id == "changed-on-disk-dialog"
         assert project_path.read_text() == theirs
         await pilot.press("escape")  # keep editing: nothing written, the edit still unsaved
-        await pilot.pause()
-        assert app.screen is app.editor
+        assert await back_on_editor(pilot, app)
         assert project_path.read_text() == theirs
         assert app.session.unsaved
         await pilot.press("ctrl+s")
         await pilot.pause()
         assert app.screen.id == "changed-on-disk-dialog"
         await pilot.press("home", "enter")  # "Replace it with the editor's version"
-        await pilot.pause()
-        assert app.screen is app.editor
-        assert not app.session.unsaved
+        assert await back_on_editor(pilot, app)
+        assert await until(pilot, lambda: not app.session.unsaved)
         assert "and Ben" not in project_path.read_text()
         assert project_path.with_name("card.toml.bak").read_text() == theirs
         # the editor's own save is no change by another program: the next Ctrl+S just saves
@@ -73,8 +71,7 @@ async def test_the_file_as_another_program_left_it_can_be_opened_in_its_place(pr
     async with editor(project_path) as (app, pilot):
         theirs = await nudged_then_saved_over(pilot, project_path)
         await pilot.press("home", "down", "enter")  # "Open the file as it is now"
-        await pilot.pause()
-        assert app.screen is app.editor
+        assert await back_on_editor(pilot, app)
         assert project_path.read_text() == theirs
         assert app.session.project.pages[0].item("title").text == "Happy Birthday Anna and Ben"
         assert not app.session.unsaved and not app.session.history.undo_stack
@@ -84,10 +81,10 @@ async def test_the_file_as_another_program_left_it_can_be_opened_in_its_place(pr
         assert "and Ben" in project_path.read_text()
         project_path.write_text(project_path.read_text() + "\n[[pages]\n")  # left broken
         await pilot.press("right", "ctrl+s")
-        await pilot.pause()
+        assert await until(pilot, lambda: app.screen.id == "changed-on-disk-dialog")
         await pilot.press("home", "down", "enter")
-        await pilot.pause()
-        assert app.screen is app.editor and app.session.unsaved  # the editor's version kept
+        assert await back_on_editor(pilot, app)
+        assert app.session.unsaved  # the editor's version kept
         assert "and Ben" in app.session.project.pages[0].item("title").text
 
 
@@ -100,8 +97,7 @@ async def test_keep_editing_is_not_asked_again_for_the_same_change(project_path)
         await nudged_then_saved_over(pilot, project_path)
         assert app.screen.id == "changed-on-disk-dialog"
         await pilot.press("escape")  # keep editing
-        await pilot.pause()
-        assert app.screen is app.editor
+        assert await back_on_editor(pilot, app)
         await pilot.pause(3 * LOOK_AT_FILE_S)  # the look needs two to tell a change
         assert app.screen is app.editor, app.screen.id
         project_path.write_text(project_path.read_text().replace("and Ben", "and Bea"))
@@ -121,12 +117,9 @@ async def test_save_and_quit_asks_too_and_quits_once_the_file_is_replaced(projec
         await pilot.pause()
         assert app.screen.id == "quit-dialog"
         await pilot.press("enter")  # "Save and quit" is highlighted
-        await pilot.pause()
-        assert app.screen.id == "changed-on-disk-dialog"
+        assert await until(pilot, lambda: app.screen.id == "changed-on-disk-dialog")
         x_on_screen = position(app, moved)[0]
-        await pilot.press("home", "enter")
-        await pilot.pause()
-        assert app._exit  # quit, once saved
+        assert await press_then_quit(pilot, "home", "enter")  # quit, once saved
     saved = load_project(project_path)
     assert "and Ben" not in project_path.read_text()
     assert abs(saved.pages[0].item(moved).x - x_on_screen) < 0.01
@@ -143,9 +136,9 @@ async def test_a_region_made_saved_undone_and_saved_again_is_saved(tmp_path):
         await pilot.pause()
         assert app.screen.id == "region-dialog"
         await pilot.press("enter")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
+        assert app.session.page.regions  # made
         await pilot.press("ctrl+s")
-        await pilot.pause()
         assert "[[pages.regions]]" in path.read_text()
         await pilot.press("ctrl+z", "ctrl+s")
         await pilot.pause()

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from editor_helpers import (
-    BLUE, RED, editor, item, item_pixel_box, pixel, screen_of, type_text,
+    BLUE, RED, back_on_editor, editor, item, item_pixel_box, pixel, screen_of, type_text, until,
 )
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -59,15 +59,6 @@ async def test_an_anchor_taken_off_saved_and_put_back_keeps_its_line_in_the_file
         await pilot.pause()
         assert not app.session.unsaved
     assert month_name_keys()[-2:] == ["anchor", "role"]
-
-
-async def until(pilot, condition, seconds: float = 6.0) -> bool:
-    """Let the app run (its timers too) until ``condition()`` holds, or ``seconds`` pass."""
-    for _ in range(int(seconds / 0.1)):
-        if condition():
-            return True
-        await pilot.pause(0.1)
-    return condition()
 
 
 def changed_elsewhere(path: Path) -> str:
@@ -123,8 +114,7 @@ async def test_with_nothing_unsaved_the_changed_file_opens_as_it_is_now_with_one
         assert await until(pilot, lambda: asked(app))
         assert "Nothing in the editor is unsaved" in app.screen.message
         await pilot.press("enter")
-        await pilot.pause()
-        assert app.screen is app.editor
+        assert await back_on_editor(pilot, app)
         assert app.session.project.pages[0].item("title").text == "Happy Birthday Anna and Ben"
         assert not app.session.unsaved
 
@@ -148,7 +138,7 @@ async def test_a_change_made_while_a_form_is_open_waits_until_the_form_is_done(p
         await pilot.pause()
         assert await until(pilot, lambda: asked(app))
         await pilot.press("escape")
-        await pilot.pause()
+        assert await back_on_editor(pilot, app)
         assert app.session.unsaved
         assert "xyz" in app.session.project.pages[0].item("title").text
 
@@ -202,7 +192,8 @@ async def insert_picture(pilot, path: str) -> None:
     await pilot.press("p", "tab")
     await type_text(pilot, path)
     await pilot.press("enter")
-    await pilot.pause()
+    app = pilot.app
+    assert await until(pilot, lambda: "picture-1" in app.session.page.item_ids())
 
 
 def near(colour, wanted, tolerance: int = 60) -> bool:
@@ -250,9 +241,9 @@ async def test_a_price_changed_on_the_flyer_moves_nothing(tmp_path):
         assert app.screen.id == "edit-dialog"
         app.screen.query_one("#field-text").text = new
         await pilot.press("ctrl+s")  # apply the form
-        await pilot.pause()
-        assert app.screen is app.editor and app.session.unsaved
-        await until(pilot, lambda: app.editor.at_rest, seconds=10)
+        assert await back_on_editor(pilot, app)
+        assert app.session.unsaved
+        assert await until(pilot, lambda: app.editor.at_rest)
         await pilot.press("ctrl+s")
         await pilot.pause()
         assert not app.session.unsaved

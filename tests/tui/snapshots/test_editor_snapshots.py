@@ -9,7 +9,7 @@ from __future__ import annotations
 from floatpage.tui.app import make_app
 from floatpage.tui.page_preview import PagePreview
 
-from editor_helpers import until
+from editor_helpers import dialog_shown, until
 
 
 def frozen_app(project_path):
@@ -25,6 +25,21 @@ async def select(pilot, item_id: str) -> None:
     assert await until(pilot, lambda: pilot.app.editor.query(PagePreview))
     pilot.app.editor.selected_id = item_id
     await pilot.pause()
+
+
+def opened(key: str, dialog_id: str, typed: str = ""):
+    """A snapshot's ``run_before``: ``key`` opens ``dialog_id``, and ``typed`` goes into its
+    focused field; taken once the dialog is mounted and has the words. The snapshot's own
+    ``press`` looks once, after a pause, which the keys typed ahead of a dialog (held until
+    it is mounted) can outlast on a loaded machine."""
+    async def run_before(pilot) -> None:
+        app = pilot.app
+        await pilot.press(key, *typed)
+        assert await dialog_shown(pilot, app, dialog_id)
+        if typed:
+            assert await until(pilot, lambda: getattr(app.screen.focused, "text", "") == typed)
+
+    return run_before
 
 
 def test_main_screen(project_path, snap_compare):
@@ -56,20 +71,22 @@ def test_main_screen_80x24(project_path, snap_compare):
 def test_help_screen(project_path, snap_compare):
     """The help dialog over the editor: 'floatpage keys', then groups (Select, Move and resize,
     Insert, ...) listing each key and what it does."""
-    assert snap_compare(frozen_app(project_path), press=["question_mark"],
+    assert snap_compare(frozen_app(project_path), run_before=opened("question_mark", "help"),
                         terminal_size=(100, 34))
 
 
 def test_insert_dialog(project_path, snap_compare):
     """The Insert dialog over the editor: Text box (highlighted), Picture…, Colour block,
     Calendar month, Background…, with 'Enter chooses · Esc cancels' under the list."""
-    assert snap_compare(frozen_app(project_path), press=["i"], terminal_size=(100, 34))
+    assert snap_compare(frozen_app(project_path), run_before=opened("i", "insert-dialog"),
+                        terminal_size=(100, 34))
 
 
 def test_insert_text_dialog(project_path, snap_compare):
     """The text box form: a 'Text' area holding 'Hello', an empty error line, the hint and
     OK / Cancel buttons."""
-    assert snap_compare(frozen_app(project_path), press=["t", "H", "e", "l", "l", "o"],
+    assert snap_compare(frozen_app(project_path),
+                        run_before=opened("t", "text-dialog", typed="Hello"),
                         terminal_size=(100, 34))
 
 
@@ -78,7 +95,8 @@ def test_insert_dialog_at_40x12(project_path, snap_compare):
     title 'Insert', all five choices (Text box highlighted, Picture…, Colour block, Calendar
     month, Background…) with no frame around the list, and 'Enter chooses · Esc cancels' on
     the line under them; the page's top bar above and the footer below still show."""
-    assert snap_compare(frozen_app(project_path), press=["i"], terminal_size=(40, 12))
+    assert snap_compare(frozen_app(project_path), run_before=opened("i", "insert-dialog"),
+                        terminal_size=(40, 12))
 
 
 def test_edit_form_at_20x6(project_path, snap_compare):
@@ -90,11 +108,10 @@ def test_edit_form_at_20x6(project_path, snap_compare):
     async def run_before(pilot) -> None:
         await select(pilot, "title")
         await pilot.press("enter")
-        await pilot.pause()
-        for _ in range(30):  # the form scrolls to the cursor once its words are wrapped
-            if pilot.app.screen.query_one(".form-fields").scroll_y > 0:
-                break
-            await pilot.pause(0.1)
+        assert await dialog_shown(pilot, pilot.app, "edit-dialog")
+        fields = pilot.app.screen.query_one(".form-fields")
+        # the form scrolls to the cursor once its words are wrapped
+        assert await until(pilot, lambda: fields.scroll_y > 0)
 
     assert snap_compare(frozen_app(project_path), run_before=run_before, terminal_size=(20, 6))
 
@@ -102,4 +119,5 @@ def test_edit_form_at_20x6(project_path, snap_compare):
 def test_dialog_below_20x6(project_path, snap_compare):
     """The Insert dialog on an 18 x 5 terminal: in its place, on red, 'Terminal too small:
     make it 20 × 6 or more (now 18 × 5). Esc cancels.', wrapped over the width."""
-    assert snap_compare(frozen_app(project_path), press=["i"], terminal_size=(18, 5))
+    assert snap_compare(frozen_app(project_path), run_before=opened("i", "insert-dialog"),
+                        terminal_size=(18, 5))
