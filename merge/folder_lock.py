@@ -14,13 +14,11 @@ killed outright never leaves the folder locked, and the file is never deleted.
 from __future__ import annotations
 
 import errno
-import fcntl
 import os
-import time
 from pathlib import Path
 
 from floatpage.model.errors import FloatpageError
-from floatpage.model.project_lock import POLL_S, WAIT_S, read_holder
+from floatpage.model.project_lock import WAIT_S, hold, let_go
 
 LOCK = "lock"
 
@@ -38,32 +36,12 @@ def lock_output_folder(folder: Path, state_dir: Path, *, wait_s: float = WAIT_S)
         raise FloatpageError(f"{state_dir / LOCK}: cannot lock the output folder: "
                              f"{error.strerror} (it should be a small file floatpage makes; "
                              "remove it and try again)") from None
-    deadline = time.monotonic() + wait_s
-    while True:
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-            break
-        except BlockingIOError:
-            if time.monotonic() >= deadline:
-                holder = read_holder(fd)
-                os.close(fd)
-                raise FloatpageError(f"{folder}: another merge is writing there ({holder}); "
-                                     "wait for it to finish, or name another output folder "
-                                     "with -o") from None
-            time.sleep(POLL_S)
-    try:
-        os.ftruncate(fd, 0)
-        os.pwrite(fd, f"{os.getpid()} floatpage merge\n".encode(), 0)
-    except OSError:
-        pass
+    holder = hold(fd, wait_s, "floatpage merge")
+    if holder is not None:
+        raise FloatpageError(f"{folder}: another merge is writing there ({holder}); wait for "
+                             "it to finish, or name another output folder with -o")
     return fd
 
 
 def unlock(fd: int | None) -> None:
-    if fd is not None:
-        try:
-            os.ftruncate(fd, 0)
-        except OSError:
-            pass
-        fcntl.flock(fd, fcntl.LOCK_UN)
-        os.close(fd)
+    let_go(fd)

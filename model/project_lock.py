@@ -69,40 +69,56 @@ class ProjectLock:
             os.close(fd)
             raise FloatpageError(f"{self.path}: cannot lock the project: it is a {kind}, not "
                                  "a lock file (remove it and try again)")
-        deadline = time.monotonic() + self.wait_s
-        while True:
-            try:
-                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-                break
-            except BlockingIOError:
-                if time.monotonic() >= deadline:
-                    holder = read_holder(fd)
-                    os.close(fd)
-                    raise ProjectLockedError(f"{self.project}: {held_by(holder)}") from None
-                time.sleep(POLL_S)
-        try:  # who holds it, for a waiter's message; a full disk refuses even these bytes,
-            os.ftruncate(fd, 0)  # and the save that follows says so, naming the project
-            os.pwrite(fd, f"{os.getpid()} {self.purpose}\n".encode(), 0)
-        except OSError:
-            pass
+        holder = hold(fd, self.wait_s, self.purpose)
+        if holder is not None:
+            raise ProjectLockedError(f"{self.project}: {held_by(holder)}")
         self.fd = fd
         return self
 
     def release(self) -> None:
-        if self.fd is not None:
-            try:
-                os.ftruncate(self.fd, 0)
-            except OSError:
-                pass
-            fcntl.flock(self.fd, fcntl.LOCK_UN)
-            os.close(self.fd)
-            self.fd = None
+        let_go(self.fd)
+        self.fd = None
 
     def __enter__(self) -> "ProjectLock":
         return self.acquire()
 
     def __exit__(self, *exc) -> None:
         self.release()
+
+
+def hold(fd: int, wait_s: float, purpose: str) -> str | None:
+    """Take the exclusive flock on the open lock file ``fd``, waiting up to ``wait_s``
+    seconds for whoever holds it, and write this process's PID and ``purpose`` in it for the
+    next waiter's message.  None once held; else who holds it, with ``fd`` closed.  (The
+    project's lock and merge's output folder lock, merge.folder_lock, wait alike.)"""
+    deadline = time.monotonic() + wait_s
+    while True:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            break
+        except BlockingIOError:
+            if time.monotonic() >= deadline:
+                holder = read_holder(fd)
+                os.close(fd)
+                return holder
+            time.sleep(POLL_S)
+    try:  # who holds it, for a waiter's message; a full disk refuses even these bytes,
+        os.ftruncate(fd, 0)  # and what the holder writes next says so
+        os.pwrite(fd, f"{os.getpid()} {purpose}\n".encode(), 0)
+    except OSError:
+        pass
+    return None
+
+
+def let_go(fd: int | None) -> None:
+    """Empty the lock file (no stale PID for a reader) and give the lock up."""
+    if fd is not None:
+        try:
+            os.ftruncate(fd, 0)
+        except OSError:
+            pass
+        fcntl.flock(fd, fcntl.LOCK_UN)
+        os.close(fd)
 
 
 def file_kind(mode: int) -> str:

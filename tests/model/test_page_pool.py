@@ -19,6 +19,7 @@ from floatpage.model.document import BlockItem, Project
 from floatpage.model.errors import FloatpageError
 from floatpage.model.layout import settle_project
 from floatpage.model.page_pool import MIN_ITEMS, MIN_PAGES, settle_in_pool, worth_a_pool
+from merge_helpers import session_members  # tests/merge: the processes a command leaves
 
 
 def album(pages: int, photos: int, seed: int = 3) -> Project:
@@ -82,20 +83,6 @@ def ctrl_c_live() -> None:
     starts with SIGINT ignored, every process below it inherits that, and Python then leaves
     it ignored: the command settled all 12 pages and exited 0 (the fresh-clone CI run)."""
     signal.signal(signal.SIGINT, signal.SIG_DFL)
-
-
-def session_members(session: int) -> list[int]:
-    """The processes of a session (/proc/PID/stat's sixth field), as a terminal sees its job."""
-    found = []
-    for entry in Path("/proc").iterdir():
-        if entry.name.isdigit():
-            try:
-                stat = (entry / "stat").read_text()
-            except OSError:  # gone meanwhile
-                continue
-            if int(stat[stat.rindex(")") + 2:].split()[3]) == session:
-                found.append(int(entry.name))
-    return found
 
 
 def test_ctrl_c_stops_a_pooled_settle_with_one_message_and_the_file_untouched(tmp_path):
