@@ -120,9 +120,7 @@ def tell_other_records(names: list[str], outdir: Path, pruned: bool) -> None:
     on stdout, else a note on stderr, as a folder printed whole would print them too."""
     if not names:
         return
-    shown = ", ".join(f"{name}.pdf" for name in names[:EMPTY_COLUMNS_SHOWN]) + (
-        f" and {len(names) - EMPTY_COLUMNS_SHOWN} more" if len(names) > EMPTY_COLUMNS_SHOWN
-        else "")
+    shown = first_few([f"{name}.pdf" for name in names])
     if pruned:
         print(f"removed {len(names)} record(s) this data no longer names: {printable(shown)}")
         return
@@ -133,6 +131,12 @@ def tell_other_records(names: list[str], outdir: Path, pruned: bool) -> None:
 
 
 EMPTY_COLUMNS_SHOWN = 10  # kinds of empty column told in full; record numbers per kind
+
+
+def first_few(names: list[str]) -> str:
+    """The first EMPTY_COLUMNS_SHOWN names, then how many more: a terminal line, not a list."""
+    more = len(names) - EMPTY_COLUMNS_SHOWN
+    return ", ".join(names[:EMPTY_COLUMNS_SHOWN]) + (f" and {more} more" if more > 0 else "")
 
 
 def tell_empty_columns(empty: list[tuple[int, int, str, str]], data: Path, report) -> None:
@@ -149,9 +153,7 @@ def tell_empty_columns(empty: list[tuple[int, int, str, str]], data: Path, repor
               f"{printable(words)}", file=sys.stderr)
         if len(records) > 1:
             others = [str(other) for other, _, _ in records[1:]]
-            listed = ", ".join(others[:EMPTY_COLUMNS_SHOWN]) + (
-                f" and {len(others) - EMPTY_COLUMNS_SHOWN} more"
-                if len(others) > EMPTY_COLUMNS_SHOWN else "")
+            listed = first_few(others)
             print(f"warning: the same in {len(others)} more record(s): {listed}; their lines "
                   f"are in {printable(str(report))}", file=sys.stderr)
     if len(kinds) > EMPTY_COLUMNS_SHOWN:
