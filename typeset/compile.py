@@ -34,6 +34,7 @@ ENGINE = "lualatex"
 # 2026-01-01T00:00:00Z: any fixed instant works; a changing one breaks reproducibility.
 DEFAULT_SOURCE_DATE_EPOCH = "1767225600"
 MAIN = "main.tex"
+ENGINE_OUTPUT = "engine-output.txt"  # what LuaLaTeX printed: all it says if it ends before a log
 # Address space, not resident memory: LuaTeX maps its font caches, so it reserves more than it
 # touches. A real page takes ~0.4 GB of address space; 1 MB of text in one box took 2.5 GB.
 # FLOATPAGE_ENGINE_MEMORY_MB changes it, for a machine with less (or a page that needs more).
@@ -144,11 +145,13 @@ def run_engine(build_dir: Path, *, timeout_s: float, picture_dir: Path | None = 
     process = None
     try:
         with stops_held() as held:
-            process = subprocess.Popen(engine_command(), cwd=build_dir, stdin=subprocess.DEVNULL,
-                                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                                       env=engine_environment(picture_dir),
-                                       start_new_session=True,
-                                       preexec_fn=lambda: limit_engine(memory_bytes, parent))
+            with open(build_dir / ENGINE_OUTPUT, "wb") as said:
+                process = subprocess.Popen(engine_command(), cwd=build_dir,
+                                           stdin=subprocess.DEVNULL, stdout=said,
+                                           stderr=subprocess.STDOUT,
+                                           env=engine_environment(picture_dir),
+                                           start_new_session=True,
+                                           preexec_fn=lambda: limit_engine(memory_bytes, parent))
         if held:  # now, to the handler it was meant for (the command's raises KeyboardInterrupt)
             signal.raise_signal(held[0])
         code = process.wait(timeout=timeout_s)
@@ -220,6 +223,14 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
         raise LatexCompileError(log_path, [LogError(None, f"LuaLaTeX was still running after "
                                                     f"{timeout_s:g} s and was stopped")],
                                 "The PDF was not made: typesetting took too long.")
+    if not log and not out_of_memory(code, engine_said(build_dir)):
+        raise LatexCompileError(None, [LogError(None, f"LuaLaTeX ended (exit code {code}) "
+                                                f"before it wrote a log; it said: "
+                                                f"{engine_said(build_dir) or 'nothing'}")],
+                                "The PDF was not made: the TeX installation could not start "
+                                "LuaLaTeX. Try `lualatex --version` and `kpsewhich "
+                                "lualatex.fmt` in this shell; a missing format is rebuilt "
+                                "with `fmtutil-sys --byfmt lualatex`.")
     errors = errors_with_items(log, tex, labels or [])
     if out_of_memory(code, log) or not errors:
         # Under RLIMIT_AS an allocation that fails ends LuaTeX at once, mid-line in its log.
@@ -227,6 +238,18 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
                                 "The PDF was not made: LuaLaTeX stopped without an error in "
                                 "its log, which is how it fails when it runs out of memory.")
     raise LatexCompileError(log_path, errors, "The PDF was not made; LaTeX reported:")
+
+
+def engine_said(build_dir: Path, lines: int = 4) -> str:
+    """The last lines the engine printed (kept in the build folder), joined: the only words
+    there are when LuaLaTeX ends before its log, e.g. a format or texmf.cnf it cannot find,
+    where floatpage used to blame memory."""
+    try:
+        text = (build_dir / ENGINE_OUTPUT).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return ""
+    kept = [line.strip() for line in text.splitlines() if line.strip()]
+    return " / ".join(kept[-lines:])[:600]
 
 
 def memory_message() -> str:

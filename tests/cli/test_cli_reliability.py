@@ -610,6 +610,20 @@ def test_the_engine_runs_under_a_memory_limit_and_says_so_when_it_is_hit(tmp_pat
     assert not (tmp_path / "card.pdf").exists()
 
 
+def test_an_engine_that_ends_before_its_log_is_quoted_not_blamed_on_memory(tmp_path):
+    """A TeX installation LuaLaTeX cannot start in (here kpathsea finds no texmf.cnf, so no
+    format) ends before any log. floatpage said it had most likely run out of memory, and
+    told the user to raise a limit that had nothing to do with it."""
+    path = card(tmp_path)
+    env = {**os.environ, "TEXMFCNF": str(tmp_path / "no-texmf-cnf-here")}
+    result = subprocess.run([sys.executable, "-m", "floatpage.cli.main", "render", str(path)],
+                            capture_output=True, text=True, timeout=300, cwd=ROOT, env=env)
+    assert result.returncode == 1, result.stderr
+    assert "before it wrote a log" in result.stderr and "lualatex.fmt" in result.stderr
+    assert "memory" not in result.stderr and "Traceback" not in result.stderr
+    assert not (tmp_path / "card.pdf").exists()
+
+
 @pytest.mark.parametrize("value", ["abc", "-5", "0", "4096x"])
 def test_a_memory_limit_that_is_not_a_number_is_refused_not_ignored(tmp_path, value):
     path = card(tmp_path)
