@@ -85,8 +85,12 @@ def cmd_merge(args: argparse.Namespace) -> int:
     if summary.failed:
         print(f"floatpage: {summary.failed} record(s) failed; their reasons are in "
               f"{printable(str(summary.report))}", file=sys.stderr)
-        return EXIT_SOME_RECORDS_FAILED
-    return 0
+    if summary.outdated:  # only failed records lose a PDF
+        shown = first_few([f"{name}.pdf" for name in summary.outdated])
+        print(f"floatpage: {len(summary.outdated)} of them had a PDF an earlier run made from "
+              f"other data ({printable(shown)}); it was removed, so that the folder holds no "
+              f"copy out of date: mend the data and run merge again", file=sys.stderr)
+    return EXIT_SOME_RECORDS_FAILED if summary.failed else 0
 
 
 def refuse_no_folder_name(name: str) -> None:

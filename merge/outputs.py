@@ -262,6 +262,21 @@ class OutputFolder:
             if path.is_file() and not path.is_symlink():
                 path.unlink(missing_ok=True)
 
+    def drop_outdated(self, name: str, digest: str | None) -> bool:
+        """For a record that failed: remove the files an earlier run made for it from other
+        data (or another project), and say whether a PDF went. The folder kept the old PDF
+        beside a report that said "failed", and `lpr out/*.pdf` printed a letter with the
+        old address. Files made from this very data stay (a `--force` run that failed)."""
+        try:
+            made_from = self.digest_file(name).read_text(encoding="ascii")
+        except (OSError, UnicodeDecodeError):
+            return False  # not made by a merge here: never touched
+        if made_from == digest:
+            return False
+        had_pdf = self.pdf(name).is_file() and not self.pdf(name).is_symlink()
+        self.remove_record(name)
+        return had_pdf
+
     @staticmethod
     def flush() -> None:
         """Everything written so far to the disk, once per run rather than once per file."""

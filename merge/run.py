@@ -67,6 +67,8 @@ class MergeSummary:
     others: list[str] = field(default_factory=list)
     # records whose --name was another's, renamed NAME-2 (merge.outputs.Names.clashes)
     renamed: list[tuple[int, int, str, str, tuple[int, int]]] = field(default_factory=list)
+    # records that failed, whose PDF from an earlier run on other data was removed
+    outdated: list[str] = field(default_factory=list)
 
 
 # An engine run costs about 0.5 s to start and a record 40-60 ms more, and the records of
@@ -217,7 +219,8 @@ class Merge:
             for record in self.data.records():
                 name = names.name_for(record.number, record.values, record.line)
                 if record.problem:
-                    ordered.add(record.number, (record.line, name, "failed", record.problem))
+                    reason = record.problem + self.outdated_dropped(name, None, summary)
+                    ordered.add(record.number, (record.line, name, "failed", reason))
                     continue
                 digest = self.digest(record, name)
                 if not options.force and self.out.unchanged(name, digest, options.write_toml):
@@ -297,7 +300,16 @@ class Merge:
                                       for what, words in result.empty_columns]
             ordered.add(result.number, (result.line, result.name, "made", note))
         else:
-            ordered.add(result.number, (result.line, result.name, "failed", result.reason))
+            reason = result.reason + self.outdated_dropped(result.name, digest, summary)
+            ordered.add(result.number, (result.line, result.name, "failed", reason))
+
+    def outdated_dropped(self, name: str, digest: str | None, summary: MergeSummary) -> str:
+        """A failed record's PDF from an earlier run on other data goes (OutputFolder.
+        drop_outdated); the words its report row adds, and the name for the terminal."""
+        if not self.out.drop_outdated(name, digest):
+            return ""
+        summary.outdated.append(name)
+        return f"; {name}.pdf, made by an earlier run from other data, was removed"
 
 
 class InOrder:

@@ -586,3 +586,47 @@ def test_a_column_empty_in_many_records_is_one_warning_in_record_order(merge_fol
     assert warnings[1].startswith("warning: the same in 11 more record(s): 2, 3, 4, 5, 6, 7, "
                                   "8, 9, 10, 11 and 1 more; ")
     assert all('column "first_name" is empty' in row["reason"] for row in report(merge_folder))
+
+
+def test_a_record_that_now_fails_loses_the_pdf_an_earlier_run_made_from_other_data(
+        merge_folder):
+    """The folder kept 1002-Müller.pdf, with the old product, beside a report.csv that said
+    the record failed, and `lpr out/*.pdf` would have printed it. Both ways a record fails
+    are covered: in the layout (a picture not found) and in the engine's run (a word too
+    long to break). A record that fails on the data it was made from keeps its PDF."""
+    first = rows(3)
+    assert merge(merge_folder, write_csv(merge_folder / "customers.csv", first)).returncode == 0
+    out = merge_folder / "out"
+    assert sorted(p.name for p in out.glob("*.pdf")) == [
+        "1001-Silva.pdf", "1002-Müller.pdf", "1003-Okonkwo-Fitzgerald.pdf"]
+    changed = [list(row) for row in first]
+    changed[1][5] = "no-such-picture.png"
+    changed[2][3] = "word " * 3000
+    done = merge(merge_folder, write_csv(merge_folder / "customers.csv", changed))
+    assert done.returncode == 3, done.stderr
+    assert sorted(p.name for p in out.glob("*.pdf")) == ["1001-Silva.pdf"]
+    assert ("2 of them had a PDF an earlier run made from other data (1002-Müller.pdf, "
+            "1003-Okonkwo-Fitzgerald.pdf); it was removed") in done.stderr
+    reasons = [row["reason"] for row in report(merge_folder)]
+    assert reasons[0] == "" and all(
+        "made by an earlier run from other data, was removed" in reason for reason in reasons[1:])
+    # Nothing left that a later run takes for "made": mended, both come back.
+    assert merge(merge_folder, write_csv(merge_folder / "customers.csv", first)).returncode == 0
+    assert [row["status"] for row in report(merge_folder)] == ["unchanged", "made", "made"]
+
+
+def test_a_forced_run_that_fails_keeps_the_pdfs_made_from_the_same_data(merge_folder):
+    """The data and pictures are those the PDFs were made from; the engine fails for a reason
+    of this machine's (a memory limit far too low), and the PDFs are still right."""
+    data = write_csv(merge_folder / "customers.csv", rows(2))
+    assert merge(merge_folder, data).returncode == 0
+    pdf = merge_folder / "out" / "1002-Müller.pdf"
+    made = pdf.read_bytes()
+    done = subprocess.run([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data), "-o",
+                           str(merge_folder / "out"), "--name", "{id}-{surname}", "--force"],
+                          capture_output=True, text=True, timeout=600,
+                          env={**os.environ, "FLOATPAGE_ENGINE_MEMORY_MB": "40"})
+    assert done.returncode == 3, done.stderr
+    assert [row["status"] for row in report(merge_folder)] == ["failed", "failed"]
+    assert "had a PDF an earlier run made" not in done.stderr
+    assert pdf.read_bytes() == made
