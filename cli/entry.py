@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import sys
 
-EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report a job stopped by Ctrl+C
+SIGINT = 2  # the signal module is not loaded yet: 128 + 2 = 130, as shells report Ctrl+C
 
 
 def main() -> int:
@@ -19,25 +19,26 @@ def main() -> int:
 
         return run_command()
     except BaseException as error:
-        if not interrupted(error):
+        stop = interrupted(error)
+        if stop is None:
             raise
         print("floatpage: interrupted", file=sys.stderr)
-        return EXIT_INTERRUPTED
+        return 128 + getattr(stop, "signum", SIGINT)  # SIGTERM 143, SIGHUP 129 (cli.main.Stopped)
 
 
-def interrupted(error: BaseException) -> bool:
-    """Whether ``error`` is a Ctrl+C (or SIGTERM, SIGHUP: cli.main raises the same) or was
-    raised because of one. Python 3.11 wraps an exception raised in a descriptor's
+def interrupted(error: BaseException) -> KeyboardInterrupt | None:
+    """The Ctrl+C (or SIGTERM, SIGHUP: cli.main raises a KeyboardInterrupt for them too)
+    that ``error`` is or was raised because of, else None. Python 3.11 wraps an exception raised in a descriptor's
     __set_name__, which every dataclass field has, in a RuntimeError: a Ctrl+C while a module
     of dataclasses was being imported ended in "RuntimeError: Error calling __set_name__ on
     'Field' instance 'color' in 'BlockItem'" and a traceback (0.44 s into a settle, at load 7)."""
     seen: set[int] = set()
     while error is not None and id(error) not in seen:
         if isinstance(error, KeyboardInterrupt):
-            return True
+            return error
         seen.add(id(error))
         error = error.__cause__ or error.__context__
-    return False
+    return None
 
 
 if __name__ == "__main__":

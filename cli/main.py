@@ -661,11 +661,28 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+class Stopped(KeyboardInterrupt):
+    """SIGTERM or SIGHUP, unwinding as Ctrl+C does; ``signum`` gives the exit status."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+
 def stop_on_terminate(signum, frame) -> None:
-    """SIGTERM (kill, a Makefile's Ctrl+C, CI's timeout) and SIGHUP (a closed terminal or SSH
-    link) unwind like Ctrl+C, so temporary files and build folders are removed on the way out.
-    The editor installs its own handlers, which keep unsaved edits."""
-    raise KeyboardInterrupt
+    """SIGTERM (kill, CI's timeout) and SIGHUP (a closed terminal or SSH link) unwind like
+    Ctrl+C, so temporary files and build folders are removed on the way out. The exit status
+    is the shells' 128 + the signal's number (143, 129), as the editor's is: a job runner
+    that reads it (a CI log, `wait` in a script) can tell a kill from a Ctrl+C (130). The
+    editor installs its own handlers, which keep unsaved edits."""
+    raise Stopped(signum)
+
+
+def interrupted_status(stop: BaseException | None) -> int:
+    """The exit status of a command stopped by a signal: 128 + its number."""
+    import signal
+
+    return 128 + getattr(stop, "signum", signal.SIGINT)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -699,17 +716,18 @@ def main(argv: Sequence[str] | None = None) -> int:
         lines = [printable(line) for line in str(error).split("\n")]
         print("floatpage: " + "\n".join(lines), file=sys.stderr)
         return EXIT_USER_ERROR
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as stop:
         print("floatpage: interrupted", file=sys.stderr)
-        return 130
+        return interrupted_status(stop)
     except BrokenPipeError:
         return EXIT_OK
     except Exception as error:  # a bug of ours: keep the details, show a short message
         from floatpage.cli.entry import interrupted
 
-        if interrupted(error):  # a Ctrl+C that Python wrapped (see entry.interrupted)
+        stop = interrupted(error)
+        if stop is not None:  # a Ctrl+C that Python wrapped (see entry.interrupted)
             print("floatpage: interrupted", file=sys.stderr)
-            return 130
+            return interrupted_status(stop)
         log = write_crash_log()
         print(f"floatpage: internal error: {type(error).__name__}: {printable(str(error))}\n"
               f"  this is a bug in floatpage, not in your project; details are in {log}\n"
