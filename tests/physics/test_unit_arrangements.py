@@ -324,6 +324,11 @@ def crowded_room(seed):
     return units, np.array([[rng.uniform(10, 50), rng.uniform(10, 40)]]), rng.uniform(4, 10, (1, 2))
 
 
+# Node budgets from 1 to about 3,000, each about 12 % above the last: every scale at which a
+# climb can be cut short, in 70 searches a seed where every 7th budget took 428 (33 s a seed).
+BUDGETS = sorted({int(1.12 ** k) for k in range(71)})
+
+
 @pytest.mark.parametrize("seed", [1, 7, 13])
 def test_a_widest_gap_cut_short_by_the_budget_keeps_what_it_proved(seed, monkeypatch):
     """A question past the budget ends the climb with both ends it proved: a layout at
@@ -337,7 +342,7 @@ def test_a_widest_gap_cut_short_by_the_budget_keeps_what_it_proved(seed, monkeyp
     assert truth.exact and 0 <= truth.low < 6.0
     assert unit_arrangement(units, centres, halves, truth.high) is None
     cut_short = 0
-    for budget in range(1, 3000, 7):
+    for budget in BUDGETS:
         monkeypatch.setattr(unit_arrangements, "NODE_BUDGET", budget)
         unit_arrangements._memo.clear()
         decided = widest_bracket(units, centres, halves, 6.0)
@@ -347,7 +352,7 @@ def test_a_widest_gap_cut_short_by_the_budget_keeps_what_it_proved(seed, monkeyp
         assert arranged(units, centres, halves, decided.layout, decided.low)
         cut_short += not decided.exact
     unit_arrangements._memo.clear()
-    assert cut_short  # some budget decides the first questions but not the climb
+    assert cut_short, cut_short  # some budget decides the first questions but not the climb
 
 
 def test_six_units_beside_a_hard_anchor_are_named_and_set_down_at_their_widest_gap(tmp_path):
