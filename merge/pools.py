@@ -16,6 +16,7 @@ from typing import Iterator
 from floatpage.merge.chunk_job import ChunkTask, RecordResult, run_chunk
 from floatpage.model.errors import FloatpageError
 from floatpage.model.lifeline import end_with
+from floatpage.model.socket_folder import fit_socket_folder
 from floatpage.model.page_pool import stop_pool
 
 IN_FLIGHT_PER_WORKER = 2
@@ -30,6 +31,7 @@ def cores() -> int:
 
 def local_results(tasks: Iterator[ChunkTask], workers: int) -> Iterator[list[RecordResult]]:
     # forkserver: workers start from a clean process, not a fork of one holding threads.
+    fit_socket_folder()
     context = multiprocessing.get_context("forkserver")
     # A command killed outright (kill -9, a CI timeout) takes its workers with it.
     executor = ProcessPoolExecutor(workers, mp_context=context, initializer=end_with,

@@ -25,6 +25,7 @@ from concurrent.futures.process import BrokenProcessPool
 from floatpage.model.document import Item, Page, PhysicsSettings
 from floatpage.model.errors import FloatpageError
 from floatpage.model.lifeline import end_with
+from floatpage.model.socket_folder import fit_socket_folder
 from floatpage.physics import SettleReport
 
 MIN_PAGES = 8  # fewer pages settle in the command's own process
@@ -53,6 +54,7 @@ def settle_in_pool(pages: list[Page], settings: PhysicsSettings, max_steps: int,
     (a FloatpageError: the physics diverged, items piled up) is raised here, as it would be
     in one process."""
     try:
+        fit_socket_folder()
         context = multiprocessing.get_context("forkserver")
         context.set_forkserver_preload(PRELOAD)
         pool = ProcessPoolExecutor(max_workers=min(jobs, len(pages)), mp_context=context,

@@ -630,3 +630,18 @@ def test_a_forced_run_that_fails_keeps_the_pdfs_made_from_the_same_data(merge_fo
     assert [row["status"] for row in report(merge_folder)] == ["failed", "failed"]
     assert "had a PDF an earlier run made" not in done.stderr
     assert pdf.read_bytes() == made
+
+
+def test_a_merge_runs_under_a_tmpdir_too_long_for_a_unix_socket(merge_folder):
+    """multiprocessing's fork server listens on a socket under $TMPDIR, whose path may hold
+    107 bytes: under a CI job's long TMPDIR (here a test's own folder, under pytest-xdist)
+    merge ended in "internal error: OSError: AF_UNIX path too long"."""
+    long = merge_folder / ("t" * 60) / ("u" * 60)
+    long.mkdir(parents=True)
+    data = write_csv(merge_folder / "customers.csv", rows(4))
+    done = subprocess.run([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data), "-o",
+                           str(merge_folder / "out"), "--workers", "2", "--chunk-size", "1"],
+                          capture_output=True, text=True, timeout=600,
+                          env={**os.environ, "TMPDIR": str(long)})
+    assert done.returncode == 0, done.stderr
+    assert len(list((merge_folder / "out").glob("*.pdf"))) == 4

@@ -21,6 +21,8 @@ from floatpage.model.layout import settle_project
 from floatpage.model.page_pool import MIN_ITEMS, MIN_PAGES, settle_in_pool, worth_a_pool
 from merge_helpers import session_members  # tests/merge: the processes a command leaves
 
+ROOT = Path(__file__).resolve().parents[2]
+
 
 def album(pages: int, photos: int, seed: int = 3) -> Project:
     """Album pages of scattered photos, every third with a caption that follows it."""
@@ -179,3 +181,33 @@ def test_a_settle_killed_outright_leaves_no_process_behind(tmp_path):
     finally:  # a failure leaves nothing running either
         for pid in session_members(command.pid):
             os.kill(pid, signal.SIGKILL)
+
+
+LONG_TMPDIR_POOL = """
+import sys, tempfile
+from floatpage.model import page_pool
+from floatpage.model.document import PhysicsSettings
+import test_page_pool
+
+def not_here(*args):
+    raise SystemExit("settled in this process: the pool could not start")
+
+page_pool.settle_here = not_here
+pages = test_page_pool.album(2, 8).pages
+page_pool.settle_in_pool(pages, PhysicsSettings(), 200_000, 2)
+print(tempfile.gettempdir())
+"""
+
+
+def test_a_pool_starts_under_a_tmpdir_too_long_for_a_unix_socket(tmp_path):
+    """The fork server's socket lives under $TMPDIR, and a socket's path holds 107 bytes: under
+    a longer TMPDIR the pool failed at its first worker and settled in one process without a
+    word (and `merge` ended in an internal error; tests/merge has its own test)."""
+    long = tmp_path / ("t" * 60) / ("u" * 60)
+    long.mkdir(parents=True)
+    done = subprocess.run([sys.executable, "-c", LONG_TMPDIR_POOL], capture_output=True,
+                          text=True, timeout=300, cwd=Path(__file__).parent,
+                          env={**os.environ, "TMPDIR": str(long), "PYTHONPATH": os.pathsep.join(
+                              str(ROOT / folder) for folder in ("tests/merge", "benchmarks"))})
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert done.stdout.strip() == str(long)  # the command's own temporary files stay there
