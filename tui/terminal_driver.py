@@ -1,4 +1,5 @@
-"""Textual's Linux driver, with four changes: end of input is a hang-up, not a busy loop;
+"""Textual's Linux driver, with five changes: its size is the terminal's, whatever $COLUMNS
+says; end of input is a hang-up, not a busy loop;
 the output sends only the cells the terminal does not already show, and colour codes only
 where the colour changes (`shadow_screen`); it measures its link for the frame pacer
 (`frame_pacer.LinkMeter`: cursor-position queries after physics frames, whose answers it
@@ -17,6 +18,7 @@ from __future__ import annotations
 import os
 import selectors
 import signal
+import sys
 import threading
 from codecs import getincrementaldecoder
 
@@ -77,6 +79,21 @@ class HangupAwareDriver(LinuxDriver):
         self._file = MeteredFile(self._file, self.link)
         self._handed = 0  # writes handed to the writer thread
         self._prompt_fd: int | None = None  # the terminal, opened again without blocking
+
+    def _get_terminal_size(self) -> tuple[int, int]:
+        """The terminal's own size, asked of it (TIOCGWINSZ), before $COLUMNS and $LINES:
+        Textual's driver takes `shutil.get_terminal_size`, which reads those first, so an
+        exported COLUMNS (a shell's rc file, a parent program such as pytest-xdist's workers,
+        which export 80 x 24) laid the editor out for the wrong size, and a resize never
+        changed it. They still count where the terminal cannot say (a size of 0)."""
+        for stream in (self._file, sys.__stdin__, sys.__stdout__):
+            try:
+                size = os.get_terminal_size(stream.fileno())
+            except (AttributeError, OSError, ValueError):
+                continue
+            if size.columns and size.lines:
+                return size.columns, size.lines
+        return super()._get_terminal_size()
 
     def write(self, data: str) -> None:
         """The same screen for fewer bytes (over SSH each byte counts, issue 11), and after a

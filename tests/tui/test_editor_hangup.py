@@ -35,13 +35,19 @@ def project_file(folder: Path) -> Path:
 class Editor:
     """`floatpage edit` on the slave side of a fresh pty, 100 x 32, as a terminal runs it."""
 
-    def __init__(self, path: Path):
+    def __init__(self, path: Path, env: dict[str, str] | None = None):
         self.pid, self.fd = pty.fork()
         if self.pid == 0:  # the child: the pty is its controlling terminal
             os.chdir(ROOT)
             os.execvpe(sys.executable, [sys.executable, "-m", "floatpage.cli.main", "edit",
-                                        str(path)], {**os.environ, "TERM": "xterm-256color"})
-        fcntl.ioctl(self.fd, termios.TIOCSWINSZ, struct.pack("HHHH", 32, 100, 0, 0))
+                                        str(path)],
+                       {**os.environ, "TERM": "xterm-256color", **(env or {})})
+        self.resize(100, 32)
+
+    def resize(self, columns: int, rows: int) -> None:
+        """As a terminal window does: the pty's size, then SIGWINCH (the kernel sends it to
+        the pty's foreground group)."""
+        fcntl.ioctl(self.fd, termios.TIOCSWINSZ, struct.pack("HHHH", rows, columns, 0, 0))
         self.screen = b""
 
     def read_until(self, text: bytes, timeout: float = 30.0) -> None:
