@@ -2,6 +2,11 @@
 # `make test` runs the full suite. Both set up everything first (tools/setup.sh).
 SAMPLE ?= sample_projects/greeting-card/greeting-card.toml
 PYTEST_ARGS ?=
+# The suite runs on every core (pytest-xdist), each test module on one worker (--dist
+# loadscope: a module's shared set-up, such as the fuzz corpus's run, is made once), the
+# longest modules first (tests/conftest.py), in the order they are listed.
+# PYTEST_WORKERS=0 runs it in one process.
+PYTEST_WORKERS ?= auto
 
 .PHONY: run test setup benchmarks clean
 
@@ -12,7 +17,7 @@ run: setup
 	.venv/bin/floatpage edit $(SAMPLE)
 
 test: setup
-	.venv/bin/python -m pytest $(PYTEST_ARGS)
+	.venv/bin/python -m pytest -n $(PYTEST_WORKERS) --dist loadscope --no-loadscope-reorder $(PYTEST_ARGS)
 
 benchmarks: setup
 	.venv/bin/python benchmarks/physics.py
