@@ -23,15 +23,22 @@ def main() -> int:
         if stop is None:
             raise
         print("floatpage: interrupted", file=sys.stderr)
-        return 128 + getattr(stop, "signum", SIGINT)  # SIGTERM 143, SIGHUP 129 (cli.main.Stopped)
+        return interrupted_status(stop)
+
+
+def interrupted_status(stop: BaseException) -> int:
+    """The exit status of a command stopped by a signal, as shells give it: 128 + its number
+    (Ctrl+C 130; SIGTERM 143 and SIGHUP 129 come as cli.main.Stopped, which carries it)."""
+    return 128 + getattr(stop, "signum", SIGINT)
 
 
 def interrupted(error: BaseException) -> KeyboardInterrupt | None:
     """The Ctrl+C (or SIGTERM, SIGHUP: cli.main raises a KeyboardInterrupt for them too)
-    that ``error`` is or was raised because of, else None. Python 3.11 wraps an exception raised in a descriptor's
-    __set_name__, which every dataclass field has, in a RuntimeError: a Ctrl+C while a module
-    of dataclasses was being imported ended in "RuntimeError: Error calling __set_name__ on
-    'Field' instance 'color' in 'BlockItem'" and a traceback (0.44 s into a settle, at load 7)."""
+    that ``error`` is, or was raised because of, else None. Python 3.11 wraps an exception
+    raised in a descriptor's __set_name__, which every dataclass field has, in a RuntimeError:
+    a Ctrl+C while a module of dataclasses was being imported ended in "RuntimeError: Error
+    calling __set_name__ on 'Field' instance 'color' in 'BlockItem'" and a traceback (0.44 s
+    into a settle, at load 7)."""
     seen: set[int] = set()
     while error is not None and id(error) not in seen:
         if isinstance(error, KeyboardInterrupt):

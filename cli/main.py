@@ -678,13 +678,6 @@ def stop_on_terminate(signum, frame) -> None:
     raise Stopped(signum)
 
 
-def interrupted_status(stop: BaseException | None) -> int:
-    """The exit status of a command stopped by a signal: 128 + its number."""
-    import signal
-
-    return 128 + getattr(stop, "signum", signal.SIGINT)
-
-
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if getattr(args, "bleed", None) is not None and not args.print:
@@ -717,12 +710,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("floatpage: " + "\n".join(lines), file=sys.stderr)
         return EXIT_USER_ERROR
     except KeyboardInterrupt as stop:
+        from floatpage.cli.entry import interrupted_status
+
         print("floatpage: interrupted", file=sys.stderr)
         return interrupted_status(stop)
     except BrokenPipeError:
         return EXIT_OK
     except Exception as error:  # a bug of ours: keep the details, show a short message
-        from floatpage.cli.entry import interrupted
+        from floatpage.cli.entry import interrupted, interrupted_status
 
         stop = interrupted(error)
         if stop is not None:  # a Ctrl+C that Python wrapped (see entry.interrupted)

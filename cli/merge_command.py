@@ -88,7 +88,7 @@ def cmd_merge(args: argparse.Namespace) -> int:
     if summary.outdated:  # only failed records lose a PDF
         shown = first_few([f"{name}.pdf" for name in summary.outdated])
         print(f"floatpage: {len(summary.outdated)} of them had a PDF an earlier run made from "
-              f"other data ({printable(shown)}); it was removed, so that the folder holds no "
+              f"other data or another template ({printable(shown)}); it was removed, so that the folder holds no "
               f"copy out of date: mend the data and run merge again", file=sys.stderr)
     return EXIT_SOME_RECORDS_FAILED if summary.failed else 0
 

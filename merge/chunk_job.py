@@ -20,6 +20,7 @@ from floatpage.merge.template import MergeTemplate
 from floatpage.model.errors import FloatpageError
 from floatpage.model.save import dump_project
 from floatpage.typeset.batch import typeset_batch
+from floatpage.typeset.errors import EngineDidNotStart
 from floatpage.typeset.placed import place_document
 from floatpage.typeset.text_layout import DOES_NOT_FIT_HINT
 
@@ -138,6 +139,8 @@ def typeset_chunk(documents: list, results: list[RecordResult]) -> None:
         return
     try:
         pdfs = typeset_batch(documents)
+    except EngineDidNotStart:
+        raise  # no record is at fault: the merge stops, saying so once
     except FloatpageError as error:
         if len(documents) == 1:
             results[0].reason = engine_failure(error, documents[0])

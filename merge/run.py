@@ -219,7 +219,7 @@ class Merge:
             for record in self.data.records():
                 name = names.name_for(record.number, record.values, record.line)
                 if record.problem:
-                    reason = record.problem + self.outdated_dropped(name, None, summary)
+                    reason = record.problem + self.failed_loses_outdated(name, None, summary)
                     ordered.add(record.number, (record.line, name, "failed", reason))
                     continue
                 digest = self.digest(record, name)
@@ -300,16 +300,17 @@ class Merge:
                                       for what, words in result.empty_columns]
             ordered.add(result.number, (result.line, result.name, "made", note))
         else:
-            reason = result.reason + self.outdated_dropped(result.name, digest, summary)
+            reason = result.reason + self.failed_loses_outdated(result.name, digest, summary)
             ordered.add(result.number, (result.line, result.name, "failed", reason))
 
-    def outdated_dropped(self, name: str, digest: str | None, summary: MergeSummary) -> str:
+    def failed_loses_outdated(self, name: str, digest: str | None, summary: MergeSummary) -> str:
         """A failed record's PDF from an earlier run on other data goes (OutputFolder.
         drop_outdated); the words its report row adds, and the name for the terminal."""
         if not self.out.drop_outdated(name, digest):
             return ""
         summary.outdated.append(name)
-        return f"; {name}.pdf, made by an earlier run from other data, was removed"
+        return (f"; {name}.pdf, made by an earlier run from other data (or another template "
+                "or --toml), was removed")
 
 
 class InOrder:

@@ -16,10 +16,12 @@ from __future__ import annotations
 import multiprocessing.util
 import os
 import tempfile
+import threading
 
 SUN_PATH_MAX = 104  # macOS's 104 bytes with the closing NUL; Linux allows 108
 SOCKET_NAME_BYTES = len("/pymp-XXXXXXXX/listener-XXXXXXXX")
 SHORT_FOLDERS = ("/tmp", "/var/tmp", "/dev/shm")
+_fitting = threading.Lock()  # tempfile.tempdir is the whole process's: one swap at a time
 
 
 def fit_socket_folder() -> None:
@@ -34,9 +36,10 @@ def fit_socket_folder() -> None:
                   if os.path.isdir(folder) and os.access(folder, os.W_OK | os.X_OK)), None)
     if short is None:
         return
-    kept = tempfile.tempdir
-    tempfile.tempdir = short  # get_temp_dir makes its folder under this, once, and keeps it
-    try:
-        multiprocessing.util.get_temp_dir()
-    finally:
-        tempfile.tempdir = kept
+    with _fitting:
+        kept = tempfile.tempdir
+        tempfile.tempdir = short  # get_temp_dir makes its folder under this once, and keeps it
+        try:
+            multiprocessing.util.get_temp_dir()
+        finally:
+            tempfile.tempdir = kept

@@ -27,7 +27,8 @@ import time
 from pathlib import Path
 from typing import Iterator
 
-from floatpage.typeset.errors import LatexCompileError, LogError, RenderError, TexNotFoundError
+from floatpage.typeset.errors import (EngineDidNotStart, LatexCompileError, LogError,
+                                      RenderError, TexNotFoundError)
 from floatpage.typeset.latex_log import errors_with_items
 
 ENGINE = "lualatex"
@@ -223,14 +224,15 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
         raise LatexCompileError(log_path, [LogError(None, f"LuaLaTeX was still running after "
                                                     f"{timeout_s:g} s and was stopped")],
                                 "The PDF was not made: typesetting took too long.")
-    if not log and not out_of_memory(code, engine_said(build_dir)):
-        raise LatexCompileError(None, [LogError(None, f"LuaLaTeX ended (exit code {code}) "
-                                                f"before it wrote a log; it said: "
-                                                f"{engine_said(build_dir) or 'nothing'}")],
-                                "The PDF was not made: the TeX installation could not start "
-                                "LuaLaTeX. Try `lualatex --version` and `kpsewhich "
-                                "lualatex.fmt` in this shell; a missing format is rebuilt "
-                                "with `fmtutil-sys --byfmt lualatex`.")
+    output = engine_output(build_dir)
+    if not log and code > 0 and not out_of_memory(code, output):
+        # A signal (code < 0: the out-of-memory killer's SIGKILL) is told as memory, below.
+        raise EngineDidNotStart(
+            f"No PDF could be made: the TeX installation could not start LuaLaTeX, which "
+            f"ended (exit code {code}) before it wrote a log; it said: "
+            f"{last_lines(output) or 'nothing'}. Try `lualatex --version` and `kpsewhich "
+            f"lualatex.fmt` in this shell; a missing format is rebuilt with "
+            f"`fmtutil-sys --byfmt lualatex`.")
     errors = errors_with_items(log, tex, labels or [])
     if out_of_memory(code, log) or not errors:
         # Under RLIMIT_AS an allocation that fails ends LuaTeX at once, mid-line in its log.
@@ -240,15 +242,17 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
     raise LatexCompileError(log_path, errors, "The PDF was not made; LaTeX reported:")
 
 
-def engine_said(build_dir: Path, lines: int = 4) -> str:
-    """The last lines the engine printed (kept in the build folder), joined: the only words
-    there are when LuaLaTeX ends before its log, e.g. a format or texmf.cnf it cannot find,
-    where floatpage used to blame memory."""
+def engine_output(build_dir: Path) -> str:
+    """What the engine printed (kept in the build folder): the only words there are when
+    LuaLaTeX ends before its log, where floatpage used to blame memory."""
     try:
-        text = (build_dir / ENGINE_OUTPUT).read_text(encoding="utf-8", errors="replace")
+        return (build_dir / ENGINE_OUTPUT).read_text(encoding="utf-8", errors="replace")
     except OSError:
         return ""
-    kept = [line.strip() for line in text.splitlines() if line.strip()]
+
+
+def last_lines(output: str, lines: int = 4) -> str:
+    kept = [line.strip() for line in output.splitlines() if line.strip()]
     return " / ".join(kept[-lines:])[:600]
 
 

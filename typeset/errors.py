@@ -16,6 +16,13 @@ class TexNotFoundError(RenderError):
     """The TeX engine is not installed."""
 
 
+class EngineDidNotStart(RenderError):
+    """LuaLaTeX ended, with an exit code of its own, before it wrote a log: the TeX
+    installation is at fault (a format or texmf.cnf it cannot find), not the document. A
+    merge stops at once on it rather than failing every record, each after its chunk had
+    been halved down to it."""
+
+
 @dataclass(frozen=True)
 class LogError:
     """One error from the LaTeX log: the .tex line, the message, and the item it came from."""

@@ -605,11 +605,12 @@ def test_a_record_that_now_fails_loses_the_pdf_an_earlier_run_made_from_other_da
     done = merge(merge_folder, write_csv(merge_folder / "customers.csv", changed))
     assert done.returncode == 3, done.stderr
     assert sorted(p.name for p in out.glob("*.pdf")) == ["1001-Silva.pdf"]
-    assert ("2 of them had a PDF an earlier run made from other data (1002-Müller.pdf, "
-            "1003-Okonkwo-Fitzgerald.pdf); it was removed") in done.stderr
+    assert ("2 of them had a PDF an earlier run made from other data or another template "
+            "(1002-Müller.pdf, 1003-Okonkwo-Fitzgerald.pdf); it was removed") in done.stderr
     reasons = [row["reason"] for row in report(merge_folder)]
     assert reasons[0] == "" and all(
-        "made by an earlier run from other data, was removed" in reason for reason in reasons[1:])
+        "made by an earlier run from other data (or another template or --toml), was removed"
+        in reason for reason in reasons[1:])
     # Nothing left that a later run takes for "made": mended, both come back.
     assert merge(merge_folder, write_csv(merge_folder / "customers.csv", first)).returncode == 0
     assert [row["status"] for row in report(merge_folder)] == ["unchanged", "made", "made"]
@@ -645,3 +646,18 @@ def test_a_merge_runs_under_a_tmpdir_too_long_for_a_unix_socket(merge_folder):
                           env={**os.environ, "TMPDIR": str(long)})
     assert done.returncode == 0, done.stderr
     assert len(list((merge_folder / "out").glob("*.pdf"))) == 4
+
+
+def test_a_tex_installation_that_cannot_start_stops_the_merge_once(merge_folder):
+    """LuaLaTeX that ends before its log (here it finds no texmf.cnf, so no format) is no
+    record's fault: each record was reported failed, after its chunk had been halved down to
+    it, with the engine's words cut short. The merge now stops, saying what to try, once."""
+    data = write_csv(merge_folder / "customers.csv", rows(6))
+    done = subprocess.run([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data), "-o",
+                           str(merge_folder / "out"), "--workers", "2", "--chunk-size", "3"],
+                          capture_output=True, text=True, timeout=600,
+                          env={**os.environ, "TEXMFCNF": str(merge_folder / "no-texmf-cnf")})
+    assert done.returncode == 1, done.stderr
+    assert done.stderr.count("could not start LuaLaTeX") == 1, done.stderr
+    assert "fmtutil-sys --byfmt lualatex" in done.stderr and "Traceback" not in done.stderr
+    assert list((merge_folder / "out").glob("*.pdf")) == []

@@ -7,6 +7,7 @@ A real pty, the real `floatpage edit`, and a VT emulator reading what it drew.""
 
 from __future__ import annotations
 
+import os
 import time
 
 import pyte
@@ -46,4 +47,5 @@ def test_the_editor_fills_its_terminal_and_follows_a_resize_under_an_exported_co
         code, _ = editor.wait_exit(10.0)
     finally:
         editor.kill()
+        os.close(editor.fd)
     assert code == 0
