@@ -350,3 +350,17 @@ def test_check_measures_a_region_by_the_room_a_hard_anchored_header_leaves_it(tm
     assert ('even without the gutter they need 89% of the room of region "photos" that items '
             "which cannot move leave") in result.stdout, result.stdout
     assert "floatpage settle" not in result.stdout, result.stdout
+
+
+def test_a_group_taller_than_the_page_with_a_member_in_a_region_is_told_its_region(tmp_path):
+    """The same group, its members 300 mm apart: more than the page, so check fell back to
+    "its room inside the margins is 95.0 mm (the page: 297 mm): it cannot stay on the page",
+    where the 95 mm was the region's room and the region went unnamed (user-walk-12a)."""
+    text = (CHAIN.replace('region = "top"\n', 'group = "g"\n')
+            .replace('anchor = {to = "head", dx = 0, dy = 160}\n', 'region = "top"\ngroup = "g"\n')
+            .replace("y = 220", "y = 360"))
+    result = floatpage("check", "--strict", str(write(tmp_path, text)))
+    assert result.returncode == 1
+    assert ('("tail") is 320.0 mm tall (more than the page\'s 297 mm), but the region(s) "top" '
+            'its items keep to, and the margins, leave it 95.0 mm') in result.stdout, result.stdout
+    assert "inside the margins is" not in result.stdout
