@@ -242,11 +242,14 @@ def compile_pdf(tex: str, build_dir: Path, *, labels: list[str] | None = None,
     raise LatexCompileError(log_path, errors, "The PDF was not made; LaTeX reported:")
 
 
-def engine_output(build_dir: Path) -> str:
-    """What the engine printed (kept in the build folder): the only words there are when
-    LuaLaTeX ends before its log, where floatpage used to blame memory."""
+def engine_output(build_dir: Path, tail_bytes: int = 65536) -> str:
+    """The end of what the engine printed (kept in the build folder): the only words there
+    are when LuaLaTeX ends before its log, where floatpage used to blame memory. Its end
+    only: a run that printed for its whole two minutes leaves megabytes."""
     try:
-        return (build_dir / ENGINE_OUTPUT).read_text(encoding="utf-8", errors="replace")
+        with open(build_dir / ENGINE_OUTPUT, "rb") as said:
+            said.seek(max(0, os.fstat(said.fileno()).st_size - tail_bytes))
+            return said.read().decode("utf-8", errors="replace")
     except OSError:
         return ""
 
