@@ -4,7 +4,7 @@ SAMPLE ?= sample_projects/greeting-card/greeting-card.toml
 PYTEST_ARGS ?=
 # The suite runs on every core (pytest-xdist), each test module on one worker (--dist
 # loadscope: a module's shared set-up, such as the fuzz corpus's run, is made once), the
-# longest modules first (tests/conftest.py), in the order they are listed.
+# longest modules first (tests/conftest.py), the others in the order pytest collects them.
 # PYTEST_WORKERS=0 runs it in one process.
 PYTEST_WORKERS ?= auto
 
