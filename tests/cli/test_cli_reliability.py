@@ -11,6 +11,7 @@ import stat
 import struct
 import subprocess
 import sys
+import tempfile
 import tomllib
 import zlib
 from pathlib import Path
@@ -592,12 +593,13 @@ def test_an_internal_error_has_its_own_exit_code_and_a_crash_log(tmp_path, monke
         raise RuntimeError("a bug of ours")
 
     monkeypatch.setattr(cli, "cmd_check", broken)
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))  # not one more log in /tmp a run
     code = cli.main(["check", str(card(tmp_path))])
     err = capsys.readouterr().err
     assert code == cli.EXIT_INTERNAL_ERROR == 70
     assert "internal error: RuntimeError: a bug of ours" in err and "please report it" in err
     log = Path(err.split("details are in ")[1].split()[0])
-    assert "RuntimeError" in log.read_text()
+    assert log.parent == tmp_path and "RuntimeError" in log.read_text()
 
 
 def test_the_engine_runs_under_a_memory_limit_and_says_so_when_it_is_hit(tmp_path):
