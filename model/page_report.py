@@ -424,19 +424,18 @@ def _too_large_sentence(limit: TooLarge, name, page) -> str:
         who += " is"
     regions = sorted({page.items[row].region for row in limit.rows
                       if page.items[row].region}) if page is not None else []
+    past_page = limit.extent_mm > limit.page_mm + 0.01
     if regions:
         # the members' regions are the walls that bind: "the print-safe margin" and "(the
         # page: 297 mm)" sent the user to the wrong knob, also for an item wider than the page
         # ("its room inside the margins is 75.7 mm" was the region's room)
         named = ", ".join(f'"{printable(region)}"' for region in regions)
-        page = (f" (more than the page's {limit.page_mm:g} mm)"
-                if limit.extent_mm > limit.page_mm + 0.01 else "")
+        page = f" (more than the page's {limit.page_mm:g} mm)" if past_page else ""
         return (f"{who} {limit.extent_mm:.1f} mm {size_word}{page}, but the region(s) {named} "
                 f"its items keep to, and the margins, leave it {limit.room_mm:.1f} mm: no "
                 f"settle can fit it; make it smaller, {closer}, make the region larger, or take "
                 "the items out of it")
-    fate = ("it cannot stay on the page" if limit.extent_mm > limit.page_mm + 0.01
-            else "it cannot keep the print-safe margin")
+    fate = "it cannot stay on the page" if past_page else "it cannot keep the print-safe margin"
     return (f"{who} {limit.extent_mm:.1f} mm {size_word}, but its room inside the margins "
             f"is {limit.room_mm:.1f} mm (the page: {limit.page_mm:g} mm): {fate}; make it "
             "smaller" + (f", or {closer}" if len(limit.rows) > 1 else ""))

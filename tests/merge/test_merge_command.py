@@ -19,10 +19,12 @@ from merge_helpers import COLUMNS, rows, session_members, write_csv
 FLOATPAGE = str(Path(sys.executable).with_name("floatpage"))
 
 
-def merge(folder: Path, data: Path, out: str = "out", *extra: str) -> subprocess.CompletedProcess:
+def merge(folder: Path, data: Path, out: str = "out", *extra: str,
+          env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
     return subprocess.run([FLOATPAGE, "merge", str(folder / "offer.toml"), str(data), "-o",
                            str(folder / out), "--name", "{id}-{surname}", *extra],
-                          capture_output=True, text=True, timeout=600)
+                          capture_output=True, text=True, timeout=600,
+                          env=None if env is None else {**os.environ, **env})
 
 
 def report(folder: Path, out: str = "out") -> list[dict]:
@@ -623,10 +625,7 @@ def test_a_forced_run_that_fails_keeps_the_pdfs_made_from_the_same_data(merge_fo
     assert merge(merge_folder, data).returncode == 0
     pdf = merge_folder / "out" / "1002-Müller.pdf"
     made = pdf.read_bytes()
-    done = subprocess.run([FLOATPAGE, "merge", str(merge_folder / "offer.toml"), str(data), "-o",
-                           str(merge_folder / "out"), "--name", "{id}-{surname}", "--force"],
-                          capture_output=True, text=True, timeout=600,
-                          env={**os.environ, "FLOATPAGE_ENGINE_MEMORY_MB": "40"})
+    done = merge(merge_folder, data, "out", "--force", env={"FLOATPAGE_ENGINE_MEMORY_MB": "40"})
     assert done.returncode == 3, done.stderr
     assert [row["status"] for row in report(merge_folder)] == ["failed", "failed"]
     assert "had a PDF an earlier run made" not in done.stderr
