@@ -73,7 +73,7 @@ class Names:
 
     def __init__(self, pattern: str | None):
         self.pattern = pattern
-        self.taken: set[str] = set()
+        self.taken: dict[str, str] = {}  # each name given, case-folded: the name as given
         self.owners: dict[str, tuple[int, int]] = {}  # a name given: (record, line) it is
         # (record, line, name, base, (record, line) that had the base): a key column that
         # repeats in the data is mostly one customer twice, and was renamed without a word
@@ -88,7 +88,7 @@ class Names:
         while name.casefold() in self.taken or name.casefold() in self.RESERVED:
             count += 1
             name = f"{base}-{count}"
-        self.taken.add(name.casefold())
+        self.taken[name.casefold()] = name
         self.owners[name.casefold()] = (number, line)
         if base.casefold() in self.owners and name != base:  # not "report", "combined"
             self.clashes.append((number, line, name, base, self.owners[base.casefold()]))
@@ -245,14 +245,30 @@ class OutputFolder:
         write_whole(self.digest_file(name), digest.encode("ascii"))
         return ""
 
-    def names_not_in(self, taken: set[str]) -> list[str]:
-        """The records an earlier run made here (their .key) that no name in ``taken`` (this
-        run's, case-folded) is: `1001-Doe.pdf` stayed beside `1001-Doe-Smith.pdf` once the
-        surname was corrected, and `lpr out/*.pdf` printed both."""
+    def names_not_in(self, taken: dict[str, str]) -> list[str]:
+        """The records an earlier run made here (their .key) that are none of this run's
+        (``taken``: each name given, case-folded, to the name as given): `1001-Doe.pdf` stayed
+        beside `1001-Doe-Smith.pdf` once the surname was corrected, and `lpr out/*.pdf` printed
+        both.  A name that differs only in case is another record's where the disk tells the
+        two files apart: `1002-müller.pdf` stayed beside `1002-Müller.pdf` on Linux, where on
+        a case-blind disk they are one file."""
         state = self.folder / STATE_DIR
-        return sorted(entry.name[:-len(".key")] for entry in os.scandir(state)
-                      if entry.name.endswith(".key") and entry.is_file(follow_symlinks=False)
-                      and entry.name[:-len(".key")].casefold() not in taken)
+        return sorted(name for name in (entry.name[:-len(".key")] for entry in os.scandir(state)
+                                        if entry.name.endswith(".key")
+                                        and entry.is_file(follow_symlinks=False))
+                      if not self.same_record(name, taken.get(name.casefold())))
+
+    def same_record(self, kept: str, given: str | None) -> bool:
+        """Whether the key an earlier run kept as ``kept`` is the one this run's name
+        ``given`` writes: the same name, or one the disk does not tell apart from it."""
+        if given is None:
+            return False
+        if given == kept:
+            return True
+        try:
+            return self.digest_file(kept).samefile(self.digest_file(given))
+        except OSError:  # no key under the name given: a case-sensitive disk (or it failed)
+            return False
 
     def remove_record(self, name: str) -> None:
         """A record's files, as this merge wrote them: its key first, so a run stopped half

@@ -413,6 +413,33 @@ def test_pdfs_of_records_the_data_no_longer_names_are_told_and_pruned(merge_fold
     assert "no longer names" not in merge(merge_folder, data).stderr
 
 
+def test_a_name_changed_only_in_case_leaves_no_pdf_unnamed(merge_folder):
+    """A surname corrected from "müller" to "Müller" made `1002-Müller.pdf` and left
+    `1002-müller.pdf` beside it without a word: names are compared case-blind (for a disk that
+    is), and this one is not. Made or failed, the old PDF is told, and --prune removes it."""
+    table = rows(3)
+    table[1][2] = "müller"
+    data = write_csv(merge_folder / "customers.csv", table)
+    assert merge(merge_folder, data).returncode == 0
+    out = merge_folder / "out"
+    table[1][2] = "Müller"
+    write_csv(data, table)
+    again = merge(merge_folder, data)
+    assert again.returncode == 0, again.stderr
+    assert (f"note: {out} holds 1 PDF(s) an earlier run made for records this data no longer "
+            f"names (1002-müller.pdf)") in again.stderr
+    table[1][5] = "no-such-picture.png"  # and failed: still told, never taken for this one's
+    table[1][2] = "MÜLLER"
+    write_csv(data, table)
+    failed = merge(merge_folder, data)
+    assert failed.returncode == 3, failed.stderr
+    assert "(1002-Müller.pdf, 1002-müller.pdf)" in failed.stderr, failed.stderr
+    pruned = merge(merge_folder, data, "out", "--prune")
+    assert "1002-Müller.pdf, 1002-müller.pdf" in pruned.stdout, pruned.stdout
+    assert sorted(p.name for p in out.glob("*.pdf")) == [
+        "1001-Silva.pdf", "1003-Okonkwo-Fitzgerald.pdf"]
+
+
 def test_a_record_renamed_for_a_name_another_had_is_told(merge_folder):
     """user-walk-12b: a customer number that repeats in the data (one customer exported
     twice) gave `1001-Silva.pdf` and `1001-Silva-2.pdf` without a word."""
