@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from floatpage.model.errors import printable
-from floatpage.physics.alignment import measure_alignment
+from floatpage.physics.quality import measure_alignment
 from floatpage.physics.page_limits import (
     Crossing, Limit, NoArrangement, NoRoom, PinnedClash, PinnedOutside, PinnedStack, Stack,
     TooLarge, binding,

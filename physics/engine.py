@@ -16,7 +16,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from floatpage.physics.alignment import Alignment, measure_alignment
 from floatpage.physics.bodies import NO_TARGET, Bodies
 from floatpage.physics.euler import kinetic_energy
 from floatpage.physics.fast_mode import run_fast
@@ -26,7 +25,7 @@ from floatpage.physics.guides import snap_range
 from floatpage.physics.local_room import clear_locally
 from floatpage.physics.paper_mode import run_paper
 from floatpage.physics.params import Params, page_margin
-from floatpage.physics.quality import Quality, measure_quality
+from floatpage.physics.quality import Alignment, Quality, measure_alignment, measure_quality
 from floatpage.physics.room_relocation import RoomRelocation
 from floatpage.physics.second_start import SecondStart
 from floatpage.physics.snapping import snap_page

@@ -1,6 +1,10 @@
 """Layout quality measures after Harrington et al. 2004 ("Aesthetic measures for automated
 document layout"): overlap, area off the page, minimum gap, evenness of the gaps between
 neighbours, and balance.  One function serves ``floatpage check`` and the editor's status line.
+
+Alignment (issue 16: near misses and edge lines per item, the share aligned on both axes) is
+part of a page's quality too, offered here with the rest; it is defined in physics.alignment,
+beside the thresholds the alignment snap reads.
 """
 
 from __future__ import annotations
@@ -9,6 +13,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
+from floatpage.physics.alignment import Alignment, measure_alignment  # noqa: F401 (offered here)
 
 GAP_TOLERANCE_MM = 1e-6
 MARGIN_TOLERANCE_MM = 0.01  # a save rounds to 0.01 mm (towards the page's inside)
