@@ -18,18 +18,20 @@ from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM
 
 CLEAR_MM = NEAR_MM + 0.05  # a clear space scaled into the band stays this wide (the snap's
 # ESCAPE_MM: rounded to the 0.01 mm a save writes, still beyond NEAR_MM)
+SAVED_MM = 0.005  # half the step a save writes: a space of 4.00 in the file reads as
+# 3.999999999999993 from the centres and sizes, clear all the same
 
 
 def scaled_space(space: float, scale: float) -> float:
     """``space`` (mm between two facing edges) scaled by ``scale``, kept on its side of the
-    near-miss band: a space of at least ``NEAR_MM`` stays at least ``CLEAR_MM`` (or what it
-    was, if less: it was clear), however much it shrinks (shrunk in steps, as the room search
-    tries, or at once, as its answer is applied, it ends the same), one of at
-    most ``ALIGNED_MM`` (the edges on one line) stays at most what it was; a space inside the
-    band scales as it is (it was a near miss already)."""
+    near-miss band: a space of at least ``NEAR_MM`` (as saved) that shrinks stays at least
+    ``CLEAR_MM``, however much it shrinks (in steps, as the room search tries, or at once, as
+    its answer is applied, it ends the same; kept at exactly 4.00 mm, floats would put it back
+    in the band); one of at most ``ALIGNED_MM`` (the edges on one line) stays at most what it
+    was; a space inside the band scales as it is (it was a near miss already)."""
     scaled = space * scale
-    if space >= NEAR_MM and scaled < NEAR_MM:
-        return min(space, CLEAR_MM)
+    if space >= NEAR_MM - SAVED_MM and scaled < min(space, CLEAR_MM):
+        return CLEAR_MM
     if space <= ALIGNED_MM < scaled:
         return space
     return scaled

@@ -13,7 +13,7 @@ from pathlib import Path
 from editor_helpers import back_on_editor, editor, until
 
 from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM
-from floatpage.tui.clear_spaces import scaled_space
+from floatpage.tui.clear_spaces import CLEAR_MM, scaled_space
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -30,7 +30,7 @@ def test_a_clear_space_scaled_stays_clear_and_a_near_miss_scales_as_it_is():
     assert scaled_space(10.0, 0.5) == 5.0  # scaled out of the band: as it is
     assert scaled_space(3.0, 0.5) == 1.5  # a near miss already
     assert scaled_space(0.4, 1.5) <= ALIGNED_MM  # edges on one line stay on it
-    assert scaled_space(4.02, 0.5) == 4.02  # clear, and no wider than it was
+    assert scaled_space(4.0 - 1e-14, 0.5) == CLEAR_MM  # 4.00 as saved, read back from floats
 
 
 async def test_a_smaller_page_size_keeps_the_captions_clear_of_the_near_miss_band(tmp_path):
