@@ -137,8 +137,9 @@ def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
     """Shrink the page's items of ``ids`` (all that take part, if None) by ``scale`` to make
     room; a follower shrunk with its target, or a member with its group's lead, comes closer
     by as much (but a space clear of the near-miss band stays clear: tui.clear_spaces), so
-    that they shrink as one (sizes alone shrunk left a caption and its photo as far apart as ever, and after
-    a smaller page size such a pair still reached past the page however small they got)."""
+    that they shrink as one (sizes alone shrunk left a caption and its photo as far apart as
+    ever, and after a smaller page size such a pair still reached past the page however small
+    they got)."""
     shrunk = {item.id for item in page.items
               if not item.decorative and (ids is None or item.id in ids)}
     leads = {item.group: page.group_lead(item.group) for item in page.items if item.group}
