@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from floatpage.model.document import ItemAnchor, Page, PictureItem, PointAnchor
 from floatpage.physics import Engine
+from floatpage.tui.clear_spaces import scaled_offset
 from floatpage.tui.region_edits import body_of, box_of, root_of
 
 
@@ -114,7 +115,8 @@ def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], 
     saved offsets no longer matched the saved positions; a group's members, their centres
     scaled but not their sizes, came to overlap one another for good.  Item sizes do not
     scale, so on an axis where two stand apart the space between their edges scales (a caption
-    2.5 mm below its photo keeps clear of it); where they overlap on an axis (a caption centred
+    2.5 mm below its photo keeps clear of it), but never into the near-miss band from outside
+    it (tui.clear_spaces); where they overlap on an axis (a caption centred
     under its photo, a label on a picture), the centres' offset scales.  Positions are set
     target first, down each chain.  Called with positions already scaled by (sx, sy)."""
     by_id = {item.id: item for item in page.items}
@@ -124,9 +126,7 @@ def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], 
     def scaled(offset: float, scale: float, axis: int, item, target) -> float:
         old_half = (old_sizes[item.id][axis] + old_sizes[target.id][axis]) / 2
         new_half = ((item.w, item.h)[axis] + (target.w, target.h)[axis]) / 2
-        gap = abs(offset) - old_half
-        size = new_half + gap * scale if gap >= 0 else abs(offset) * scale
-        return round(size if offset >= 0 else -size, 2) + 0.0
+        return round(scaled_offset(offset, old_half, new_half, scale), 2) + 0.0
 
     def place(item) -> None:
         if item.id in done:

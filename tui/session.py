@@ -30,6 +30,7 @@ from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
+from floatpage.tui.clear_spaces import scaled_offset
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.insert_style import new_item_style
 from floatpage.tui.page_resize import kept_by, resize_page, scale_follow_offsets, size_words
@@ -135,21 +136,32 @@ def layout_of(page: Page) -> dict[str, tuple[float, float]]:
 def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
     """Shrink the page's items of ``ids`` (all that take part, if None) by ``scale`` to make
     room; a follower shrunk with its target, or a member with its group's lead, comes closer
-    by as much, so that they shrink as one (sizes alone shrunk left a caption and its photo as far apart as ever, and after
-    a smaller page size such a pair still reached past the page however small they got)."""
+    by as much (but a space clear of the near-miss band stays clear: tui.clear_spaces), so
+    that they shrink as one (sizes alone shrunk left a caption and its photo as far apart as
+    ever, and after a smaller page size such a pair still reached past the page however small
+    they got)."""
     shrunk = {item.id for item in page.items
               if not item.decorative and (ids is None or item.id in ids)}
     leads = {item.group: page.group_lead(item.group) for item in page.items if item.group}
+    halves = {item.id: (item.w / 2, item.h / 2) for item in page.items}  # before the shrink
+
+    def offset(value: float, axis: int, item, other) -> float:
+        half = halves[item.id][axis] + halves[other.id][axis]
+        return scaled_offset(value, half, half * scale, scale)
+
     for item in page.items:
         if item.id in shrunk:
             item.w, item.h = item.w * scale, item.h * scale
             anchor = item.anchor
             lead = leads.get(item.group)
             if isinstance(anchor, ItemAnchor) and anchor.to in shrunk:
-                anchor.dx, anchor.dy = anchor.dx * scale, anchor.dy * scale
+                target = page.item(anchor.to)
+                anchor.dx = offset(anchor.dx, 0, item, target)
+                anchor.dy = offset(anchor.dy, 1, item, target)
             elif lead is not None and lead is not item and lead.id in shrunk:
-                item.x = lead.x + (item.x - lead.x) * scale  # a group shrinks as one, too
-                item.y = lead.y + (item.y - lead.y) * scale
+                # a group shrinks as one, too (its lead stays where it is)
+                item.x = lead.x + offset(item.x - lead.x, 0, item, lead)
+                item.y = lead.y + offset(item.y - lead.y, 1, item, lead)
 
 
 @dataclasses.dataclass(frozen=True)

@@ -216,7 +216,10 @@ async def test_a_smaller_page_size_keeps_a_groups_members_apart(tmp_path):
     """S, 4x6in on an A4 page with a title and subtitle grouped 4 mm apart: their centres
     scaled with the page but not their sizes, and the room search shrank their sizes but not
     the distance between them, so the subtitle ended 2.2 mm inside the title for good (a group
-    moves as one body, so nothing ever parts them)."""
+    moves as one body, so nothing ever parts them).  The space, clear of the near-miss band,
+    stays clear of it (real-pages)."""
+    from floatpage.tui.clear_spaces import CLEAR_MM
+
     path = tmp_path / "g.toml"
     save_project(Project(pages=[Page(id="p", items=[
         TextItem(id="title", x=105.0, y=100.0, w=100.0, h=12.0, text="Title", group="head"),
@@ -231,7 +234,9 @@ async def test_a_smaller_page_size_keeps_a_groups_members_apart(tmp_path):
     page = load_project(path).pages[0]
     title, sub = page.item("title"), page.item("sub")
     gap = (sub.y - sub.h / 2) - (title.y + title.h / 2)
-    assert gap == pytest.approx(4.0 * 152.4 / 297.0 * (title.h / 12.0), abs=0.02)
+    # 4 mm is clear of the near-miss band, and stays clear rather than scaled to 1.85 mm
+    # (tui.clear_spaces: a group is one rigid body to the snap, which could never open it)
+    assert gap == pytest.approx(CLEAR_MM, abs=0.02)
 
 
 async def test_a_page_too_small_for_a_photo_and_its_caption_shrinks_them_as_one(tmp_path):
