@@ -11,6 +11,8 @@ from __future__ import annotations
 import difflib
 import errno
 import os
+import re
+import shlex
 import stat
 import tomllib
 from pathlib import Path
@@ -149,6 +151,19 @@ def read_text(path: Path) -> str:
         raise fail(f"is not UTF-8 text (byte {error.start})", "save it as UTF-8") from None
 
 
+CONFLICT_MARKER = re.compile(r"(<{7}|\|{7}|>{7})( .*)?|={7}")
+
+
+def conflict_marker_lines(text: str) -> list[int]:
+    """Numbers of the lines of ``text`` that are a version-control conflict's markers
+    (git, Mercurial: `<<<<<<< HEAD`, `=======`, `>>>>>>> branch`, diff3's `|||||||`). A
+    project left mid-merge was only "TOML syntax error: Invalid statement (check quotes,
+    brackets ...)" at the first marker (user-walk-13). Lines inside a multi-line string
+    could look the same, so this is asked only of a file TOML already refused."""
+    return [number for number, line in enumerate(text.splitlines(), start=1)
+            if CONFLICT_MARKER.fullmatch(line.rstrip("\r"))]
+
+
 def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -> Problem:
     message = str(error)
     line = getattr(error, "lineno", None)
@@ -158,6 +173,17 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -
         except (IndexError, ValueError):
             line = None
     short = message.split(" (at line")[0]
+    conflict = conflict_marker_lines(text)
+    if conflict:
+        first = conflict[0]
+        count = sum(1 for number in conflict
+                    if text.splitlines()[number - 1].startswith("<<<<<<<"))
+        return Problem(path, first, "",
+                       f"a merge conflict is left in the file: {count} conflict"
+                       f"{'s' if count != 1 else ''}, marked by lines <<<<<<<, ======= and >>>>>>>",
+                       "between each <<<<<<< and >>>>>>> keep the lines you want, delete the "
+                       "marker lines, then check the file again; or keep one side whole with "
+                       f"`git checkout --ours {shlex.quote(str(path))}` or `--theirs`")
     if "\r" in text.replace("\r\n", ""):
         # Lines ended by a bare carriage return (classic Mac OS, some exporters) are one
         # long line to TOML: "line 1: Expected newline" sent the user to a line that was fine.

@@ -169,12 +169,30 @@ def remember_places(table: Table, keys: list[str]) -> None:
     there (`add_key`): an anchor taken off (`u`), saved, then put back (`a`, or an undo)
     came at its table's end, after `role`, a diff the user did not ask for (user-walk-8).
     Kept on the table, which the editor saves into again."""
-    order = [entry.key for entry, _ in table.value.body if entry is not None]
+    order = [entry.key for entry, _ in written_entries(table) if entry is not None]
     places = table.__dict__.setdefault(PLACES, {})
     for key in keys:
         if key in order:
             following = order[order.index(key) + 1:]
             places[key] = following[0] if following else None
+
+
+def written_in_pieces(table: Table) -> bool:
+    """Whether ``table`` is written in pieces rather than under one header: dotted keys
+    (`physics.seed = 0`, `physics.alpha = 150.0`), which tomlkit reads as a proxy over the
+    pieces with no body of its own. Every save of such a file, even a settle's, stopped with
+    "internal error: AttributeError: 'dict' object has no attribute 'body'" (user-walk-13)."""
+    from tomlkit.container import OutOfOrderTableProxy
+    return isinstance(table, OutOfOrderTableProxy)
+
+
+def written_entries(table: Table) -> list:
+    """The (key, value) entries of ``table`` in the file's order, whether it is written
+    under one header or in pieces (`written_in_pieces`, read through tomlkit's internal
+    merged container, as bounded by pyproject.toml's tomlkit pin)."""
+    if written_in_pieces(table):
+        return table._internal_container.body
+    return table.value.body
 
 
 def add_key(table: Table, key: str, value: Any) -> None:
@@ -185,6 +203,9 @@ def add_key(table: Table, key: str, value: Any) -> None:
     Inserting uses tomlkit's internal `Container._insert_at` (tomlkit has no public insert;
     pyproject.toml bounds tomlkit to the releases this was checked against)."""
     from tomlkit.items import AoT, Table as TableItem
+    if written_in_pieces(table):
+        table[key] = value  # tomlkit writes it as one more piece: `physics.gutter_mm = 4.0`
+        return
     body = table.value.body
     follower = table.__dict__.get(PLACES, {}).pop(key, None)
     place = next((index for index, (entry, item) in enumerate(body)
@@ -203,9 +224,9 @@ def add_key(table: Table, key: str, value: Any) -> None:
         table[key] = value
 
 
-def new_table(pairs: Pairs) -> Table:
+def new_table(pairs: Pairs, *, inline_form: bool = False) -> Table:
     import tomlkit
-    table = tomlkit.table()
+    table = tomlkit.inline_table() if inline_form else tomlkit.table()
     for key, value, _ in pairs:
         if value is not None and value is not KEEP:
             table[key] = inline(value)
@@ -216,9 +237,12 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
                at_end: bool = True) -> None:
     """Sync an array of tables by id: keep existing tables (and their comments), add new ones."""
     import tomlkit
-    from tomlkit.items import AoT
+    from tomlkit.items import AoT, InlineTable
     existing = parent.get(key)
     if is_inline_array(existing) and sync_inline_array(existing, records, pairs_of, id_of, fill):
+        return
+    if isinstance(parent, InlineTable):
+        sync_array_inside_inline_table(parent, key, records, pairs_of, id_of, fill)
         return
     by_id: dict[str, Table] = {}
     if isinstance(existing, AoT):
@@ -318,6 +342,57 @@ def sync_inline_array(array: Array, records: list, pairs_of, id_of, fill) -> boo
         sync_table(entry, pairs_of(record))
         if fill is not None:
             fill(entry, record)
+    return True
+
+
+def sync_array_inside_inline_table(parent: InlineTable, key: str, records: list, pairs_of,
+                                   id_of, fill) -> None:
+    """Sync an array inside a table written inline (`pages = [{id = "p", items = [...]}]`),
+    where only an inline array can stand: an item added to or deleted from such a page was
+    written as `[[pages.items]]` tables inside the braces, a file that no longer parsed,
+    saved over the user's (user-walk-13). Entries are deleted and appended in place, so the
+    others keep their spacing and comments; new ones are inline tables; a reordering builds
+    the array anew."""
+    import tomlkit
+    existing = parent.get(key)
+    by_id: dict[str, Any] = {}
+    if is_inline_array(existing):
+        for entry in existing:
+            by_id.setdefault(str(entry.get("id")), entry)
+    entries = []
+    for record in records:
+        entry = by_id.pop(id_of(record), None)
+        if entry is None:
+            entry = new_table(pairs_of(record), inline_form=True)
+        else:
+            sync_table(entry, pairs_of(record))
+        if fill is not None:
+            fill(entry, record)
+        entries.append(entry)
+    if not entries:
+        if key in parent:
+            del parent[key]
+        return
+    if is_inline_array(existing) and edit_inline_in_place(existing, entries):
+        return
+    array = tomlkit.array()
+    for entry in entries:
+        array.append(entry)
+    parent[key] = array
+
+
+def edit_inline_in_place(array: Array, entries: list) -> bool:
+    """`edit_in_place` for an inline array: tomlkit's own delete and append keep the others'
+    spacing and comments. False, with nothing changed, when kept entries were reordered."""
+    wanted = {id(entry) for entry in entries}
+    kept = [entry for entry in array if id(entry) in wanted]
+    if [id(e) for e in kept] != [id(e) for e in entries[:len(kept)]]:
+        return False
+    for index in reversed(range(len(array))):
+        if id(array[index]) not in wanted:
+            del array[index]
+    for entry in entries[len(kept):]:
+        array.append(entry)
     return True
 
 

@@ -1,0 +1,134 @@
+"""Project files written by hand in forms TOML allows and floatpage's own saves never write
+(user-walk-13): dotted keys, tables written inline, a merge conflict left in the file. Each
+file is saved by the real save and read back by the real loader."""
+
+from __future__ import annotations
+
+import tomllib
+
+import pytest
+
+from floatpage.model import load_project, save_project
+from floatpage.model.document import Region
+from floatpage.model.errors import ProjectFileError
+
+ITEMS = '''
+[[pages.items]]
+id = "a"
+kind = "block"
+x = 50.0
+y = 50.0
+w = 20.0
+h = 20.0
+
+[[pages.items]]
+id = "b"
+kind = "block"
+x = 50.0
+y = 90.0
+w = 20.0
+h = 20.0
+'''
+DOTTED_PHYSICS = ('format = 1\nphysics.seed = 0  # same file, same layout\nphysics.alpha = 150.0\n\n'
+                  '[[pages]]\nid = "p"\nsize = "A5"\n' + ITEMS)
+INLINE_PAGE = ('format = 1\npages = [\n  { id = "p", size = "A5", items = [ { id = "a", kind = "block", '
+               'x = 50.0, y = 50.0, w = 20.0, h = 20.0 }, { id = "b", kind = "block", x = 50.0, '
+               'y = 90.0, w = 20.0, h = 20.0 } ] },  # the only page\n]\ntitle = "t"\n')
+
+
+def test_a_physics_table_written_as_dotted_keys_is_saved_in_that_form(tmp_path):
+    """`physics.seed = 0` and `physics.alpha = 150.0` (dotted keys, no `[physics]` header):
+    every save, a settle's included, stopped with "internal error: AttributeError: 'dict'
+    object has no attribute 'body'". A changed setting and a new one keep the dotted form."""
+    path = tmp_path / "card.toml"
+    path.write_text(DOTTED_PHYSICS)
+    project = load_project(path)
+    save_project(project)
+    assert path.read_text() == DOTTED_PHYSICS
+    project.physics.alpha = 120.0
+    project.physics.gutter_mm = 4.0
+    project.pages[0].items[0].x = 61.25
+    save_project(project)
+    text = path.read_text()
+    assert "physics.alpha = 120.0\n" in text and "physics.gutter_mm = 4.0\n" in text
+    assert "[physics]" not in text and "# same file, same layout" in text
+    again = load_project(path)
+    assert (again.physics.alpha, again.physics.gutter_mm, again.physics.seed) == (120.0, 4.0, 0)
+    assert again.pages[0].items[0].x == 61.25
+
+
+def add_item(project):
+    page = project.pages[0]
+    new = type(page.items[0])(id="c", x=50.0, y=130.0, w=20.0, h=20.0)
+    page.items.append(new)
+
+
+def delete_item(project):
+    del project.pages[0].items[0]
+
+
+def add_region(project):
+    project.pages[0].regions.append(Region(id="top", left=0.0, top=0.0, w=148.0, h=100.0))
+
+
+def reorder_items(project):
+    project.pages[0].items.reverse()
+
+
+@pytest.mark.parametrize("edit", [add_item, delete_item, add_region, reorder_items],
+                         ids=lambda edit: edit.__name__)
+def test_a_page_written_inline_takes_an_added_deleted_or_reordered_item(tmp_path, edit):
+    """`pages = [{id = "p", items = [...]}]`: an item added (`i` in the editor) or deleted
+    and saved was written as `[[pages.items]]` tables inside the page's braces, a file that
+    no longer parsed ("TOML syntax error: Invalid value"), saved over the user's. The page
+    stays inline, its items an inline array, the other entries as written."""
+    path = tmp_path / "card.toml"
+    path.write_text(INLINE_PAGE)
+    project = load_project(path)
+    edit(project)
+    wanted = [(item.id, item.x, item.y) for item in project.pages[0].items]
+    save_project(project)
+    text = path.read_text()
+    tomllib.loads(text)  # raises where the save wrote no TOML
+    again = load_project(path)
+    assert [(item.id, item.x, item.y) for item in again.pages[0].items] == wanted
+    assert [region.id for region in again.pages[0].regions] == \
+        [region.id for region in project.pages[0].regions]
+    assert "[[pages" not in text and text.startswith("format = 1\npages = [\n  { id = \"p\"")
+    if edit is not reorder_items:
+        assert "},  # the only page\n]\ntitle = \"t\"\n" in text
+
+
+CONFLICTED = '''format = 1
+
+[[pages]]
+id = "p"
+size = "A5"
+
+[[pages.items]]
+id = "a"
+kind = "text"
+x = 50.0
+y = 50.0
+w = 60.0
+h = 20.0
+<<<<<<< HEAD
+text = "Many happy returns!"
+=======
+text = "Happy Birthday, Ana!"
+>>>>>>> other
+'''
+
+
+def test_a_merge_conflict_left_in_the_file_is_named_as_one(tmp_path):
+    """A `git merge` that stopped on the project left its markers in it: every command said
+    "TOML syntax error: Invalid statement (check quotes, brackets and `key = value` pairs on
+    that line)" at the first marker, with nothing about the merge."""
+    path = tmp_path / "card.toml"
+    path.write_text(CONFLICTED + CONFLICTED[CONFLICTED.index("<<<<<<<"):])
+    with pytest.raises(ProjectFileError) as raised:
+        load_project(path)
+    message = str(raised.value)
+    assert f"{path}:14: a merge conflict is left in the file: 2 conflicts" in message
+    assert "delete the marker lines" in message and "git checkout --ours" in message
+    assert "Invalid statement" not in message
