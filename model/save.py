@@ -152,12 +152,52 @@ def sync_table(table: Table, pairs: Pairs) -> None:
         if value is None or value is KEEP:
             continue
         if key in table:
-            current = table[key]
-            current = current.unwrap() if hasattr(current, "unwrap") else current
-            if not equivalent(key, current, value):
-                table[key] = inline(value)
+            written = table[key]
+            if not equivalent(key, as_read(written), value):
+                table[key] = in_written_form(written, inline(value))
         elif default is None or not same(value, default):
             add_key(table, key, inline(value))
+
+
+def as_read(written: Any) -> Any:
+    """The value of a tomlkit item as the loader (tomllib) read it. A multi-line string's
+    line breaks are CRLF in a Windows file: tomlkit keeps them, tomllib reads LF, so every
+    save of an unchanged CRLF project rewrote each such text as a one-line string with
+    `\\n` in it (user-walk-13)."""
+    value = written.unwrap() if hasattr(written, "unwrap") else written
+    if isinstance(value, str) and "\r" in value and hasattr(written, "as_string"):
+        import tomllib
+        try:
+            return tomllib.loads("v = " + written.as_string())["v"]
+        except tomllib.TOMLDecodeError:
+            return value
+    return value
+
+
+def in_written_form(written: Any, value: Any) -> Any:
+    """``value``, a new string, in the form the user wrote the old one: literal `'...'` and
+    multi-line `\"\"\"...\"\"\"` strings stay so (a word changed in a hand-written multi-line
+    message came back as one line of `\\n`s), where the new words can be written that way
+    and read back the same; else as tomlkit writes it."""
+    from tomlkit.items import String, StringType
+    if not isinstance(written, String) or not isinstance(value, str):
+        return value
+    import tomlkit
+    import tomllib
+    literal = written.type in (StringType.SLL, StringType.MLL)
+    multiline = written.type in (StringType.MLB, StringType.MLL)
+    for form in ((literal, multiline), (literal, True), (False, multiline)):
+        try:
+            candidate = tomlkit.string(value, literal=form[0], multiline=form[1])
+            if form[1] and re.match(r'("""|\'\'\')\r?\n', written.as_string()):
+                # the user's `"""` then a line break, which TOML drops: kept
+                candidate = String(candidate.type, value, "\n" + candidate._original,
+                                   candidate.trivia)
+            if tomllib.loads("v = " + candidate.as_string())["v"] == value:
+                return candidate
+        except (ValueError, tomllib.TOMLDecodeError):  # tomlkit's InvalidStringError is one
+            continue
+    return value
 
 
 PLACES = "_floatpage_places"  # a table's attribute: {removed key: the key that followed it}
@@ -408,8 +448,8 @@ def to_document(project: Project) -> tomlkit.TOMLDocument:
                   ("language", project.language, "en")]
     for key, value, default in top:
         if key in doc:
-            if not same(doc[key].unwrap() if hasattr(doc[key], "unwrap") else doc[key], value):
-                doc[key] = value
+            if not same(as_read(doc[key]), value):
+                doc[key] = in_written_form(doc[key], value)
         elif default is None or not same(value, default) or project.source_document is None:
             doc[key] = value
     if "physics" in doc:

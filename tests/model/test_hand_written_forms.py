@@ -132,3 +132,41 @@ def test_a_merge_conflict_left_in_the_file_is_named_as_one(tmp_path):
     assert f"{path}:14: a merge conflict is left in the file: 2 conflicts" in message
     assert "delete the marker lines" in message and "git checkout --ours" in message
     assert "Invalid statement" not in message
+
+
+WINDOWS_MESSAGE = ('format = 1\r\ntitle = \'C:\\cards\'\r\n\r\n[[pages]]\r\nid = "p"\r\nsize = "A5"\r\n'
+                   '\r\n[[pages.items]]\r\nid = "a"\r\nkind = "text"\r\nx = 50.0\r\ny = 50.0\r\n'
+                   'w = 60.0\r\nh = 30.0\r\ntext = """\r\nDear Ana,\r\nhappy birthday"""\r\n')
+
+
+def test_a_windows_files_multi_line_text_is_kept_as_written(tmp_path):
+    """A multi-line text in a CRLF file: an unchanged project's save rewrote it as
+    `text = "Dear Ana,\\nhappy birthday"` (tomlkit keeps the CRLF inside the string, the
+    loader reads LF, so it looked changed), and so did every save of anything else."""
+    path = tmp_path / "card.toml"
+    path.write_bytes(WINDOWS_MESSAGE.encode())
+    project = load_project(path)
+    save_project(project)
+    assert path.read_bytes() == WINDOWS_MESSAGE.encode()
+    project.pages[0].items[0].x = 52.5
+    save_project(project)
+    assert path.read_bytes() == WINDOWS_MESSAGE.replace("x = 50.0", "x = 52.5").encode()
+
+
+def test_a_changed_text_keeps_the_multi_line_or_literal_form_it_was_written_in(tmp_path):
+    """A word changed in a hand-written `\"\"\"` message (in the editor's form) came back as
+    one line of `\\n`s, and a literal `'C:\\cards'` title as `"C:\\\\cards"`."""
+    path = tmp_path / "card.toml"
+    path.write_bytes(WINDOWS_MESSAGE.encode())
+    project = load_project(path)
+    project.pages[0].items[0].text = "Dear Ana,\nhappy 50th birthday!"
+    project.title = "D:\\cards"
+    save_project(project)
+    assert path.read_bytes() == WINDOWS_MESSAGE.replace("happy birthday", "happy 50th birthday!") \
+        .replace("C:", "D:").encode()
+    again = load_project(path)
+    assert (again.pages[0].items[0].text, again.title) == \
+        ("Dear Ana,\nhappy 50th birthday!", "D:\\cards")
+    project.title = "Ana's card"  # no longer writable as a literal string: a basic one
+    save_project(project)
+    assert load_project(path).title == "Ana's card"
