@@ -281,8 +281,9 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
     existing = parent.get(key)
     if is_inline_array(existing) and sync_inline_array(existing, records, pairs_of, id_of, fill):
         return
-    if isinstance(parent, InlineTable):
-        sync_array_inside_inline_table(parent, key, records, pairs_of, id_of, fill)
+    if isinstance(parent, InlineTable) or (
+            key in ARRAYS_SYNCED_APART and is_inline_array(existing) and len(existing)):
+        sync_inline_array_in_place(parent, key, records, pairs_of, id_of, fill)
         return
     by_id: dict[str, Table] = {}
     if isinstance(existing, AoT):
@@ -373,7 +374,8 @@ def is_inline_array(value: Any) -> bool:
 def sync_inline_array(array: Array, records: list, pairs_of, id_of, fill) -> bool:
     """A user who wrote `pages = [{id = "p", items = [...]}]` keeps that form while the same
     records, in the same order, are only edited (a settle, a move).  Adding, removing or
-    reordering falls back to [[tables]]: returns False, having changed nothing."""
+    reordering pages falls back to [[tables]] (items and regions stay inline:
+    `sync_inline_array_in_place`): returns False, having changed nothing."""
     by_id = {str(entry.get("id")): entry for entry in array}
     if [id_of(record) for record in records] != [str(entry.get("id")) for entry in array] \
             or len(by_id) != len(array):
@@ -385,14 +387,16 @@ def sync_inline_array(array: Array, records: list, pairs_of, id_of, fill) -> boo
     return True
 
 
-def sync_array_inside_inline_table(parent: InlineTable, key: str, records: list, pairs_of,
-                                   id_of, fill) -> None:
-    """Sync an array inside a table written inline (`pages = [{id = "p", items = [...]}]`),
+def sync_inline_array_in_place(parent: Table, key: str, records: list, pairs_of, id_of,
+                               fill) -> None:
+    """Sync a page's items or regions written as an inline array (`items = [{...}, ...]`),
+    and any array inside a table written inline (`pages = [{id = "p", items = [...]}]`),
     where only an inline array can stand: an item added to or deleted from such a page was
     written as `[[pages.items]]` tables inside the braces, a file that no longer parsed,
-    saved over the user's (user-walk-13). Entries are deleted and appended in place, so the
-    others keep their spacing and comments; new ones are inline tables; a reordering builds
-    the array anew."""
+    saved over the user's; in a `[[pages]]` table, a Del rewrote every other item as a
+    table of its own with every key, its comments dropped (user-walk-13). Entries are
+    deleted and appended in place, so the others keep their spacing and comments; new ones
+    are inline tables; a reordering empties the array and fills it again."""
     import tomlkit
     existing = parent.get(key)
     by_id: dict[str, Any] = {}
@@ -413,7 +417,12 @@ def sync_array_inside_inline_table(parent: InlineTable, key: str, records: list,
         if key in parent:
             del parent[key]
         return
-    if is_inline_array(existing) and edit_inline_in_place(existing, entries):
+    if is_inline_array(existing):
+        if not edit_inline_in_place(existing, entries):  # reordered: emptied and refilled,
+            for index in reversed(range(len(existing))):  # which keeps it one entry a line
+                del existing[index]
+            for entry in entries:
+                existing.append(entry)
         return
     array = tomlkit.array()
     for entry in entries:

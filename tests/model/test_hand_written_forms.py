@@ -170,3 +170,29 @@ def test_a_changed_text_keeps_the_multi_line_or_literal_form_it_was_written_in(t
     project.title = "Ana's card"  # no longer writable as a literal string: a basic one
     save_project(project)
     assert load_project(path).title == "Ana's card"
+
+
+INLINE_ITEMS = ('format = 1\n\n[[pages]]\nid = "p"\nsize = "A5"\nitems = [\n'
+                '  { id = "a", kind = "text", x = 50.0, y = 50.0, w = 60.0, h = 30.0, '
+                "text = '''Dear Ana,\nhappy birthday''' },  # the message\n"
+                '  { id = "b", kind = "block", x = 50.0, y = 120.0, w = 20.0, h = 20.0 },\n]\n')
+
+
+def test_an_item_deleted_from_an_inline_items_array_leaves_the_others_as_written(tmp_path):
+    """`items = [{...}, {...}]` under `[[pages]]`, one item deleted (Del in the editor) and
+    saved: every other item was rewritten as a `[[pages.items]]` table with every key
+    (`z = 0`, `decorative = false`, `color = "#000000"` ...), its comment dropped and its
+    literal multi-line text made one line of `\\n`. Now the one entry goes, the rest stays;
+    an added item is one more inline entry."""
+    path = tmp_path / "card.toml"
+    path.write_text(INLINE_ITEMS)
+    project = load_project(path)
+    del project.pages[0].items[1]
+    save_project(project)
+    assert path.read_text() == INLINE_ITEMS.replace(
+        '  { id = "b", kind = "block", x = 50.0, y = 120.0, w = 20.0, h = 20.0 },\n', "")
+    add_item(project)
+    save_project(project)
+    text = path.read_text()
+    assert "[[pages.items]]" not in text and "},  # the message\n" in text
+    assert [item.id for item in load_project(path).pages[0].items] == ["a", "c"]
