@@ -148,7 +148,16 @@ def read_text(path: Path) -> str:
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:
-        raise fail(f"is not UTF-8 text (byte {error.start})", "save it as UTF-8") from None
+        line = raw[:error.start].count(b"\n") + 1
+        if error.reason == "unexpected end of data":
+            # the last character cut in two: "is not UTF-8 text (byte 930) (save it as
+            # UTF-8)" of a UTF-8 file whose save or copy did not finish (user-walk-13)
+            raise ProjectFileError([Problem(
+                path, line, "", "the file stops in the middle of a character, as a file cut "
+                "short does (a save, copy or download that did not finish)",
+                restore_help(path))]) from None
+        raise fail(f"is not UTF-8 text (line {line}, byte {error.start})",
+                   "save it as UTF-8") from None
 
 
 CONFLICT_MARKER = re.compile(r"(<{7}|\|{7}|>{7})( .*)?|={7}")
@@ -190,8 +199,21 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -
         return Problem(path, line, "", f"TOML syntax error: {short}",
                        "the file ends lines with a bare carriage return (CR), which TOML does "
                        "not read as a line end; save it with LF or CRLF line ends")
+    if "(at end of document)" in message:
+        # "Expected '=' after a key ... (at end of document)" with no line, and a hint about
+        # "that line": a file whose save, copy or checkout did not finish (user-walk-13).
+        short = short.replace(" (at end of document)", "")
+        return Problem(path, len(text.splitlines()) or None, "",
+                       f"TOML syntax error at the end of the file: {short}",
+                       "the file stops in the middle of its last line; if it was cut short, by a "
+                       f"save, copy or download that did not finish, {restore_help(path)}")
     return Problem(path, line, "", f"TOML syntax error: {short}",
                    "check quotes, brackets and `key = value` pairs on that line")
+
+
+def restore_help(path: Path) -> str:
+    """What to do about a file cut short: the versions a user still has of it."""
+    return f"restore the .bak beside it, or git's version with `git restore {shlex.quote(str(path))}`"
 
 
 class _Reader:

@@ -196,3 +196,26 @@ def test_an_item_deleted_from_an_inline_items_array_leaves_the_others_as_written
     text = path.read_text()
     assert "[[pages.items]]" not in text and "},  # the message\n" in text
     assert [item.id for item in load_project(path).pages[0].items] == ["a", "c"]
+
+
+CUT_SHORT_CARD = ('format = 1\n\n[[pages]]\nid = "p"\nsize = "A5"\n\n[[pages.items]]\nid = "a"\n'
+                  'kind = "text"\nx = 50.0\ny = 50.0\nw = 60.0\nh = 30.0\ntext = "Joyeux anniversaire, '
+                  'Zoë ! 🎂"\n')
+
+
+@pytest.mark.parametrize("cut", ["in a character", "in a key"])
+def test_a_file_cut_short_is_told_as_one_with_its_line_and_what_to_restore(tmp_path, cut):
+    """A save, copy or checkout that did not finish: cut inside its last character, it "is
+    not UTF-8 text (byte 176) (save it as UTF-8)", of a UTF-8 file; cut inside a key, "TOML
+    syntax error: Expected '=' after a key in a key/value pair (at end of document) (check
+    quotes, brackets and `key = value` pairs on that line)", with no line."""
+    data = CUT_SHORT_CARD.encode()
+    end = data.index("🎂".encode()) + 2 if cut == "in a character" else data.index(b"text =") + 3
+    path = tmp_path / "card.toml"
+    path.write_bytes(data[:end])
+    with pytest.raises(ProjectFileError) as raised:
+        load_project(path)
+    message = str(raised.value)
+    assert message.startswith(f"{path}:14: ")  # the text line
+    assert "git restore" in message and ".bak" in message
+    assert "not UTF-8" not in message and "end of document" not in message
