@@ -262,6 +262,21 @@ def add_key(table: Table, key: str, value: Any) -> None:
         dict.__setitem__(table, key, table.value[key])
     else:
         table[key] = value
+    indent_like_the_others(table, key)
+
+
+def indent_like_the_others(table: Table, key: str) -> None:
+    """Indent an added key as the table's first key is (a tab, two spaces): the keys a save
+    added to a table indented by hand stood at the line's start (user-walk-13)."""
+    from tomlkit.items import AoT, InlineTable, Table as TableItem
+    if isinstance(table, InlineTable) or key not in table.value:
+        return
+    indents = [item.trivia.indent for entry, item in table.value.body
+               if entry is not None and entry.key != key
+               and not isinstance(item, (TableItem, AoT)) and hasattr(item, "trivia")]
+    added = table.value.item(key)
+    if indents and hasattr(added, "trivia") and not indents[0].strip(" \t"):
+        added.trivia.indent = indents[0]
 
 
 def new_table(pairs: Pairs, *, inline_form: bool = False) -> Table:

@@ -9,7 +9,7 @@ import tomllib
 import pytest
 
 from floatpage.model import load_project, save_project
-from floatpage.model.document import Region
+from floatpage.model.document import PointAnchor, Region
 from floatpage.model.errors import ProjectFileError
 
 ITEMS = '''
@@ -219,3 +219,20 @@ def test_a_file_cut_short_is_told_as_one_with_its_line_and_what_to_restore(tmp_p
     assert message.startswith(f"{path}:14: ")  # the text line
     assert "git restore" in message and ".bak" in message
     assert "not UTF-8" not in message and "end of document" not in message
+
+
+def test_a_key_added_to_a_table_indented_by_hand_is_indented_as_its_keys_are(tmp_path):
+    """A user who indents each table's keys with a tab: the keys a save added (a setting, an
+    anchor) stood at the line's start among them."""
+    text = ('format = 1\n\n[physics]\n\tseed = 0\n\n[[pages]]\n\tid = "p"\n\tsize = "A5"\n\n'
+            '[[pages.items]]\n\tid = "a"\n\tkind = "block"\n\tx = 50.0\n\ty = 50.0\n\tw = 20.0\n'
+            '\th = 20.0\n')
+    path = tmp_path / "card.toml"
+    path.write_text(text)
+    project = load_project(path)
+    project.physics.alpha = 120.0
+    project.pages[0].items[0].anchor = PointAnchor(x=50.0, y=50.0, gamma=1.0)
+    save_project(project)
+    written = path.read_text()
+    assert "\tseed = 0\n\talpha = 120.0\n" in written
+    assert "\th = 20.0\n\tanchor = {x = 50.0, y = 50.0, gamma = 1.0}\n" in written
