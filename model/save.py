@@ -153,10 +153,28 @@ def sync_table(table: Table, pairs: Pairs) -> None:
             continue
         if key in table:
             written = table[key]
-            if not equivalent(key, as_read(written), value):
+            if not equivalent(key, as_read(written), value) \
+                    and not changed_in_place(written, value):
                 table[key] = in_written_form(written, inline(value))
         elif default is None or not same(value, default):
             add_key(table, key, inline(value))
+
+
+def changed_in_place(written: Any, value: Any) -> bool:
+    """Set the values of a table the user wrote (`anchor = { x = 63.5, y = 179.01 }`, or as
+    `anchor.x = 63.5` lines, or under `[pages.items.anchor]`) one by one, where ``value``
+    has the same keys: replaced whole, it lost the user's spacing, `{x = 70.0, y = 179.01}`,
+    or form on every move of an anchor (user-walk-13). False,
+    with nothing changed, where keys come or go (tomlkit then leaves stray spaces)."""
+    from tomlkit.container import OutOfOrderTableProxy
+    from tomlkit.items import InlineTable, Table as TableItem
+    if not isinstance(written, (InlineTable, TableItem, OutOfOrderTableProxy)) \
+            or not isinstance(value, dict) or set(written) != set(value):
+        return False
+    for key, new in value.items():
+        if not same(as_read(written[key]), new):
+            written[key] = in_written_form(written[key], new)
+    return True
 
 
 def as_read(written: Any) -> Any:

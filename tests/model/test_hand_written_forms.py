@@ -236,3 +236,23 @@ def test_a_key_added_to_a_table_indented_by_hand_is_indented_as_its_keys_are(tmp
     written = path.read_text()
     assert "\tseed = 0\n\talpha = 120.0\n" in written
     assert "\th = 20.0\n\tanchor = {x = 50.0, y = 50.0, gamma = 1.0}\n" in written
+
+
+@pytest.mark.parametrize("written, saved", [
+    ("anchor = { x = 50.0, y = 90.0, gamma = 1.0 }  # kept here\n",
+     "anchor = { x = 61.25, y = 90.0, gamma = 1.0 }  # kept here\n"),
+    ("anchor.x = 50.0\nanchor.y = 90.0\nanchor.gamma = 1.0\n",
+     "anchor.x = 61.25\nanchor.y = 90.0\nanchor.gamma = 1.0\n"),
+], ids=["inline, spaced", "dotted"])
+def test_a_moved_anchor_keeps_the_form_it_was_written_in(tmp_path, written, saved):
+    """An anchor written `{ x = 50.0, y = 90.0, gamma = 1.0 }` (spaces inside the braces,
+    as most people and formatters write them) came back `{x = 61.25, y = 90.0, gamma = 1.0}`
+    after a move, and one written as dotted keys came back an inline table: a diff of the
+    form on every anchor moved."""
+    text = 'format = 1\n\n[[pages]]\nid = "p"\nsize = "A5"\n' + ITEMS + written
+    path = tmp_path / "card.toml"
+    path.write_text(text)
+    project = load_project(path)
+    project.pages[0].items[1].anchor = PointAnchor(x=61.25, y=90.0, gamma=1.0)
+    save_project(project)
+    assert path.read_text() == text.replace(written, saved)
