@@ -229,6 +229,7 @@ class _Reader:
         self.lines = LineFinder(text)
         self.problems: list[Problem] = []
         self.named_regions: set[tuple[int, str]] = set()  # (page index, id) of every region table
+        self.named_pictures: set[Path] = set()  # every picture file the project names
 
     def add(self, line: int | None, where: str, message: str, hint: str = "") -> None:
         self.problems.append(Problem(self.path, line, where, message, hint))
@@ -274,6 +275,7 @@ class _Reader:
         return good
 
     def project(self, data: dict) -> Project:
+        self.named_pictures = {self.path.parent / name for name in picture_names(data)}
         top = self.check_table(data, TOP_KEYS, "", None)
         fmt = top.get("format")
         if fmt is not None and fmt != FORMAT_VERSION:
@@ -454,11 +456,16 @@ class _Reader:
                      "template: make its documents with `floatpage merge TEMPLATE DATA -o "
                      "OUTDIR`")
             return
+        renamed = similar_file(picture, self.named_pictures) \
+            if header.problem == "not found" else None
+        renamed_words = f'; there is "{printable_relative(renamed, self.path.parent)}" beside ' \
+            "it: renamed?" if renamed else ""
         if header.problem and self.missing_pictures_ok:
             problem = "is missing" if header.problem == "not found" else header.problem
-            self.missing_pictures.append(f'{where}: picture file "{relative}" {problem}')
+            self.missing_pictures.append(f'{where}: picture file "{relative}" {problem}'
+                                         + renamed_words)
         elif header.problem == "not found":
-            self.add(line, where, f'picture file "{relative}" not found',
+            self.add(line, where, f'picture file "{relative}" not found' + renamed_words,
                      f"paths are relative to {folder_words(self.path)}; fix the path or copy "
                      "the file there")
         elif header.problem:
@@ -582,6 +589,45 @@ class _Reader:
                                  "remove the anchor from one of these items")
                     reported |= set(cycle)
             finished.update(chain)
+
+
+def picture_names(data: dict) -> list[str]:
+    """Every picture path the parsed file names (items' and backgrounds'), as written."""
+    names = []
+    pages = data.get("pages")
+    for page in pages if isinstance(pages, list) else ():
+        if not isinstance(page, dict):
+            continue
+        background = page.get("background")
+        if isinstance(background, dict) and isinstance(background.get("picture"), str):
+            names.append(background["picture"])
+        items = page.get("items")
+        for item in items if isinstance(items, list) else ():
+            if isinstance(item, dict) and isinstance(item.get("path"), str):
+                names.append(item["path"])
+    return names
+
+
+def similar_file(missing: Path, named: set[Path]) -> Path | None:
+    """The file in a missing picture's folder whose name is closest to it, if one is close
+    and no other item names it: a picture renamed in git (`git mv sunflower.jpg
+    sunflower-2027.jpg`) by a colleague left the user with "not found" and a folder to
+    search (user-walk-13); the album's `photo-2.jpg`, which its own item shows, is no
+    answer for a missing `photo-1.jpg`."""
+    try:
+        names = sorted(entry.name for entry in missing.parent.iterdir()
+                       if entry.is_file() and missing.parent / entry.name not in named)
+    except OSError:
+        return None
+    close = difflib.get_close_matches(missing.name, names[:2000], n=1, cutoff=0.6)
+    return missing.parent / close[0] if close else None
+
+
+def printable_relative(path: Path, folder: Path) -> str:
+    try:
+        return path.relative_to(folder).as_posix()
+    except ValueError:
+        return str(path)
 
 
 def folder_words(project: Path) -> str:

@@ -256,3 +256,27 @@ def test_a_moved_anchor_keeps_the_form_it_was_written_in(tmp_path, written, save
     project.pages[0].items[1].anchor = PointAnchor(x=61.25, y=90.0, gamma=1.0)
     save_project(project)
     assert path.read_text() == text.replace(written, saved)
+
+
+def test_a_picture_renamed_by_a_colleague_is_offered_by_its_new_name(tmp_path):
+    """`git mv pictures/sunflower.jpg pictures/sunflower-2027.jpg` pulled from a colleague:
+    "not found", and a folder to search. A file of a close name no other item shows is
+    named; one another item shows (the album's next photo) is not."""
+    import shutil
+    from pathlib import Path
+    samples = Path(__file__).resolve().parents[2] / "sample_projects" / "greeting-card"
+    shutil.copytree(samples / "pictures", tmp_path / "pictures")
+    text = (samples / "greeting-card.toml").read_text()
+    (tmp_path / "pictures" / "sunflower.jpg").rename(tmp_path / "pictures" / "sunflower-2027.jpg")
+    path = tmp_path / "card.toml"
+    path.write_text(text)
+    with pytest.raises(ProjectFileError) as raised:
+        load_project(path)
+    assert 'picture file "pictures/sunflower.jpg" not found; there is ' \
+        '"pictures/sunflower-2027.jpg" beside it: renamed?' in str(raised.value)
+    assert 'is missing; there is "pictures/sunflower-2027.jpg"' in \
+        load_project(path, missing_pictures_ok=True).missing_pictures[0]
+    path.write_text(text.replace("pictures/tulips.jpg", "pictures/sunflower-2027.jpg"))
+    with pytest.raises(ProjectFileError) as raised:
+        load_project(path)
+    assert "not found (paths are relative" in str(raised.value)
