@@ -173,6 +173,19 @@ def conflict_marker_lines(text: str) -> list[int]:
             if CONFLICT_MARKER.fullmatch(line.rstrip("\r"))]
 
 
+def item_before_its_page(text: str) -> int | None:
+    """The line of a `[[pages.items]]` (or any `pages.` table) above the file's first
+    `[[pages]]`, which TOML refuses at the `[[pages]]` line as "Cannot overwrite a value"
+    (user-walk-13: tables moved around by hand)."""
+    for number, line in enumerate(text.splitlines(), start=1):
+        header = line.strip().replace(" ", "")
+        if header.startswith("[[pages]]"):
+            return None
+        if header.startswith(("[[pages.", "[pages.")):
+            return number
+    return None
+
+
 def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -> Problem:
     message = str(error)
     line = getattr(error, "lineno", None)
@@ -199,6 +212,12 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -
         return Problem(path, line, "", f"TOML syntax error: {short}",
                        "the file ends lines with a bare carriage return (CR), which TOML does "
                        "not read as a line end; save it with LF or CRLF line ends")
+    early = item_before_its_page(text) if "Cannot" in short else None
+    if early is not None:
+        return Problem(path, early, "", "an item or region table comes before any [[pages]] "
+                       "header", "a page's [[pages.items]] and [[pages.regions]] follow its "
+                       "[[pages]] header: move the [[pages]] line, with the page's keys, above "
+                       "this line")
     if "(at end of document)" in message:
         # "Expected '=' after a key ... (at end of document)" with no line, and a hint about
         # "that line": a file whose save, copy or checkout did not finish (user-walk-13).
@@ -241,7 +260,8 @@ class _Reader:
         for name in table:
             if name not in known:
                 close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.6)
-                hint = f'did you mean "{close[0]}"?' if close else "allowed keys: " + ", ".join(known)
+                hint = f'did you mean "{close[0]}"?' if close else \
+                    misplaced_key_hint(name, where) or "allowed keys: " + ", ".join(known)
                 self.add(self.lines.key_line(table_line, name), where, f'unknown key "{name}"', hint)
         for key in keys:
             if key.name not in table:
@@ -589,6 +609,23 @@ class _Reader:
                                  "remove the anchor from one of these items")
                     reported |= set(cycle)
             finished.update(chain)
+
+
+def misplaced_key_hint(name: str, where: str) -> str | None:
+    """Where a key that belongs to an enclosing table goes: in TOML a key belongs to the
+    table whose header stands above it, so `title = "..."` typed at the file's end, under
+    its last item, was "unknown key "title" (allowed keys: id, kind, x, ...)" of that
+    item (user-walk-13)."""
+    top = {key.name for key in TOP_KEYS if key.kind != "array"}
+    if where and name in top:
+        return (f'"{name}" belongs at the top of the file: in TOML a key belongs to the '
+                f"table whose header is above it, so move the line above the first [header]")
+    page = {key.name for key in PAGE_KEYS if key.kind != "array"}
+    if where.startswith(("item ", "region ")) and name in page:
+        return (f'"{name}" is a page\'s key: in TOML a key belongs to the table whose header '
+                "is above it, so move the line up, under the page's [[pages]] header and "
+                "above its first [[pages.items]]")
+    return None
 
 
 def picture_names(data: dict) -> list[str]:

@@ -280,3 +280,28 @@ def test_a_picture_renamed_by_a_colleague_is_offered_by_its_new_name(tmp_path):
     with pytest.raises(ProjectFileError) as raised:
         load_project(path)
     assert "not found (paths are relative" in str(raised.value)
+
+
+BLOCK = 'id = "a"\nkind = "block"\nx = 50.0\ny = 50.0\nw = 20.0\nh = 20.0\n'
+
+
+@pytest.mark.parametrize("text, line, words", [
+    ('format = 1\n\n[[pages]]\nid = "p"\n\n[[pages.items]]\n' + BLOCK + 'title = "My card"\n', 13,
+     '"title" belongs at the top of the file'),
+    ('format = 1\n\n[[pages]]\nid = "p"\n\n[[pages.items]]\n' + BLOCK + 'size = "A5"\n', 13,
+     "\"size\" is a page's key"),
+    ('format = 1\n\n[[pages.items]]\n' + BLOCK + '\n[[pages]]\nid = "p"\n', 3,
+     "an item or region table comes before any [[pages]] header"),
+], ids=["title at the end", "page size under an item", "items above their page"])
+def test_a_key_or_table_put_under_the_wrong_header_says_where_it_belongs(tmp_path, text, line,
+                                                                         words):
+    """Lines moved around by hand: a `title` typed at the file's end was an unknown key of
+    the last item ("allowed keys: id, kind, x, ..."), and `[[pages.items]]` above the first
+    `[[pages]]` was "TOML syntax error: Cannot overwrite a value" at the `[[pages]]` line."""
+    path = tmp_path / "card.toml"
+    path.write_text(text)
+    with pytest.raises(ProjectFileError) as raised:
+        load_project(path)
+    message = str(raised.value)
+    assert message.startswith(f"{path}:{line}: ") and words in message, message
+    assert "allowed keys" not in message and "Cannot overwrite" not in message
