@@ -207,12 +207,15 @@ def cmd_settle(args: argparse.Namespace) -> int:
         print(would_move(read, Positions.of(project), args.path))
         return EXIT_OK
     with ProjectLock(args.path, purpose="floatpage settle"):
+        conflicted = mend_position_conflicts(Path(args.path))
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         read = Positions.of(project)
         settle_and_report(project, args)
         before = file_identity(project.path)
         save_settled(project, read)
-        written = file_identity(project.path) != before
+        written = file_identity(project.path) != before or conflicted is not None
+        if conflicted is not None:
+            keep_conflicted_as_backup(Path(args.path), conflicted)
     # A settled file is left as it is (its mtime too, so make sees nothing new): say so
     # rather than claim a write that never happened.
     if written:
@@ -220,6 +223,50 @@ def cmd_settle(args: argparse.Namespace) -> int:
     else:
         print(f"{printable(str(project.path))}: already settled, nothing to write")
     return EXIT_OK
+
+
+def mend_position_conflicts(path: Path) -> bytes | None:
+    """A merge that left conflicts in item positions only (two people who each changed the
+    project and settled it): the first side of each is kept, so the settle that follows lays
+    the pages out again from both sides' other changes (`model.merge_conflicts`). The file
+    with its conflicts is returned, to be kept as NAME.bak once the settle is saved (the
+    settle's own save would keep the file between the two). Any other conflict is left for
+    the loader to name, and None returned."""
+    import tomllib
+
+    from floatpage.model.atomic_file import atomic_write
+    from floatpage.model.merge_conflicts import keep_first_sides, positions_only
+
+    try:
+        raw = path.read_bytes() if path.is_file() else b""
+    except OSError:
+        return None
+    if b"\n=======" not in raw:
+        return None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return None
+    count = positions_only(text)
+    if not count:
+        return None
+    kept = keep_first_sides(text)
+    try:
+        tomllib.loads(kept.removeprefix("\ufeff"))
+    except tomllib.TOMLDecodeError:
+        return None  # more is wrong than the conflicts: the loader says what
+    atomic_write(path, kept.encode("utf-8"), backup=False)
+    print(f"note: {printable(str(path))}: {count} merge conflict{'s' if count != 1 else ''} in "
+          "item positions only: kept the first side of each, and the settle lays the pages "
+          f"out again (the file with the conflicts is kept as {printable(path.name)}.bak); "
+          f"`git add {typed_path(str(path))}` then finishes the merge", file=sys.stderr)
+    return raw
+
+
+def keep_conflicted_as_backup(path: Path, conflicted: bytes) -> None:
+    from floatpage.model.atomic_file import atomic_write
+
+    atomic_write(path.with_name(path.name + ".bak"), conflicted, backup=False)
 
 
 def would_move(read, settled, path: str) -> str:

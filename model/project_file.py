@@ -25,6 +25,7 @@ from floatpage.model.document import (
 )
 from floatpage.model.errors import Problem, ProjectFileError
 from floatpage.model.locate import LineFinder
+from floatpage.model.merge_conflicts import marker_lines, positions_only
 from floatpage.model.picture_files import (
     fields_are_whole_names, is_merge_placeholder, is_outside, names_a_field, read_header,
 )
@@ -160,17 +161,23 @@ def read_text(path: Path) -> str:
                    "save it as UTF-8") from None
 
 
-CONFLICT_MARKER = re.compile(r"(<{7}|\|{7}|>{7})( .*)?|={7}")
-
-
-def conflict_marker_lines(text: str) -> list[int]:
-    """Numbers of the lines of ``text`` that are a version-control conflict's markers
-    (git, Mercurial: `<<<<<<< HEAD`, `=======`, `>>>>>>> branch`, diff3's `|||||||`). A
-    project left mid-merge was only "TOML syntax error: Invalid statement (check quotes,
-    brackets ...)" at the first marker (user-walk-13). Lines inside a multi-line string
-    could look the same, so this is asked only of a file TOML already refused."""
-    return [number for number, line in enumerate(text.splitlines(), start=1)
-            if CONFLICT_MARKER.fullmatch(line.rstrip("\r"))]
+def conflict_problem(path: Path, text: str, first: int) -> Problem:
+    """A merge left its conflict markers in the project: every command said only "TOML
+    syntax error: Invalid statement (check quotes, brackets ...)" at the first one
+    (user-walk-13). Conflicts in positions only are the settle's to mend."""
+    typed = shlex.quote(str(path))
+    count = sum(1 for line in text.splitlines() if line.startswith("<<<<<<<"))
+    message = (f"a merge conflict is left in the file: {count} conflict"
+               f"{'s' if count != 1 else ''}, marked by lines <<<<<<<, ======= and >>>>>>>")
+    if positions_only(text):
+        return Problem(path, first, "", message,
+                       "each is in x and y lines only, the positions a settle writes: "
+                       f"`floatpage settle {typed}` keeps the first side of each and lays the "
+                       "pages out again from both sides' other changes; then `git add` it")
+    return Problem(path, first, "", message,
+                   "between each <<<<<<< and >>>>>>> keep the lines you want, delete the "
+                   "marker lines, then check the file again; or keep one side whole with "
+                   f"`git checkout --ours {typed}` or `--theirs`")
 
 
 def item_before_its_page(text: str) -> int | None:
@@ -195,23 +202,9 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -
         except (IndexError, ValueError):
             line = None
     short = message.split(" (at line")[0]
-    conflict = conflict_marker_lines(text)
+    conflict = marker_lines(text)
     if conflict:
-        first = conflict[0]
-        count = sum(1 for number in conflict
-                    if text.splitlines()[number - 1].startswith("<<<<<<<"))
-        return Problem(path, first, "",
-                       f"a merge conflict is left in the file: {count} conflict"
-                       f"{'s' if count != 1 else ''}, marked by lines <<<<<<<, ======= and >>>>>>>",
-                       "between each <<<<<<< and >>>>>>> keep the lines you want, delete the "
-                       "marker lines, then check the file again; or keep one side whole with "
-                       f"`git checkout --ours {shlex.quote(str(path))}` or `--theirs`")
-    if "\r" in text.replace("\r\n", ""):
-        # Lines ended by a bare carriage return (classic Mac OS, some exporters) are one
-        # long line to TOML: "line 1: Expected newline" sent the user to a line that was fine.
-        return Problem(path, line, "", f"TOML syntax error: {short}",
-                       "the file ends lines with a bare carriage return (CR), which TOML does "
-                       "not read as a line end; save it with LF or CRLF line ends")
+        return conflict_problem(path, text, conflict[0])
     early = item_before_its_page(text) if "Cannot" in short else None
     if early is not None:
         return Problem(path, early, "", "an item or region table comes before any [[pages]] "

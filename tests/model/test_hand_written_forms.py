@@ -305,3 +305,16 @@ def test_a_key_or_table_put_under_the_wrong_header_says_where_it_belongs(tmp_pat
     message = str(raised.value)
     assert message.startswith(f"{path}:{line}: ") and words in message, message
     assert "allowed keys" not in message and "Cannot overwrite" not in message
+
+
+def test_conflicts_in_positions_only_are_told_apart_and_keep_their_first_side():
+    """diff3's base section and CRLF line ends included; a conflict with any other line,
+    or markers that do not pair up, is not one a settle mends."""
+    from floatpage.model.merge_conflicts import keep_first_sides, positions_only
+    positions = ("id = \"a\"\r\n<<<<<<< HEAD\r\nx = 1.0\r\ny = 2.0\r\n||||||| base\r\nx = 0.5\r\n"
+                 "=======\r\nx = 3.0  # theirs\r\ny = 4.0\r\n>>>>>>> ana\r\nw = 5.0\r\n")
+    assert positions_only(positions) == 1
+    assert keep_first_sides(positions) == "id = \"a\"\r\nx = 1.0\r\ny = 2.0\r\nw = 5.0\r\n"
+    assert positions_only(positions.replace("y = 4.0", "w = 4.0")) == 0
+    assert positions_only(positions.replace(">>>>>>> ana\r\n", "")) == 0
+    assert positions_only("x = 1.0\n") == 0
