@@ -205,12 +205,24 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -
     conflict = marker_lines(text)
     if conflict:
         return conflict_problem(path, text, conflict[0])
+    if "\r" in text.replace("\r\n", ""):
+        # Lines ended by a bare carriage return (classic Mac OS, some exporters) are one
+        # long line to TOML: "line 1: Expected newline" sent the user to a line that was fine.
+        return Problem(path, line, "", f"TOML syntax error: {short}",
+                       "the file ends lines with a bare carriage return (CR), which TOML does "
+                       "not read as a line end; save it with LF or CRLF line ends")
     early = item_before_its_page(text) if "Cannot" in short else None
     if early is not None:
         return Problem(path, early, "", "an item or region table comes before any [[pages]] "
                        "header", "a page's [[pages.items]] and [[pages.regions]] follow its "
                        "[[pages]] header: move the [[pages]] line, with the page's keys, above "
                        "this line")
+    first = repeated_key_line(text, line) if "Cannot overwrite" in short else None
+    if first is not None:
+        key = KEY_LINE.match(text.splitlines()[line - 1])["key"]
+        return Problem(path, line, "", f'"{key}" is given twice in one table (line {first} and '
+                       "this one)", "keep one of the two lines; both sides of a merge "
+                       "conflict kept by hand give each key twice")
     if "(at end of document)" in message:
         # "Expected '=' after a key ... (at end of document)" with no line, and a hint about
         # "that line": a file whose save, copy or checkout did not finish (user-walk-13).
@@ -221,6 +233,29 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -
                        f"save, copy or download that did not finish, {restore_help(path)}")
     return Problem(path, line, "", f"TOML syntax error: {short}",
                    "check quotes, brackets and `key = value` pairs on that line")
+
+
+KEY_LINE = re.compile(r"\s*(?P<key>[A-Za-z0-9_-]+)\s*=")
+
+
+def repeated_key_line(text: str, line: int | None) -> int | None:
+    """The line above ``line`` in the same table that sets the key ``line`` sets again, which
+    tomllib calls "Cannot overwrite a value" (user-walk-13: both sides of a merge conflict
+    kept, `x = 181.34` then `x = 181.9`)."""
+    lines = text.splitlines()
+    if line is None or not 0 < line <= len(lines):
+        return None
+    match = KEY_LINE.match(lines[line - 1])
+    if match is None:
+        return None
+    for number in range(line - 1, 0, -1):
+        above = lines[number - 1]
+        if above.lstrip().startswith("["):
+            return None
+        found = KEY_LINE.match(above)
+        if found and found["key"] == match["key"]:
+            return number
+    return None
 
 
 def restore_help(path: Path) -> str:

@@ -292,12 +292,16 @@ BLOCK = 'id = "a"\nkind = "block"\nx = 50.0\ny = 50.0\nw = 20.0\nh = 20.0\n'
      "\"size\" is a page's key"),
     ('format = 1\n\n[[pages.items]]\n' + BLOCK + '\n[[pages]]\nid = "p"\n', 3,
      "an item or region table comes before any [[pages]] header"),
-], ids=["title at the end", "page size under an item", "items above their page"])
+    ('format = 1\n\n[[pages]]\nid = "p"\n\n[[pages.items]]\n' + BLOCK.replace(
+        "x = 50.0\n", "x = 50.0\nx = 52.5\n"), 10, "\"x\" is given twice in one table (line 9"),
+], ids=["title at the end", "page size under an item", "items above their page",
+        "both sides of a conflict kept"])
 def test_a_key_or_table_put_under_the_wrong_header_says_where_it_belongs(tmp_path, text, line,
                                                                          words):
     """Lines moved around by hand: a `title` typed at the file's end was an unknown key of
     the last item ("allowed keys: id, kind, x, ..."), and `[[pages.items]]` above the first
-    `[[pages]]` was "TOML syntax error: Cannot overwrite a value" at the `[[pages]]` line."""
+    `[[pages]]` was "TOML syntax error: Cannot overwrite a value" at the `[[pages]]` line, as
+    was a key given twice (both sides of a merge conflict kept)."""
     path = tmp_path / "card.toml"
     path.write_text(text)
     with pytest.raises(ProjectFileError) as raised:
