@@ -226,41 +226,21 @@ def cmd_settle(args: argparse.Namespace) -> int:
 
 
 def mend_position_conflicts(path: Path) -> bytes | None:
-    """A merge that left conflicts in item positions only (two people who each changed the
-    project and settled it): the first side of each is kept, so the settle that follows lays
-    the pages out again from both sides' other changes (`model.merge_conflicts`). The file
-    with its conflicts is returned, to be kept as NAME.bak once the settle is saved (the
-    settle's own save would keep the file between the two). Any other conflict is left for
-    the loader to name, and None returned."""
-    import tomllib
+    """Where a merge left conflicts in item positions only, keep the first side of each
+    (`model.merge_conflicts.mend_positions`) and say so; the file with its conflicts is
+    returned, to be kept as NAME.bak once the settle is saved (the settle's own save would
+    keep the file between the two)."""
+    from floatpage.model.merge_conflicts import mend_positions
 
-    from floatpage.model.atomic_file import atomic_write
-    from floatpage.model.merge_conflicts import keep_first_sides, positions_only
-
-    try:
-        raw = path.read_bytes() if path.is_file() else b""
-    except OSError:
+    mended = mend_positions(path)
+    if mended is None:
         return None
-    if b"\n=======" not in raw:
-        return None
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError:
-        return None
-    count = positions_only(text)
-    if not count:
-        return None
-    kept = keep_first_sides(text)
-    try:
-        tomllib.loads(kept.removeprefix("\ufeff"))
-    except tomllib.TOMLDecodeError:
-        return None  # more is wrong than the conflicts: the loader says what
-    atomic_write(path, kept.encode("utf-8"), backup=False)
+    conflicted, count = mended
     print(f"note: {printable(str(path))}: {count} merge conflict{'s' if count != 1 else ''} in "
           "item positions only: kept the first side of each, and the settle lays the pages "
           f"out again (the file with the conflicts is kept as {printable(path.name)}.bak); "
           f"`git add {typed_path(str(path))}` then finishes the merge", file=sys.stderr)
-    return raw
+    return conflicted
 
 
 def keep_conflicted_as_backup(path: Path, conflicted: bytes) -> None:

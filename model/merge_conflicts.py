@@ -11,7 +11,11 @@ the page out again from both people's changes, so `floatpage settle` does that i
 from __future__ import annotations
 
 import re
+import tomllib
 from dataclasses import dataclass
+from pathlib import Path
+
+from floatpage.model.atomic_file import atomic_write
 
 OPENING, BASE, MIDDLE, CLOSING = "<<<<<<<", "|||||||", "=======", ">>>>>>>"
 MARKER = re.compile(r"(<{7}|\|{7}|>{7})( .*)?|={7}")
@@ -98,3 +102,29 @@ def keep_first_sides(text: str) -> str:
         if not skipping:
             kept.append(line)
     return "".join(kept)
+
+
+def mend_positions(path: Path) -> tuple[bytes, int] | None:
+    """Keep the first side of each conflict in the file at ``path`` where every conflict is
+    in positions only and the rest then reads as TOML; return the file as it was (with its
+    conflicts) and how many there were, or None, with nothing written, for any other file."""
+    try:
+        raw = path.read_bytes() if path.is_file() else b""
+    except OSError:
+        return None
+    if b"\n=======" not in raw:
+        return None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return None
+    count = positions_only(text)
+    if not count:
+        return None
+    kept = keep_first_sides(text)
+    try:
+        tomllib.loads(kept.removeprefix("\ufeff"))
+    except tomllib.TOMLDecodeError:
+        return None  # more is wrong than the conflicts: the loader says what
+    atomic_write(path, kept.encode("utf-8"), backup=False)
+    return raw, count
