@@ -207,12 +207,15 @@ def cmd_settle(args: argparse.Namespace) -> int:
         print(would_move(read, Positions.of(project), args.path))
         return EXIT_OK
     with ProjectLock(args.path, purpose="floatpage settle"):
+        conflicted = mend_position_conflicts(Path(args.path))
         project = load_project(args.path, allow_outside_files=args.allow_outside_files)
         read = Positions.of(project)
         settle_and_report(project, args)
         before = file_identity(project.path)
         save_settled(project, read)
-        written = file_identity(project.path) != before
+        written = file_identity(project.path) != before or conflicted is not None
+        if conflicted is not None:
+            keep_conflicted_as_backup(Path(args.path), conflicted)
     # A settled file is left as it is (its mtime too, so make sees nothing new): say so
     # rather than claim a write that never happened.
     if written:
@@ -220,6 +223,30 @@ def cmd_settle(args: argparse.Namespace) -> int:
     else:
         print(f"{printable(str(project.path))}: already settled, nothing to write")
     return EXIT_OK
+
+
+def mend_position_conflicts(path: Path) -> bytes | None:
+    """Where a merge left conflicts in item positions only, keep the first side of each
+    (`model.merge_conflicts.mend_positions`) and say so; the file with its conflicts is
+    returned, to be kept as NAME.bak once the settle is saved (the settle's own save would
+    keep the file between the two)."""
+    from floatpage.model.merge_conflicts import mend_positions
+
+    mended = mend_positions(path)
+    if mended is None:
+        return None
+    conflicted, count = mended
+    print(f"note: {printable(str(path))}: {count} merge conflict{'s' if count != 1 else ''} in "
+          "item positions only: kept the first side of each, and the settle lays the pages "
+          f"out again (the file with the conflicts is kept as {printable(path.name)}.bak); "
+          f"`git add {typed_path(str(path))}` then finishes the merge", file=sys.stderr)
+    return conflicted
+
+
+def keep_conflicted_as_backup(path: Path, conflicted: bytes) -> None:
+    from floatpage.model.atomic_file import atomic_write
+
+    atomic_write(path.with_name(path.name + ".bak"), conflicted, backup=False)
 
 
 def would_move(read, settled, path: str) -> str:
@@ -443,9 +470,34 @@ def refuse_other_format(out: Path, project: str) -> None:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
+    """Check each project named, all of them whatever one says: a pre-commit hook, or a
+    Makefile's `floatpage check --strict $^`, passes every project file at once, and was
+    refused with "unrecognized arguments", exit 2 (user-walk-13). A file that cannot be read
+    is told as a single one is, and the others are still checked; the exit code is the
+    worst of them."""
+    if len(args.path) == 1:
+        return check_one(args.path[0], args)
+    status = EXIT_OK
+    for number, path in enumerate(args.path):
+        if number and not args.quiet:
+            print()
+        try:
+            status = max(status, check_one(path, args, among_others=True))
+        except FloatpageError as error:
+            lines = [printable(line) for line in str(error).split("\n")]
+            sys.stdout.flush()
+            print("floatpage: " + "\n".join(lines), file=sys.stderr)
+            status = max(status, EXIT_USER_ERROR)
+    return status
+
+
+def check_one(path: str, args: argparse.Namespace, *, among_others: bool = False) -> int:
+    """`floatpage check` of one project: its report on stdout, 1 for a problem with the
+    file, or with the layout under --strict. ``among_others``: under -q, the file's first
+    line comes before anything else said of it, so each page's line has its file."""
     from floatpage.model import load_project
 
-    project = load_project(args.path, allow_outside_files=args.allow_outside_files)
+    project = load_project(path, allow_outside_files=args.allow_outside_files)
     from floatpage.model.page_report import (
         MAKE_ROOM, empty_page_notes, page_report, settle_may_help, settle_mends, tiny_items,
         what_settle_fixes,
@@ -454,8 +506,17 @@ def cmd_check(args: argparse.Namespace) -> int:
 
     # -q (user-walk-12b: `check --strict -q` in a Makefile was exit 2, as the other commands
     # take -q): the figures of pages without problems and the notes are left out
-    say = (lambda text: None) if args.quiet else print
-    say(f"{printable(args.path)}: valid project, {len(project.pages)} page(s)")
+    heading = [f"{printable(path)}: valid project, {len(project.pages)} page(s)"]
+
+    def tell(text: str) -> None:
+        while heading:
+            print(heading.pop())
+        print(text)
+
+    say = (lambda text: None) if args.quiet else tell
+    if not args.quiet or not among_others:
+        heading.clear()
+    say(f"{printable(path)}: valid project, {len(project.pages)} page(s)")
     issues = 0
     settle_lines: list[str] = []  # the lines that send the user to `settle`
     stuck: list[str] = []  # pages with problems no settle mends
@@ -469,7 +530,7 @@ def cmd_check(args: argparse.Namespace) -> int:
             if not mends:
                 lines, problems = page_report(page, engine_for_page(page, project.physics),
                                               project.physics.gutter_mm, stuck=True)
-        (print if problems else say)("\n".join(lines))
+        (tell if problems else say)("\n".join(lines))
         issues += problems
         if settle_may_help(lines):
             settle_lines += lines
@@ -483,7 +544,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     tiny = [warning for page in project.pages for warning in tiny_items(page)]
     fits = document_fits(project)  # each text fitted once, for the warnings and the notes
     for warning in tiny + text_fit_warnings(project, fits) + picture_warnings(project):
-        print(f"warning: {printable(warning)}")
+        tell(f"warning: {printable(warning)}")
         issues += 1
     # notes, not problems: --strict still passes
     for note in empty_page_notes(project) + resolution_notes(project) \
@@ -492,8 +553,8 @@ def cmd_check(args: argparse.Namespace) -> int:
     for where, picture in pictures_outside(project):
         say(f"note: {where} uses {printable(picture)}, outside the project folder (allowed)")
     if issues and args.strict:
-        print(f"{printable(args.path)}: {issues} layout problem(s); " + "; ".join(
-            ([f"run `floatpage settle {typed_path(args.path)}` to fix "
+        tell(f"{printable(path)}: {issues} layout problem(s); " + "; ".join(
+            ([f"run `floatpage settle {typed_path(path)}` to fix "
               f"{what_settle_fixes(settle_lines)}"] if settle_lines else [])
             + ([("no settle fixes them" if not settle_lines else "no settle fixes those on "
                  + ", ".join(f"page {printable(page_id)}" for page_id in stuck))
@@ -647,7 +708,9 @@ def build_parser() -> argparse.ArgumentParser:
     check = commands.add_parser("check", help="validate and report layout quality",
                                 description="Validate a project file and report overlaps, items off "
                                             "the page and text that would not fit.")
-    check.add_argument("path", help=PROJECT_PATH_HELP)
+    check.add_argument("path", nargs="+",
+                       help="the project's .toml file; name several to check each (a pre-commit "
+                            "hook, `$^` in a Makefile): the exit code is the worst of them")
     check.add_argument("--strict", action="store_true", help="exit 1 when the layout has problems")
     check.add_argument("-q", "--quiet", action="store_true",
                        help="print only what needs attention: the pages with problems and the "
@@ -701,7 +764,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_USER_ERROR
     try:
         if args.run in (cmd_check, cmd_settle, cmd_render):
-            note_kept_edits(args.path)
+            for path in args.path if isinstance(args.path, list) else [args.path]:
+                note_kept_edits(path)
         return args.run(args)
     except FloatpageError as error:
         # Line by line: a message may list several problems, each on its own line, and each

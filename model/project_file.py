@@ -11,6 +11,8 @@ from __future__ import annotations
 import difflib
 import errno
 import os
+import re
+import shlex
 import stat
 import tomllib
 from pathlib import Path
@@ -23,6 +25,7 @@ from floatpage.model.document import (
 )
 from floatpage.model.errors import Problem, ProjectFileError
 from floatpage.model.locate import LineFinder
+from floatpage.model.merge_conflicts import marker_lines, positions_only
 from floatpage.model.picture_files import (
     fields_are_whole_names, is_merge_placeholder, is_outside, names_a_field, read_header,
 )
@@ -146,7 +149,48 @@ def read_text(path: Path) -> str:
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:
-        raise fail(f"is not UTF-8 text (byte {error.start})", "save it as UTF-8") from None
+        line = raw[:error.start].count(b"\n") + 1
+        if error.reason == "unexpected end of data":
+            # the last character cut in two: "is not UTF-8 text (byte 930) (save it as
+            # UTF-8)" of a UTF-8 file whose save or copy did not finish (user-walk-13)
+            raise ProjectFileError([Problem(
+                path, line, "", "the file stops in the middle of a character, as a file cut "
+                "short does (a save, copy or download that did not finish)",
+                restore_help(path))]) from None
+        raise fail(f"is not UTF-8 text (line {line}, byte {error.start})",
+                   "save it as UTF-8") from None
+
+
+def conflict_problem(path: Path, text: str, first: int) -> Problem:
+    """A merge left its conflict markers in the project: every command said only "TOML
+    syntax error: Invalid statement (check quotes, brackets ...)" at the first one
+    (user-walk-13). Conflicts in positions only are the settle's to mend."""
+    typed = shlex.quote(str(path))
+    count = sum(1 for line in text.splitlines() if line.startswith("<<<<<<<"))
+    message = (f"a merge conflict is left in the file: {count} conflict"
+               f"{'s' if count != 1 else ''}, marked by lines <<<<<<<, ======= and >>>>>>>")
+    if positions_only(text):
+        return Problem(path, first, "", message,
+                       "each is in x and y lines only, the positions a settle writes: "
+                       f"`floatpage settle {typed}` keeps the first side of each and lays the "
+                       "pages out again from both sides' other changes; then `git add` it")
+    return Problem(path, first, "", message,
+                   "between each <<<<<<< and >>>>>>> keep the lines you want, delete the "
+                   "marker lines, then check the file again; or keep one side whole with "
+                   f"`git checkout --ours {typed}` or `--theirs`")
+
+
+def item_before_its_page(text: str) -> int | None:
+    """The line of a `[[pages.items]]` (or any `pages.` table) above the file's first
+    `[[pages]]`, which TOML refuses at the `[[pages]]` line as "Cannot overwrite a value"
+    (user-walk-13: tables moved around by hand)."""
+    for number, line in enumerate(text.splitlines(), start=1):
+        header = line.strip().replace(" ", "")
+        if header.startswith("[[pages]]"):
+            return None
+        if header.startswith(("[[pages.", "[pages.")):
+            return number
+    return None
 
 
 def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -> Problem:
@@ -158,14 +202,65 @@ def syntax_problem(path: Path, error: tomllib.TOMLDecodeError, text: str = "") -
         except (IndexError, ValueError):
             line = None
     short = message.split(" (at line")[0]
+    conflict = marker_lines(text)
+    if conflict:
+        return conflict_problem(path, text, conflict[0])
     if "\r" in text.replace("\r\n", ""):
         # Lines ended by a bare carriage return (classic Mac OS, some exporters) are one
         # long line to TOML: "line 1: Expected newline" sent the user to a line that was fine.
         return Problem(path, line, "", f"TOML syntax error: {short}",
                        "the file ends lines with a bare carriage return (CR), which TOML does "
                        "not read as a line end; save it with LF or CRLF line ends")
+    early = item_before_its_page(text) if "Cannot" in short else None
+    if early is not None:
+        return Problem(path, early, "", "an item or region table comes before any [[pages]] "
+                       "header", "a page's [[pages.items]] and [[pages.regions]] follow its "
+                       "[[pages]] header: move the [[pages]] line, with the page's keys, above "
+                       "this line")
+    first = repeated_key_line(text, line) if "Cannot overwrite" in short else None
+    if first is not None:
+        key = KEY_LINE.match(text.splitlines()[line - 1])["key"]
+        return Problem(path, line, "", f'"{key}" is given twice in one table (line {first} and '
+                       "this one)", "keep one of the two lines; both sides of a merge "
+                       "conflict kept by hand give each key twice")
+    if "(at end of document)" in message:
+        # "Expected '=' after a key ... (at end of document)" with no line, and a hint about
+        # "that line": a file whose save, copy or checkout did not finish (user-walk-13).
+        short = short.replace(" (at end of document)", "")
+        return Problem(path, len(text.splitlines()) or None, "",
+                       f"TOML syntax error at the end of the file: {short}",
+                       "the file stops in the middle of its last line; if it was cut short, by a "
+                       f"save, copy or download that did not finish, {restore_help(path)}")
     return Problem(path, line, "", f"TOML syntax error: {short}",
                    "check quotes, brackets and `key = value` pairs on that line")
+
+
+KEY_LINE = re.compile(r"\s*(?P<key>[A-Za-z0-9_-]+)\s*=")
+
+
+def repeated_key_line(text: str, line: int | None) -> int | None:
+    """The line above ``line`` in the same table that sets the key ``line`` sets again, which
+    tomllib calls "Cannot overwrite a value" (user-walk-13: both sides of a merge conflict
+    kept, `x = 181.34` then `x = 181.9`)."""
+    lines = text.splitlines()
+    if line is None or not 0 < line <= len(lines):
+        return None
+    match = KEY_LINE.match(lines[line - 1])
+    if match is None:
+        return None
+    for number in range(line - 1, 0, -1):
+        above = lines[number - 1]
+        if above.lstrip().startswith("["):
+            return None
+        found = KEY_LINE.match(above)
+        if found and found["key"] == match["key"]:
+            return number
+    return None
+
+
+def restore_help(path: Path) -> str:
+    """What to do about a file cut short: the versions a user still has of it."""
+    return f"restore the .bak beside it, or git's version with `git restore {shlex.quote(str(path))}`"
 
 
 class _Reader:
@@ -181,6 +276,7 @@ class _Reader:
         self.lines = LineFinder(text)
         self.problems: list[Problem] = []
         self.named_regions: set[tuple[int, str]] = set()  # (page index, id) of every region table
+        self.named_pictures: set[Path] = set()  # every picture file the project names
 
     def add(self, line: int | None, where: str, message: str, hint: str = "") -> None:
         self.problems.append(Problem(self.path, line, where, message, hint))
@@ -192,7 +288,8 @@ class _Reader:
         for name in table:
             if name not in known:
                 close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.6)
-                hint = f'did you mean "{close[0]}"?' if close else "allowed keys: " + ", ".join(known)
+                hint = f'did you mean "{close[0]}"?' if close else \
+                    misplaced_key_hint(name, where) or "allowed keys: " + ", ".join(known)
                 self.add(self.lines.key_line(table_line, name), where, f'unknown key "{name}"', hint)
         for key in keys:
             if key.name not in table:
@@ -226,6 +323,7 @@ class _Reader:
         return good
 
     def project(self, data: dict) -> Project:
+        self.named_pictures = {self.path.parent / name for name in picture_names(data)}
         top = self.check_table(data, TOP_KEYS, "", None)
         fmt = top.get("format")
         if fmt is not None and fmt != FORMAT_VERSION:
@@ -406,11 +504,16 @@ class _Reader:
                      "template: make its documents with `floatpage merge TEMPLATE DATA -o "
                      "OUTDIR`")
             return
+        renamed = similar_file(picture, self.named_pictures) \
+            if header.problem == "not found" else None
+        renamed_words = f'; there is "{printable_relative(renamed, self.path.parent)}" beside ' \
+            "it: renamed?" if renamed else ""
         if header.problem and self.missing_pictures_ok:
             problem = "is missing" if header.problem == "not found" else header.problem
-            self.missing_pictures.append(f'{where}: picture file "{relative}" {problem}')
+            self.missing_pictures.append(f'{where}: picture file "{relative}" {problem}'
+                                         + renamed_words)
         elif header.problem == "not found":
-            self.add(line, where, f'picture file "{relative}" not found',
+            self.add(line, where, f'picture file "{relative}" not found' + renamed_words,
                      f"paths are relative to {folder_words(self.path)}; fix the path or copy "
                      "the file there")
         elif header.problem:
@@ -534,6 +637,62 @@ class _Reader:
                                  "remove the anchor from one of these items")
                     reported |= set(cycle)
             finished.update(chain)
+
+
+def misplaced_key_hint(name: str, where: str) -> str | None:
+    """Where a key that belongs to an enclosing table goes: in TOML a key belongs to the
+    table whose header stands above it, so `title = "..."` typed at the file's end, under
+    its last item, was "unknown key "title" (allowed keys: id, kind, x, ...)" of that
+    item (user-walk-13)."""
+    top = {key.name for key in TOP_KEYS if key.kind != "array"}
+    if where and name in top:
+        return (f'"{name}" belongs at the top of the file: in TOML a key belongs to the '
+                f"table whose header is above it, so move the line above the first [header]")
+    page = {key.name for key in PAGE_KEYS if key.kind != "array"}
+    if where.startswith(("item ", "region ")) and name in page:
+        return (f'"{name}" is a page\'s key: in TOML a key belongs to the table whose header '
+                "is above it, so move the line up, under the page's [[pages]] header and "
+                "above its first [[pages.items]]")
+    return None
+
+
+def picture_names(data: dict) -> list[str]:
+    """Every picture path the parsed file names (items' and backgrounds'), as written."""
+    names = []
+    pages = data.get("pages")
+    for page in pages if isinstance(pages, list) else ():
+        if not isinstance(page, dict):
+            continue
+        background = page.get("background")
+        if isinstance(background, dict) and isinstance(background.get("picture"), str):
+            names.append(background["picture"])
+        items = page.get("items")
+        for item in items if isinstance(items, list) else ():
+            if isinstance(item, dict) and isinstance(item.get("path"), str):
+                names.append(item["path"])
+    return names
+
+
+def similar_file(missing: Path, named: set[Path]) -> Path | None:
+    """The file in a missing picture's folder whose name is closest to it, if one is close
+    and no other item names it: a picture renamed in git (`git mv sunflower.jpg
+    sunflower-2027.jpg`) by a colleague left the user with "not found" and a folder to
+    search (user-walk-13); the album's `photo-2.jpg`, which its own item shows, is no
+    answer for a missing `photo-1.jpg`."""
+    try:
+        names = sorted(entry.name for entry in missing.parent.iterdir()
+                       if entry.is_file() and missing.parent / entry.name not in named)
+    except OSError:
+        return None
+    close = difflib.get_close_matches(missing.name, names[:2000], n=1, cutoff=0.6)
+    return missing.parent / close[0] if close else None
+
+
+def printable_relative(path: Path, folder: Path) -> str:
+    try:
+        return path.relative_to(folder).as_posix()
+    except ValueError:
+        return str(path)
 
 
 def folder_words(project: Path) -> str:

@@ -152,12 +152,70 @@ def sync_table(table: Table, pairs: Pairs) -> None:
         if value is None or value is KEEP:
             continue
         if key in table:
-            current = table[key]
-            current = current.unwrap() if hasattr(current, "unwrap") else current
-            if not equivalent(key, current, value):
-                table[key] = inline(value)
+            written = table[key]
+            if not equivalent(key, as_read(written), value) \
+                    and not changed_in_place(written, value):
+                table[key] = in_written_form(written, inline(value))
         elif default is None or not same(value, default):
             add_key(table, key, inline(value))
+
+
+def changed_in_place(written: Any, value: Any) -> bool:
+    """Set the values of a table the user wrote (`anchor = { x = 63.5, y = 179.01 }`, or as
+    `anchor.x = 63.5` lines, or under `[pages.items.anchor]`) one by one, where ``value``
+    has the same keys: replaced whole, it lost the user's spacing, `{x = 70.0, y = 179.01}`,
+    or form on every move of an anchor (user-walk-13). False,
+    with nothing changed, where keys come or go (tomlkit then leaves stray spaces)."""
+    from tomlkit.container import OutOfOrderTableProxy
+    from tomlkit.items import InlineTable, Table as TableItem
+    if not isinstance(written, (InlineTable, TableItem, OutOfOrderTableProxy)) \
+            or not isinstance(value, dict) or set(written) != set(value):
+        return False
+    for key, new in value.items():
+        if not same(as_read(written[key]), new):
+            written[key] = in_written_form(written[key], new)
+    return True
+
+
+def as_read(written: Any) -> Any:
+    """The value of a tomlkit item as the loader (tomllib) read it. A multi-line string's
+    line breaks are CRLF in a Windows file: tomlkit keeps them, tomllib reads LF, so every
+    save of an unchanged CRLF project rewrote each such text as a one-line string with
+    `\\n` in it (user-walk-13)."""
+    value = written.unwrap() if hasattr(written, "unwrap") else written
+    if isinstance(value, str) and "\r" in value and hasattr(written, "as_string"):
+        import tomllib
+        try:
+            return tomllib.loads("v = " + written.as_string())["v"]
+        except tomllib.TOMLDecodeError:
+            return value
+    return value
+
+
+def in_written_form(written: Any, value: Any) -> Any:
+    """``value``, a new string, in the form the user wrote the old one: literal `'...'` and
+    multi-line `\"\"\"...\"\"\"` strings stay so (a word changed in a hand-written multi-line
+    message came back as one line of `\\n`s), where the new words can be written that way
+    and read back the same; else as tomlkit writes it."""
+    from tomlkit.items import String, StringType
+    if not isinstance(written, String) or not isinstance(value, str):
+        return value
+    import tomlkit
+    import tomllib
+    literal = written.type in (StringType.SLL, StringType.MLL)
+    multiline = written.type in (StringType.MLB, StringType.MLL)
+    for form in ((literal, multiline), (literal, True), (False, multiline)):
+        try:
+            candidate = tomlkit.string(value, literal=form[0], multiline=form[1])
+            if form[1] and re.match(r'("""|\'\'\')\r?\n', written.as_string()):
+                # the user's `"""` then a line break, which TOML drops: kept
+                candidate = String(candidate.type, value, "\n" + candidate._original,
+                                   candidate.trivia)
+            if tomllib.loads("v = " + candidate.as_string())["v"] == value:
+                return candidate
+        except (ValueError, tomllib.TOMLDecodeError):  # tomlkit's InvalidStringError is one
+            continue
+    return value
 
 
 PLACES = "_floatpage_places"  # a table's attribute: {removed key: the key that followed it}
@@ -169,12 +227,30 @@ def remember_places(table: Table, keys: list[str]) -> None:
     there (`add_key`): an anchor taken off (`u`), saved, then put back (`a`, or an undo)
     came at its table's end, after `role`, a diff the user did not ask for (user-walk-8).
     Kept on the table, which the editor saves into again."""
-    order = [entry.key for entry, _ in table.value.body if entry is not None]
+    order = [entry.key for entry, _ in written_entries(table) if entry is not None]
     places = table.__dict__.setdefault(PLACES, {})
     for key in keys:
         if key in order:
             following = order[order.index(key) + 1:]
             places[key] = following[0] if following else None
+
+
+def written_in_pieces(table: Table) -> bool:
+    """Whether ``table`` is written in pieces rather than under one header: dotted keys
+    (`physics.seed = 0`, `physics.alpha = 150.0`), which tomlkit reads as a proxy over the
+    pieces with no body of its own. Every save of such a file, even a settle's, stopped with
+    "internal error: AttributeError: 'dict' object has no attribute 'body'" (user-walk-13)."""
+    from tomlkit.container import OutOfOrderTableProxy
+    return isinstance(table, OutOfOrderTableProxy)
+
+
+def written_entries(table: Table) -> list:
+    """The (key, value) entries of ``table`` in the file's order, whether it is written
+    under one header or in pieces (`written_in_pieces`, read through tomlkit's internal
+    merged container, as bounded by pyproject.toml's tomlkit pin)."""
+    if written_in_pieces(table):
+        return table._internal_container.body
+    return table.value.body
 
 
 def add_key(table: Table, key: str, value: Any) -> None:
@@ -185,6 +261,9 @@ def add_key(table: Table, key: str, value: Any) -> None:
     Inserting uses tomlkit's internal `Container._insert_at` (tomlkit has no public insert;
     pyproject.toml bounds tomlkit to the releases this was checked against)."""
     from tomlkit.items import AoT, Table as TableItem
+    if written_in_pieces(table):
+        table[key] = value  # tomlkit writes it as one more piece: `physics.gutter_mm = 4.0`
+        return
     body = table.value.body
     follower = table.__dict__.get(PLACES, {}).pop(key, None)
     place = next((index for index, (entry, item) in enumerate(body)
@@ -201,11 +280,26 @@ def add_key(table: Table, key: str, value: Any) -> None:
         dict.__setitem__(table, key, table.value[key])
     else:
         table[key] = value
+    indent_like_the_others(table, key)
 
 
-def new_table(pairs: Pairs) -> Table:
+def indent_like_the_others(table: Table, key: str) -> None:
+    """Indent an added key as the table's first key is (a tab, two spaces): the keys a save
+    added to a table indented by hand stood at the line's start (user-walk-13)."""
+    from tomlkit.items import AoT, InlineTable, Table as TableItem
+    if isinstance(table, InlineTable) or key not in table.value:
+        return
+    indents = [item.trivia.indent for entry, item in table.value.body
+               if entry is not None and entry.key != key
+               and not isinstance(item, (TableItem, AoT)) and hasattr(item, "trivia")]
+    added = table.value.item(key)
+    if indents and hasattr(added, "trivia") and not indents[0].strip(" \t"):
+        added.trivia.indent = indents[0]
+
+
+def new_table(pairs: Pairs, *, inline_form: bool = False) -> Table:
     import tomlkit
-    table = tomlkit.table()
+    table = tomlkit.inline_table() if inline_form else tomlkit.table()
     for key, value, _ in pairs:
         if value is not None and value is not KEEP:
             table[key] = inline(value)
@@ -216,9 +310,13 @@ def sync_array(parent: Table, key: str, records: list, pairs_of, id_of, fill=Non
                at_end: bool = True) -> None:
     """Sync an array of tables by id: keep existing tables (and their comments), add new ones."""
     import tomlkit
-    from tomlkit.items import AoT
+    from tomlkit.items import AoT, InlineTable
     existing = parent.get(key)
     if is_inline_array(existing) and sync_inline_array(existing, records, pairs_of, id_of, fill):
+        return
+    if isinstance(parent, InlineTable) or (
+            key in ARRAYS_SYNCED_APART and is_inline_array(existing) and len(existing)):
+        sync_inline_array_in_place(parent, key, records, pairs_of, id_of, fill)
         return
     by_id: dict[str, Table] = {}
     if isinstance(existing, AoT):
@@ -309,7 +407,8 @@ def is_inline_array(value: Any) -> bool:
 def sync_inline_array(array: Array, records: list, pairs_of, id_of, fill) -> bool:
     """A user who wrote `pages = [{id = "p", items = [...]}]` keeps that form while the same
     records, in the same order, are only edited (a settle, a move).  Adding, removing or
-    reordering falls back to [[tables]]: returns False, having changed nothing."""
+    reordering pages falls back to [[tables]] (items and regions stay inline:
+    `sync_inline_array_in_place`): returns False, having changed nothing."""
     by_id = {str(entry.get("id")): entry for entry in array}
     if [id_of(record) for record in records] != [str(entry.get("id")) for entry in array] \
             or len(by_id) != len(array):
@@ -318,6 +417,64 @@ def sync_inline_array(array: Array, records: list, pairs_of, id_of, fill) -> boo
         sync_table(entry, pairs_of(record))
         if fill is not None:
             fill(entry, record)
+    return True
+
+
+def sync_inline_array_in_place(parent: Table, key: str, records: list, pairs_of, id_of,
+                               fill) -> None:
+    """Sync a page's items or regions written as an inline array (`items = [{...}, ...]`),
+    and any array inside a table written inline (`pages = [{id = "p", items = [...]}]`),
+    where only an inline array can stand: an item added to or deleted from such a page was
+    written as `[[pages.items]]` tables inside the braces, a file that no longer parsed,
+    saved over the user's; in a `[[pages]]` table, a Del rewrote every other item as a
+    table of its own with every key, its comments dropped (user-walk-13). Entries are
+    deleted and appended in place, so the others keep their spacing and comments; new ones
+    are inline tables; a reordering empties the array and fills it again."""
+    import tomlkit
+    existing = parent.get(key)
+    by_id: dict[str, Any] = {}
+    if is_inline_array(existing):
+        for entry in existing:
+            by_id.setdefault(str(entry.get("id")), entry)
+    entries = []
+    for record in records:
+        entry = by_id.pop(id_of(record), None)
+        if entry is None:
+            entry = new_table(pairs_of(record), inline_form=True)
+        else:
+            sync_table(entry, pairs_of(record))
+        if fill is not None:
+            fill(entry, record)
+        entries.append(entry)
+    if not entries:
+        if key in parent:
+            del parent[key]
+        return
+    if is_inline_array(existing):
+        if not edit_inline_in_place(existing, entries):  # reordered: emptied and refilled,
+            for index in reversed(range(len(existing))):  # which keeps it one entry a line
+                del existing[index]
+            for entry in entries:
+                existing.append(entry)
+        return
+    array = tomlkit.array()
+    for entry in entries:
+        array.append(entry)
+    parent[key] = array
+
+
+def edit_inline_in_place(array: Array, entries: list) -> bool:
+    """`edit_in_place` for an inline array: tomlkit's own delete and append keep the others'
+    spacing and comments. False, with nothing changed, when kept entries were reordered."""
+    wanted = {id(entry) for entry in entries}
+    kept = [entry for entry in array if id(entry) in wanted]
+    if [id(e) for e in kept] != [id(e) for e in entries[:len(kept)]]:
+        return False
+    for index in reversed(range(len(array))):
+        if id(array[index]) not in wanted:
+            del array[index]
+    for entry in entries[len(kept):]:
+        array.append(entry)
     return True
 
 
@@ -333,8 +490,8 @@ def to_document(project: Project) -> tomlkit.TOMLDocument:
                   ("language", project.language, "en")]
     for key, value, default in top:
         if key in doc:
-            if not same(doc[key].unwrap() if hasattr(doc[key], "unwrap") else doc[key], value):
-                doc[key] = value
+            if not same(as_read(doc[key]), value):
+                doc[key] = in_written_form(doc[key], value)
         elif default is None or not same(value, default) or project.source_document is None:
             doc[key] = value
     if "physics" in doc:
