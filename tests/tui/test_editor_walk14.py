@@ -1,0 +1,83 @@
+"""Defects found by walk-14: the editor on other terminals, long sessions, large pages."""
+
+from __future__ import annotations
+
+import shutil
+import sys
+import time
+from pathlib import Path
+
+import pyte
+
+from editor_helpers import editor, until
+from terminal_probe import DOWN, Terminal, hold_arrow
+
+ROOT = Path(__file__).resolve().parents[2]
+COLUMNS, ROWS = 100, 32
+
+
+def copy_sample(tmp_path: Path, sample: str) -> Path:
+    folder = tmp_path / sample
+    shutil.copytree(ROOT / "sample_projects" / sample, folder)
+    return folder / f"{sample}.toml"
+
+
+async def test_no_color_opens_the_editor_and_draws_the_page(tmp_path, monkeypatch):
+    """With NO_COLOR set (no-color.org, a convention many users keep in their shell's
+    profile), `floatpage edit` died at start with a traceback: Textual's Monochrome filter
+    reads every segment's style, and the preview's rows not yet painted (its first render,
+    before the page is projected) were blank strips with none.  Now the editor opens, the page is drawn, an item moves."""
+    monkeypatch.setenv("NO_COLOR", "1")
+    path = copy_sample(tmp_path, "shop-flyer")
+    async with editor(path) as (app, pilot):
+        assert app.no_color
+        preview = app.editor.query_one("#preview")
+        await pilot.press("tab", "down", "down")
+        assert await until(pilot, lambda: app.session.unsaved)
+        assert "Corner Shop" in "\n".join(preview.text_lines())
+        app.save_screenshot(str(tmp_path / "screen.svg"))  # the whole screen renders
+
+
+def colours_of(screen: pyte.Screen) -> set[str]:
+    """Every colour a cell of the screen shows, foreground of non-blank cells and
+    background, as pyte names them (a hex string for an RGB colour)."""
+    found = set()
+    for row in range(screen.lines):
+        for col in range(screen.columns):
+            char = screen.buffer[row][col]
+            found.add(char.bg)
+            if char.data.strip():
+                found.add(char.fg)
+    return found
+
+
+def test_no_color_keeps_the_moving_item_grey_too(tmp_path):
+    """With NO_COLOR, Textual draws the screen in greys, but the preview's changed cells,
+    which go to the terminal past Textual's compositor (tui/direct_paint.py), went out in
+    full colour: a photo moved on the greeting card showed in colour on a grey page.  Over a
+    real pty, in truecolour: after the photo is moved (single keys and a held arrow), every
+    colour on the screen is a grey."""
+    path = copy_sample(tmp_path, "greeting-card")
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "LANG": "C.UTF-8",
+           "TERM": "xterm-256color", "COLORTERM": "truecolor", "NO_COLOR": "1"}
+    term = Terminal([sys.executable, "-m", "floatpage.cli.main", "edit", str(path)],
+                    str(path.parent), env, COLUMNS, ROWS)
+    screen = pyte.Screen(COLUMNS, ROWS)
+    stream = pyte.ByteStream(screen)
+    try:
+        deadline = time.monotonic() + 60
+        while b"items" not in term.seen:
+            assert time.monotonic() < deadline, bytes(term.seen[-400:])
+            term.pump(0.05)
+        for keys in (b"\t", DOWN, DOWN, DOWN):
+            term.send(keys)
+            term.until_quiet(quiet_s=1.0)
+        hold_arrow(term, 0.5, DOWN)
+        term.until_quiet(quiet_s=1.5)
+        stream.feed(bytes(term.seen))
+    finally:
+        term.close()
+    assert " mm" in screen.display[0], "\n".join(screen.display)  # the photo selected, moved
+    coloured = sorted(colour for colour in colours_of(screen)
+                      if len(colour) == 6 and len(set((colour[:2], colour[2:4], colour[4:]))) > 1)
+    assert not coloured, coloured
