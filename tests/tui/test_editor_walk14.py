@@ -8,6 +8,9 @@ import time
 from pathlib import Path
 
 import pyte
+from textual.color import Color
+
+from floatpage.tui.page_painter import PagePainter
 
 from editor_helpers import editor, until
 from terminal_probe import DOWN, Terminal, hold_arrow
@@ -81,3 +84,28 @@ def test_no_color_keeps_the_moving_item_grey_too(tmp_path):
     coloured = sorted(colour for colour in colours_of(screen)
                       if len(colour) == 6 and len(set((colour[:2], colour[2:4], colour[4:]))) > 1)
     assert not coloured, coloured
+
+
+def grey(rgb) -> float:
+    """The grey Textual's Monochrome filter shows for a colour (textual.color.Color.monochrome)."""
+    return Color(*(int(channel) for channel in rgb)).monochrome.r
+
+
+async def test_no_color_shows_the_selection_frame_apart_from_the_paper(tmp_path, monkeypatch):
+    """Under NO_COLOR the selected picture's amber frame showed as a grey of 194 on the
+    flyer's cream paper's 248: a frame a user had to look for.  In greys the frame is black
+    where what it frames is light (and stays light on the dark header).  The preview's pixels
+    are read as the terminal shows them, through the grey Textual makes of each colour."""
+    monkeypatch.setenv("NO_COLOR", "1")
+    path = copy_sample(tmp_path, "shop-flyer")
+    async with editor(path) as (app, pilot):
+        await pilot.press(*["tab"] * 6)  # a product photo, on the cream paper
+        assert await until(pilot, lambda: (app.session.selected_id or "").startswith("product"))
+        preview = app.editor.query_one("#preview")
+        preview.redraw()
+        item = app.session.page.item(app.session.selected_id)
+        x0, y0, x1, y1 = PagePainter(preview.projection)._box(item, preview.view)
+        pixels = preview.canvas.pixels
+        frame = [grey(pixels[y0 - 1, x]) for x in range(x0 + 1, x1 - 1)]  # its top line
+        paper = [grey(pixels[y0 - 3, x]) for x in range(x0 + 1, x1 - 1)]  # two pixels above
+    assert max(paper) - max(frame) > 120, (frame, paper)
