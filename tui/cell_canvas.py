@@ -24,6 +24,12 @@ LUMA = (0.2126, 0.7152, 0.0722)  # a colour's grey, as Textual's Monochrome filt
 UPPER_HALF = "\u2580"
 CellRun = tuple[str, int, int, int, bool]  # text, cells, fg, bg (packed), bold
 NARROW_SPAN = 24  # columns up to which a span's runs are found cell by cell, not with numpy
+# How many (foreground, background) styles the preview keeps made, here and in the direct
+# painter: thumbnails bring hundreds of new colour pairs on every page shown, and kept
+# forever they took 20 MB (1.7 KB a pair) after one pass through a 27-page album of photos,
+# growing with every page. A frame needs at most one a cell (3,400 at 100 x 34); past the
+# limit the kept ones are dropped and made again as asked for.
+STYLES_KEPT = 16_384
 
 
 @lru_cache(maxsize=4096)
@@ -204,6 +210,8 @@ class StripCache:
         key = (fg, bg, bold)
         style = self._styles.get(key)
         if style is None:
+            if len(self._styles) >= STYLES_KEPT:
+                self._styles.clear()
             style = Style(color=Color.from_rgb(*unpack(fg)), bgcolor=Color.from_rgb(*unpack(bg)),
                           bold=bold)
             self._styles[key] = style

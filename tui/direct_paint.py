@@ -44,7 +44,7 @@ from textual.geometry import Region
 from textual.strip import Strip
 from textual.widget import Widget
 
-from floatpage.tui.cell_canvas import StripCache
+from floatpage.tui.cell_canvas import STYLES_KEPT, StripCache
 from floatpage.tui.sgr_compactor import DEFAULT, SHOWN_ON_BLANKS, Style, apply_sgr
 
 Run = tuple[int, int, str, Style]  # screen row, screen column, text, style
@@ -187,6 +187,9 @@ class DirectPainter:
         try:
             return self._cell_styles[key]
         except KeyError:
+            if len(self._cell_styles) >= STYLES_KEPT:  # a long session's pages of photos
+                self._cell_styles.clear()
+                self._styles.clear()
             style = looks.filtered(cache.style(fg, bg, bold))
             known = self._cell_styles[key] = self.terminal_style(style, color_system)
             return known

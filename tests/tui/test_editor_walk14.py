@@ -109,3 +109,27 @@ async def test_no_color_shows_the_selection_frame_apart_from_the_paper(tmp_path,
         frame = [grey(pixels[y0 - 1, x]) for x in range(x0 + 1, x1 - 1)]  # its top line
         paper = [grey(pixels[y0 - 3, x]) for x in range(x0 + 1, x1 - 1)]  # two pixels above
     assert max(paper) - max(frame) > 120, (frame, paper)
+
+
+def test_the_preview_keeps_a_bounded_number_of_colour_styles():
+    """The preview's Rich styles (StripCache) and the direct painter's terminal styles were
+    kept for every (foreground, background) pair ever shown: a photo's thumbnail brings
+    hundreds of new pairs, and one pass through a 27-page album of photos left 12,400 of
+    them, 20 MB (benchmarks/editor_long_session.py), growing with every new page.  After
+    50,000 pairs, at most 20,000 are kept, and a pair made again gives the same codes."""
+    from rich.color import ColorSystem
+
+    from floatpage.tui.cell_canvas import StripCache
+    from floatpage.tui.direct_paint import DirectPainter, LineLooks
+
+    cache, painter = StripCache(), DirectPainter()
+    looks = LineLooks((), Color(0, 0, 0))
+    first = painter.cell_style(cache, 0x123456, 0xabcdef, False, ColorSystem.TRUECOLOR, looks)
+    for pair in range(50_000):
+        painter.cell_style(cache, (pair * 7919) & 0xFFFFFF, (pair * 104729) & 0xFFFFFF,
+                           bool(pair & 1), ColorSystem.TRUECOLOR, looks)
+    assert len(cache._styles) <= 20_000
+    assert len(painter._cell_styles) <= 20_000 and len(painter._styles) <= 20_000
+    again = painter.cell_style(cache, 0x123456, 0xabcdef, False, ColorSystem.TRUECOLOR, looks)
+    assert again == first == DirectPainter().cell_style(
+        StripCache(), 0x123456, 0xabcdef, False, ColorSystem.TRUECOLOR, looks)
