@@ -133,3 +133,25 @@ def test_the_preview_keeps_a_bounded_number_of_colour_styles():
     again = painter.cell_style(cache, 0x123456, 0xabcdef, False, ColorSystem.TRUECOLOR, looks)
     assert again == first == DirectPainter().cell_style(
         StripCache(), 0x123456, 0xabcdef, False, ColorSystem.TRUECOLOR, looks)
+
+
+async def test_undo_says_when_older_edits_are_past_its_reach(tmp_path):
+    """After 220 edits on the card, 200 Ctrl+Z took it back as far as undo keeps (200
+    snapshots), and the next said "nothing to undo" while the project was still unsaved and
+    20 edits away from the file: a user took it to mean the page was back as it began.  Now
+    it says how far undo reaches and how many edits came before."""
+    path = copy_sample(tmp_path, "greeting-card")
+    async with editor(path) as (app, pilot):
+        await pilot.press("tab")
+        for _ in range(110):
+            await pilot.press("plus", "minus")
+        assert await until(pilot, lambda: len(app.session.history.undo_stack) == 200)
+        for _ in range(200):
+            await pilot.press("ctrl+z")
+        assert await until(pilot, lambda: not app.session.history.undo_stack)
+        await pilot.press("ctrl+z")
+        said = lambda: [str(note.message) for note in app._notifications]  # noqa: E731
+        assert await until(pilot, lambda: any("nothing more to undo" in words
+                                              for words in said())), said()
+        assert any("the last 200 edits, and 20 came before them" in words for words in said())
+        assert app.session.unsaved
