@@ -155,3 +155,21 @@ async def test_undo_says_when_older_edits_are_past_its_reach(tmp_path):
                                               for words in said())), said()
         assert any("the last 200 edits, and 20 came before them" in words for words in said())
         assert app.session.unsaved
+
+
+async def test_no_color_shows_whether_a_checkbox_is_ticked(tmp_path, monkeypatch):
+    """Under NO_COLOR the edit form's Bold and Italic boxes both showed "X" in the same
+    grey (Textual tells on from off by colour alone): the flyer's subtitle, italic and not
+    bold, looked both.  Now an unticked box is empty, and Space ticks it."""
+    monkeypatch.setenv("NO_COLOR", "1")
+    path = copy_sample(tmp_path, "shop-flyer")
+    async with editor(path) as (app, pilot):
+        app.session.select("shop-subtitle")
+        await pilot.press("enter")
+        assert await until(pilot, lambda: app.screen.query("#field-bold"))
+        bold, italic = app.screen.query_one("#field-bold"), app.screen.query_one("#field-italic")
+        assert (bold.value, italic.value) == (False, True)
+        assert "X" in italic.render().plain and "X" not in bold.render().plain
+        bold.focus()
+        await pilot.press("space")
+        assert await until(pilot, lambda: "X" in bold.render().plain)
