@@ -173,3 +173,32 @@ async def test_no_color_shows_whether_a_checkbox_is_ticked(tmp_path, monkeypatch
         bold.focus()
         await pilot.press("space")
         assert await until(pilot, lambda: "X" in bold.render().plain)
+
+
+def test_a_terminal_that_is_not_utf8_is_told_so_not_drawn_in_escapes(tmp_path):
+    """Under an ISO-8859-1 locale (here PYTHONIOENCODING, as the machine has no such locale
+    built), every half block of the preview went out as the six characters "\\u2580": a
+    screen of escapes, each row pushed past the edge.  Over a real pty, the editor now says
+    before taking the screen that it needs UTF-8, and how to get it, and ends with exit 1."""
+    import os
+
+    path = copy_sample(tmp_path, "shop-flyer")
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "LANG": "C.UTF-8",
+           "TERM": "xterm-256color", "COLORTERM": "truecolor", "PYTHONIOENCODING": "latin-1"}
+    term = Terminal([sys.executable, "-m", "floatpage.cli.main", "edit", str(path)],
+                    str(path.parent), env, COLUMNS, ROWS)
+    try:
+        deadline = time.monotonic() + 60
+        status = 0
+        while time.monotonic() < deadline:
+            term.pump(0.1)
+            pid, status = os.waitpid(term.pid, os.WNOHANG)
+            if pid:
+                break
+        term.pump(0.3)
+        said = bytes(term.received).decode("latin-1")
+    finally:
+        term.close()
+    assert os.waitstatus_to_exitcode(status) == 1, said[-400:]
+    assert "needs a UTF-8 terminal" in said and "iso8859-1" in said, said[-400:]
+    assert "LANG=C.UTF-8" in said and "\\u2580" not in said and "\x1b[?1049h" not in said
