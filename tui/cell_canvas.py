@@ -20,7 +20,7 @@ from textual.strip import Strip
 from floatpage.tui.cell_text import graphemes, width
 
 RGB = tuple[int, int, int]
-LUMA = (0.2126, 0.7152, 0.0722)  # a colour's grey, as Textual's Monochrome filter (NO_COLOR) takes it
+LUMA = (0.2126, 0.7152, 0.0722)  # a colour's grey, as Textual's Monochrome (NO_COLOR) takes it
 UPPER_HALF = "\u2580"
 CellRun = tuple[str, int, int, int, bool]  # text, cells, fg, bg (packed), bold
 NARROW_SPAN = 24  # columns up to which a span's runs are found cell by cell, not with numpy

@@ -29,7 +29,8 @@ async def test_no_color_opens_the_editor_and_draws_the_page(tmp_path, monkeypatc
     """With NO_COLOR set (no-color.org, a convention many users keep in their shell's
     profile), `floatpage edit` died at start with a traceback: Textual's Monochrome filter
     reads every segment's style, and the preview's rows not yet painted (its first render,
-    before the page is projected) were blank strips with none.  Now the editor opens, the page is drawn, an item moves."""
+    before the page is projected) were blank strips with none.  Now the editor opens, the
+    page is drawn, an item moves."""
     monkeypatch.setenv("NO_COLOR", "1")
     path = copy_sample(tmp_path, "shop-flyer")
     async with editor(path) as (app, pilot):
