@@ -79,6 +79,7 @@ def cmd_edit(args: argparse.Namespace) -> int:
         load_project(args.path, allow_outside_files=args.allow_outside_files,
                      missing_pictures_ok=True)
         refuse_without_terminal(args.path)
+        refuse_without_utf8(args.path)
         from floatpage.tui.app import make_app
         from floatpage.tui.recovery import discard_recovery, pending_recovery
 
@@ -101,6 +102,23 @@ def refuse_without_terminal(path: str) -> None:
             f"{printable(str(path))}: floatpage edit needs a terminal, and its {' and '.join(missing)} "
             f"{'is' if len(missing) == 1 else 'are'} not one; run it in a terminal (over SSH: "
             "ssh -t), or use `floatpage settle`, `check` or `render` in scripts")
+
+
+def refuse_without_utf8(path: str) -> None:
+    """The preview is drawn in Unicode half blocks, and the editor's lines hold "·" and "…":
+    under a locale (or PYTHONIOENCODING) that is not UTF-8, such as ISO-8859-1, each block
+    went out as the six characters `\\u2580`, and the page was a screen of them, its rows
+    pushed past the edge. A C or POSIX locale is no such case: Python writes UTF-8 there."""
+    import codecs
+
+    for stream in (sys.stdout, sys.__stderr__):  # Textual draws on stderr
+        encoding = getattr(stream, "encoding", None) or "ascii"
+        if codecs.lookup(encoding).name != "utf-8":
+            raise FloatpageError(
+                f"{printable(str(path))}: floatpage edit draws the page in Unicode and needs a "
+                f"UTF-8 terminal, and this one's encoding is {encoding} (from LC_ALL, LC_CTYPE, "
+                "LANG or PYTHONIOENCODING); set a UTF-8 locale, e.g. `LANG=C.UTF-8 floatpage "
+                "edit ...`, in a terminal set to UTF-8")
 
 
 def ask_about_recovery(project: Path, recovery: Path | None) -> bool:

@@ -20,9 +20,16 @@ from textual.strip import Strip
 from floatpage.tui.cell_text import graphemes, width
 
 RGB = tuple[int, int, int]
+LUMA = (0.2126, 0.7152, 0.0722)  # a colour's grey, as Textual's Monochrome (NO_COLOR) takes it
 UPPER_HALF = "\u2580"
 CellRun = tuple[str, int, int, int, bool]  # text, cells, fg, bg (packed), bold
 NARROW_SPAN = 24  # columns up to which a span's runs are found cell by cell, not with numpy
+# How many (foreground, background) styles the preview keeps made, here and in the direct
+# painter: thumbnails bring hundreds of new colour pairs on every page shown, and kept
+# forever they took 20 MB (1.7 KB a pair) after one pass through a 27-page album of photos,
+# growing with every page. A frame needs at most one a cell (3,400 at 100 x 34); past the
+# limit the kept ones are dropped and made again as asked for.
+STYLES_KEPT = 16_384
 
 
 @lru_cache(maxsize=4096)
@@ -101,13 +108,22 @@ class CellCanvas:
             self.pixels[cy0:cy1, cx0:cx1] = image[cy0 - y0:cy1 - y0, cx0 - x0:cx1 - x0]
             self._cover(cx0, cy0, cx1, cy1)
 
-    def outline(self, x0: int, y0: int, x1: int, y1: int, rgb: RGB) -> None:
-        """A one-pixel frame just outside the box (x0, y0, x1, y1); glyphs stay visible."""
+    def outline(self, x0: int, y0: int, x1: int, y1: int, rgb: RGB,
+                on_light: RGB | None = None) -> None:
+        """A one-pixel frame just outside the box (x0, y0, x1, y1); glyphs stay visible.
+        With `on_light`, the frame's pixels over light ones (luma above half) take that
+        colour instead: in greys a light frame vanishes on light paper."""
         for box in ((x0 - 1, y0 - 1, x1 + 1, y0), (x0 - 1, y1, x1 + 1, y1 + 1),
                     (x0 - 1, y0, x0, y1), (x1, y0, x1 + 1, y1)):
             cx0, cy0, cx1, cy1 = self._clip(*box)
             if cx0 < cx1 and cy0 < cy1:
-                self.pixels[cy0:cy1, cx0:cx1] = rgb
+                under = self.pixels[cy0:cy1, cx0:cx1]
+                if on_light is None:
+                    under[...] = rgb
+                else:
+                    light = under.astype(np.float32) @ np.array(LUMA, np.float32) > 127.5
+                    under[light] = on_light
+                    under[~light] = rgb
 
     def put(self, col: int, row: int, glyph: Glyph) -> None:
         if 0 <= col < self.cols and 0 <= row < self.rows:
@@ -194,6 +210,8 @@ class StripCache:
         key = (fg, bg, bold)
         style = self._styles.get(key)
         if style is None:
+            if len(self._styles) >= STYLES_KEPT:
+                self._styles.clear()
             style = Style(color=Color.from_rgb(*unpack(fg)), bgcolor=Color.from_rgb(*unpack(bg)),
                           bold=bold)
             self._styles[key] = style

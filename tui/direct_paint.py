@@ -25,8 +25,9 @@ only other widgets' cells (`stale_lines_hidden`), and they stay stale for the ne
 that draws the preview.
 
 The colours are turned into codes exactly as Textual's own `Strip.render` would, for the
-terminal's colour system (truecolour, 256 colours), so the screen is the same either way
-(tests/tui/test_editor_direct_paint.py compares it with Textual's own full repaint).
+terminal's colour system (truecolour, 256 colours), after the App's line filters (NO_COLOR's
+greys), so the screen is the same either way (tests/tui/test_editor_direct_paint.py compares
+it with Textual's own full repaint).
 """
 
 from __future__ import annotations
@@ -35,12 +36,15 @@ from contextlib import contextmanager
 from typing import Callable, Iterator
 
 from rich.cells import cell_len
+from rich.segment import Segment
 from rich.style import Style as RichStyle
+from textual.color import Color
+from textual.filter import LineFilter
 from textual.geometry import Region
 from textual.strip import Strip
 from textual.widget import Widget
 
-from floatpage.tui.cell_canvas import StripCache
+from floatpage.tui.cell_canvas import STYLES_KEPT, StripCache
 from floatpage.tui.sgr_compactor import DEFAULT, SHOWN_ON_BLANKS, Style, apply_sgr
 
 Run = tuple[int, int, str, Style]  # screen row, screen column, text, style
@@ -66,6 +70,7 @@ class DirectPainter:
         if not self.may_paint(widget, cache.cols, cache.rows):
             return False
         color_system = widget.app.console._color_system
+        looks = LineLooks(tuple(widget.get_line_filters()), widget.background_colors[1])
         region = widget.content_region
         runs: list[Run] = []
         cell_style = self.cell_style
@@ -73,7 +78,7 @@ class DirectPainter:
             for first, end in spans:
                 col, cell_runs = cache.runs(row, first, end)
                 for text, cells, fg, bg, bold in cell_runs:
-                    style = cell_style(cache, fg, bg, bold, color_system)
+                    style = cell_style(cache, fg, bg, bold, color_system, looks)
                     if style is None:
                         return False
                     add_run(runs, region.y + row, region.x + col, text, style)
@@ -174,15 +179,19 @@ class DirectPainter:
         return True
 
     def cell_style(self, cache: StripCache, fg: int, bg: int, bold: bool,
-                   color_system) -> Style | None:
+                   color_system, looks: LineLooks) -> Style | None:
         """The terminal style of the preview's cells in these packed colours: the one its
-        Rich style gives (`terminal_style`), looked up by the colours without making it."""
-        key = (fg, bg, bold, color_system)
+        Rich style gives (`terminal_style`) once the App's line filters have passed over it,
+        looked up by the colours without making it."""
+        key = (fg, bg, bold, color_system, looks.key)
         try:
             return self._cell_styles[key]
         except KeyError:
-            known = self._cell_styles[key] = self.terminal_style(cache.style(fg, bg, bold),
-                                                                  color_system)
+            if len(self._cell_styles) >= STYLES_KEPT:  # a long session's pages of photos
+                self._cell_styles.clear()
+                self._styles.clear()
+            style = looks.filtered(cache.style(fg, bg, bold))
+            known = self._cell_styles[key] = self.terminal_style(style, color_system)
             return known
 
     def terminal_style(self, style: RichStyle | None, color_system) -> Style | None:
@@ -195,6 +204,25 @@ class DirectPainter:
             known = self._styles[style] = apply_sgr(DEFAULT,
                                                     Strip.render_ansi(style, color_system))
             return known
+
+
+class LineLooks:
+    """The App's line filters, as Textual passes every line it renders through them. With
+    `NO_COLOR` set, Textual's Monochrome filter turns each colour grey; the cells painted here
+    went out in full colour beside Textual's grey ones (a moved photo in colour on a grey
+    page), so they pass through the same filters, with the widget's background as Textual
+    gives it."""
+
+    def __init__(self, filters: tuple[LineFilter, ...], background: Color):
+        self.filters = filters
+        self.background = background
+        self.key = (tuple(id(one) for one in filters), background)
+
+    def filtered(self, style: RichStyle) -> RichStyle | None:
+        segments = [Segment(" ", style)]
+        for one in self.filters:
+            segments = one.apply(segments, self.background)
+        return segments[0].style
 
 
 def draws_none_of(screen, widget: Widget) -> bool:

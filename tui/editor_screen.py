@@ -333,7 +333,8 @@ class EditorScreen(Screen):
         return PageView(page=session.page, positions=session.engine.positions(),
                      selected_id=session.selected_id, base_dir=session.project.base_dir,
                      labels=self.labels,
-                     guides=shown_guides(session.engine, session.selected_id, moving))
+                     guides=shown_guides(session.engine, session.selected_id, moving),
+                     greys=self.app.no_color)
 
     def state_word(self) -> str:
         if self.export_state:

@@ -44,10 +44,12 @@ class History:
         self.limit = limit
         self.undo_stack: list[Snapshot] = []
         self.redo_stack: list[Snapshot] = []
+        self.dropped = 0  # edits older than the limit, no longer undoable (for "nothing to undo")
 
     def record(self, before: Snapshot) -> None:
         """Remember the state before an edit."""
         self.undo_stack.append(before)
+        self.dropped += max(0, len(self.undo_stack) - self.limit)
         del self.undo_stack[:-self.limit]
         self.redo_stack.clear()
 

@@ -55,6 +55,9 @@ class PageView:
     labels: bool = False  # every item's id; else only the selected one's (ids hid the content)
     # alignment guides the selected item sits on while it moves: (axis, mm), 0 = a vertical line
     guides: tuple[tuple[int, float], ...] = ()
+    # the terminal shows greys only (NO_COLOR): the selection's amber frame turned a grey
+    # of 194 beside paper's 248, so it is drawn black where what it frames is light
+    greys: bool = False
 
 
 GUIDE_SHOWN_MM = 0.5  # a feature this close to a guide line is on it (physics.alignment)
@@ -176,7 +179,7 @@ class PagePainter:
             canvas.write(col0, row, text, BLACK, GROUP, bold=True)
             names.append((row, col0, col0 + text_cells(text), ""))  # kept clear for the label
         if selected is not None:
-            canvas.outline(*boxes[selected.id], SELECTION)
+            canvas.outline(*boxes[selected.id], SELECTION, on_light=BLACK if view.greys else None)
             self._frame_label(canvas, selected, boxes[selected.id], names)
         for row, col, end, text in names:  # last: no item, label or link hides a name
             canvas.write(col, row, text, REGION, PAPER, bold=True, end_col=end)

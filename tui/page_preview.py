@@ -120,7 +120,9 @@ class PagePreview(Widget, can_focus=True):
     def render_line(self, y: int) -> Strip:
         if 0 <= y < self._cache.rows:
             return self._cache.strip(y)
-        return Strip.blank(self.size.width)
+        # A styled blank: Textual's NO_COLOR filter (Monochrome) reads every segment's style
+        # and raised on an unstyled one, so the editor died with a traceback at start.
+        return Strip.blank(self.size.width, self.rich_style)
 
     def strips(self) -> list[Strip]:
         """The preview's rows as Textual renders them."""

@@ -366,6 +366,10 @@ class EditSession:
     def undo(self) -> str:
         """Return to the state before the last edit; the name of the edit undone."""
         if not self.history.undo_stack:
+            history = self.history
+            if history.dropped:  # "nothing to undo" read as "back where I began", unsaved
+                raise EditError(f"nothing more to undo: the editor keeps the last "
+                                f"{history.limit} edits, and {history.dropped} came before them")
             raise EditError("nothing to undo")
         label = self.history.undo_stack[-1].label  # the edit that left this state
         self._restore(self.history.undo(self._snapshot(label)))

@@ -20,6 +20,17 @@ from floatpage.tui.dialogs.base import Dialog, Hint
 FieldKind = Literal["line", "text", "choice", "bool"]
 
 
+class MarkedCheckbox(Checkbox):
+    """A checkbox whose state shows without colour. Textual's shows an "X" whether on or off,
+    told apart by its colour alone; under NO_COLOR both came out the same grey, and a user
+    could not see whether Bold was on (walk-14). There an unticked box is empty."""
+
+    @property
+    def _button(self):
+        self.BUTTON_INNER = "X" if self.value or not self.app.no_color else " "
+        return super()._button
+
+
 class WordsField(TextArea):
     """A form's text field, whose cursor the form keeps in sight: the words wrap anew when
     the field is laid out or resized, which moves the cursor's row (on a loaded machine after
@@ -94,7 +105,8 @@ class FormDialog(Dialog[Answer | None], Generic[Answer]):
     def _field(self, field: Field) -> ComposeResult:
         widget_id = f"field-{field.name}"
         if field.kind == "bool":
-            yield Checkbox(field.label, value=bool(field.value), id=widget_id, compact=True)
+            yield MarkedCheckbox(field.label, value=bool(field.value), id=widget_id,
+                                 compact=True)
             return
         yield Label(field.label, classes="field-label", markup=False)  # may hold a path
         if field.kind == "line":
