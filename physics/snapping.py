@@ -195,6 +195,7 @@ class _Snapper:
         self.ranges = scoring_ranges(ALIGN_REACH * self.reach, self.farthest, self.window,
                                      relevant_distance(self.farthest), STEPS_PER_MM)
         self.lowest, self.highest = item_bounds(bodies, *page, margin_mm)
+        keep_near_anchors(bodies, self.lowest, self.highest, ALIGN_REACH * self.reach)
         # what fits reads besides the page: the clearance, the longest move, the tolerance
         self.fit_limits = np.array([clearance_mm, self.farthest, TOLERANCE_MM])
         # per group and axis: too large to fit between its margins (it has no move to make);
@@ -497,6 +498,29 @@ class _Snapper:
         calls cost more than the arithmetic, a tenth of the snap."""
         return fitting_shifts(members, axis, shifts, self.bodies.centres, self.halves,
                               self.lowest, self.highest, self.item_tables, self.fit_limits)
+
+
+def keep_near_anchors(bodies: Bodies, lowest: np.ndarray, highest: np.ndarray,
+                      reach: float) -> None:
+    """Narrow the centre bounds ``lowest`` and ``highest`` (n, 2) of each item on a spring
+    anchor, in place, so that the snap never takes it further from its anchor than ``reach``
+    (the snap's own reach onto a line) or than the physics left it, whichever is more: an
+    anchor is where the user put the item, and the snap's reach counts from there.  A text
+    moved 6 mm off the greeting card's centre line with the arrows, and anchored there, sat
+    3 mm off its anchor once the walls had pushed against its spring, and the snap then put
+    it back on the centre line, 6 mm from where it was put (user-walk-13).
+    Within that reach of its anchor it still lines up; hard anchors and held items never
+    move at all."""
+    anchored = np.flatnonzero(~np.isnan(bodies.anchors[:, 0]) & ~bodies.hard & bodies.active)
+    if not len(anchored):
+        return
+    centres, anchors = bodies.centres[anchored], bodies.anchors[anchored]
+    room = np.maximum(np.abs(centres - anchors), reach)
+    low = np.maximum(lowest[anchored], np.minimum(centres, anchors - room))
+    high = np.minimum(highest[anchored], np.maximum(centres, anchors + room))
+    narrowed = low <= high  # where the walls and the anchor's room meet (else the walls')
+    lowest[anchored] = np.where(narrowed, low, lowest[anchored])
+    highest[anchored] = np.where(narrowed, high, highest[anchored])
 
 
 class Moves(NamedTuple):

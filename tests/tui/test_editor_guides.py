@@ -3,8 +3,19 @@
 
 from __future__ import annotations
 
-from editor_helpers import editor, item_pixel_box, screen_of
+import shutil
+from pathlib import Path
+
+import pytest
+
+from editor_helpers import editor, item, item_pixel_box, position, screen_of
+from floatpage.model import load_project
+from floatpage.physics.guides import snap_range
+from floatpage.physics.snapping import ALIGN_REACH
+from floatpage.tui.keymap import SMALL_STEP_MM
 from floatpage.tui.page_painter import GUIDE, GUIDE_DASH
+
+SAMPLES = Path(__file__).resolve().parents[2] / "sample_projects"
 
 
 def guide_pixels(app) -> set[tuple[int, int]]:
@@ -73,3 +84,31 @@ async def test_a_release_note_leaves_the_details_figures_on_an_80_column_line(pr
             Region(0, 0, status.size.width, status.size.height)))
         assert "· block anch" in shown, shown  # the note follows, as far as it fits
         assert "misses " in shown and "lines " in shown and "aligned " in shown, shown
+
+
+async def test_an_item_moved_off_a_guide_and_anchored_there_is_not_snapped_back(tmp_path):
+    """user-walk-13: the greeting card's front text moved 6 mm right with the arrows was
+    "anchored where you put it", and once the page came to rest it stood on the centre line
+    again, 6 mm from its anchor: the walls pushed it 3 mm back against its spring, and the
+    snap took the rest. The snap now reaches as far from an anchored item's anchor as it reaches from a free item
+    (or no further than the physics left it); it may still line up within that reach."""
+    card = tmp_path / "card"
+    shutil.copytree(SAMPLES / "greeting-card", card)
+    async with editor(card / "greeting-card.toml") as (app, pilot):
+        screen, engine = screen_of(app), app.session.engine
+        engine.settle()
+        screen.selected_id = "front-greeting"
+        await pilot.press("right", "right", "right")  # 3 x 2 mm
+        screen.release_held()
+        await pilot.pause()
+        anchor = item(app, "front-greeting").anchor
+        assert anchor.x == pytest.approx(63.5 + 3 * SMALL_STEP_MM)
+        engine.reheat()
+        engine.settle()
+        x, _ = position(app, "front-greeting")
+        reach = ALIGN_REACH * snap_range(127.0, 203.2)  # the snap's, from the anchor
+        assert abs(x - anchor.x) <= reach + 1e-9, x  # was 63.5, 6 mm off
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+    saved = load_project(card / "greeting-card.toml").pages[0].item("front-greeting")
+    assert abs(saved.x - anchor.x) <= reach + 0.01
