@@ -33,7 +33,7 @@ from floatpage.physics.params import page_margin
 from floatpage.tui.clear_spaces import scaled_offset
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.insert_style import new_item_style
-from floatpage.tui.page_resize import kept_by, resize_page, scale_follow_offsets, size_words
+from floatpage.tui.page_resize import page_scale_of, kept_by, resize_page, scale_follow_offsets, size_words
 from floatpage.tui.reading_order import reading_order, step_through
 from floatpage.tui.region_edits import body_misfit
 
@@ -133,6 +133,27 @@ def layout_of(page: Page) -> dict[str, tuple[float, float]]:
     return {item.id: (item.x, item.y) for item in page.items}
 
 
+def room_steps(page_scale: float = 1.0) -> list[float]:
+    """The room search's shrinks, each applied after the one before fails: ``MAKE_ROOM_STEP``
+    each time; after a new page size of the same shape, smaller, the page's own scale first
+    (then steps on from it)."""
+    steps = [MAKE_ROOM_STEP] * MAKE_ROOM_ATTEMPTS
+    if page_scale < MAKE_ROOM_STEP:
+        steps[0] = page_scale
+    return steps
+
+
+def refit(page: Page, request: "RoomRequest", scale: float) -> None:
+    """The items a new page size made smaller to fit it, at the room search's ``scale``: their
+    old size scaled by as much as the page's own scale has been applied, no larger than the
+    size they were fitted to; the page scaled as a whole."""
+    if scale > request.page_scale:
+        return
+    for id_, w, h, fitted_w, fitted_h in request.fitted:
+        item = page.item(id_)
+        item.w, item.h = min(fitted_w, w * scale), min(fitted_h, h * scale)
+
+
 def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
     """Shrink the page's items of ``ids`` (all that take part, if None) by ``scale`` to make
     room; a follower shrunk with its target, or a member with its group's lead, comes closer
@@ -178,6 +199,12 @@ class RoomRequest:
     # where it fits (user-walk-11: the calendar made A6 kept 1.6-2.2 mm of its 3 mm gutter on
     # five pages, the room search having looked for zero overlap only)
     gutter_kept: bool = False
+    # a new page size of the same shape, smaller: the scale of the page itself (A4 to A5:
+    # 0.707); the room search tries it first (tui.page_resize.page_scale_of)
+    page_scale: float = 1.0
+    # the items the new size made smaller than they were, to fit it: (id, w, h as they were,
+    # w, h as made); at the page's own scale they take their old size scaled, no larger
+    fitted: tuple[tuple[str, float, float, float, float], ...] = ()
 
 
 class EditSession:
@@ -416,7 +443,9 @@ class EditSession:
 
     def want_room(self, ids: frozenset[str] | None = None,
                   margin_kept: frozenset[str] = frozenset(),
-                  page_index: int | None = None, gutter_kept: bool = False) -> None:
+                  page_index: int | None = None, gutter_kept: bool = False,
+                  page_scale: float = 1.0,
+                  fitted: tuple[tuple[str, float, float, float, float], ...] = ()) -> None:
         """Ask for room for the items ``ids`` (all that take part, if None) after an insert or
         a page change (of the page on screen, or of ``page_index``): the caller runs
         ``room_scale`` on a copy of the page, off the UI thread, and hands the answer to
@@ -424,7 +453,7 @@ class EditSession:
         for 0.8-2.3 s on an insert and 2.6-5.6 s on `o` (the calendar, load 7)."""
         index = self.page_index if page_index is None else page_index
         self.room_wanted.append(RoomRequest(self.version, index, ids, margin_kept,
-                                            gutter_kept))
+                                            gutter_kept, page_scale, fitted))
 
     def room_scale(self, page: Page, request: "RoomRequest") -> float:
         """How much the items of ``request`` must shrink for ``page`` (a copy: it is changed)
@@ -434,7 +463,7 @@ class EditSession:
         nothing else of the session's, so it may run in a thread."""
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
         scale, sound = 1.0, None
-        for _ in range(MAKE_ROOM_ATTEMPTS):
+        for step in room_steps(request.page_scale):
             trial = copy_of(page)
             settle_page(trial, settings, max_rounds=3)
             engine = engine_for_page(trial, settings)
@@ -444,8 +473,9 @@ class EditSession:
                 if not request.gutter_kept or quality.gutter_kept:
                     return scale
                 sound = scale if sound is None else sound
-            shrink_items(page, request.ids, MAKE_ROOM_STEP)
-            scale *= MAKE_ROOM_STEP
+            shrink_items(page, request.ids, step)
+            scale *= step
+            refit(page, request, scale)
         # no gutter within reach: the least shrink without overlap, not the most tried
         return scale if sound is None else sound
 
@@ -458,12 +488,14 @@ class EditSession:
         if request.page_index != self.page_index:  # another page resized with this one
             page = self.project.pages[request.page_index]
             shrink_items(page, request.ids, scale)
+            refit(page, request, scale)
             self.pages_edited.add(page.id)
             if self.saved_version == self.version:
                 self.mark_unsaved()
             return True
         self.sync_positions()
         shrink_items(self.page, request.ids, scale)
+        refit(self.page, request, scale)
         if self.saved_version == self.version:  # saved meanwhile: this is a change to save
             self.mark_unsaved()
         self.engine = self._build_engine(check=False)
@@ -946,10 +978,16 @@ class EditSession:
             page = pages[index]
             margin_kept, gutter_kept = kept_by(self.engine if index == self.page_index else
                                                engine_for_page(page, self.project.physics))
+            own_scale = page_scale_of(page, width, height)
+            sizes = {item.id: (item.w, item.h) for item in page.items if not item.decorative}
             too_large += resize_page(page, size, own, width, height,
                                      page_margin(self.project.physics.margin_mm, width, height))
+            fitted = tuple((item.id, *sizes[item.id], item.w, item.h) for item in page.items
+                           if item.id in sizes and (item.w, item.h) != sizes[item.id]) \
+                if own_scale < 1.0 else ()
             self.pages_edited.add(page.id)
-            self.want_room(margin_kept=margin_kept, page_index=index, gutter_kept=gutter_kept)
+            self.want_room(margin_kept=margin_kept, page_index=index, gutter_kept=gutter_kept,
+                           page_scale=own_scale, fitted=fitted)
         self.held_id = None
         if too_large:  # said, as the room search's smaller shrink is: "10 % smaller" was all
             # a user read when a 150 mm title became 9 mm wide on a 10 mm page
