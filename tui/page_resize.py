@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from floatpage.model.document import ItemAnchor, Page, PictureItem, PointAnchor
 from floatpage.physics import Engine
-from floatpage.tui.clear_spaces import scaled_offset
+from floatpage.tui.clear_spaces import scaled_offset, scaled_size
 from floatpage.tui.region_edits import body_of, box_of, root_of
 
 
@@ -47,8 +47,8 @@ def resize_page(page: Page, size: str, orientation: str, width: float, height: f
         if not (item.decorative or item.group or getattr(item, "bleed", False)):
             # on a page of the same shape, the size the room search tries first: the old
             # one scaled with the page (an item that kept the old margin keeps the new one)
-            w, h = old_sizes[item.id]
-            scaled = (w * own_scale, h * own_scale) if own_scale < 1.0 else None
+            scaled = scaled_size(item, *old_sizes[item.id], own_scale) \
+                if own_scale < 1.0 else None
             keep_inside_margin(item, width, height, margin, scaled)
     scale_follow_offsets(page, old_sizes, sx, sy)
     fit_bodies_to_regions(page)

@@ -30,7 +30,7 @@ from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
-from floatpage.tui.clear_spaces import scaled_offset, scaled_space
+from floatpage.tui.clear_spaces import scaled_offset, scaled_size
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.insert_style import new_item_style
 from floatpage.tui.page_resize import page_scale_of, kept_by, resize_page, scale_follow_offsets, size_words
@@ -141,20 +141,6 @@ def room_steps(page_scale: float = 1.0) -> list[float]:
     if page_scale < MAKE_ROOM_STEP:
         steps[0] = page_scale
     return steps
-
-
-def scaled_size(item, w: float, h: float, scale: float) -> tuple[float, float]:
-    """``item``'s size ``w`` x ``h`` scaled by ``scale``, each side kept on its side of the
-    near-miss band (tui.clear_spaces.scaled_space; a picture whose shape is locked keeps it,
-    by the larger of its sides' factors): a side is the space between the item's own edges,
-    a near miss with any item whose edge lines up with one of them.  The album made A6 (its
-    items scaled by 0.498) had 8 mm captions 3.99 mm high, side by side on one line: each
-    one's top 3.99 mm from the other's bottom, four near misses on page 1."""
-    new_w, new_h = scaled_space(w, scale), scaled_space(h, scale)
-    if isinstance(item, PictureItem) and item.lock_aspect:
-        factor = max(new_w / w, new_h / h) if w > 0 and h > 0 else scale
-        return w * factor, h * factor
-    return new_w, new_h
 
 
 def refit(page: Page, request: "RoomRequest", scale: float) -> None:
