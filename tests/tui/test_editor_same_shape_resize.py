@@ -43,7 +43,7 @@ def test_the_page_scale_is_the_scale_of_a_smaller_page_of_the_same_shape():
     assert page_scale_of(page, *page_dimensions("A6", "portrait")) == 148 / 297
     assert page_scale_of(page, *page_dimensions("A3", "portrait")) == 1.0  # larger
     assert page_scale_of(page, *page_dimensions("A4", "landscape")) == 1.0  # turned
-    assert page_scale_of(page, *page_dimensions("letter", "portrait")) == 1.0  # not A4's shape
+    assert page_scale_of(page, *page_dimensions("Letter", "portrait")) == 1.0  # not A4's shape
     assert room_steps(148 / 297)[:3] == [148 / 297, MAKE_ROOM_STEP, MAKE_ROOM_STEP]
     assert room_steps(1.0) == room_steps(0.95) == [MAKE_ROOM_STEP] * len(room_steps())
 
@@ -64,7 +64,8 @@ def test_the_room_found_on_a_smaller_page_is_the_old_page_scaled(tmp_path):
     sx, sy = 105 / 210, 148 / 297
     for old, new in zip(before.items, session.page.items):
         assert abs(new.w - old.w * scale) < 1e-9 and abs(new.h - old.h * scale) < 1e-9, new.id
-        assert abs(new.x - old.x * sx) < 1e-9 and abs(new.y - old.y * sy) < 1e-9, new.id
+        # placed on the 0.01 mm grid a save writes
+        assert abs(new.x - old.x * sx) <= 0.005 and abs(new.y - old.y * sy) <= 0.005, new.id
 
 
 async def test_a_smaller_page_size_keeps_the_calendars_lines(tmp_path):
@@ -93,3 +94,37 @@ async def test_a_smaller_page_size_keeps_the_calendars_lines(tmp_path):
     misses = {id_: engine.alignment().near_misses_per_item for id_, engine in engines.items()}
     assert all(value < 0.5 for value in misses.values()), misses
     assert all(engine.quality().gutter_kept for engine in engines.values())
+
+
+def test_a_side_clear_of_the_band_stays_clear_when_the_room_search_shrinks_it():
+    """The album's 8 mm captions scaled with A6 (0.498) were 3.99 mm high, side by side on one
+    line: each one's top a near miss from the other's bottom.  A side of at least 4 mm stays
+    at least 4.05 mm; a locked picture keeps its shape; other sides scale as they are."""
+    from floatpage.model.document import PictureItem, TextItem
+    from floatpage.tui.clear_spaces import CLEAR_MM, scaled_size
+
+    caption = TextItem(id="c", x=0.0, y=0.0, w=80.0, h=8.01, text="a caption")
+    assert scaled_size(caption, 80.0, 8.01, 148 / 297) == (80.0 * 148 / 297, CLEAR_MM)
+    photo = PictureItem(id="p", x=0.0, y=0.0, w=60.0, h=6.0, path="p.jpg", lock_aspect=True)
+    w, h = scaled_size(photo, 60.0, 6.0, 0.5)
+    assert h == CLEAR_MM and abs(w / h - 10.0) < 1e-9
+    assert scaled_size(caption, 3.0, 20.0, 0.5) == (1.5, 10.0)  # a near miss already
+
+
+def test_the_flyer_made_a6_finds_room_that_keeps_its_gutter(tmp_path):
+    """The flyer's footer is hard-anchored 5.5 mm above the page's bottom, 7 mm high; at A6
+    scaled it would be 3.49 mm, kept 4.05 (above), and the resize must keep the margin for
+    that size: put there for 3.49 mm, it stood 0.04 mm in the margin in every trial of the
+    room search, which found nothing and shrank the items to 24 %.  Before either rule the
+    search ended at 43 % with an overlap and under the gutter."""
+    folder = tmp_path / "flyer"
+    shutil.copytree(ROOT / "sample_projects" / "shop-flyer", folder)
+    session = EditSession(load_project(next(folder.glob("*.toml"))))
+    session.set_page_size("A6", "portrait")
+    (request,) = session.room_wanted
+    scale = session.room_scale(copy_of(session.page), request)
+    session.make_room(request, scale)
+    assert scale > 0.4
+    session.settle_edited_pages()
+    quality = engine_for_page(session.page, session.project.physics).quality()
+    assert not quality.overlapping_pairs and quality.gutter_kept, quality.summary()
