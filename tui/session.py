@@ -33,7 +33,9 @@ from floatpage.physics.params import page_margin
 from floatpage.tui.clear_spaces import scaled_offset, scaled_size
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.insert_style import new_item_style
-from floatpage.tui.page_resize import page_scale_of, kept_by, resize_page, scale_follow_offsets, size_words
+from floatpage.tui.page_resize import (
+    kept_by, page_scale_of, resize_page, scale_follow_offsets, size_words,
+)
 from floatpage.tui.reading_order import reading_order, step_through
 from floatpage.tui.region_edits import body_misfit
 
