@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from floatpage.model.document import ItemAnchor, Page, PictureItem, PointAnchor
 from floatpage.physics import Engine
-from floatpage.tui.clear_spaces import scaled_offset
+from floatpage.tui.clear_spaces import scaled_offset, scaled_size
 from floatpage.tui.region_edits import body_of, box_of, root_of
 
 
@@ -17,6 +17,7 @@ def resize_page(page: Page, size: str, orientation: str, width: float, height: f
     ``margin`` its print-safe margin there; the ids of the items larger than the new page,
     which were made smaller."""
     sx, sy = width / page.width_mm, height / page.height_mm
+    own_scale = page_scale_of(page, width, height)
     # Regions keep their share of the page, as items keep their place: one left as it
     # was reached past a smaller page, and the file saved was one no command would open.
     for region in page.regions:
@@ -44,12 +45,30 @@ def resize_page(page: Page, size: str, orientation: str, width: float, height: f
         if isinstance(item.anchor, PointAnchor):
             item.anchor.x, item.anchor.y = item.anchor.x * sx, item.anchor.y * sy
         if not (item.decorative or item.group or getattr(item, "bleed", False)):
-            keep_inside_margin(item, width, height, margin)
+            # on a page of the same shape, the size the room search tries first: the old
+            # one scaled with the page (an item that kept the old margin keeps the new one)
+            scaled = scaled_size(item, *old_sizes[item.id], own_scale) \
+                if own_scale < 1.0 else None
+            keep_inside_margin(item, width, height, margin, scaled)
     scale_follow_offsets(page, old_sizes, sx, sy)
     fit_bodies_to_regions(page)
     page.size, page.orientation = size, orientation
     page.width_mm, page.height_mm = width, height
     return too_large
+
+
+SAME_SHAPE_WITHIN = 0.02  # two pages are one shape if their sides' ratios differ this little
+
+
+def page_scale_of(page: Page, width: float, height: float) -> float:
+    """The scale of a new page size ``width`` x ``height`` mm against ``page``'s own, where it
+    is the same shape and smaller (A4 to A5: 0.707; letter to A4 is not one shape); else 1.
+    Positions scale with the page; sizes scaled by as much make the new page the old one
+    scaled, every edge and centre that lined up still lined up."""
+    sx, sy = width / page.width_mm, height / page.height_mm
+    if abs(sx / sy - 1.0) > SAME_SHAPE_WITHIN:
+        return 1.0
+    return min(1.0, sx, sy)
 
 
 def fit_bodies_to_regions(page: Page) -> None:
@@ -92,7 +111,8 @@ def size_words(size: str, width: float, height: float) -> str:
     return f"{width:g} × {height:g} mm" if size == "custom" else size
 
 
-def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float) -> None:
+def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float,
+                       size: tuple[float, float] | None = None) -> None:
     """Move the item, and its point anchor, just far enough that the item keeps the print-safe
     margin where it fits inside it (centred where it does not). Scaled with a turned page, a
     footer hard-anchored 5 mm above the bottom of an A4 flyer ended 2.9 mm above it, and no
@@ -101,10 +121,11 @@ def keep_inside_margin(item, width_mm: float, height_mm: float, margin_mm: float
         low, high = margin_mm + size / 2, page - margin_mm - size / 2
         return page / 2 if low > high else min(max(centre, low), high)
 
-    item.x, item.y = kept(item.x, item.w, width_mm), kept(item.y, item.h, height_mm)
+    w, h = size or (item.w, item.h)
+    item.x, item.y = kept(item.x, w, width_mm), kept(item.y, h, height_mm)
     if isinstance(item.anchor, PointAnchor):
-        item.anchor.x = kept(item.anchor.x, item.w, width_mm)
-        item.anchor.y = kept(item.anchor.y, item.h, height_mm)
+        item.anchor.x = kept(item.anchor.x, w, width_mm)
+        item.anchor.y = kept(item.anchor.y, h, height_mm)
 
 
 def scale_follow_offsets(page: Page, old_sizes: dict[str, tuple[float, float]], sx: float,

@@ -30,10 +30,12 @@ from floatpage.model.picture_files import is_merge_placeholder, read_header
 from floatpage.model.save import save_project
 from floatpage.physics import Engine
 from floatpage.physics.params import page_margin
-from floatpage.tui.clear_spaces import scaled_offset
+from floatpage.tui.clear_spaces import scaled_offset, scaled_size
 from floatpage.tui.history import History, Snapshot
 from floatpage.tui.insert_style import new_item_style
-from floatpage.tui.page_resize import kept_by, resize_page, scale_follow_offsets, size_words
+from floatpage.tui.page_resize import (
+    kept_by, page_scale_of, resize_page, scale_follow_offsets, size_words,
+)
 from floatpage.tui.reading_order import reading_order, step_through
 from floatpage.tui.region_edits import body_misfit
 
@@ -133,6 +135,34 @@ def layout_of(page: Page) -> dict[str, tuple[float, float]]:
     return {item.id: (item.x, item.y) for item in page.items}
 
 
+def room_steps(page_scale: float = 1.0) -> list[float]:
+    """The room search's shrinks, each applied after the one before fails: ``MAKE_ROOM_STEP``
+    each time; after a new page size of the same shape, smaller, the page's own scale first
+    (then steps on from it)."""
+    steps = [MAKE_ROOM_STEP] * MAKE_ROOM_ATTEMPTS
+    if page_scale < MAKE_ROOM_STEP:
+        steps[0] = page_scale
+    return steps
+
+
+def refit(page: Page, request: "RoomRequest", scale: float) -> None:
+    """The items a new page size made smaller to fit it, once the room search has shrunk the
+    page's items by ``scale`` in all: at the page's own scale, their old size scaled as much
+    (the new page is the old one scaled, every line kept); at any other, the size they were
+    fitted to, scaled (past the page's own scale, cut to the page's width they stay one
+    width, lined up, where their old widths scaled would be some 3 mm apart: the merge
+    sample's texts, 120 and 110 mm wide, made A6).  Set whole, so that the room search's
+    trials in steps and its answer at once agree."""
+    if request.page_scale >= 1.0:
+        return
+    own = abs(scale - request.page_scale) < 1e-12
+    for id_, w, h, fitted_w, fitted_h in request.fitted:
+        item = page.item(id_)
+        item.w, item.h = (scaled_size(item, min(fitted_w, w * scale) / scale,
+                                      min(fitted_h, h * scale) / scale, scale) if own
+                          else scaled_size(item, fitted_w, fitted_h, scale))
+
+
 def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
     """Shrink the page's items of ``ids`` (all that take part, if None) by ``scale`` to make
     room; a follower shrunk with its target, or a member with its group's lead, comes closer
@@ -144,14 +174,17 @@ def shrink_items(page: Page, ids: frozenset[str] | None, scale: float) -> None:
               if not item.decorative and (ids is None or item.id in ids)}
     leads = {item.group: page.group_lead(item.group) for item in page.items if item.group}
     halves = {item.id: (item.w / 2, item.h / 2) for item in page.items}  # before the shrink
+    for item in page.items:
+        if item.id in shrunk:
+            item.w, item.h = scaled_size(item, item.w, item.h, scale)
 
     def offset(value: float, axis: int, item, other) -> float:
-        half = halves[item.id][axis] + halves[other.id][axis]
-        return scaled_offset(value, half, half * scale, scale)
+        before = halves[item.id][axis] + halves[other.id][axis]
+        after = ((item.w, item.h)[axis] + (other.w, other.h)[axis]) / 2
+        return scaled_offset(value, before, after, scale)
 
     for item in page.items:
         if item.id in shrunk:
-            item.w, item.h = item.w * scale, item.h * scale
             anchor = item.anchor
             lead = leads.get(item.group)
             if isinstance(anchor, ItemAnchor) and anchor.to in shrunk:
@@ -178,6 +211,12 @@ class RoomRequest:
     # where it fits (user-walk-11: the calendar made A6 kept 1.6-2.2 mm of its 3 mm gutter on
     # five pages, the room search having looked for zero overlap only)
     gutter_kept: bool = False
+    # a new page size of the same shape, smaller: the scale of the page itself (A4 to A5:
+    # 0.707); the room search tries it first (tui.page_resize.page_scale_of)
+    page_scale: float = 1.0
+    # the items the new size made smaller than they were, to fit it: (id, w, h as they were,
+    # w, h as made); at the page's own scale they take their old size scaled, no larger
+    fitted: tuple[tuple[str, float, float, float, float], ...] = ()
 
 
 class EditSession:
@@ -420,7 +459,9 @@ class EditSession:
 
     def want_room(self, ids: frozenset[str] | None = None,
                   margin_kept: frozenset[str] = frozenset(),
-                  page_index: int | None = None, gutter_kept: bool = False) -> None:
+                  page_index: int | None = None, gutter_kept: bool = False,
+                  page_scale: float = 1.0,
+                  fitted: tuple[tuple[str, float, float, float, float], ...] = ()) -> None:
         """Ask for room for the items ``ids`` (all that take part, if None) after an insert or
         a page change (of the page on screen, or of ``page_index``): the caller runs
         ``room_scale`` on a copy of the page, off the UI thread, and hands the answer to
@@ -428,7 +469,7 @@ class EditSession:
         for 0.8-2.3 s on an insert and 2.6-5.6 s on `o` (the calendar, load 7)."""
         index = self.page_index if page_index is None else page_index
         self.room_wanted.append(RoomRequest(self.version, index, ids, margin_kept,
-                                            gutter_kept))
+                                            gutter_kept, page_scale, fitted))
 
     def room_scale(self, page: Page, request: "RoomRequest") -> float:
         """How much the items of ``request`` must shrink for ``page`` (a copy: it is changed)
@@ -438,7 +479,7 @@ class EditSession:
         nothing else of the session's, so it may run in a thread."""
         settings = dataclasses.replace(self.project.physics, seed=self.seed)
         scale, sound = 1.0, None
-        for _ in range(MAKE_ROOM_ATTEMPTS):
+        for step in room_steps(request.page_scale):
             trial = copy_of(page)
             settle_page(trial, settings, max_rounds=3)
             engine = engine_for_page(trial, settings)
@@ -448,8 +489,9 @@ class EditSession:
                 if not request.gutter_kept or quality.gutter_kept:
                     return scale
                 sound = scale if sound is None else sound
-            shrink_items(page, request.ids, MAKE_ROOM_STEP)
-            scale *= MAKE_ROOM_STEP
+            shrink_items(page, request.ids, step)
+            scale *= step
+            refit(page, request, scale)
         # no gutter within reach: the least shrink without overlap, not the most tried
         return scale if sound is None else sound
 
@@ -462,12 +504,14 @@ class EditSession:
         if request.page_index != self.page_index:  # another page resized with this one
             page = self.project.pages[request.page_index]
             shrink_items(page, request.ids, scale)
+            refit(page, request, scale)
             self.pages_edited.add(page.id)
             if self.saved_version == self.version:
                 self.mark_unsaved()
             return True
         self.sync_positions()
         shrink_items(self.page, request.ids, scale)
+        refit(self.page, request, scale)
         if self.saved_version == self.version:  # saved meanwhile: this is a change to save
             self.mark_unsaved()
         self.engine = self._build_engine(check=False)
@@ -950,10 +994,16 @@ class EditSession:
             page = pages[index]
             margin_kept, gutter_kept = kept_by(self.engine if index == self.page_index else
                                                engine_for_page(page, self.project.physics))
+            own_scale = page_scale_of(page, width, height)
+            sizes = {item.id: (item.w, item.h) for item in page.items if not item.decorative}
             too_large += resize_page(page, size, own, width, height,
                                      page_margin(self.project.physics.margin_mm, width, height))
+            fitted = tuple((item.id, *sizes[item.id], item.w, item.h) for item in page.items
+                           if item.id in sizes and (item.w, item.h) != sizes[item.id]) \
+                if own_scale < 1.0 else ()
             self.pages_edited.add(page.id)
-            self.want_room(margin_kept=margin_kept, page_index=index, gutter_kept=gutter_kept)
+            self.want_room(margin_kept=margin_kept, page_index=index, gutter_kept=gutter_kept,
+                           page_scale=own_scale, fitted=fitted)
         self.held_id = None
         if too_large:  # said, as the room search's smaller shrink is: "10 % smaller" was all
             # a user read when a 150 mm title became 9 mm wide on a 10 mm page
