@@ -69,6 +69,25 @@ async def back_on_editor(pilot, app: FloatpageApp, seconds: float = DEADLINE_S) 
                        seconds)
 
 
+async def every_page_resized_and_saved(app: FloatpageApp, pilot, size: str) -> None:
+    """`S`, the size whose name starts with ``size`` ("A6 "), every page; then, once the room
+    searches have answered, Ctrl+S, and wait until it is saved (the editor must run: a save
+    settles)."""
+    await pilot.press("S")
+    assert await until(pilot, lambda: app.screen.id == "page-size-dialog")
+    options = [str(option.prompt) for option in app.screen.query_one("OptionList").options]
+    await pilot.press("home", *["down"] * next(
+        index for index, option in enumerate(options) if option.startswith(size)), "enter")
+    assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
+    await pilot.press("enter")  # every page
+    assert await back_on_editor(pilot, app)
+    assert await until(pilot, lambda: not app.session.room_wanted
+                       and not app.editor.room_searches, 240)
+    await app.workers.wait_for_complete()
+    await pilot.press("ctrl+s")
+    assert await until(pilot, lambda: not app.session.unsaved, 120)
+
+
 async def dialog_shown(pilot, app: FloatpageApp, dialog_id: str,
                        seconds: float = DEADLINE_S) -> bool:
     """Until the dialog ``dialog_id`` is on top, mounted, and takes the keys typed to it (the

@@ -10,7 +10,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
-from editor_helpers import back_on_editor, editor, until
+from editor_helpers import editor, every_page_resized_and_saved
 
 from floatpage.physics.alignment import ALIGNED_MM, NEAR_MM
 from floatpage.tui.clear_spaces import CLEAR_MM, scaled_space
@@ -41,20 +41,7 @@ async def test_a_smaller_page_size_keeps_the_captions_clear_of_the_near_miss_ban
     shutil.copytree(ROOT / "sample_projects" / "photo-album", folder)
     path = folder / "photo-album.toml"
     async with editor(path, autostart=True) as (app, pilot):  # running: the save settles
-        await pilot.press("S")
-        assert await until(pilot, lambda: app.screen.id == "page-size-dialog")
-        options = [str(option.prompt) for option in app.screen.query_one("OptionList").options]
-        await pilot.press("home", *["down"] * next(
-            index for index, option in enumerate(options) if option.startswith("A5 ")),
-            "enter")
-        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
-        await pilot.press("enter")  # every page
-        assert await back_on_editor(pilot, app)
-        assert await until(pilot, lambda: not app.session.room_wanted
-                           and not app.editor.room_searches, 240)
-        await app.workers.wait_for_complete()
-        await pilot.press("ctrl+s")
-        assert await until(pilot, lambda: not app.session.unsaved, 120)
+        await every_page_resized_and_saved(app, pilot, "A5 ")
     project = load_project(path)
     assert [(page.width_mm, page.height_mm) for page in project.pages] == [(148.0, 210.0)] * 2
     spaces = {}

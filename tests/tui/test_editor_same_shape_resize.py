@@ -14,7 +14,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
-from editor_helpers import back_on_editor, editor, until
+from editor_helpers import editor, every_page_resized_and_saved
 
 from floatpage.model import load_project, save_project
 from floatpage.model.layout import copy_of, engine_for_page
@@ -74,20 +74,7 @@ async def test_a_smaller_page_size_keeps_the_calendars_lines(tmp_path):
     2.25, July 2.75 before, from 0.00 on A4), the gutter kept as before."""
     path = months(tmp_path, ("jan", "may", "jul"))
     async with editor(path, autostart=True) as (app, pilot):  # running: the save settles
-        await pilot.press("S")
-        assert await until(pilot, lambda: app.screen.id == "page-size-dialog")
-        options = [str(option.prompt) for option in app.screen.query_one("OptionList").options]
-        await pilot.press("home", *["down"] * next(
-            index for index, option in enumerate(options) if option.startswith("A6 ")),
-            "enter")
-        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
-        await pilot.press("enter")  # every page
-        assert await back_on_editor(pilot, app)
-        assert await until(pilot, lambda: not app.session.room_wanted
-                           and not app.editor.room_searches, 240)
-        await app.workers.wait_for_complete()
-        await pilot.press("ctrl+s")
-        assert await until(pilot, lambda: not app.session.unsaved, 120)
+        await every_page_resized_and_saved(app, pilot, "A6 ")
     project = load_project(path)
     assert [(page.width_mm, page.height_mm) for page in project.pages] == [(105.0, 148.0)] * 3
     engines = {page.id: engine_for_page(page, project.physics) for page in project.pages}

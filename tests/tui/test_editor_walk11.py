@@ -7,7 +7,7 @@ import shutil
 import threading
 from pathlib import Path
 
-from editor_helpers import back_on_editor, editor, until, words_in
+from editor_helpers import back_on_editor, editor, every_page_resized_and_saved, until, words_in
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -122,20 +122,7 @@ async def test_a_smaller_size_on_every_page_keeps_the_gutter_where_settle_keeps_
     assert all(engine_for_page(page, project.physics).quality().gutter_kept
                for page in project.pages)
     async with editor(path, autostart=True) as (app, pilot):  # running: the save settles
-        await pilot.press("S")
-        assert await until(pilot, lambda: app.screen.id == "page-size-dialog")
-        options = [str(option.prompt) for option in app.screen.query_one("OptionList").options]
-        await pilot.press("home", *["down"] * next(
-            index for index, option in enumerate(options) if option.startswith("A6 ")),
-            "enter")
-        assert await until(pilot, lambda: app.screen.id == "which-pages-dialog")
-        await pilot.press("enter")  # every page
-        assert await back_on_editor(pilot, app)
-        assert await until(pilot, lambda: not app.session.room_wanted
-                           and not app.editor.room_searches, 240)
-        await app.workers.wait_for_complete()
-        await pilot.press("ctrl+s")
-        assert await until(pilot, lambda: not app.session.unsaved, 120)
+        await every_page_resized_and_saved(app, pilot, "A6 ")
     project = load_project(path)
     assert [page.width_mm for page in project.pages] == [105.0] * 3
     gaps = {page.id: engine_for_page(page, project.physics).quality() for page in project.pages}
