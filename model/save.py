@@ -23,6 +23,9 @@ from floatpage.model.document import (
 from floatpage.model.atomic_file import atomic_write, write_chunks  # noqa: F401 (re-exported)
 from floatpage.model.errors import FloatpageError
 from floatpage.model.page_sizes import CUSTOM, canonical_size_name
+from floatpage.model.written_forms import (
+    as_read, in_written_form, indent_like_the_others, written_entries, written_in_pieces,
+)
 
 Pairs = list[tuple[str, Any, Any]]  # (key, value, default); value None = absent
 UTF8_BOM = b"\xef\xbb\xbf"
@@ -177,47 +180,6 @@ def changed_in_place(written: Any, value: Any) -> bool:
     return True
 
 
-def as_read(written: Any) -> Any:
-    """The value of a tomlkit item as the loader (tomllib) read it. A multi-line string's
-    line breaks are CRLF in a Windows file: tomlkit keeps them, tomllib reads LF, so every
-    save of an unchanged CRLF project rewrote each such text as a one-line string with
-    `\\n` in it (user-walk-13)."""
-    value = written.unwrap() if hasattr(written, "unwrap") else written
-    if isinstance(value, str) and "\r" in value and hasattr(written, "as_string"):
-        import tomllib
-        try:
-            return tomllib.loads("v = " + written.as_string())["v"]
-        except tomllib.TOMLDecodeError:
-            return value
-    return value
-
-
-def in_written_form(written: Any, value: Any) -> Any:
-    """``value``, a new string, in the form the user wrote the old one: literal `'...'` and
-    multi-line `\"\"\"...\"\"\"` strings stay so (a word changed in a hand-written multi-line
-    message came back as one line of `\\n`s), where the new words can be written that way
-    and read back the same; else as tomlkit writes it."""
-    from tomlkit.items import String, StringType
-    if not isinstance(written, String) or not isinstance(value, str):
-        return value
-    import tomlkit
-    import tomllib
-    literal = written.type in (StringType.SLL, StringType.MLL)
-    multiline = written.type in (StringType.MLB, StringType.MLL)
-    for form in ((literal, multiline), (literal, True), (False, multiline)):
-        try:
-            candidate = tomlkit.string(value, literal=form[0], multiline=form[1])
-            if form[1] and re.match(r'("""|\'\'\')\r?\n', written.as_string()):
-                # the user's `"""` then a line break, which TOML drops: kept
-                candidate = String(candidate.type, value, "\n" + candidate._original,
-                                   candidate.trivia)
-            if tomllib.loads("v = " + candidate.as_string())["v"] == value:
-                return candidate
-        except (ValueError, tomllib.TOMLDecodeError):  # tomlkit's InvalidStringError is one
-            continue
-    return value
-
-
 PLACES = "_floatpage_places"  # a table's attribute: {removed key: the key that followed it}
 
 
@@ -233,24 +195,6 @@ def remember_places(table: Table, keys: list[str]) -> None:
         if key in order:
             following = order[order.index(key) + 1:]
             places[key] = following[0] if following else None
-
-
-def written_in_pieces(table: Table) -> bool:
-    """Whether ``table`` is written in pieces rather than under one header: dotted keys
-    (`physics.seed = 0`, `physics.alpha = 150.0`), which tomlkit reads as a proxy over the
-    pieces with no body of its own. Every save of such a file, even a settle's, stopped with
-    "internal error: AttributeError: 'dict' object has no attribute 'body'" (user-walk-13)."""
-    from tomlkit.container import OutOfOrderTableProxy
-    return isinstance(table, OutOfOrderTableProxy)
-
-
-def written_entries(table: Table) -> list:
-    """The (key, value) entries of ``table`` in the file's order, whether it is written
-    under one header or in pieces (`written_in_pieces`, read through tomlkit's internal
-    merged container, as bounded by pyproject.toml's tomlkit pin)."""
-    if written_in_pieces(table):
-        return table._internal_container.body
-    return table.value.body
 
 
 def add_key(table: Table, key: str, value: Any) -> None:
@@ -281,20 +225,6 @@ def add_key(table: Table, key: str, value: Any) -> None:
     else:
         table[key] = value
     indent_like_the_others(table, key)
-
-
-def indent_like_the_others(table: Table, key: str) -> None:
-    """Indent an added key as the table's first key is (a tab, two spaces): the keys a save
-    added to a table indented by hand stood at the line's start (user-walk-13)."""
-    from tomlkit.items import AoT, InlineTable, Table as TableItem
-    if isinstance(table, InlineTable) or key not in table.value:
-        return
-    indents = [item.trivia.indent for entry, item in table.value.body
-               if entry is not None and entry.key != key
-               and not isinstance(item, (TableItem, AoT)) and hasattr(item, "trivia")]
-    added = table.value.item(key)
-    if indents and hasattr(added, "trivia") and not indents[0].strip(" \t"):
-        added.trivia.indent = indents[0]
 
 
 def new_table(pairs: Pairs, *, inline_form: bool = False) -> Table:
