@@ -126,5 +126,8 @@ def mend_positions(path: Path) -> tuple[bytes, int] | None:
         tomllib.loads(kept.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError:
         return None  # more is wrong than the conflicts: the loader says what
+    # the file with its conflicts first: a load that then fails (a picture not found) leaves
+    # the mended file, and the user's own is not lost
+    atomic_write(path.with_name(path.name + ".bak"), raw, backup=False)
     atomic_write(path, kept.encode("utf-8"), backup=False)
     return raw, count

@@ -181,6 +181,20 @@ def test_settle_mends_a_merge_whose_conflicts_are_all_in_positions(tmp_path):
     assert git("commit", "-qm", "merged").returncode == 0
 
 
+def test_a_mended_merge_that_then_fails_to_load_keeps_the_conflicted_file(tmp_path):
+    """The conflicts mended, the file then fails to load (a picture the merge names is not
+    there): the file with its conflicts is already the .bak, where it was written only once
+    the settle had saved, and was lost with the mended file written over it."""
+    path = flyer_changed_on_two_branches(tmp_path / "flyer")
+    conflicted = path.read_text()
+    (path.parent / "pictures" / "lemons.png").rename(path.parent / "lemons-moved.png")
+    settled = floatpage("settle", path.name, cwd=path.parent)
+    assert settled.returncode == 1, settled.stderr
+    assert "lemons.png" in settled.stderr
+    assert path.with_name(path.name + ".bak").read_text() == conflicted
+    assert "<<<<<<<" not in path.read_text()
+
+
 def test_settle_leaves_a_conflict_in_anything_but_positions_to_the_user(tmp_path):
     """A conflict in a price as well: nothing is written, and the message says how to mend
     it by hand."""
