@@ -524,17 +524,17 @@ def check_one(path: str, args: argparse.Namespace, *, among_others: bool = False
 
     # -q (user-walk-12b: `check --strict -q` in a Makefile was exit 2, as the other commands
     # take -q): the figures of pages without problems and the notes are left out
-    heading = [f"{printable(path)}: valid project, {len(project.pages)} page(s)"]
+    first_line = f"{printable(path)}: valid project, {len(project.pages)} page(s)"
+    # under -q among other projects, the file's line waits for the first thing told of it
+    waiting = [first_line] if args.quiet and among_others else []
 
     def tell(text: str) -> None:
-        while heading:
-            print(heading.pop())
+        if waiting:
+            print(waiting.pop())
         print(text)
 
     say = (lambda text: None) if args.quiet else tell
-    if not args.quiet or not among_others:
-        heading.clear()
-    say(f"{printable(path)}: valid project, {len(project.pages)} page(s)")
+    say(first_line)
     issues = 0
     settle_lines: list[str] = []  # the lines that send the user to `settle`
     stuck: list[str] = []  # pages with problems no settle mends
